@@ -1,0 +1,162 @@
+#include "app/command_line.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "app/scene_registry.h"
+#include "app/scene_runner.h"
+
+namespace pba::app {
+namespace {
+
+Result<long> parseWhole(const std::string& option, const std::string& text, long min) {
+  char* end = nullptr;
+  errno = 0;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno != 0 || v < min)
+    return Error{option + ": expected a whole number >= " + std::to_string(min) + ", got '" + text + "'"};
+  return v;
+}
+
+Result<double> parsePositive(const std::string& option, const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || v <= 0.0)
+    return Error{option + ": expected a number > 0, got '" + text + "'"};
+  return v;
+}
+
+const LabFlag* findLabFlag(const std::string& flag) {
+  for (const LabFlag& f : labFlags())
+    if (f.flag == flag) return &f;
+  return nullptr;
+}
+
+}  // namespace
+
+long LabOptions::frameCount() const {
+  if (frames) return *frames;
+  if (seconds) return static_cast<long>(std::ceil(*seconds / kDisplayFrame - 1e-9));
+  return screenshot.empty() ? kDefaultHeadlessFrames : kDefaultScreenshotFrames;
+}
+
+bool looksLikeSceneFile(const std::string& scene) {
+  return scene.find('/') != std::string::npos ||
+         (scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0);
+}
+
+Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
+  LabOptions o;
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    std::string value;
+    bool hasInlineValue = false;
+    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos && arg.rfind("--set", 0) != 0) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      hasInlineValue = true;
+    }
+    auto next = [&](std::string& out) -> Status {
+      if (hasInlineValue) {
+        out = value;
+        return Status::success();
+      }
+      if (i + 1 >= argc) return Error{arg + ": missing value"};
+      out = argv[++i];
+      return Status::success();
+    };
+    auto flagOnly = [&]() -> Status {
+      return hasInlineValue ? Status(Error{arg + ": takes no value"}) : Status::success();
+    };
+    std::string v;
+    Status s;
+    if (arg == "--help" || arg == "-h") { s = flagOnly(); o.help = true; }
+    else if (arg == "--headless") { s = flagOnly(); o.headless = true; }
+    else if (arg == "--lecture") { s = flagOnly(); o.lecture = true; }
+    else if (arg == "--list-scenes") { s = flagOnly(); o.listScenes = true; }
+    else if (arg == "--scene") { s = next(o.scene); }
+    else if (arg == "--screenshot") { s = next(o.screenshot); }
+    else if (arg == "--metrics") { s = next(o.metrics); }
+    else if (arg == "--frames") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parseWhole(arg, v, 1);
+      if (!r) return Error{r.error()};
+      o.frames = r.value();
+    } else if (arg == "--seconds") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parsePositive(arg, v);
+      if (!r) return Error{r.error()};
+      o.seconds = r.value();
+    } else if (arg == "--dt") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parsePositive(arg, v);
+      if (!r) return Error{r.error()};
+      if (r.value() < kMinDt || r.value() > kMaxDt)
+        return Error{"--dt: must be in [" + std::to_string(kMinDt) + ", " + std::to_string(kMaxDt) + "] s, got '" + v + "'"};
+      o.dt = r.value();
+    } else if (arg == "--substeps") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parseWhole(arg, v, 1);
+      if (!r || r.value() > kMaxSubsteps) return Error{"--substeps: expected a whole number in [1, " + std::to_string(kMaxSubsteps) + "], got '" + v + "'"};
+      o.substeps = static_cast<int>(r.value());
+    } else if (arg == "--time-scale") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parsePositive(arg, v);
+      if (!r || r.value() < kMinTimeScale || r.value() > kMaxTimeScale) return Error{"--time-scale: expected a number in [0.1, 4], got '" + v + "'"};
+      o.timeScale = r.value();
+    } else if (arg == "--seed") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parseWhole(arg, v, 0);
+      if (!r) return Error{r.error()};
+      o.seed = static_cast<std::uint64_t>(r.value());
+    } else if (arg == "--set") {
+      if (!(s = next(v))) return Error{s.error()};
+      const auto eq = v.find('=');
+      if (eq == std::string::npos || eq == 0) return Error{"--set: expected NAME=VALUE, got '" + v + "'"};
+      o.overrides.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+    } else if (const LabFlag* f = arg.rfind("--", 0) == 0 ? findLabFlag(arg.substr(2)) : nullptr) {
+      if (!(s = next(v))) return Error{s.error()};
+      o.overrides.emplace_back(f->param, v);
+    } else {
+      return Error{"unknown option '" + arg + "' (see --help)"};
+    }
+    if (!s) return Error{s.error()};
+  }
+  if (o.frames && o.seconds) return Error{"--frames and --seconds: give one or the other"};
+  if (o.headless && !o.screenshot.empty()) return Error{"--screenshot needs a window: drop --headless (use xvfb-run without a display)"};
+  return o;
+}
+
+std::string usage(const std::string& lab) {
+  std::string text =
+      "Usage: pba-" + lab + " [options]\n"
+      "\n"
+      "  --scene NAME|FILE.json  scene to start (default: the first; see --list-scenes)\n"
+      "  --headless              no window and no OpenGL: step the scene and exit\n"
+      "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
+      "                          (default 300 headless, 120 for --screenshot)\n"
+      "  --seconds T             simulated seconds instead of --frames\n"
+      "  --dt H                  fixed time step in seconds (default: the scene's)\n"
+      "  --substeps N            split each step into N substeps (1-64)\n"
+      "  --time-scale S          slow motion or fast forward, 0.1-4\n"
+      "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
+      "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
+      "  --seed N                random seed (default 1)\n"
+      "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
+      "  --lecture               large fonts, high contrast (key L toggles)\n"
+      "  --list-scenes           print the scenes and exit\n"
+      "  --help                  this text\n";
+  if (!labFlags().empty()) {
+    text += "\nLab options:\n";
+    for (const LabFlag& f : labFlags()) text += "  --" + f.flag + " VALUE    " + f.help + " (parameter '" + f.param + "')\n";
+  }
+  text +=
+      "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot\n"
+      "      L lecture mode  Tab hide UI  F frame scene.  Mouse: left drag picks, right drag orbits,\n"
+      "      middle or Shift+right drag pans, wheel zooms.\n"
+      "Exit codes: 0 success, 2 bad arguments or input file, 1 internal failure.\n";
+  return text;
+}
+
+}  // namespace pba::app

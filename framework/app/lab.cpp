@@ -1,0 +1,92 @@
+#include "app/lab.h"
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "app/metrics_report.h"
+#include "app/scene_file.h"
+#include "app/scene_registry.h"
+
+namespace pba::app {
+
+Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& runner) {
+  if (scenes().empty()) return Error{"this lab registers no scenes"};
+  if (o.dt) {
+    if (Status s = runner.setDt(*o.dt); !s) return Error{"--" + s.error()};
+  }
+  if (o.substeps) {
+    if (Status s = runner.setSubsteps(*o.substeps); !s) return Error{"--" + s.error()};
+  }
+  if (o.timeScale) {
+    if (Status s = runner.setTimeScale(*o.timeScale); !s) return Error{"--" + s.error()};
+  }
+  std::unique_ptr<Scene> scene;
+  std::string name;
+  if (looksLikeSceneFile(o.scene)) {
+    Result<LoadedScene> loaded = loadSceneFile(o.scene, lab);
+    if (!loaded) return Error{loaded.error()};
+    scene = std::move(loaded.value().scene);
+    name = loaded.value().name;
+    if (loaded.value().dt && !o.dt) {
+      if (Status s = runner.setDt(*loaded.value().dt); !s) return Error{o.scene + ": " + s.error()};
+    }
+  } else {
+    name = o.scene.empty() ? scenes().front().name : o.scene;
+    const SceneEntry* entry = findScene(name);
+    if (!entry) return Error{"--scene: unknown scene '" + name + "' (see --list-scenes)"};
+    scene = entry->create();
+  }
+  for (const auto& [param, value] : o.overrides) {
+    if (Status s = scene->params().setFromText(param, value); !s) return Error{"--set " + s.error()};
+  }
+  scene->setSeed(o.seed);
+  runner.adopt(std::move(scene), name);
+  return Status::success();
+}
+
+int runHeadless(const std::string& lab, const LabOptions& o, SceneRunner& runner) {
+  const long frames = o.frameCount();
+  for (long f = 0; f < frames; ++f) runner.advanceFrame(kDisplayFrame);
+  if (runner.guardMessage()) std::cerr << "pba-" << lab << ": " << *runner.guardMessage() << '\n';
+  if (!o.metrics.empty()) {
+    if (Status s = writeMetrics(metricsReport(lab, runner, frames), o.metrics); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+  }
+  return kExitOk;
+}
+
+int runLab(const std::string& lab, int argc, const char* const* argv) {
+  try {
+    Result<LabOptions> parsed = parseCommandLine(argc, argv);
+    if (!parsed) {
+      std::cerr << "pba-" << lab << ": " << parsed.error() << '\n';
+      return kExitBadInput;
+    }
+    const LabOptions& o = parsed.value();
+    if (o.help) {
+      std::cout << usage(lab);
+      return kExitOk;
+    }
+    if (o.listScenes) {
+      for (const SceneEntry& e : scenes()) {
+        const std::string description = e.create()->description();
+        std::printf("%-16s %-12s %s\n", e.name.c_str(), e.category.c_str(), description.c_str());
+      }
+      return kExitOk;
+    }
+    SceneRunner runner;
+    if (Status s = prepareRunner(lab, o, runner); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+    return o.headless ? runHeadless(lab, o, runner) : runWindow(lab, o, runner);
+  } catch (const std::exception& e) {
+    std::cerr << "pba-" << lab << ": internal error: " << e.what() << '\n';
+    return kExitInternal;
+  }
+}
+
+}  // namespace pba::app

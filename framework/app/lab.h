@@ -1,0 +1,28 @@
+#pragma once
+// Entry point shared by every lab executable: parses the command line, loads the scene, then runs
+// headless or in a window. Exit codes: 0 success, 2 bad arguments or input file, 1 internal failure.
+#include <string>
+
+#include "app/command_line.h"
+#include "app/scene_runner.h"
+
+namespace pba::app {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInternal = 1;
+inline constexpr int kExitBadInput = 2;
+
+int runLab(const std::string& lab, int argc, const char* const* argv);
+
+/// Loads the scene named by options.scene (a name or a scene file) into runner and applies dt,
+/// substeps, time scale and overrides. Errors are one line naming the file or option and field.
+Status prepareRunner(const std::string& lab, const LabOptions& options, SceneRunner& runner);
+
+/// Steps `frames` display frames with no window and no GL; writes metrics when asked.
+int runHeadless(const std::string& lab, const LabOptions& options, SceneRunner& runner);
+
+/// Opens the window (defined by the window module). With options.screenshot set, renders
+/// options.frameCount() frames, saves the PNG and returns.
+int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner);
+
+}  // namespace pba::app

@@ -1,0 +1,77 @@
+#pragma once
+// The scene interface every lab implements (DESIGN.md §3). A scene owns its simulation state and
+// steps it with a fixed dt handed in by the runner (never wall-clock time). The same object runs
+// headless (tests, benchmarks, --headless) and in the window.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/params.h"
+#include "physics/collision/ray.h"
+#include "physics/core/debug_draw.h"
+#include "physics/core/types.h"
+
+namespace pba::app {
+
+using Ray = pba::Ray;  ///< e.g. from the cursor through the scene
+
+/// What a scene reports when a ray hits one of its draggable objects.
+struct PickHit {
+  int handle = -1;      ///< the scene's own id of the object (particle index, body id, …)
+  Real distance = 0.0;  ///< along the ray [m]
+  Vec3 point{0.0};      ///< world hit point [m]
+};
+
+/// A named preset (keys 1–9): a set of parameter values applied before a reset.
+struct Preset {
+  std::string name;
+  nlohmann::json params;  ///< same shape as a scene file's "params"
+};
+
+class Scene {
+ public:
+  virtual ~Scene() = default;
+
+  /// One sentence: what to look at in this scene.
+  virtual std::string description() const = 0;
+  /// Rebuilds the simulation state from the current parameters.
+  virtual void reset() = 0;
+  /// Advances the simulation by dt seconds (fixed step).
+  virtual void step(Real dt) = 0;
+  /// Draws the current state.
+  virtual void draw(DebugDraw& draw) const = 0;
+  /// Live measurements (energy, residual, …): a flat JSON object of numbers, strings and booleans.
+  virtual nlohmann::json metrics() const = 0;
+  /// Extra ImGui widgets beyond the automatic parameter panel (optional; window mode only).
+  virtual void ui() {}
+
+  /// The time step this scene is designed for [s].
+  virtual Real defaultDt() const { return 1.0 / 120.0; }
+  /// Empty when the state is finite; otherwise names what is not ("ball velocity is NaN").
+  virtual std::optional<std::string> nonFiniteState() const = 0;
+  /// Total energy [J] for the runaway guard, when the scene has one.
+  virtual std::optional<Real> energy() const { return std::nullopt; }
+  /// Keys 1–9.
+  virtual std::vector<Preset> presets() const { return {}; }
+
+  /// Picking and dragging through the scene interface (left mouse button).
+  virtual std::optional<PickHit> pick(const Ray&) const { return std::nullopt; }
+  virtual void drag(int /*handle*/, const Vec3& /*target*/) {}
+  virtual void release(int /*handle*/) {}
+
+  Params& params() { return params_; }
+  const Params& params() const { return params_; }
+  /// Random seed for scenes with random content (set by the runner before reset()).
+  void setSeed(std::uint64_t seed) { seed_ = seed; }
+  std::uint64_t seed() const { return seed_; }
+
+ protected:
+  Params params_;
+
+ private:
+  std::uint64_t seed_ = 1;
+};
+
+}  // namespace pba::app

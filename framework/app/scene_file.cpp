@@ -1,0 +1,91 @@
+#include "app/scene_file.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "app/scene_registry.h"
+#include "app/scene_runner.h"
+
+namespace pba::app {
+namespace {
+
+int lineOfByte(const std::string& text, std::size_t byte) {
+  int line = 1;
+  for (std::size_t i = 0; i < text.size() && i + 1 < byte; ++i)
+    if (text[i] == '\n') ++line;
+  return line;
+}
+
+Error fileError(const std::string& path, const std::string& message) { return Error{path + ": " + message}; }
+
+}  // namespace
+
+Status applyParams(Scene& scene, const nlohmann::json& params, const std::string& prefix) {
+  if (!params.is_object()) return Error{prefix + ": expected an object of parameters"};
+  for (const auto& [key, value] : params.items()) {
+    if (Status s = scene.params().setFromJson(key, value, prefix + "."); !s) return s;
+  }
+  return Status::success();
+}
+
+Result<LoadedScene> parseSceneJson(const std::string& text, const std::string& path, const std::string& lab) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.byte is the 1-based position of the error; report the line, which is what an editor shows.
+    return fileError(path, "line " + std::to_string(lineOfByte(text, e.byte)) + ": not valid JSON (" + e.what() + ")");
+  }
+  if (!doc.is_object()) return fileError(path, "expected a JSON object at the top level");
+  for (const auto& [key, value] : doc.items()) {
+    if (key != "lab" && key != "scene" && key != "dt" && key != "params" && key != "description")
+      return fileError(path, key + ": unknown key (expected lab, scene, dt, params, description)");
+  }
+  if (!doc.contains("lab") || !doc["lab"].is_string()) return fileError(path, "lab: missing or not a string");
+  if (doc["lab"].get<std::string>() != lab)
+    return fileError(path, "lab: this file is for lab '" + doc["lab"].get<std::string>() + "', not '" + lab + "'");
+  if (!doc.contains("scene") || !doc["scene"].is_string()) return fileError(path, "scene: missing or not a string");
+  const std::string name = doc["scene"].get<std::string>();
+  const SceneEntry* entry = findScene(name);
+  if (!entry) return fileError(path, "scene: unknown scene '" + name + "' (see --list-scenes)");
+
+  LoadedScene out{entry->create(), name, std::nullopt};
+  if (doc.contains("dt")) {
+    const auto& dt = doc["dt"];
+    if (!dt.is_number() || !(dt.get<double>() >= kMinDt && dt.get<double>() <= kMaxDt))
+      return fileError(path, "dt: must be a number in [1e-06, 0.1] s, got " + dt.dump());
+    out.dt = dt.get<double>();
+  }
+  if (doc.contains("params")) {
+    if (Status s = applyParams(*out.scene, doc["params"], "params"); !s) return fileError(path, s.error());
+  }
+  return out;
+}
+
+Result<LoadedScene> loadSceneFile(const std::string& path, const std::string& lab) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return fileError(path, "cannot open the file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return parseSceneJson(buffer.str(), path, lab);
+}
+
+nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene, std::optional<Real> dt) {
+  nlohmann::json doc;
+  doc["lab"] = lab;
+  doc["scene"] = name;
+  if (dt) doc["dt"] = *dt;
+  doc["params"] = scene.params().toJson();
+  return doc;
+}
+
+Status saveSceneFile(const std::string& path, const std::string& lab, const std::string& name, const Scene& scene,
+                     std::optional<Real> dt) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) return fileError(path, "cannot write the file");
+  out << sceneToJson(lab, name, scene, dt).dump(2) << '\n';
+  if (!out) return fileError(path, "write failed");
+  return Status::success();
+}
+
+}  // namespace pba::app

@@ -1,0 +1,36 @@
+#pragma once
+// Scene files (DESIGN.md §4): JSON under resources/scenes/<lab>/, round-trip exact.
+//   { "lab": "hello", "scene": "drop", "dt": 0.008333, "params": { "restitution": 0.8, ... } }
+// "dt" is optional. Unknown keys are errors, so that a typo never goes unnoticed.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "app/scene.h"
+#include "physics/core/result.h"
+
+namespace pba::app {
+
+struct LoadedScene {
+  std::unique_ptr<Scene> scene;  ///< created and configured, not yet reset
+  std::string name;              ///< registered scene name
+  std::optional<Real> dt;        ///< [s] when the file sets one
+};
+
+/// Builds a scene from a file. Errors read "<path>: <field>: <problem>" (with the line for syntax errors).
+Result<LoadedScene> loadSceneFile(const std::string& path, const std::string& lab);
+/// The same from JSON text already read; `path` is only used in messages.
+Result<LoadedScene> parseSceneJson(const std::string& text, const std::string& path, const std::string& lab);
+
+/// The file contents for the scene's current parameters.
+nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene, std::optional<Real> dt);
+/// Writes sceneToJson() pretty-printed. Error names the path.
+Status saveSceneFile(const std::string& path, const std::string& lab, const std::string& name, const Scene& scene,
+                     std::optional<Real> dt);
+
+/// Applies a JSON object of parameters (scene file "params" or a preset); messages use fieldPrefix.
+Status applyParams(Scene& scene, const nlohmann::json& params, const std::string& fieldPrefix);
+
+}  // namespace pba::app

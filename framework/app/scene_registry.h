@@ -1,0 +1,47 @@
+#pragma once
+// One-line scene registration (DESIGN.md §3; Box2D's RegisterSample is the model):
+//   PBA_REGISTER_SCENE("Basics", "drop", DropScene);
+// registers a factory in the executable's scene list in the order of the lab's source files.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/scene.h"
+
+namespace pba::app {
+
+struct SceneEntry {
+  std::string category;
+  std::string name;  ///< command line name: lower-case, dash-separated
+  std::function<std::unique_ptr<Scene>()> create;
+};
+
+/// All scenes of this executable, sorted by category then registration order.
+const std::vector<SceneEntry>& scenes();
+/// The entry named `name`, or nullptr.
+const SceneEntry* findScene(const std::string& name);
+/// Index of `name` in scenes(), or -1.
+int sceneIndex(const std::string& name);
+
+/// Returns true so that it can initialise a static in the registering file.
+bool registerScene(std::string category, std::string name, std::function<std::unique_ptr<Scene>()> create);
+
+/// A lab flag that sets a scene parameter, e.g. --integrator rk4 sets parameter "integrator".
+struct LabFlag {
+  std::string flag;   ///< without dashes
+  std::string param;  ///< parameter name it sets
+  std::string help;
+};
+const std::vector<LabFlag>& labFlags();
+bool registerLabFlag(std::string flag, std::string param, std::string help);
+
+}  // namespace pba::app
+
+#define PBA_CONCAT_INNER(a, b) a##b
+#define PBA_CONCAT(a, b) PBA_CONCAT_INNER(a, b)
+#define PBA_REGISTER_SCENE(category, name, Type)                                      \
+  static const bool PBA_CONCAT(pbaSceneRegistered_, __LINE__) = ::pba::app::registerScene( \
+      category, name, [] { return std::unique_ptr<::pba::app::Scene>(new Type()); })
+#define PBA_REGISTER_LAB_FLAG(flag, param, help) \
+  static const bool PBA_CONCAT(pbaFlagRegistered_, __LINE__) = ::pba::app::registerLabFlag(flag, param, help)

@@ -1,0 +1,125 @@
+#include "app/scene_runner.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "app/scene_registry.h"
+#include "physics/core/validate.h"
+
+namespace pba::app {
+namespace {
+std::string formatTime(Real t) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", t);
+  return buf;
+}
+}  // namespace
+
+Status SceneRunner::load(const std::string& name, std::uint64_t seed) {
+  const SceneEntry* entry = findScene(name);
+  if (!entry) return Error{"unknown scene '" + name + "' (see --list-scenes)"};
+  std::unique_ptr<Scene> scene = entry->create();
+  scene->setSeed(seed);
+  adopt(std::move(scene), name);
+  return Status::success();
+}
+
+void SceneRunner::adopt(std::unique_ptr<Scene> scene, std::string name) {
+  scene_ = std::move(scene);
+  sceneName_ = std::move(name);
+  if (!dtFromUser_) dt_ = scene_->defaultDt();
+  reset();
+}
+
+void SceneRunner::reset() {
+  scene_->reset();
+  accumulator_ = 0.0;
+  simTime_ = 0.0;
+  steps_ = 0;
+  finite_ = true;
+  guardMessage_.reset();
+  frameStats_.clear();
+  const std::optional<Real> e = scene_->energy();
+  energyScale_ = e ? std::max(std::abs(*e), 1e-3) : 0.0;
+}
+
+Status SceneRunner::setDt(Real dt) {
+  if (Status s = checkRange("dt", dt, kMinDt, kMaxDt); !s) return s;
+  dt_ = dt;
+  dtFromUser_ = true;
+  return Status::success();
+}
+
+Status SceneRunner::setSubsteps(int n) {
+  if (n < 1 || n > kMaxSubsteps) return Error{"substeps: must be in [1, " + std::to_string(kMaxSubsteps) + "], got " + std::to_string(n)};
+  substeps_ = n;
+  return Status::success();
+}
+
+Status SceneRunner::setTimeScale(Real scale) {
+  if (Status s = checkRange("time scale", scale, kMinTimeScale, kMaxTimeScale); !s) return s;
+  timeScale_ = scale;
+  return Status::success();
+}
+
+bool SceneRunner::stepOnce() {
+  const Real h = dt_ / substeps_;
+  for (int i = 0; i < substeps_; ++i) scene_->step(h);
+  simTime_ += dt_;
+  ++steps_;
+  checkGuard();
+  return !guardMessage_;
+}
+
+void SceneRunner::checkGuard() {
+  if (std::optional<std::string> bad = scene_->nonFiniteState()) {
+    finite_ = false;
+    paused_ = true;
+    guardMessage_ = "Paused: " + *bad + " at t = " + formatTime(simTime_) +
+                    " s. The simulation blew up: try a smaller time step (dt), more substeps, a more stable "
+                    "integrator or more solver iterations, then press R to reset.";
+    return;
+  }
+  if (energyScale_ > 0.0) {
+    const std::optional<Real> e = scene_->energy();
+    if (e && std::abs(*e) > kRunawayEnergyFactor * energyScale_) {
+      paused_ = true;
+      guardMessage_ = "Paused: energy grew from " + formatTime(energyScale_) + " J to " + formatTime(*e) +
+                      " J by t = " + formatTime(simTime_) +
+                      " s (runaway). Try a smaller time step (dt), more substeps, more damping or a more stable "
+                      "integrator, then press R to reset.";
+    }
+  }
+}
+
+void SceneRunner::advanceFrame(Real frameSeconds, int maxSteps) {
+  if (paused_ || !scene_) return;
+  accumulator_ += frameSeconds * timeScale_;
+  const auto start = std::chrono::steady_clock::now();
+  int taken = 0;
+  // A small tolerance so that a frame of exactly k·dt takes k steps despite rounding.
+  const Real tolerance = 1e-9 * dt_;
+  while (accumulator_ + tolerance >= dt_) {
+    if (maxSteps >= 0 && taken >= maxSteps) {
+      accumulator_ = 0.0;  // fall behind real time rather than freeze the window
+      break;
+    }
+    accumulator_ -= dt_;
+    ++taken;
+    if (!stepOnce()) break;
+  }
+  if (taken > 0) {
+    const auto end = std::chrono::steady_clock::now();
+    frameStats_.add(std::chrono::duration<double, std::milli>(end - start).count());
+  }
+}
+
+void SceneRunner::singleStep() {
+  if (!scene_ || guardMessage_) return;
+  const auto start = std::chrono::steady_clock::now();
+  stepOnce();
+  frameStats_.add(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+}
+
+}  // namespace pba::app

@@ -1,0 +1,29 @@
+#pragma once
+// Exercise stubs (DESIGN.md §5). In the student release every solution block is replaced by a stub
+// that calls notImplemented("TAG", safeDefault): it records the tag, so the lab can show a banner,
+// and returns a safe default so that every lab still runs.
+//
+// The record is process-wide on purpose: it is instrumentation read by the lab runner, never solver
+// state, and it is the one exception to the library's "no globals" rule (docs/architecture.md).
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace pba::exercises {
+
+/// Records that exercise `tag` (e.g. "HELLO-1") ran as a stub. Thread-safe.
+void markNotImplemented(std::string_view tag);
+/// Tags recorded so far, sorted, without repeats.
+std::vector<std::string> notImplementedTags();
+/// Forgets every record (tests use it).
+void clearNotImplemented();
+
+/// Records `tag` and hands back `safeDefault`: the one line a stub consists of.
+template <typename T>
+T notImplemented(std::string_view tag, T safeDefault) {
+  markNotImplemented(tag);
+  return safeDefault;
+}
+
+}  // namespace pba::exercises

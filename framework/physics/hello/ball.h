@@ -1,0 +1,103 @@
+#pragma once
+// The hello lab's physics: one ball under gravity and linear air drag, bouncing on a ground plane,
+// or hanging from a damped spring. Chapter 0 of the workbook (docs/workbook/00-getting-started.md).
+//
+// Equations of motion (Lobb notes, "Particle" and "Damping"):
+//   m dv/dt = m g − c v            linear (viscous) air drag, c [N·s/m]
+//   F_spring = −[k (|d| − L) + c_s (d·v)/|d|] d/|d|,  d = x − anchor   (Lobb notes, damped spring)
+#include "physics/core/result.h"
+#include "physics/core/types.h"
+
+namespace pba::hello {
+
+/// Position and velocity of the ball's centre.
+struct BallState {
+  Vec3 position{0.0, 1.0, 0.0};  ///< [m] world, typical 0–10
+  Vec3 velocity{0.0, 0.0, 0.0};  ///< [m/s] world
+};
+
+/// What the user edits: the ball, the air and the ground. Defaults give a lively, readable drop.
+struct BallDesc {
+  Real mass = 1.0;          ///< [kg], > 0; typical 0.1–10
+  Real radius = 0.25;       ///< [m], > 0; typical 0.05–1
+  Real restitution = 0.8;   ///< [1] in [0, 1]: share of normal speed kept by a bounce
+  Real drag = 0.1;          ///< [N·s/m] ≥ 0: linear air drag coefficient c
+  Real gravity = kStandardGravity;  ///< [m/s²] ≥ 0, acting along −y
+  Real dropHeight = 3.0;    ///< [m] ≥ 0: initial height of the ball's lowest point above the ground
+  Real groundHeight = 0.0;  ///< [m] world y of the ground plane
+};
+
+/// Checks every field; the message names the field ("mass: must be ...").
+Status validate(const BallDesc& desc);
+
+/// The ball at rest at its drop height.
+BallState initialState(const BallDesc& desc);
+
+/// Acceleration from gravity and linear drag at velocity v: a = −g ŷ − (c/m) v.
+Vec3 acceleration(const BallDesc& desc, const Vec3& velocity);
+
+/// Kinetic + gravitational potential energy [J], potential measured from the ball resting on the ground.
+Real energy(const BallDesc& desc, const BallState& state);
+
+/// Height of the ball's lowest point above the ground [m].
+Real heightAboveGround(const BallDesc& desc, const BallState& state);
+
+// ***** HELLO-1: the explicit Euler step (Lobb notes, "ODE view": Euler) *****
+// (1) Keep the state at the start of the step: x(t) and v(t), and the acceleration a(t) passed in.
+// (2) New position: x(t + h) = x(t) + h v(t), using the velocity at the START of the step.
+// (3) New velocity: v(t + h) = v(t) + h a(t).
+// (4) Return the new state. (Using the new velocity in (2) would give symplectic Euler: not this one.)
+// *****
+BallState eulerStep(const BallState& state, const Vec3& acceleration, Real h);
+
+/// Outcome of a ground contact test.
+struct BounceResult {
+  BallState state;      ///< state after the bounce (unchanged when there was no contact)
+  bool bounced = false; ///< true when the ball touched the plane moving into it
+};
+
+// ***** HELLO-2: the ground bounce (Lobb notes, "particle/plane collisions") *****
+// (1) Contact test: the ball touches the plane when dot(N, x − P) < radius (P any point of the plane).
+// (2) Only a ball moving INTO the plane bounces: check dot(N, v) < 0.
+// (3) Split the velocity: normal part v_n = dot(N, v) N, tangential part v_t = v − v_n.
+// (4) New velocity v' = v_t − restitution · v_n (the tangential part is kept: no friction here).
+// (5) Push the centre back onto the surface along N so that the ball does not stay inside the ground.
+// *****
+BounceResult bounceOffPlane(const BallState& state, Real radius, Real restitution, const Vec3& planePoint,
+                            const Vec3& planeNormal);
+
+/// One full step of the drop scene: HELLO-1 under gravity and drag, then HELLO-2 against the ground.
+BounceResult stepDrop(const BallDesc& desc, const BallState& state, Real h);
+
+/// A ball hanging from a damped spring whose anchor the user can drag.
+struct SpringDesc {
+  Real mass = 1.0;           ///< [kg] > 0
+  Real stiffness = 40.0;     ///< [N/m] > 0, k
+  Real restLength = 1.5;     ///< [m] > 0, L
+  Real damping = 0.6;        ///< [N·s/m] ≥ 0, c_s along the spring
+  Real drag = 0.05;          ///< [N·s/m] ≥ 0, linear air drag
+  Real gravity = kStandardGravity;  ///< [m/s²] ≥ 0
+  Vec3 anchor{0.0, 3.5, 0.0};       ///< [m] world position of the fixed end
+};
+
+Status validate(const SpringDesc& desc);
+
+/// Damped spring force on the ball (Lobb notes): −[k(|d| − L) + c_s (d·v)/|d|] d/|d|, d = x − anchor.
+/// Zero when the ball sits exactly on the anchor (direction undefined).
+Vec3 springForce(const SpringDesc& desc, const BallState& state);
+
+/// Total force on the spring ball: spring + gravity + drag.
+Vec3 springBallForce(const SpringDesc& desc, const BallState& state);
+
+/// Symplectic (semi-implicit) Euler: v += h a(x, v); x += h v_new. Lobb's "simple loop"; stable for
+/// the spring at the lab's step sizes, unlike explicit Euler.
+BallState symplecticEulerStep(const SpringDesc& desc, const BallState& state, Real h);
+
+/// Extension |d| − L [m] and total energy (kinetic + spring + gravity, gravity measured from the anchor) [J].
+Real springExtension(const SpringDesc& desc, const BallState& state);
+Real springEnergy(const SpringDesc& desc, const BallState& state);
+
+/// Static equilibrium: the ball hanging straight below the anchor at rest.
+BallState springEquilibrium(const SpringDesc& desc);
+
+}  // namespace pba::hello
