@@ -53,6 +53,8 @@ class Scene {
   virtual std::optional<std::string> nonFiniteState() const = 0;
   /// Total energy [J] for the runaway guard, when the scene has one.
   virtual std::optional<Real> energy() const { return std::nullopt; }
+  /// Metrics plotted over time when the user has not chosen any (e.g. {"energy_J"}).
+  virtual std::vector<std::string> defaultPlots() const { return {}; }
   /// Keys 1–9.
   virtual std::vector<Preset> presets() const { return {}; }
 

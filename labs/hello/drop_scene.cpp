@@ -72,6 +72,7 @@ class DropScene final : public app::Scene {
     return std::nullopt;
   }
   std::optional<Real> energy() const override { return hello::energy(desc_, state_); }
+  std::vector<std::string> defaultPlots() const override { return {"height_m", "energy_J"}; }
   std::vector<app::Preset> presets() const override {
     return {{"superball", {{"restitution", 0.95}, {"drag", 0.0}, {"gravity", 9.81}}},
             {"clay", {{"restitution", 0.2}, {"drag", 0.1}, {"gravity", 9.81}}},

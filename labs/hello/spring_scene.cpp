@@ -63,6 +63,7 @@ class SpringScene final : public app::Scene {
     return std::nullopt;
   }
   std::optional<Real> energy() const override { return hello::springEnergy(desc_, state_); }
+  std::vector<std::string> defaultPlots() const override { return {"extension_m", "energy_J"}; }
   std::vector<app::Preset> presets() const override {
     return {{"soft", {{"stiffness", 15.0}, {"damping", 0.3}}},
             {"stiff", {{"stiffness", 200.0}, {"damping", 1.0}}},

@@ -1,0 +1,304 @@
+#include "app/lab_ui.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/scene_registry.h"
+#include "physics/exercises/not_implemented.h"
+
+namespace pba::app {
+namespace {
+
+constexpr float kPanelWidth = 380.0f;  // [px at UI scale 1]
+const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
+const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
+
+const char* const kKeys[] = {
+    "Space / P   pause or resume",     "O           single step",
+    "R           reset the scene",     "[  ]        previous / next scene",
+    "1 - 9       scene presets",       "F1 / H      this help",
+    "F12         screenshot (PNG)",    "L           lecture mode (large, high contrast)",
+    "Tab         hide or show the UI", "F           frame the scene",
+    "Left drag   pick and drag",       "Right drag  orbit the camera",
+    "Middle drag or Shift + right drag   pan",
+    "Wheel       zoom",
+};
+
+void helpMarker(const std::string& text) {
+  ImGui::SameLine();
+  ImGui::TextDisabled("(?)");
+  if (ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28.0f);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
+}
+
+void parameterWidgets(LabSession& session) {
+  Scene& scene = session.runner().scene();
+  bool resetNeeded = false;
+  for (Param& p : scene.params().all()) {
+    ImGui::PushID(p.name.c_str());
+    const std::string label = p.unit.empty() ? p.name : p.name + " [" + p.unit + "]";
+    bool changed = false;
+    double value = p.get();
+    switch (p.kind) {
+      case ParamKind::Real: {
+        const ImGuiSliderFlags flags = (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
+        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max, "%.4g", flags);
+        break;
+      }
+      case ParamKind::Integer: {
+        int v = static_cast<int>(value), lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
+        changed = ImGui::SliderInt(label.c_str(), &v, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp |
+                                   (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
+        value = v;
+        break;
+      }
+      case ParamKind::Flag: {
+        bool v = value != 0.0;
+        changed = ImGui::Checkbox(label.c_str(), &v);
+        value = v ? 1.0 : 0.0;
+        break;
+      }
+      case ParamKind::Choice: {
+        int v = static_cast<int>(value);
+        const std::string& current = p.choices.at(static_cast<size_t>(v));
+        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+          for (size_t i = 0; i < p.choices.size(); ++i) {
+            if (ImGui::Selectable(p.choices[i].c_str(), static_cast<int>(i) == v)) {
+              v = static_cast<int>(i);
+              changed = true;
+            }
+          }
+          ImGui::EndCombo();
+        }
+        value = v;
+        break;
+      }
+    }
+    helpMarker(p.tooltip + (p.needsReset ? "\nTakes effect on reset." : ""));
+    // Sliders clamp to the declared range, so the value is always valid: slider extremes are safe.
+    if (changed) {
+      p.set(std::clamp(value, p.min, p.max));
+      resetNeeded = resetNeeded || p.needsReset;
+    }
+    ImGui::PopID();
+  }
+  if (resetNeeded) session.reset();
+}
+
+void simulationControls(LabSession& session) {
+  SceneRunner& runner = session.runner();
+  if (ImGui::Button(runner.paused() ? "Run (Space)" : "Pause (Space)")) session.togglePause();
+  ImGui::SameLine();
+  if (ImGui::Button("Step (O)")) session.singleStep();
+  ImGui::SameLine();
+  if (ImGui::Button("Reset (R)")) session.reset();
+
+  double dt = runner.dt();
+  const double dtMin = kMinDt * 10, dtMax = kMaxDt;
+  if (ImGui::SliderScalar("dt [s]", ImGuiDataType_Double, &dt, &dtMin, &dtMax, "%.5f",
+                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+    runner.setDt(dt);
+  helpMarker("Fixed time step of the simulation. Smaller is more accurate and more stable, and costs more.");
+  int substeps = runner.substeps();
+  if (ImGui::SliderInt("substeps", &substeps, 1, kMaxSubsteps, "%d", ImGuiSliderFlags_AlwaysClamp))
+    runner.setSubsteps(substeps);
+  helpMarker("Each step is split into this many substeps of dt / substeps.");
+  double scale = runner.timeScale();
+  const double lo = kMinTimeScale, hi = kMaxTimeScale;
+  if (ImGui::SliderScalar("time scale", ImGuiDataType_Double, &scale, &lo, &hi, "%.2fx",
+                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+    runner.setTimeScale(scale);
+  helpMarker("Slow motion below 1, fast forward above 1. The physics step dt does not change.");
+  ImGui::Text("t = %.3f s   steps = %lld", runner.simTime(), static_cast<long long>(runner.steps()));
+}
+
+void metricsTable(LabSession& session, const UiState& ui) {
+  const SceneRunner& runner = session.runner();
+  ImGui::Text("frame %.2f ms   physics %.3f ms", ui.frameMs, runner.frameStats().last());
+  const nlohmann::json metrics = runner.scene().metrics();
+  auto& plotted = session.settings().plotted;
+  if (ImGui::BeginTable("metrics", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    for (const auto& [key, value] : metrics.items()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(key.c_str());
+      ImGui::TableNextColumn();
+      if (value.is_number_float()) ImGui::Text("%.5g", value.get<double>());
+      else if (value.is_string()) ImGui::TextUnformatted(value.get<std::string>().c_str());
+      else ImGui::TextUnformatted(value.dump().c_str());
+      ImGui::TableNextColumn();
+      if (value.is_number() || value.is_boolean()) {
+        bool on = std::find(plotted.begin(), plotted.end(), key) != plotted.end();
+        ImGui::PushID(key.c_str());
+        if (ImGui::Checkbox("plot", &on)) {
+          if (on) plotted.push_back(key);
+          else plotted.erase(std::remove(plotted.begin(), plotted.end(), key), plotted.end());
+        }
+        ImGui::PopID();
+      }
+    }
+    ImGui::EndTable();
+  }
+}
+
+void sceneFileControls(LabSession& session, UiState& ui) {
+  if (ui.scenePath[0] == '\0')
+    std::snprintf(ui.scenePath, sizeof ui.scenePath, "%s/scenes/%s/%s.json", PBA_RESOURCE_DIR, session.lab().c_str(),
+                  session.runner().sceneName().c_str());
+  ImGui::InputText("file", ui.scenePath, sizeof ui.scenePath);
+  helpMarker("A JSON scene file: the scene's name and its parameters. Load replaces the scene only when the "
+             "file is valid; Save writes the current parameters.");
+  if (ImGui::Button("Load")) session.loadSceneFile(ui.scenePath);
+  ImGui::SameLine();
+  if (ImGui::Button("Save")) session.saveSceneFile(ui.scenePath);
+  if (!session.fileError().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kAlertRed);
+    ImGui::TextWrapped("%s", session.fileError().c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+void exerciseStatus(LabSession& session) {
+  const std::vector<std::string> stubs = exercises::notImplementedTags();
+  for (const ExerciseInfo& e : session.exercises()) {
+    const bool stub = std::find(stubs.begin(), stubs.end(), e.tag) != stubs.end();
+    ImGui::PushStyleColor(ImGuiCol_Text, stub ? kWarnOrange : ImVec4(0.1f, 0.5f, 0.2f, 1.0f));
+    ImGui::Text("%s  %s", stub ? "[todo]" : "[ ok ]", e.tag.c_str());
+    ImGui::PopStyleColor();
+    ImGui::SameLine();
+    ImGui::TextUnformatted(e.title.c_str());
+    if (stub) helpMarker(e.hint);
+  }
+  ImGui::TextDisabled("./pba grade runs the exercise tests.");
+}
+
+void mainPanel(LabSession& session, UiState& ui) {
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(panelWidthPixels() - 8.0f, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
+  const std::string title = "pba-" + session.lab() + "###panel";
+  if (!ImGui::Begin(title.c_str())) {
+    ImGui::End();
+    return;
+  }
+  const auto& list = scenes();
+  const int current = session.sceneIndex();
+  if (ImGui::BeginCombo("scene", session.runner().sceneName().c_str())) {
+    std::string category;
+    for (size_t i = 0; i < list.size(); ++i) {
+      if (list[i].category != category) {
+        category = list[i].category;
+        ImGui::TextDisabled("%s", category.c_str());
+      }
+      if (ImGui::Selectable(("  " + list[i].name).c_str(), static_cast<int>(i) == current)) session.switchScene(static_cast<int>(i));
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::TextWrapped("%s", session.runner().scene().description().c_str());
+  const std::vector<Preset> presets = session.runner().scene().presets();
+  for (size_t i = 0; i < presets.size() && i < 9; ++i) {
+    if (i % 3 != 0) ImGui::SameLine();
+    const std::string label = std::to_string(i + 1) + " " + presets[i].name;
+    if (ImGui::SmallButton(label.c_str())) session.applyPreset(static_cast<int>(i));
+  }
+  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session);
+  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+    parameterWidgets(session);
+    session.runner().scene().ui();
+  }
+  if (ImGui::CollapsingHeader("Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
+  if (!session.exercises().empty() && ImGui::CollapsingHeader("Exercises", ImGuiTreeNodeFlags_DefaultOpen))
+    exerciseStatus(session);
+  if (ImGui::CollapsingHeader("Scene file")) sceneFileControls(session, ui);
+  if (ImGui::CollapsingHeader("View")) {
+    ImGui::Checkbox("lecture mode (L)", &ui.lecture);
+    if (ImGui::Button("Frame scene (F)")) ui.frameRequested = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Help (F1)")) ui.showHelp = !ui.showHelp;
+  }
+  if (!session.message().empty()) ImGui::TextDisabled("%s", session.message().c_str());
+  ImGui::End();
+}
+
+void plotPanel(LabSession& session) {
+  const auto& plotted = session.settings().plotted;
+  if (plotted.empty()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float height = ImGui::GetFontSize() * 5.0f;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 8, display.y - 8), ImGuiCond_Always, ImVec2(1, 1));
+  // An explicit size: an auto-fitted axis set every frame would hide the window's contents.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float windowHeight = static_cast<float>(plotted.size()) * (height + style.ItemSpacing.y) +
+                             ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y;
+  ImGui::SetNextWindowSize(ImVec2(display.x * 0.38f, windowHeight), ImGuiCond_Always);
+  ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  for (const std::string& name : plotted) {
+    const std::vector<float> series = session.plots().series(name);
+    if (series.empty()) continue;
+    const auto [lo, hi] = std::minmax_element(series.begin(), series.end());
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%s = %.4g  [%.3g, %.3g]", name.c_str(), series.back(), *lo, *hi);
+    ImGui::PlotLines(("##" + name).c_str(), series.data(), static_cast<int>(series.size()), 0, overlay, FLT_MAX,
+                     FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, height));
+  }
+  ImGui::End();
+}
+
+void banners(LabSession& session) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  std::string text;
+  ImVec4 colour = kAlertRed;
+  if (const auto& guard = session.runner().guardMessage()) {
+    text = *guard;
+  } else if (const auto stubs = exercises::notImplementedTags(); !stubs.empty()) {
+    for (const std::string& tag : stubs) text += (text.empty() ? "" : ", ") + tag;
+    text += " not implemented: this lab runs with a stub. Complete the starred TODO block, then ./pba grade.";
+    colour = kWarnOrange;
+  }
+  if (text.empty()) return;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f + 100, 10), ImGuiCond_Always, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowSize(ImVec2(std::min(display.x * 0.55f, 900.0f), 0), ImGuiCond_Always);
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
+  ImGui::Begin("##banner", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::End();
+  ImGui::PopStyleColor(2);
+}
+
+void helpOverlay(UiState& ui) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::Begin("Keys and mouse (F1 or H closes)", &ui.showHelp,
+               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+  for (const char* line : kKeys) ImGui::TextUnformatted(line);
+  ImGui::End();
+}
+
+}  // namespace
+
+const char* const* keyBindings(int* count) {
+  *count = static_cast<int>(sizeof kKeys / sizeof kKeys[0]);
+  return kKeys;
+}
+
+float panelWidthPixels() { return kPanelWidth * ImGui::GetFontSize() / 16.0f + 8.0f; }
+
+void drawLabUi(LabSession& session, UiState& ui) {
+  banners(session);
+  if (ui.showHelp) helpOverlay(ui);
+  if (ui.hideUi) return;
+  mainPanel(session, ui);
+  plotPanel(session);
+}
+
+}  // namespace pba::app

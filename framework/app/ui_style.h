@@ -1,0 +1,20 @@
+#pragma once
+// Fonts and the two ImGui styles of the labs: the normal one and lecture mode (large fonts, high
+// contrast, for projectors). The UI scale follows the monitor's content scale.
+struct ImFont;
+
+namespace pba::app {
+
+struct UiFonts {
+  ImFont* regular = nullptr;  ///< DejaVu Sans at 16 px × content scale (ImGui's default font if missing)
+  ImFont* lecture = nullptr;  ///< the same face at 28 px × content scale
+  float contentScale = 1.0f;
+  int appliedStyle = -1;      ///< 0 normal, 1 lecture, -1 none yet
+};
+
+/// Loads the fonts into the current ImGui context (before the first frame).
+UiFonts loadUiFonts(float contentScale);
+/// Applies the normal or the lecture style; cheap when nothing changed.
+void applyUiStyle(UiFonts& fonts, bool lecture);
+
+}  // namespace pba::app

@@ -1,0 +1,201 @@
+// Window mode of the lab runner: GLFW window, renderer, ImGui panels, keys and mouse, fonts and
+// lecture mode, persisted settings, screenshots. With --screenshot it renders a fixed number of
+// frames at exactly 1/60 s of simulated time each (deterministic), saves the PNG and exits.
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include "app/lab.h"
+#include "app/lab_session.h"
+#include "app/lab_ui.h"
+#include "app/metrics_report.h"
+#include "app/scene_draw.h"
+#include "app/scene_registry.h"
+#include "app/ui_style.h"
+#include "app/window_input.h"
+#include "graphics/debug_renderer.h"
+#include "graphics/renderer.h"
+#include "graphics/screenshot.h"
+#include "graphics/window.h"
+
+namespace pba::app {
+namespace {
+
+constexpr int kMaxStepsPerFrame = 2000;  // bounds one frame's physics so the window stays responsive
+constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame (dragging the window) never jumps far
+
+struct ImGuiContextGuard {
+  ImGuiContextGuard(GLFWwindow* window, bool useIni) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    if (!useIni) ImGui::GetIO().IniFilename = nullptr;
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+  }
+  ~ImGuiContextGuard() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  ImGuiContextGuard(const ImGuiContextGuard&) = delete;
+  ImGuiContextGuard& operator=(const ImGuiContextGuard&) = delete;
+};
+
+void drawLabels(const graphics::DebugRenderer& debug, const graphics::OrbitCamera& camera, float w, float h) {
+  ImDrawList* list = ImGui::GetBackgroundDrawList();
+  for (const graphics::ScreenLabel& label : debug.projectLabels(camera, w, h)) {
+    const ImU32 colour = ImGui::ColorConvertFloat4ToU32(ImVec4(label.color.r, label.color.g, label.color.b, label.color.a));
+    list->AddText(ImVec2(label.pixel.x, label.pixel.y), colour, label.text.c_str());
+  }
+}
+
+std::string timestampedScreenshotName(const std::string& lab, const std::string& scene) {
+  char stamp[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  return "pba-" + lab + "-" + scene + "-" + stamp + ".png";
+}
+
+// Fits the scene in view; with the panel shown, shifts it right so the panel does not cover it.
+void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 viewport, float panelPixels) {
+  const float aspect = viewport.y > 0.0f ? viewport.x / viewport.y : 1.0f;
+  graphics::DebugRenderer probe;
+  SceneDraw draw(probe);
+  scene.draw(draw);
+  glm::vec3 lo, hi;
+  if (probe.bounds(&lo, &hi)) {
+    lo.y = std::min(lo.y, 0.0f);  // keep the ground in view
+    camera.frame(lo, hi, aspect);
+    camera.zoom(-2.0f);  // a margin around the scene: room to move
+    camera.pan(0.5f * panelPixels, 0.0f, viewport);
+  }
+}
+
+}  // namespace
+
+int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner) {
+  const bool capture = !options.screenshot.empty();
+  const std::string settingsDir = capture ? std::string() : settingsDirectory(lab);
+  LabSession session(lab, runner, options.seed);
+  session.settings() = loadLabSettings(settingsDir);
+  session.setExercises(loadExercises(std::string(PBA_RESOURCE_DIR) + "/exercises.tsv", lab));
+  if (!capture && options.scene.empty() && !session.settings().lastScene.empty()) {
+    const int index = sceneIndex(session.settings().lastScene);
+    if (index >= 0) session.switchScene(index);
+  }
+  session.settings().lastScene = runner.sceneName();
+  if (session.settings().plotted.empty()) session.settings().plotted = runner.scene().defaultPlots();
+
+  graphics::WindowDesc desc;
+  desc.title = "PBA Labs - " + lab;
+  desc.width = capture ? 1280 : session.settings().windowWidth;
+  desc.height = capture ? 720 : session.settings().windowHeight;
+  desc.vsync = !capture;
+  std::string error;
+  std::unique_ptr<graphics::Window> window = graphics::Window::create(desc, &error);
+  if (!window) {
+    std::cerr << "pba-" << lab << ": " << error << '\n';
+    return kExitInternal;
+  }
+  std::unique_ptr<graphics::Renderer> renderer = graphics::Renderer::create(std::string(PBA_RESOURCE_DIR) + "/shaders", &error);
+  if (!renderer) {
+    std::cerr << "pba-" << lab << ": " << error << '\n';
+    return kExitInternal;
+  }
+
+  std::string iniPath = settingsDir.empty() ? std::string() : settingsDir + "/imgui.ini";
+  if (!iniPath.empty()) std::filesystem::create_directories(settingsDir);
+  ImGuiContextGuard imgui(window->handle(), !iniPath.empty());
+  if (!iniPath.empty()) ImGui::GetIO().IniFilename = iniPath.c_str();
+  UiFonts fonts = loadUiFonts(window->contentScale().y);
+
+  UiState ui;
+  ui.lecture = options.lecture || (!capture && session.settings().lecture);
+  graphics::OrbitCamera camera;
+  graphics::DebugRenderer debug;
+  WindowInput input;
+  const long captureFrames = options.frameCount();
+  long frame = 0;
+  auto last = std::chrono::steady_clock::now();
+  int exitCode = kExitOk;
+
+  while (!window->shouldClose()) {
+    graphics::Window::pollEvents();
+    const auto now = std::chrono::steady_clock::now();
+    const double wallSeconds = std::chrono::duration<double>(now - last).count();
+    last = now;
+    ui.frameMs = wallSeconds * 1000.0;
+
+    const glm::ivec2 fb = window->framebufferSize();
+    const glm::ivec2 ws = window->windowSize();
+    applyUiStyle(fonts, ui.lecture);
+    renderer->lectureMode(ui.lecture);
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    if (ui.lecture && fonts.lecture) ImGui::PushFont(fonts.lecture);
+
+    if (!capture) input.update(session, ui, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
+    if (session.takeFrameRequest() || ui.frameRequested) {
+      frameCamera(camera, runner.scene(), glm::vec2(ws), ui.hideUi ? 0.0f : panelWidthPixels());
+      ui.frameRequested = false;
+    }
+    runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds), capture ? -1 : kMaxStepsPerFrame);
+    session.recordPlots();
+
+    renderer->beginFrame(camera, fb.x, fb.y);
+    SceneDraw draw(debug);
+    runner.scene().draw(draw);
+    debug.flush(*renderer);
+    drawLabels(debug, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
+    debug.clear();
+    drawLabUi(session, ui);
+    if (ui.lecture && fonts.lecture) ImGui::PopFont();
+    ImGui::Render();
+    renderer->endFrame();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    ++frame;
+    const bool captureNow = capture && frame >= captureFrames;
+    if (ui.screenshotRequested || captureNow) {
+      const std::string path = captureNow ? options.screenshot : timestampedScreenshotName(lab, runner.sceneName());
+      if (!graphics::saveScreenshot(path, fb.x, fb.y, &error)) {
+        std::cerr << "pba-" << lab << ": " << error << '\n';
+        exitCode = kExitBadInput;
+      } else {
+        session.setMessage("Screenshot saved: " + path);
+      }
+      ui.screenshotRequested = false;
+    }
+    window->swapBuffers();
+    if (captureNow) break;
+  }
+
+  if (capture && !options.metrics.empty()) {
+    nlohmann::json report = metricsReport(lab, runner, frame);
+    report["gl_renderer"] = window->glRenderer();
+    if (Status s = writeMetrics(report, options.metrics); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+  }
+  if (!capture) {
+    const glm::ivec2 size = window->windowSize();
+    session.settings().windowWidth = size.x;
+    session.settings().windowHeight = size.y;
+    session.settings().lecture = ui.lecture;
+    saveLabSettings(settingsDir, session.settings());
+  }
+  return exitCode;
+}
+
+}  // namespace pba::app

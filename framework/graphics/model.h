@@ -1,0 +1,79 @@
+// Model: an Assimp import turned into plain CPU data (no GL needed to load, so headless code and tests
+// use it too): meshes with up to 4 normalised bone weights per vertex, the node hierarchy (parents
+// always before children), bones with their offset (inverse bind) matrices, and animations with key
+// times in seconds. Pose math lives in skinning.h.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pba::graphics {
+
+inline constexpr int kMaxBonesPerVertex = 4;
+inline constexpr int kMaxSkinningBones = 128;  ///< size of the shader's bone array
+
+struct ModelMesh {
+  std::string name;
+  std::vector<glm::vec3> positions;    ///< mesh space
+  std::vector<glm::vec3> normals;      ///< unit
+  std::vector<std::uint32_t> indices;  ///< triangles
+  std::vector<glm::ivec4> boneIds;     ///< indices into Model::bones (0 where the weight is 0); empty if unskinned
+  std::vector<glm::vec4> boneWeights;  ///< sum to 1 per vertex when skinned; empty if unskinned
+  int node = -1;                       ///< node that instances the mesh (its global transform places it when unskinned)
+  glm::vec4 color{0.8f, 0.8f, 0.8f, 1.0f};  ///< material diffuse colour (sRGB)
+
+  bool skinned() const { return !boneWeights.empty(); }
+};
+
+struct ModelNode {
+  std::string name;
+  int parent = -1;           ///< index in Model::nodes, -1 for the root; always < own index
+  glm::mat4 local{1.0f};     ///< transform relative to the parent (bind / rest pose)
+};
+
+struct ModelBone {
+  std::string name;
+  int node = -1;             ///< node whose global transform drives the bone
+  glm::mat4 offset{1.0f};    ///< inverse bind matrix: mesh space -> bone space at bind pose
+};
+
+template <typename T>
+struct Key {
+  float time = 0.0f;  ///< s
+  T value{};
+};
+
+struct NodeChannel {
+  int node = -1;
+  std::vector<Key<glm::vec3>> positions;
+  std::vector<Key<glm::quat>> rotations;
+  std::vector<Key<glm::vec3>> scales;
+};
+
+struct Animation {
+  std::string name;
+  float duration = 0.0f;  ///< s
+  std::vector<NodeChannel> channels;
+};
+
+struct Model {
+  std::string path;
+  std::vector<ModelMesh> meshes;
+  std::vector<ModelNode> nodes;
+  std::vector<ModelBone> bones;
+  std::vector<Animation> animations;
+
+  int findNode(const std::string& name) const;  ///< -1 when absent
+  int findBone(const std::string& name) const;  ///< -1 when absent
+};
+
+/// Loads any format Assimp reads (glTF, FBX, Collada, BVH, OBJ, ...). On failure returns nullopt and
+/// sets *error to "<path>: <reason>" (Assimp's own message where it has one). Never throws.
+std::optional<Model> loadModel(const std::string& path, std::string* error);
+
+}  // namespace pba::graphics

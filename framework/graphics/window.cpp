@@ -1,0 +1,134 @@
+// Window: GLFW initialisation (reference counted), OpenGL 3.3 core forward-compatible context, GLEW.
+#include "graphics/window.h"
+
+#include <GL/glew.h>
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+
+namespace pba::graphics {
+namespace {
+
+int g_glfwUsers = 0;
+std::string g_lastGlfwError;
+
+void onGlfwError(int code, const char* description) {
+  g_lastGlfwError = std::string(description ? description : "unknown") + " (GLFW error " + std::to_string(code) + ")";
+}
+
+bool hasDisplay() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 && *x11) || (wayland && *wayland);
+}
+
+bool acquireGlfw(std::string* error) {
+  if (g_glfwUsers == 0) {
+    glfwSetErrorCallback(onGlfwError);
+    if (!hasDisplay()) {
+      if (error) *error = "no display (DISPLAY is not set): run under xvfb-run -a or use --headless";
+      return false;
+    }
+    if (glfwInit() != GLFW_TRUE) {
+      if (error) *error = "cannot initialise GLFW: " + g_lastGlfwError + "; run under xvfb-run -a or use --headless";
+      return false;
+    }
+  }
+  ++g_glfwUsers;
+  return true;
+}
+
+void releaseGlfw() {
+  if (g_glfwUsers > 0 && --g_glfwUsers == 0) glfwTerminate();
+}
+
+GLFWwindow* openWindow(const WindowDesc& desc, int samples) {
+  glfwDefaultWindowHints();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_VISIBLE, desc.visible ? GLFW_TRUE : GLFW_FALSE);
+  glfwWindowHint(GLFW_SAMPLES, samples);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+  return glfwCreateWindow(desc.width, desc.height, desc.title.c_str(), nullptr, nullptr);
+}
+
+}  // namespace
+
+std::unique_ptr<Window> Window::create(const WindowDesc& desc, std::string* error) {
+  if (!acquireGlfw(error)) return nullptr;
+  std::unique_ptr<Window> window(new Window());
+  window->window_ = openWindow(desc, desc.samples);
+  if (!window->window_ && desc.samples > 0) window->window_ = openWindow(desc, 0);  // no MSAA visual
+  if (!window->window_) {
+    if (error) {
+      *error = "cannot create an OpenGL 3.3 core window: " + g_lastGlfwError +
+               "; update the GL driver (Mesa >= 10), try LIBGL_ALWAYS_SOFTWARE=1, or use --headless";
+    }
+    releaseGlfw();
+    window.reset();  // window_ is null: the destructor must not release GLFW a second time
+    return nullptr;
+  }
+  glfwMakeContextCurrent(window->window_);
+  glewExperimental = GL_TRUE;
+  const GLenum glewStatus = glewInit();
+  // GLEW 2.x may return GLEW_ERROR_NO_GLX_DISPLAY on EGL/Wayland contexts although GL works.
+  if (glewStatus != GLEW_OK && glGenVertexArrays == nullptr) {
+    if (error) *error = std::string("cannot load OpenGL functions (GLEW): ") +
+                        reinterpret_cast<const char*>(glewGetErrorString(glewStatus));
+    return nullptr;
+  }
+  while (glGetError() != GL_NO_ERROR) {
+  }  // glewInit leaves a GL_INVALID_ENUM behind in core profiles
+  glfwSwapInterval(desc.vsync ? 1 : 0);
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  window->samples_ = samples;
+  if (samples > 0) glEnable(GL_MULTISAMPLE);
+  return window;
+}
+
+Window::~Window() {
+  if (window_) {
+    glfwDestroyWindow(window_);
+    releaseGlfw();
+  }
+}
+
+glm::ivec2 Window::framebufferSize() const {
+  glm::ivec2 size(0);
+  glfwGetFramebufferSize(window_, &size.x, &size.y);
+  return size;
+}
+
+glm::ivec2 Window::windowSize() const {
+  glm::ivec2 size(0);
+  glfwGetWindowSize(window_, &size.x, &size.y);
+  return size;
+}
+
+glm::vec2 Window::contentScale() const {
+  glm::vec2 scale(1.0f);
+  glfwGetWindowContentScale(window_, &scale.x, &scale.y);
+  return scale;
+}
+
+bool Window::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+void Window::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }
+void Window::swapBuffers() { glfwSwapBuffers(window_); }
+void Window::pollEvents() { glfwPollEvents(); }
+void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+void Window::makeCurrent() { glfwMakeContextCurrent(window_); }
+
+std::string Window::glRenderer() const {
+  const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return text ? text : "";
+}
+
+std::string Window::glVersion() const {
+  const auto* text = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return text ? text : "";
+}
+
+}  // namespace pba::graphics

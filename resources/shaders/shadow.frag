@@ -1,0 +1,3 @@
+#version 330 core
+// Shadow depth pass: depth only.
+void main() {}

@@ -1,0 +1,120 @@
+// Checks used by the lab smoke tests:
+//   pba_lab_check metrics FILE LAB [SCENE]   the metrics JSON has the shape of DESIGN.md §4
+//   pba_lab_check same A B                   two metrics files agree except for timings
+//   pba_lab_check image FILE.png             the screenshot is not blank
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "graphics/screenshot.h"
+
+namespace {
+using nlohmann::json;
+
+bool load(const std::string& path, json& out) {
+  std::ifstream in(path);
+  if (!in) {
+    std::cerr << path << ": cannot open\n";
+    return false;
+  }
+  try {
+    out = json::parse(in);
+  } catch (const std::exception& e) {
+    std::cerr << path << ": not JSON: " << e.what() << '\n';
+    return false;
+  }
+  return true;
+}
+
+int checkMetrics(const std::string& path, const std::string& lab, const std::string& scene) {
+  json m;
+  if (!load(path, m)) return 1;
+  auto bad = [&](const std::string& what) {
+    std::cerr << path << ": " << what << "\n" << m.dump(2) << '\n';
+    return 1;
+  };
+  if (!m.is_object()) return bad("not an object");
+  if (m.value("lab", "") != lab) return bad("lab is not '" + lab + "'");
+  if (!m.contains("scene") || !m["scene"].is_string()) return bad("scene missing");
+  if (!scene.empty() && m["scene"] != scene) return bad("scene is not '" + scene + "'");
+  if (!m.contains("frames") || !m["frames"].is_number_integer() || m["frames"].get<long>() < 1) return bad("frames missing or < 1");
+  if (!m.contains("sim_time_s") || !m["sim_time_s"].is_number() || !(m["sim_time_s"].get<double>() > 0.0))
+    return bad("sim_time_s missing or not > 0");
+  for (const char* k : {"median", "p95", "max"}) {
+    if (!m.contains("step_ms") || !m["step_ms"].contains(k) || !m["step_ms"][k].is_number() || m["step_ms"][k].get<double>() < 0.0)
+      return bad(std::string("step_ms.") + k + " missing or negative");
+  }
+  if (!(m["step_ms"]["median"].get<double>() <= m["step_ms"]["p95"].get<double>() &&
+        m["step_ms"]["p95"].get<double>() <= m["step_ms"]["max"].get<double>()))
+    return bad("step_ms must satisfy median <= p95 <= max");
+  if (m.value("finite", false) != true) return bad("finite is not true");
+  if (!m.contains(lab) || !m[lab].is_object() || m[lab].empty()) return bad("no scene metrics under '" + lab + "'");
+  for (const auto& [key, value] : m[lab].items()) {
+    if (value.is_null()) return bad("scene metric " + key + " is null (non-finite)");
+    if (value.is_number_float() && !std::isfinite(value.get<double>())) return bad("scene metric " + key + " is not finite");
+  }
+  return 0;
+}
+
+// Removes wall-clock measurements, which legitimately differ between runs.
+void dropTimings(json& j) {
+  if (!j.is_object()) return;
+  for (auto it = j.begin(); it != j.end();) {
+    const std::string& key = it.key();
+    auto endsWith = [&](const char* suffix) {
+      const std::string s(suffix);
+      return key.size() >= s.size() && key.compare(key.size() - s.size(), s.size(), s) == 0;
+    };
+    // By convention timing metrics end in _ms, _us or _per_s (docs/architecture.md, "Metrics").
+    const bool timing = endsWith("_ms") || endsWith("_us") || endsWith("_per_s") || key == "gl_renderer";
+    if (timing) {
+      it = j.erase(it);
+    } else {
+      dropTimings(*it);
+      ++it;
+    }
+  }
+}
+
+int checkSame(const std::string& a, const std::string& b) {
+  json ja, jb;
+  if (!load(a, ja) || !load(b, jb)) return 1;
+  dropTimings(ja);
+  dropTimings(jb);
+  if (ja == jb) return 0;
+  std::cerr << "metrics differ:\n" << json::diff(ja, jb).dump(2) << '\n';
+  return 1;
+}
+
+int checkImage(const std::string& path) {
+  std::string error;
+  pba::graphics::ImageStats s;
+  const pba::graphics::ImageStats* stats = &s;
+  if (!pba::graphics::imageStats(path, &s, &error)) {
+    std::cerr << error << '\n';
+    return 1;
+  }
+  std::cout << path << ": " << stats->width << "x" << stats->height << ", " << stats->distinctColors
+            << " colours, luminance stddev " << stats->luminanceStdDev << '\n';
+  // A blank or cleared-only frame has a handful of colours and almost no contrast; a lit scene with
+  // a grid, shadows and panels has thousands of colours and a standard deviation well above 10.
+  if (stats->distinctColors < 64 || stats->luminanceStdDev < 8.0) {
+    std::cerr << path << ": looks blank\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string mode = argc > 1 ? argv[1] : "";
+  if (mode == "metrics" && (argc == 4 || argc == 5)) return checkMetrics(argv[2], argv[3], argc == 5 ? argv[4] : "");
+  if (mode == "same" && argc == 4) return checkSame(argv[2], argv[3]);
+  if (mode == "image" && argc == 3) return checkImage(argv[2]);
+  std::cerr << "usage: pba_lab_check metrics FILE LAB [SCENE] | same A B | image FILE.png\n";
+  return 2;
+}

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# One smoke check of one lab executable (registered per lab by tests/labs/CMakeLists.txt).
+# Usage: lab_smoke.sh CHECK LAB EXE CHECKER WORK_DIR SCENE_DIR
+set -uo pipefail
+check="$1" lab="$2" exe="$3" checker="$4" work="$5" scene_dir="$6"
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL [$lab/$check]: $*"; exit 1; }
+
+# expect_exit CODE PATTERN ARGS...: runs the lab, checks the exit code and that stderr matches PATTERN.
+expect_exit() {
+  local want="$1" pattern="$2"; shift 2
+  "$exe" "$@" >"$work/out.txt" 2>"$work/err.txt"
+  local got=$?
+  [[ $got -eq $want ]] || fail "pba-$lab $* exited $got, expected $want; stderr: $(cat "$work/err.txt")"
+  if [[ -n "$pattern" ]]; then
+    grep -qE -- "$pattern" "$work/err.txt" || fail "pba-$lab $*: stderr does not match '$pattern': $(cat "$work/err.txt")"
+    [[ $(wc -l <"$work/err.txt") -eq 1 ]] || fail "pba-$lab $*: the error must be one line: $(cat "$work/err.txt")"
+  fi
+  echo "ok: pba-$lab $* -> $got"
+}
+
+scenes() { "$exe" --list-scenes | awk '{print $1}'; }
+
+case "$check" in
+  help)
+    "$exe" --help >"$work/help.txt" || fail "--help exited non-zero"
+    grep -q "Usage: pba-$lab" "$work/help.txt" || fail "--help prints no usage"
+    [[ -n "$(scenes)" ]] || fail "--list-scenes lists nothing"
+    echo "ok: --help and --list-scenes"
+    ;;
+  bad-arguments)
+    expect_exit 2 "unknown option '--bogus'" --bogus
+    expect_exit 2 "--frames" --headless --frames abc
+    expect_exit 2 "--dt" --headless --dt -1
+    expect_exit 2 "unknown scene 'no-such-scene'" --headless --scene no-such-scene
+    expect_exit 2 "no-such-param" --headless --set no-such-param=1
+    expect_exit 2 "missing value" --headless --scene
+    ;;
+  headless)
+    for s in $(scenes); do
+      "$exe" --headless --scene "$s" --frames 120 --metrics "$work/$s.json" 2>"$work/$s.err" || fail "scene $s exited $?: $(cat "$work/$s.err")"
+      "$checker" metrics "$work/$s.json" "$lab" "$s" || fail "scene $s: bad metrics"
+    done
+    "$exe" --headless --seconds 0.5 --metrics - >"$work/stdout.json" || fail "--metrics - failed"
+    "$checker" metrics "$work/stdout.json" "$lab" "" || fail "--metrics - wrote bad JSON"
+    echo "ok: every scene runs headless with valid metrics"
+    ;;
+  determinism)
+    for s in $(scenes); do
+      "$exe" --headless --scene "$s" --frames 90 --seed 7 --metrics "$work/a.json" || fail "run a of $s"
+      "$exe" --headless --scene "$s" --frames 90 --seed 7 --metrics "$work/b.json" || fail "run b of $s"
+      "$checker" same "$work/a.json" "$work/b.json" || fail "scene $s: two identical runs differ"
+    done
+    echo "ok: identical runs give identical metrics"
+    ;;
+  bad-scene-file)
+    first="$(scenes | head -n 1)"
+    printf '{\n  "lab": "%s",\n  "scene": "%s",,\n}\n' "$lab" "$first" >"$work/syntax.json"
+    expect_exit 2 "syntax.json: line 3" --headless --scene "$work/syntax.json"
+    printf '{"lab": "%s", "scene": "%s", "params": {"no_such_param": 1}}\n' "$lab" "$first" >"$work/field.json"
+    expect_exit 2 "field.json: params.no_such_param" --headless --scene "$work/field.json"
+    printf '{"lab": "%s", "scene": "%s", "params": {"gravity": 1e9}}\n' "$lab" "$first" >"$work/range.json"
+    "$exe" --headless --scene "$first" --set gravity=1 --frames 1 >/dev/null 2>&1 &&
+      expect_exit 2 "range.json: params.gravity: must be in" --headless --scene "$work/range.json"
+    printf '{"lab": "other-lab", "scene": "%s"}\n' "$first" >"$work/lab.json"
+    expect_exit 2 "lab.json: lab:" --headless --scene "$work/lab.json"
+    expect_exit 2 "missing.json: cannot open" --headless --scene "$work/missing.json"
+    ;;
+  scene-files)
+    shopt -s nullglob
+    files=("$scene_dir"/*.json)
+    for f in "${files[@]}"; do
+      "$exe" --headless --scene "$f" --frames 30 --metrics "$work/m.json" 2>"$work/err.txt" || fail "$f: $(cat "$work/err.txt")"
+      "$checker" metrics "$work/m.json" "$lab" "" || fail "$f: bad metrics"
+    done
+    echo "ok: ${#files[@]} shipped scene files load"
+    ;;
+  screenshot)
+    run=("$exe")
+    [[ -z "${DISPLAY:-}" ]] && run=(xvfb-run -a -s "-screen 0 1280x720x24" "$exe")
+    for s in $(scenes); do
+      "${run[@]}" --scene "$s" --frames 30 --screenshot "$work/$s.png" --metrics "$work/$s.json" 2>"$work/$s.err" ||
+        fail "scene $s: screenshot run exited $?: $(cat "$work/$s.err")"
+      "$checker" image "$work/$s.png" || fail "scene $s: the screenshot looks blank"
+      "$checker" metrics "$work/$s.json" "$lab" "$s" || fail "scene $s: bad metrics"
+    done
+    echo "ok: screenshots of every scene are not blank"
+    ;;
+  *) fail "unknown check $check" ;;
+esac

@@ -1,0 +1,155 @@
+# Functions behind ./pba. Sourced, not run. Every command installs what it needs, configures and
+# builds incrementally with the CMake presets, then does its work.
+
+PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-dev libimgui-dev
+  libassimp-dev nlohmann-json3-dev libstb-dev googletest libgtest-dev libbenchmark-dev
+  xvfb xauth assimp-testmodels fonts-dejavu-core)
+PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+
+pba_say() { printf '\033[1m[pba]\033[0m %s\n' "$*" >&2; }
+pba_die() { printf 'pba: %s\n' "$*" >&2; exit "${2:-1}"; }
+
+pba_missing_packages() {
+  local p missing=()
+  for p in "${PBA_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+  echo "${missing[@]:-}"
+}
+
+# Installs missing system packages with apt-get (sudo when not root; non-interactive).
+pba_ensure_packages() {
+  [[ "${PBA_NO_INSTALL:-0}" == 1 ]] && return 0
+  command -v dpkg-query >/dev/null || { pba_say "not a Debian/Ubuntu system: install the packages of README.md by hand"; return 0; }
+  local missing
+  missing="$(pba_missing_packages)"
+  [[ -z "${missing// /}" ]] && return 0
+  local sudo=()
+  if [[ $(id -u) -ne 0 ]]; then
+    command -v sudo >/dev/null || pba_die "missing packages ($missing) and no sudo: install them as root"
+    sudo=(sudo)
+  fi
+  pba_say "installing: $missing"
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -qq >&2 || pba_die "apt-get update failed"
+  # shellcheck disable=SC2086
+  "${sudo[@]}" apt-get install -y -qq --no-install-recommends $missing >&2 || pba_die "apt-get install failed for: $missing"
+}
+
+# pba_build PRESET [TARGET...]: configure once, then build incrementally.
+pba_build() {
+  local preset="$1"; shift
+  local dir="$ROOT/build/$preset"
+  if [[ ! -f "$dir/build.ninja" ]]; then
+    pba_say "configuring ($preset)"
+    cmake --preset "$preset" >&2 || pba_die "configure failed (./pba doctor lists what is missing)"
+  fi
+  local targets=()
+  local t
+  for t in "$@"; do targets+=(--target "$t"); done
+  pba_say "building ($preset${*:+: $*})"
+  cmake --build "$dir" -j "$PBA_JOBS" "${targets[@]}" >&2 || pba_die "build failed"
+}
+
+pba_list_labs() {
+  local d
+  for d in "$ROOT"/labs/*/; do
+    [[ -f "$d/CMakeLists.txt" ]] && basename "$d"
+  done
+}
+
+pba_has_display() { [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; }
+
+# Runs a command under Xvfb when there is no display.
+pba_with_display() {
+  if pba_has_display; then "$@"; else xvfb-run -a -s "-screen 0 1280x720x24" "$@"; fi
+}
+
+pba_cmd_run() {
+  local lab="hello"
+  if [[ $# -gt 0 && "$1" != -* ]]; then lab="$1"; shift; fi
+  [[ -f "$ROOT/labs/$lab/CMakeLists.txt" ]] || pba_die "unknown lab '$lab' (labs: $(pba_list_labs | tr '\n' ' '))" 2
+  pba_ensure_packages
+  pba_build release "pba-$lab"
+  local exe="$ROOT/build/release/bin/pba-$lab"
+  local arg
+  for arg in "$@"; do
+    case "$arg" in --headless | --help | -h | --list-scenes | --screenshot | --screenshot=*) exec "$exe" "$@" ;; esac
+  done
+  if pba_has_display; then
+    exec "$exe" "$@"
+  fi
+  mkdir -p "$ROOT/build/screenshots"
+  local png="$ROOT/build/screenshots/$lab.png"
+  pba_say "no display: rendering under Xvfb to a screenshot"
+  xvfb-run -a -s "-screen 0 1280x720x24" "$exe" "$@" --screenshot "$png" --metrics -
+  pba_say "screenshot written to $png"
+}
+
+pba_cmd_test() {
+  local preset="release"
+  while [[ $# -gt 0 ]]; do
+    case "$1" in
+      --preset) preset="${2:?--preset needs a value}"; shift 2 ;;
+      --preset=*) preset="${1#--preset=}"; shift ;;
+      *) break ;;
+    esac
+  done
+  pba_ensure_packages
+  pba_build "$preset"
+  pba_say "running the tests ($preset)"
+  ctest --preset "$preset" -j "$PBA_JOBS" "$@"
+}
+
+pba_cmd_grade() {
+  local preset="release"
+  [[ "${1:-}" == "--preset" ]] && { preset="${2:?}"; shift 2; }
+  pba_ensure_packages
+  pba_build "$preset" pba_physics_tests
+  bash "$ROOT/tools/grade.sh" "$ROOT/build/$preset" "$ROOT/resources/exercises.tsv"
+}
+
+pba_cmd_student_release() {
+  [[ $# -eq 1 ]] || pba_die "usage: ./pba student-release DIR" 2
+  bash "$ROOT/tools/student_release.sh" "$ROOT" "$1"
+}
+
+pba_cmd_bench() {
+  pba_ensure_packages
+  pba_build release
+  bash "$ROOT/tools/bench.sh" "$ROOT" "$ROOT/build/release" "$@"
+}
+
+pba_cmd_screenshots() {
+  pba_ensure_packages
+  pba_build release
+  bash "$ROOT/tools/screenshots.sh" "$ROOT" "$ROOT/build/release"
+}
+
+pba_cmd_doctor() {
+  local ok=1 missing
+  missing="$(pba_missing_packages)"
+  if [[ -n "${missing// /}" ]]; then
+    echo "packages: MISSING $missing  (./pba test installs them, or: sudo apt-get install $missing)"
+    ok=0
+  else
+    echo "packages: all ${#PBA_PACKAGES[@]} installed"
+  fi
+  if pba_has_display; then echo "display: ${DISPLAY:-$WAYLAND_DISPLAY}"; else echo "display: none (labs render under xvfb-run)"; fi
+  command -v xvfb-run >/dev/null && echo "xvfb-run: $(command -v xvfb-run)" || { echo "xvfb-run: MISSING (apt-get install xvfb)"; ok=0; }
+  local exe="$ROOT/build/release/bin/pba-hello"
+  if [[ -x "$exe" ]]; then
+    local tmp
+    tmp="$(mktemp -d)"
+    if pba_with_display "$exe" --screenshot "$tmp/doctor.png" --frames 1 --metrics "$tmp/m.json" >"$tmp/log" 2>&1; then
+      echo "OpenGL: $(grep -o '"gl_renderer": *"[^"]*"' "$tmp/m.json" | sed 's/.*: *//') (window and screenshot work)"
+    else
+      echo "OpenGL: FAILED to open a window: $(tail -n 1 "$tmp/log")"
+      ok=0
+    fi
+    rm -rf "$tmp"
+  else
+    echo "OpenGL: not checked (build first: ./pba run)"
+  fi
+  [[ $ok == 1 ]] && echo "doctor: all good" || { echo "doctor: problems found"; return 1; }
+}
