@@ -118,6 +118,7 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     } else if (const LabFlag* f = arg.rfind("--", 0) == 0 ? findLabFlag(arg.substr(2)) : nullptr) {
       if (!(s = next(v))) return Error{s.error()};
       o.overrides.emplace_back(f->param, v);
+      if (!f->impliesScene.empty()) o.impliedScene = f->impliesScene;
     } else {
       return Error{"unknown option '" + arg + "' (see --help)"};
     }

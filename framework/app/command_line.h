@@ -32,6 +32,8 @@ struct LabOptions {
   bool help = false;
   /// Parameter overrides in command line order: (name, text value).
   std::vector<std::pair<std::string, std::string>> overrides;
+  /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.
+  std::string impliedScene;
 
   /// Number of frames to run in headless and screenshot mode.
   long frameCount() const;

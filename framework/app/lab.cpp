@@ -32,7 +32,7 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
       if (Status s = runner.setDt(*loaded.value().dt); !s) return Error{o.scene + ": " + s.error()};
     }
   } else {
-    name = o.scene.empty() ? scenes().front().name : o.scene;
+    name = !o.scene.empty() ? o.scene : !o.impliedScene.empty() ? o.impliedScene : scenes().front().name;
     const SceneEntry* entry = findScene(name);
     if (!entry) return Error{"--scene: unknown scene '" + name + "' (see --list-scenes)"};
     scene = entry->create();

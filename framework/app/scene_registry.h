@@ -32,9 +32,12 @@ struct LabFlag {
   std::string flag;   ///< without dashes
   std::string param;  ///< parameter name it sets
   std::string help;
+  /// When set and no --scene is given, using the flag selects this scene (e.g. --targets K selects
+  /// the IK lab's "batch" scene).
+  std::string impliesScene;
 };
 const std::vector<LabFlag>& labFlags();
-bool registerLabFlag(std::string flag, std::string param, std::string help);
+bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene = {});
 
 }  // namespace pba::app
 
@@ -43,5 +46,5 @@ bool registerLabFlag(std::string flag, std::string param, std::string help);
 #define PBA_REGISTER_SCENE(category, name, Type)                                      \
   static const bool PBA_CONCAT(pbaSceneRegistered_, __LINE__) = ::pba::app::registerScene( \
       category, name, [] { return std::unique_ptr<::pba::app::Scene>(new Type()); })
-#define PBA_REGISTER_LAB_FLAG(flag, param, help) \
-  static const bool PBA_CONCAT(pbaFlagRegistered_, __LINE__) = ::pba::app::registerLabFlag(flag, param, help)
+#define PBA_REGISTER_LAB_FLAG(...) \
+  static const bool PBA_CONCAT(pbaFlagRegistered_, __LINE__) = ::pba::app::registerLabFlag(__VA_ARGS__)
