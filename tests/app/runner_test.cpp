@@ -1,0 +1,163 @@
+// The scene runner: fixed steps from an accumulator, pause and single step, substeps, the
+// instability guard, determinism; and the command line parser.
+#include <gtest/gtest.h>
+
+#include "app/command_line.h"
+#include "app/lab.h"
+#include "app/scene_registry.h"
+#include "app/scene_runner.h"
+#include "support/fp_traps.h"
+#include "test_scenes.h"
+
+PBA_REGISTER_SCENE("Test", "constant", pba::app::testing::ConstantVelocityScene);
+
+namespace pba::app {
+namespace {
+using testing::ConstantVelocityScene;
+
+ConstantVelocityScene& sceneOf(SceneRunner& r) { return static_cast<ConstantVelocityScene&>(r.scene()); }
+
+TEST(SceneRunner, TakesWholeFixedStepsAndCarriesTheRemainder) {
+  SceneRunner r;
+  ASSERT_TRUE(r.setDt(0.01).ok());
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  // 0.025 s → 2 steps with 0.005 s left over; another 0.025 s → 0.03 s in all: 3 more steps.
+  r.advanceFrame(0.025);
+  EXPECT_EQ(r.steps(), 2);
+  r.advanceFrame(0.025);
+  EXPECT_EQ(r.steps(), 5);
+  EXPECT_NEAR(sceneOf(r).x, 5 * 0.01 * 1.0, 1e-15);
+  EXPECT_NEAR(r.simTime(), 0.05, 1e-15);
+}
+
+TEST(SceneRunner, SixtyFramesOfOneSixtiethAtDefaultDtMakeOneSecond) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  for (int i = 0; i < 60; ++i) r.advanceFrame(kDisplayFrame);
+  EXPECT_EQ(r.steps(), static_cast<long>(std::lround(1.0 / r.dt())));
+  EXPECT_NEAR(r.simTime(), 1.0, 1e-12);
+}
+
+TEST(SceneRunner, PauseStopsTimeAndSingleStepAdvancesExactlyOneStep) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  r.setPaused(true);
+  r.advanceFrame(1.0);
+  EXPECT_EQ(r.steps(), 0);
+  r.singleStep();
+  EXPECT_EQ(r.steps(), 1);
+  EXPECT_EQ(sceneOf(r).stepsTaken, 1);
+}
+
+TEST(SceneRunner, SubstepsSplitEachStepAndTimeScaleSlowsTheClock) {
+  SceneRunner r;
+  ASSERT_TRUE(r.setDt(0.01).ok());
+  ASSERT_TRUE(r.setSubsteps(4).ok());
+  ASSERT_TRUE(r.setTimeScale(0.5).ok());
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  r.advanceFrame(0.1);  // 0.05 s of simulated time
+  EXPECT_EQ(r.steps(), 5);
+  EXPECT_EQ(sceneOf(r).stepsTaken, 20);
+  EXPECT_NEAR(sceneOf(r).x, 0.05, 1e-15);
+  EXPECT_FALSE(r.setSubsteps(0).ok());
+  EXPECT_FALSE(r.setTimeScale(5.0).ok());
+  EXPECT_FALSE(r.setDt(-1.0).ok());
+}
+
+TEST(SceneRunner, MaxStepsBoundsOneFrameAndDropsTheBacklog) {
+  SceneRunner r;
+  ASSERT_TRUE(r.setDt(0.001).ok());
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  r.advanceFrame(1.0, 10);
+  EXPECT_EQ(r.steps(), 10);
+  r.advanceFrame(0.0, 10);
+  EXPECT_EQ(r.steps(), 10) << "the dropped backlog must not be stepped later";
+}
+
+TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
+  pba::testing::FloatingPointTrapsOff traps;  // the scene makes a NaN on purpose
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  r.advanceFrame(0.1);
+  sceneOf(r).poison = true;
+  const long before = r.steps();
+  r.advanceFrame(0.1);
+  EXPECT_EQ(r.steps(), before + 1) << "caught within one step";
+  EXPECT_TRUE(r.paused());
+  EXPECT_FALSE(r.finite());
+  ASSERT_TRUE(r.guardMessage().has_value());
+  EXPECT_NE(r.guardMessage()->find("point position is not finite"), std::string::npos);
+  EXPECT_NE(r.guardMessage()->find("smaller time step"), std::string::npos);
+  sceneOf(r).poison = false;
+  r.reset();
+  EXPECT_FALSE(r.guardMessage().has_value());
+  EXPECT_TRUE(r.finite());
+}
+
+TEST(SceneRunner, RunawayEnergyPausesTheScene) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());  // energy 0.5 J at reset
+  sceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine
+  r.advanceFrame(0.1);
+  EXPECT_FALSE(r.paused());
+  sceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor * 2;
+  r.advanceFrame(0.1);
+  EXPECT_TRUE(r.paused());
+  ASSERT_TRUE(r.guardMessage().has_value());
+  EXPECT_NE(r.guardMessage()->find("runaway"), std::string::npos);
+}
+
+TEST(SceneRunner, UnknownSceneIsAnError) {
+  SceneRunner r;
+  const Status s = r.load("no-such", 1);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().find("unknown scene 'no-such'"), std::string::npos);
+}
+
+Result<LabOptions> parse(std::vector<const char*> args) {
+  args.insert(args.begin(), "pba-test");
+  return parseCommandLine(static_cast<int>(args.size()), args.data());
+}
+
+TEST(CommandLine, ParsesTheContractOfDesignSection4) {
+  auto r = parse({"--scene", "constant", "--headless", "--frames", "12", "--dt", "0.005", "--metrics", "-", "--seed", "9",
+                  "--lecture", "--set", "speed=2", "--substeps=3"});
+  ASSERT_TRUE(r.ok()) << r.error();
+  const LabOptions& o = r.value();
+  EXPECT_EQ(o.scene, "constant");
+  EXPECT_TRUE(o.headless);
+  EXPECT_EQ(o.frameCount(), 12);
+  EXPECT_EQ(*o.dt, 0.005);
+  EXPECT_EQ(o.metrics, "-");
+  EXPECT_EQ(o.seed, 9u);
+  EXPECT_TRUE(o.lecture);
+  EXPECT_EQ(*o.substeps, 3);
+  ASSERT_EQ(o.overrides.size(), 1u);
+  EXPECT_EQ(o.overrides[0], (std::pair<std::string, std::string>{"speed", "2"}));
+  EXPECT_EQ(parse({"--seconds", "1"}).value().frameCount(), 60);
+  EXPECT_EQ(parse({}).value().frameCount(), kDefaultHeadlessFrames);
+}
+
+TEST(CommandLine, BadArgumentsNameTheOption) {
+  EXPECT_EQ(parse({"--bogus"}).error(), "unknown option '--bogus' (see --help)");
+  EXPECT_NE(parse({"--frames", "0"}).error().find("--frames"), std::string::npos);
+  EXPECT_NE(parse({"--frames"}).error().find("missing value"), std::string::npos);
+  EXPECT_NE(parse({"--dt", "1"}).error().find("--dt"), std::string::npos);
+  EXPECT_NE(parse({"--set", "speed"}).error().find("NAME=VALUE"), std::string::npos);
+  EXPECT_NE(parse({"--frames", "3", "--seconds", "1"}).error().find("one or the other"), std::string::npos);
+  EXPECT_NE(parse({"--headless", "--screenshot", "x.png"}).error().find("--screenshot"), std::string::npos);
+  EXPECT_NE(parse({"--headless=yes"}).error().find("takes no value"), std::string::npos);
+}
+
+TEST(CommandLine, PrepareRunnerAppliesOverridesAndReportsBadOnes) {
+  SceneRunner r;
+  ASSERT_TRUE(prepareRunner("test", parse({"--scene", "constant", "--set", "speed=4"}).value(), r).ok());
+  EXPECT_EQ(sceneOf(r).speed, 4.0);
+  SceneRunner bad;
+  const Status s = prepareRunner("test", parse({"--scene", "constant", "--set", "speed=40"}).value(), bad);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.error().find("speed: must be in [0, 10]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pba::app

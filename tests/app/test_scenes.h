@@ -1,0 +1,51 @@
+#pragma once
+// Small scenes for the runner's tests: a constant-velocity point whose state is a closed form of
+// the step count, and a scene that produces NaN on demand (for the instability guard).
+#include <cmath>
+#include <limits>
+
+#include "app/scene.h"
+
+namespace pba::app::testing {
+
+/// x(t) = v t along x; every step adds v·dt, so x after n steps is exactly n·v·dt (up to rounding).
+class ConstantVelocityScene final : public Scene {
+ public:
+  ConstantVelocityScene() {
+    params_.real("speed", &speed, 0.0, 10.0, "m/s", "Speed of the point.");
+    params_.integer("count", &count, 1, 100, "", "An integer parameter.").needsReset();
+    params_.flag("visible", &visible, "A flag parameter.");
+    params_.choice("mode", &mode, {"first", "second", "third"}, "A choice parameter.");
+    params_.angle("heading", &heading, -180.0, 180.0, "An angle parameter (radians inside, degrees outside).");
+  }
+  std::string description() const override { return "A point moving at constant speed."; }
+  void reset() override {
+    x = 0.0;
+    stepsTaken = 0;
+  }
+  void step(Real dt) override {
+    x += speed * dt;
+    ++stepsTaken;
+    if (poison) x = std::numeric_limits<Real>::quiet_NaN();
+  }
+  void draw(DebugDraw& d) const override { d.sphere(Vec3(x, 0.5, 0.0), 0.1, colors::kBlue); }
+  nlohmann::json metrics() const override { return {{"x_m", x}, {"steps", stepsTaken}}; }
+  std::optional<std::string> nonFiniteState() const override {
+    if (!std::isfinite(x)) return "point position is not finite";
+    return std::nullopt;
+  }
+  std::optional<Real> energy() const override { return 0.5 * speed * speed + energyBoost; }
+  std::vector<Preset> presets() const override { return {{"fast", {{"speed", 5.0}}}, {"broken", {{"speed", 99.0}}}}; }
+
+  Real speed = 1.0;
+  int count = 3;
+  bool visible = true;
+  int mode = 0;
+  Real heading = 0.0;
+  Real x = 0.0;
+  int stepsTaken = 0;
+  bool poison = false;
+  Real energyBoost = 0.0;
+};
+
+}  // namespace pba::app::testing
