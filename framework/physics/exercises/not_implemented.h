@@ -19,9 +19,11 @@ std::vector<std::string> notImplementedTags();
 /// Forgets every record (tests use it).
 void clearNotImplemented();
 
-/// Records `tag` and hands back `safeDefault`: the one line a stub consists of.
-template <typename T>
-T notImplemented(std::string_view tag, T safeDefault) {
+/// Records `tag` and hands back `safeDefault`: the one line a stub consists of. The exercise's other
+/// inputs may be passed after it (ignored), so that the stub compiles without unused-parameter warnings:
+///   return exercises::notImplemented("HELLO-1", state, acceleration, h);
+template <typename T, typename... Inputs>
+T notImplemented(std::string_view tag, T safeDefault, const Inputs&... /*inputsTheSolutionUses*/) {
   markNotImplemented(tag);
   return safeDefault;
 }

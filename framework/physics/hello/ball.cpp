@@ -37,7 +37,7 @@ BallState eulerStep(const BallState& state, const Vec3& acceleration, Real h) {
   next.velocity = state.velocity + h * acceleration;
   return next;
   // END SOLUTION
-  // STUB: return exercises::notImplemented("HELLO-1", state);
+  // STUB: return exercises::notImplemented("HELLO-1", state, acceleration, h);
 }
 
 BounceResult bounceOffPlane(const BallState& state, Real radius, Real restitution, const Vec3& planePoint,
@@ -53,7 +53,7 @@ BounceResult bounceOffPlane(const BallState& state, Real radius, Real restitutio
   out.state.position += (radius - distance) * planeNormal;
   return out;
   // END SOLUTION
-  // STUB: return exercises::notImplemented("HELLO-2", BounceResult{state, false});
+  // STUB: return exercises::notImplemented("HELLO-2", BounceResult{state, false}, radius, restitution, planePoint, planeNormal);
 }
 
 BounceResult stepDrop(const BallDesc& d, const BallState& s, Real h) {

@@ -100,9 +100,14 @@ TEST(HELLO_2_GroundBounce, KeepsTheTangentialVelocityOnATiltedPlane) {
   EXPECT_NEAR(glm::dot(normal, r.state.position), 0.3, 1e-14);
 }
 
-TEST(HELLO_2_GroundBounce, LeavesBallsAboveThePlaneOrMovingAwayAlone) {
+TEST(HELLO_2_GroundBounce, BouncesOnlyBallsTouchingThePlaneAndMovingIntoIt) {
+  // Touching and moving in: bounces.
+  const BallState hitting{{0.0, 0.1, 0.0}, {0.0, -1.0, 0.0}};
+  EXPECT_TRUE(bounceOffPlane(hitting, 0.25, 0.8, Vec3(0.0), kUp).bounced);
+  // Above the plane: no contact yet.
   const BallState above{{0.0, 1.0, 0.0}, {0.0, -1.0, 0.0}};
   EXPECT_FALSE(bounceOffPlane(above, 0.25, 0.8, Vec3(0.0), kUp).bounced);
+  // Touching but already moving away (e.g. right after a bounce): left alone, or it would stick.
   const BallState leaving{{0.0, 0.1, 0.0}, {0.0, 1.0, 0.0}};
   const BounceResult r = bounceOffPlane(leaving, 0.25, 0.8, Vec3(0.0), kUp);
   EXPECT_FALSE(r.bounced);

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# ./pba screenshots: regenerates docs/images/LAB-SCENE.png from the labs themselves (under Xvfb
+# without a display). Usage: tools/screenshots.sh ROOT BUILD_DIR
+set -euo pipefail
+root="$1"
+build="$2"
+mkdir -p "$root/docs/images"
+run=()
+[[ -z "${DISPLAY:-}" ]] && run=(xvfb-run -a -s "-screen 0 1280x720x24")
+count=0
+for exe in "$build"/bin/pba-*; do
+  lab="${exe##*/pba-}"
+  for scene in $("$exe" --list-scenes | awk '{print $1}'); do
+    png="$root/docs/images/$lab-$scene.png"
+    "${run[@]}" "$exe" --scene "$scene" --frames "${PBA_SCREENSHOT_FRAMES:-150}" --screenshot "$png" >/dev/null
+    echo "wrote docs/images/$lab-$scene.png"
+    count=$((count + 1))
+  done
+done
+# The lecture-mode look, for the instructor guide.
+if [[ -x "$build/bin/pba-hello" ]]; then
+  "${run[@]}" "$build/bin/pba-hello" --scene spring --lecture --frames 150 --screenshot "$root/docs/images/hello-lecture.png" >/dev/null
+  echo "wrote docs/images/hello-lecture.png"
+  count=$((count + 1))
+fi
+echo "screenshots: $count images in docs/images"
