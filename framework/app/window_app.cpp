@@ -64,8 +64,10 @@ std::string timestampedScreenshotName(const std::string& lab, const std::string&
   return "pba-" + lab + "-" + scene + "-" + stamp + ".png";
 }
 
-// Fits the scene in view; with the panel shown, shifts it right so the panel does not cover it.
-void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 viewport, float panelPixels) {
+// Fits the scene in view; shifts it right of the panel and, when plots are shown, up from the
+// plot panel in the lower right corner, so that neither covers it.
+void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 viewport, float panelPixels,
+                 bool plotsShown) {
   const float aspect = viewport.y > 0.0f ? viewport.x / viewport.y : 1.0f;
   graphics::DebugRenderer probe;
   SceneDraw draw(probe);
@@ -75,7 +77,7 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
     lo.y = std::min(lo.y, 0.0f);  // keep the ground in view
     camera.frame(lo, hi, aspect);
     camera.zoom(-2.0f);  // a margin around the scene: room to move
-    camera.pan(0.5f * panelPixels, 0.0f, viewport);
+    camera.pan(0.5f * panelPixels, plotsShown ? -0.12f * viewport.y : 0.0f, viewport);
   }
 }
 
@@ -146,7 +148,8 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
 
     if (!capture) input.update(session, ui, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
     if (session.takeFrameRequest() || ui.frameRequested) {
-      frameCamera(camera, runner.scene(), glm::vec2(ws), ui.hideUi ? 0.0f : panelWidthPixels());
+      frameCamera(camera, runner.scene(), glm::vec2(ws), ui.hideUi ? 0.0f : panelWidthPixels(),
+                  !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }
     runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds), capture ? -1 : kMaxStepsPerFrame);
