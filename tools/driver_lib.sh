@@ -6,7 +6,9 @@ PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-d
   xvfb xauth assimp-testmodels fonts-dejavu-core)
 PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
-pba_say() { printf '\033[1m[pba]\033[0m %s\n' "$*" >&2; }
+pba_say() {
+  if [[ -t 2 ]]; then printf '\033[1m[pba]\033[0m %s\n' "$*" >&2; else printf '[pba] %s\n' "$*" >&2; fi
+}
 pba_die() { printf 'pba: %s\n' "$*" >&2; exit "${2:-1}"; }
 
 pba_missing_packages() {
