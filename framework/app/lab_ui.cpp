@@ -16,15 +16,22 @@ constexpr float kPanelWidth = 380.0f;  // [px at UI scale 1]
 const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
 const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
 
-const char* const kKeys[] = {
-    "Space / P   pause or resume",     "O           single step",
-    "R           reset the scene",     "[  ]        previous / next scene",
-    "1 - 9       scene presets",       "F1 / H      this help",
-    "F12         screenshot (PNG)",    "L           lecture mode (large, high contrast)",
-    "Tab         hide or show the UI", "F           frame the scene",
-    "Left drag   pick and drag",       "Right drag  orbit the camera",
-    "Middle drag or Shift + right drag   pan",
-    "Wheel       zoom",
+// Key, action: the help overlay's table (the same bindings in every lab, DESIGN.md §3).
+const char* const kKeys[][2] = {
+    {"Space / P", "pause or resume"},
+    {"O", "single step (hold to repeat)"},
+    {"R", "reset the scene"},
+    {"[  ]", "previous / next scene"},
+    {"1 - 9", "scene presets"},
+    {"F1 / H", "this help"},
+    {"F12", "screenshot (PNG in the working folder)"},
+    {"L", "lecture mode (large fonts, high contrast)"},
+    {"Tab", "hide or show the panels"},
+    {"F", "frame the scene"},
+    {"Left drag", "pick and drag an object"},
+    {"Right drag", "orbit the camera"},
+    {"Middle drag, Shift + right drag", "pan"},
+    {"Wheel", "zoom"},
 };
 
 void helpMarker(const std::string& text) {
@@ -230,20 +237,23 @@ void mainPanel(LabSession& session, UiState& ui) {
 }
 
 void plotPanel(LabSession& session) {
-  const auto& plotted = session.settings().plotted;
-  if (plotted.empty()) return;
+  // Only the chosen metrics this scene has (a plotted metric of another scene is kept, not shown).
+  std::vector<std::pair<std::string, std::vector<float>>> shown;
+  for (const std::string& name : session.settings().plotted) {
+    std::vector<float> series = session.plots().series(name);
+    if (!series.empty()) shown.emplace_back(name, std::move(series));
+  }
+  if (shown.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float height = ImGui::GetFontSize() * 5.0f;
   ImGui::SetNextWindowPos(ImVec2(display.x - 8, display.y - 8), ImGuiCond_Always, ImVec2(1, 1));
   // An explicit size: an auto-fitted axis set every frame would hide the window's contents.
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float windowHeight = static_cast<float>(plotted.size()) * (height + style.ItemSpacing.y) +
+  const float windowHeight = static_cast<float>(shown.size()) * (height + style.ItemSpacing.y) +
                              ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y;
   ImGui::SetNextWindowSize(ImVec2(display.x * 0.38f, windowHeight), ImGuiCond_Always);
   ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
-  for (const std::string& name : plotted) {
-    const std::vector<float> series = session.plots().series(name);
-    if (series.empty()) continue;
+  for (const auto& [name, series] : shown) {
     const auto [lo, hi] = std::minmax_element(series.begin(), series.end());
     char overlay[96];
     std::snprintf(overlay, sizeof overlay, "%s = %.4g  [%.3g, %.3g]", name.c_str(), series.back(), *lo, *hi);
@@ -280,16 +290,20 @@ void helpOverlay(UiState& ui) {
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
   ImGui::Begin("Keys and mouse (F1 or H closes)", &ui.showHelp,
                ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
-  for (const char* line : kKeys) ImGui::TextUnformatted(line);
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
+    for (const auto& [key, action] : kKeys) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(key);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(action);
+    }
+    ImGui::EndTable();
+  }
   ImGui::End();
 }
 
 }  // namespace
-
-const char* const* keyBindings(int* count) {
-  *count = static_cast<int>(sizeof kKeys / sizeof kKeys[0]);
-  return kKeys;
-}
 
 float panelWidthPixels() { return kPanelWidth * ImGui::GetFontSize() / 16.0f + 8.0f; }
 

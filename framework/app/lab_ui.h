@@ -24,7 +24,4 @@ void drawLabUi(LabSession& session, UiState& ui);
 /// Width of the main panel in pixels at the current font size (for camera framing).
 float panelWidthPixels();
 
-/// The key list shown by the help overlay and --help (one line per binding).
-const char* const* keyBindings(int* count);
-
 }  // namespace pba::app

@@ -1,7 +1,9 @@
 // Window mode of the lab runner: GLFW window, renderer, ImGui panels, keys and mouse, fonts and
 // lecture mode, persisted settings, screenshots. With --screenshot it renders a fixed number of
 // frames at exactly 1/60 s of simulated time each (deterministic), saves the PNG and exits.
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -31,6 +33,10 @@ namespace {
 
 constexpr int kMaxStepsPerFrame = 2000;  // bounds one frame's physics so the window stays responsive
 constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame (dragging the window) never jumps far
+
+// Ctrl+C in the terminal (SIGINT) or SIGTERM closes the window normally, so settings are saved.
+std::atomic<bool> gStopRequested{false};
+extern "C" void requestStop(int) { gStopRequested = true; }
 
 struct ImGuiContextGuard {
   ImGuiContextGuard(GLFWwindow* window, bool useIni) {
@@ -124,12 +130,15 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   graphics::OrbitCamera camera;
   graphics::DebugRenderer debug;
   WindowInput input;
+  input.install(window->handle());
   const long captureFrames = options.frameCount();
   long frame = 0;
   auto last = std::chrono::steady_clock::now();
   int exitCode = kExitOk;
 
-  while (!window->shouldClose()) {
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
+  while (!window->shouldClose() && !gStopRequested) {
     graphics::Window::pollEvents();
     const auto now = std::chrono::steady_clock::now();
     const double wallSeconds = std::chrono::duration<double>(now - last).count();
@@ -153,7 +162,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
       ui.frameRequested = false;
     }
     runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds), capture ? -1 : kMaxStepsPerFrame);
-    session.recordPlots();
+    if (!runner.paused() || input.dragging()) session.recordPlots();  // a paused plot stays still
 
     renderer->beginFrame(camera, fb.x, fb.y);
     SceneDraw draw(debug);

@@ -2,6 +2,7 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
 namespace pba::app {
@@ -9,26 +10,47 @@ namespace {
 Ray toRay(const graphics::Ray& r) { return Ray{Vec3(r.origin), glm::normalize(Vec3(r.direction))}; }
 }  // namespace
 
+void WindowInput::install(GLFWwindow* window) {
+  glfwSetWindowUserPointer(window, this);
+  glfwSetKeyCallback(window, &WindowInput::keyCallback);
+}
+
+void WindowInput::keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+  // Only the single-step key repeats while held; a held Space must not toggle pause repeatedly.
+  if (action == GLFW_PRESS || (action == GLFW_REPEAT && key == GLFW_KEY_O)) {
+    if (auto* self = static_cast<WindowInput*>(glfwGetWindowUserPointer(window))) self->pressed_.push_back(key);
+  }
+}
+
 void WindowInput::update(LabSession& session, UiState& ui, graphics::OrbitCamera& camera, float w, float h) {
   keys(session, ui);
   mouse(session, camera, w, h);
 }
 
 void WindowInput::keys(LabSession& session, UiState& ui) {
-  if (ImGui::GetIO().WantCaptureKeyboard) return;
-  auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-  if (pressed(GLFW_KEY_SPACE) || pressed(GLFW_KEY_P)) session.togglePause();
-  if (ImGui::IsKeyPressed(GLFW_KEY_O, true)) session.singleStep();  // held: steps repeatedly
-  if (pressed(GLFW_KEY_R)) session.reset();
-  if (pressed(GLFW_KEY_LEFT_BRACKET)) session.nextScene(-1);
-  if (pressed(GLFW_KEY_RIGHT_BRACKET)) session.nextScene(+1);
-  for (int i = 0; i < 9; ++i)
-    if (pressed(GLFW_KEY_1 + i)) session.applyPreset(i);
-  if (pressed(GLFW_KEY_F1) || pressed(GLFW_KEY_H)) ui.showHelp = !ui.showHelp;
-  if (pressed(GLFW_KEY_F12)) ui.screenshotRequested = true;
-  if (pressed(GLFW_KEY_L)) ui.lecture = !ui.lecture;
-  if (pressed(GLFW_KEY_TAB)) ui.hideUi = !ui.hideUi;
-  if (pressed(GLFW_KEY_F)) ui.frameRequested = true;
+  std::vector<int> keys;
+  keys.swap(pressed_);
+  if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing in a text field
+  for (const int key : keys) {
+    switch (key) {
+      case GLFW_KEY_SPACE:
+      case GLFW_KEY_P: session.togglePause(); break;
+      case GLFW_KEY_O: session.singleStep(); break;  // held: repeats
+      case GLFW_KEY_R: session.reset(); break;
+      case GLFW_KEY_LEFT_BRACKET: session.nextScene(-1); break;
+      case GLFW_KEY_RIGHT_BRACKET: session.nextScene(+1); break;
+      case GLFW_KEY_F1:
+      case GLFW_KEY_H: ui.showHelp = !ui.showHelp; break;
+      case GLFW_KEY_F12: ui.screenshotRequested = true; break;
+      case GLFW_KEY_L: ui.lecture = !ui.lecture; break;
+      case GLFW_KEY_TAB: ui.hideUi = !ui.hideUi; break;
+      case GLFW_KEY_F: ui.frameRequested = true; break;
+      default:
+        if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) session.applyPreset(key - GLFW_KEY_1);
+        break;
+    }
+  }
 }
 
 void WindowInput::mouse(LabSession& session, graphics::OrbitCamera& camera, float w, float h) {

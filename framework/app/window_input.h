@@ -2,15 +2,22 @@
 // Keys and mouse of DESIGN.md §3, the same in every lab. Reads ImGui's input state (ImGui 1.86:
 // keys are indexed by GLFW key codes) so that typing in a text field never triggers a lab key.
 #include <optional>
+#include <vector>
 
 #include "app/lab_session.h"
 #include "app/lab_ui.h"
 #include "graphics/camera.h"
 
+struct GLFWwindow;
+
 namespace pba::app {
 
 class WindowInput {
  public:
+  /// Chains a GLFW key callback after ImGui's that queues key presses. ImGui 1.86 samples key state
+  /// once per frame, so a tap shorter than a frame (slow scenes, remote desktops, xdotool) would be
+  /// lost; the queue keeps every press. Call once after the ImGui GLFW backend is initialised.
+  void install(GLFWwindow* window);
   /// Handles this frame's keys and mouse. viewport: window size in screen coordinates.
   void update(LabSession& session, UiState& ui, graphics::OrbitCamera& camera, float viewportW, float viewportH);
   bool dragging() const { return handle_.has_value(); }
@@ -19,6 +26,9 @@ class WindowInput {
   void keys(LabSession& session, UiState& ui);
   void mouse(LabSession& session, graphics::OrbitCamera& camera, float w, float h);
 
+  static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);
+
+  std::vector<int> pressed_;   ///< GLFW key codes pressed since the last frame
   std::optional<int> handle_;  ///< the scene object being dragged
   Vec3 planePoint_{0.0};       ///< the drag plane faces the camera through the picked point
   Vec3 planeNormal_{0.0, 0.0, 1.0};
