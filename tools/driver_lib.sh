@@ -9,7 +9,7 @@ PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 pba_say() {
   if [[ -t 2 ]]; then printf '\033[1m[pba]\033[0m %s\n' "$*" >&2; else printf '[pba] %s\n' "$*" >&2; fi
 }
-pba_die() { printf 'pba: %s\n' "$*" >&2; exit "${2:-1}"; }
+pba_die() { printf 'pba: %s\n' "$1" >&2; exit "${2:-1}"; }
 
 pba_missing_packages() {
   local p missing=()
@@ -76,7 +76,10 @@ pba_cmd_run() {
   local exe="$ROOT/build/release/bin/pba-$lab"
   local arg
   for arg in "$@"; do
-    case "$arg" in --headless | --help | -h | --list-scenes | --screenshot | --screenshot=*) exec "$exe" "$@" ;; esac
+    case "$arg" in
+      --headless | --help | -h | --list-scenes) exec "$exe" "$@" ;;
+      --screenshot | --screenshot=*) pba_with_display "$exe" "$@"; return ;;
+    esac
   done
   if pba_has_display; then
     exec "$exe" "$@"

@@ -52,7 +52,8 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     std::string arg = argv[i];
     std::string value;
     bool hasInlineValue = false;
-    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos && arg.rfind("--set", 0) != 0) {
+    // --option=value; for --set=NAME=VALUE the value is everything after the first '='.
+    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
       value = arg.substr(eq + 1);
       arg = arg.substr(0, eq);
       hasInlineValue = true;

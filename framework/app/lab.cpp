@@ -7,6 +7,7 @@
 #include "app/metrics_report.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
+#include "physics/exercises/not_implemented.h"
 
 namespace pba::app {
 
@@ -77,6 +78,7 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
       }
       return kExitOk;
     }
+    exercises::runProbes();  // stubs record themselves: banner, Exercises panel, "not_implemented"
     SceneRunner runner;
     if (Status s = prepareRunner(lab, o, runner); !s) {
       std::cerr << "pba-" << lab << ": " << s.error() << '\n';

@@ -49,7 +49,8 @@ class LabSession {
   const std::vector<ExerciseInfo>& exercises() const { return exercises_; }
   void setExercises(std::vector<ExerciseInfo> list) { exercises_ = std::move(list); }
 
-  /// Set by scene changes and resets: the window frames the camera on the new scene.
+  /// Set when another scene is loaded (switch or scene file): the window frames the camera on it.
+  /// A reset keeps the camera where the user put it.
   bool takeFrameRequest();
   void requestFrame() { frameRequested_ = true; }
 

@@ -12,7 +12,8 @@
 namespace pba::app {
 namespace {
 
-constexpr float kPanelWidth = 380.0f;  // [px at UI scale 1]
+constexpr float kPanelWidth = 400.0f;       // [px at UI scale 1]
+constexpr float kWidgetWidthInFonts = 11.5f;  // slider width in font heights: leaves room for labels
 const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
 const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
 
@@ -112,7 +113,7 @@ void simulationControls(LabSession& session) {
   const double dtMin = kMinDt * 10, dtMax = kMaxDt;
   if (ImGui::SliderScalar("dt [s]", ImGuiDataType_Double, &dt, &dtMin, &dtMax, "%.5f",
                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
-    runner.setDt(dt);
+    runner.setDt(dt, /*keepAcrossScenes=*/false);
   helpMarker("Fixed time step of the simulation. Smaller is more accurate and more stable, and costs more.");
   int substeps = runner.substeps();
   if (ImGui::SliderInt("substeps", &substeps, 1, kMaxSubsteps, "%d", ImGuiSliderFlags_AlwaysClamp))
@@ -178,13 +179,13 @@ void exerciseStatus(LabSession& session) {
   for (const ExerciseInfo& e : session.exercises()) {
     const bool stub = std::find(stubs.begin(), stubs.end(), e.tag) != stubs.end();
     ImGui::PushStyleColor(ImGuiCol_Text, stub ? kWarnOrange : ImVec4(0.1f, 0.5f, 0.2f, 1.0f));
-    ImGui::Text("%s  %s", stub ? "[todo]" : "[ ok ]", e.tag.c_str());
+    ImGui::Text("%s  %s", stub ? "[stub]" : "[done]", e.tag.c_str());
     ImGui::PopStyleColor();
     ImGui::SameLine();
     ImGui::TextUnformatted(e.title.c_str());
     if (stub) helpMarker(e.hint);
   }
-  ImGui::TextDisabled("./pba grade runs the exercise tests.");
+  ImGui::TextDisabled("[done] = implemented; ./pba grade checks it against the tests.");
 }
 
 void mainPanel(LabSession& session, UiState& ui) {
@@ -195,6 +196,7 @@ void mainPanel(LabSession& session, UiState& ui) {
     ImGui::End();
     return;
   }
+  ImGui::PushItemWidth(ImGui::GetFontSize() * kWidgetWidthInFonts);
   const auto& list = scenes();
   const int current = session.sceneIndex();
   if (ImGui::BeginCombo("scene", session.runner().sceneName().c_str())) {
@@ -233,6 +235,7 @@ void mainPanel(LabSession& session, UiState& ui) {
     if (ImGui::Button("Help (F1)")) ui.showHelp = !ui.showHelp;
   }
   if (!session.message().empty()) ImGui::TextDisabled("%s", session.message().c_str());
+  ImGui::PopItemWidth();
   ImGui::End();
 }
 

@@ -44,10 +44,10 @@ void SceneRunner::reset() {
   energyScale_ = e ? std::max(std::abs(*e), 1e-3) : 0.0;
 }
 
-Status SceneRunner::setDt(Real dt) {
+Status SceneRunner::setDt(Real dt, bool keepAcrossScenes) {
   if (Status s = checkRange("dt", dt, kMinDt, kMaxDt); !s) return s;
   dt_ = dt;
-  dtFromUser_ = true;
+  dtFromUser_ = dtFromUser_ || keepAcrossScenes;
   return Status::success();
 }
 

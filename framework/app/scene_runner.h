@@ -43,7 +43,10 @@ class SceneRunner {
   void setPaused(bool paused) { paused_ = paused; }
 
   Real dt() const { return dt_; }
-  Status setDt(Real dt);
+  /// Sets the fixed step. keepAcrossScenes: the command line's --dt applies to every scene loaded
+  /// later; a change in the panel applies to the current scene only (the next one starts at its
+  /// own default).
+  Status setDt(Real dt, bool keepAcrossScenes = true);
   int substeps() const { return substeps_; }
   Status setSubsteps(int n);
   Real timeScale() const { return timeScale_; }

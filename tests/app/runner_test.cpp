@@ -107,6 +107,18 @@ TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   EXPECT_NE(r.guardMessage()->find("runaway"), std::string::npos);
 }
 
+TEST(SceneRunner, PanelDtLastsOneSceneAndCommandLineDtLastsForAll) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  const Real sceneDefault = r.dt();
+  ASSERT_TRUE(r.setDt(0.002, /*keepAcrossScenes=*/false).ok());
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  EXPECT_EQ(r.dt(), sceneDefault);
+  ASSERT_TRUE(r.setDt(0.003).ok());
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  EXPECT_EQ(r.dt(), 0.003);
+}
+
 TEST(SceneRunner, UnknownSceneIsAnError) {
   SceneRunner r;
   const Status s = r.load("no-such", 1);
@@ -135,6 +147,9 @@ TEST(CommandLine, ParsesTheContractOfDesignSection4) {
   ASSERT_EQ(o.overrides.size(), 1u);
   EXPECT_EQ(o.overrides[0], (std::pair<std::string, std::string>{"speed", "2"}));
   EXPECT_EQ(parse({"--seconds", "1"}).value().frameCount(), 60);
+  const auto inlineSet = parse({"--set=speed=2.5"});
+  ASSERT_TRUE(inlineSet.ok()) << inlineSet.error();
+  EXPECT_EQ(inlineSet.value().overrides.at(0), (std::pair<std::string, std::string>{"speed", "2.5"}));
   EXPECT_EQ(parse({}).value().frameCount(), kDefaultHeadlessFrames);
 }
 

@@ -9,6 +9,7 @@ namespace {
 struct Record {
   std::mutex mutex;
   std::set<std::string, std::less<>> tags;
+  std::vector<void (*)()> probes;
 };
 Record& record() {
   static Record instance;
@@ -26,6 +27,23 @@ std::vector<std::string> notImplementedTags() {
   Record& r = record();
   std::lock_guard lock(r.mutex);
   return {r.tags.begin(), r.tags.end()};
+}
+
+bool registerProbe(void (*probe)()) {
+  Record& r = record();
+  std::lock_guard lock(r.mutex);
+  r.probes.push_back(probe);
+  return true;
+}
+
+void runProbes() {
+  std::vector<void (*)()> probes;
+  {
+    Record& r = record();
+    std::lock_guard lock(r.mutex);
+    probes = r.probes;
+  }
+  for (auto* probe : probes) probe();
 }
 
 void clearNotImplemented() {

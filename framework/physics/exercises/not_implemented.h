@@ -28,4 +28,18 @@ T notImplemented(std::string_view tag, T safeDefault, const Inputs&... /*inputsT
   return safeDefault;
 }
 
+/// A probe calls an exercise once on a harmless input so that a lab can tell at start-up which
+/// exercises are still stubs (a stub records its tag when it runs). Registered next to the
+/// exercise with PBA_EXERCISE_PROBE; never inside a solution block.
+bool registerProbe(void (*probe)());
+/// Runs every registered probe; afterwards notImplementedTags() names every stubbed exercise.
+void runProbes();
+
 }  // namespace pba::exercises
+
+#define PBA_EXERCISE_PROBE_CONCAT_INNER(a, b) a##b
+#define PBA_EXERCISE_PROBE_CONCAT(a, b) PBA_EXERCISE_PROBE_CONCAT_INNER(a, b)
+/// PBA_EXERCISE_PROBE(eulerStep(BallState{}, Vec3(0.0), 0.01)); at namespace scope.
+#define PBA_EXERCISE_PROBE(call)                                                    \
+  static const bool PBA_EXERCISE_PROBE_CONCAT(pbaExerciseProbe_, __LINE__) = \
+      ::pba::exercises::registerProbe([] { static_cast<void>(call); })

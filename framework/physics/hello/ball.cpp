@@ -56,6 +56,10 @@ BounceResult bounceOffPlane(const BallState& state, Real radius, Real restitutio
   // STUB: return exercises::notImplemented("HELLO-2", BounceResult{state, false}, radius, restitution, planePoint, planeNormal);
 }
 
+// Start-up probes: tell the lab whether HELLO-1 and HELLO-2 are still stubs.
+PBA_EXERCISE_PROBE(eulerStep(BallState{}, Vec3(0.0), 0.01));
+PBA_EXERCISE_PROBE(bounceOffPlane(BallState{}, 0.1, 0.5, Vec3(0.0), kUp));
+
 BounceResult stepDrop(const BallDesc& d, const BallState& s, Real h) {
   const BallState moved = eulerStep(s, acceleration(d, s.velocity), h);
   BounceResult r = bounceOffPlane(moved, d.radius, d.restitution, Vec3(0.0, d.groundHeight, 0.0), kUp);
