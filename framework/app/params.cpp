@@ -1,23 +1,16 @@
 #include "app/params.h"
 
+#include "physics/core/format.h"
+
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 #include <nlohmann/json.hpp>
 
 namespace pba::app {
 namespace {
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-std::string shortNumber(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string number(double v) { return formatExact(v); }
+std::string shortNumber(double v) { return formatShort(v); }
 }  // namespace
 
 Params& Params::add(Param p) {

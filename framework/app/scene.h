@@ -24,6 +24,9 @@ struct PickHit {
   Vec3 point{0.0};      ///< world hit point [m]
 };
 
+/// The hit of `ray` with a sphere, reported as object `handle`: the usual pick() of a ball.
+std::optional<PickHit> pickSphere(const Ray& ray, const Vec3& center, Real radius, int handle);
+
 /// A named preset (keys 1–9): a set of parameter values applied before a reset.
 struct Preset {
   std::string name;

@@ -2,18 +2,14 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 
 #include "app/scene_registry.h"
+#include "physics/core/format.h"
 #include "physics/core/validate.h"
 
 namespace pba::app {
 namespace {
-std::string formatTime(Real t) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3f", t);
-  return buf;
-}
+std::string formatTime(Real t) { return formatFixed(t, 3); }
 }  // namespace
 
 Status SceneRunner::load(const std::string& name, std::uint64_t seed) {

@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "app/scene_registry.h"
-#include "physics/collision/ray.h"
 #include "physics/hello/ball.h"
 
 namespace {
@@ -66,11 +65,7 @@ class DropScene final : public app::Scene {
             {"bounces", bounces_},
             {"last_apex_m", lastApex_}};
   }
-  std::optional<std::string> nonFiniteState() const override {
-    if (!isFinite(state_.position)) return "ball position is not finite";
-    if (!isFinite(state_.velocity)) return "ball velocity is not finite";
-    return std::nullopt;
-  }
+  std::optional<std::string> nonFiniteState() const override { return hello::nonFiniteState(state_); }
   std::optional<Real> energy() const override { return hello::energy(desc_, state_); }
   std::vector<std::string> defaultPlots() const override { return {"height_m", "energy_J"}; }
   std::vector<app::Preset> presets() const override {
@@ -80,9 +75,7 @@ class DropScene final : public app::Scene {
             {"feather", {{"restitution", 0.5}, {"drag", 3.0}, {"mass", 0.05}, {"gravity", 9.81}}}};
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
-    const std::optional<Real> t = intersectRaySphere(ray, state_.position, desc_.radius);
-    if (!t) return std::nullopt;
-    return app::PickHit{0, *t, pointAt(ray, *t)};
+    return app::pickSphere(ray, state_.position, desc_.radius, 0);
   }
   void drag(int, const Vec3& target) override {
     dragging_ = true;

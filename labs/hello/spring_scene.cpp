@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "app/scene_registry.h"
-#include "physics/collision/ray.h"
 #include "physics/hello/ball.h"
 
 namespace {
@@ -57,11 +56,7 @@ class SpringScene final : public app::Scene {
             {"speed_m_s", glm::length(state_.velocity)},
             {"energy_J", hello::springEnergy(desc_, state_)}};
   }
-  std::optional<std::string> nonFiniteState() const override {
-    if (!isFinite(state_.position)) return "ball position is not finite";
-    if (!isFinite(state_.velocity)) return "ball velocity is not finite";
-    return std::nullopt;
-  }
+  std::optional<std::string> nonFiniteState() const override { return hello::nonFiniteState(state_); }
   std::optional<Real> energy() const override { return hello::springEnergy(desc_, state_); }
   std::vector<std::string> defaultPlots() const override { return {"extension_m", "energy_J"}; }
   std::vector<app::Preset> presets() const override {
@@ -71,9 +66,7 @@ class SpringScene final : public app::Scene {
             {"heavy damping", {{"damping", 8.0}}}};
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
-    const std::optional<Real> t = intersectRaySphere(ray, state_.position, kBallRadius);
-    if (!t) return std::nullopt;
-    return app::PickHit{0, *t, pointAt(ray, *t)};
+    return app::pickSphere(ray, state_.position, kBallRadius, 0);
   }
   void drag(int, const Vec3& target) override {
     dragging_ = true;

@@ -1,15 +1,12 @@
 #include "physics/core/validate.h"
 
-#include <cstdio>
 #include <string>
+
+#include "physics/core/format.h"
 
 namespace pba {
 namespace {
-std::string describe(Real v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
+std::string describe(Real v) { return formatExact(v); }
 }  // namespace
 
 Status checkRange(std::string_view field, Real value, Real lo, Real hi) {

@@ -18,6 +18,12 @@ Status validate(const BallDesc& d) {
   return Status::success();
 }
 
+std::optional<std::string> nonFiniteState(const BallState& s) {
+  if (!isFinite(s.position)) return "ball position is not finite";
+  if (!isFinite(s.velocity)) return "ball velocity is not finite";
+  return std::nullopt;
+}
+
 BallState initialState(const BallDesc& d) {
   return BallState{Vec3(0.0, d.groundHeight + d.radius + d.dropHeight, 0.0), Vec3(0.0)};
 }

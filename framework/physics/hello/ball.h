@@ -5,6 +5,9 @@
 // Equations of motion (Lobb notes, "Particle" and "Damping"):
 //   m dv/dt = m g − c v            linear (viscous) air drag, c [N·s/m]
 //   F_spring = −[k (|d| − L) + c_s (d·v)/|d|] d/|d|,  d = x − anchor   (Lobb notes, damped spring)
+#include <optional>
+#include <string>
+
 #include "physics/core/result.h"
 #include "physics/core/types.h"
 
@@ -29,6 +32,9 @@ struct BallDesc {
 
 /// Checks every field; the message names the field ("mass: must be ...").
 Status validate(const BallDesc& desc);
+
+/// Empty when position and velocity are finite; otherwise says which is not (instability guard).
+std::optional<std::string> nonFiniteState(const BallState& state);
 
 /// The ball at rest at its drop height.
 BallState initialState(const BallDesc& desc);

@@ -1,0 +1,11 @@
+#include "app/scene.h"
+
+namespace pba::app {
+
+std::optional<PickHit> pickSphere(const Ray& ray, const Vec3& center, Real radius, int handle) {
+  const std::optional<Real> t = intersectRaySphere(ray, center, radius);
+  if (!t) return std::nullopt;
+  return PickHit{handle, *t, pointAt(ray, *t)};
+}
+
+}  // namespace pba::app

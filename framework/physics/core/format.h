@@ -1,0 +1,17 @@
+#pragma once
+// Number formatting for messages (validation errors, guard messages, labels). One place, so that
+// every message prints numbers the same way.
+#include <string>
+
+#include "physics/core/types.h"
+
+namespace pba {
+
+/// Shortest text that reads back to the same double ("%.17g"): for values a user must copy exactly.
+std::string formatExact(Real value);
+/// Compact text ("%g", 6 significant digits): for ranges and bounds.
+std::string formatShort(Real value);
+/// Fixed number of decimals, e.g. formatFixed(1.23456, 3) == "1.235".
+std::string formatFixed(Real value, int decimals);
+
+}  // namespace pba
