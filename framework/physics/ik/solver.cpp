@@ -177,7 +177,9 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   for (int it = 0;; ++it) {
     const auto [r, score] = measure();
     if (r.position <= o.tolerance && r.orientation <= o.angleTolerance) return finish(SolveStatus::Success);
-    if (method->finished()) return finish(unreachable ? SolveStatus::Unreachable : SolveStatus::Stalled);
+    // A closed-form method that did not succeed has found the nearest reachable pose: the goal is
+    // out of its workspace (too far, too near, or outside the limits).
+    if (method->finished()) return finish(SolveStatus::Unreachable);
     const int k = o.stallIterations;
     if (k > 0 && static_cast<int>(progress.size()) > k &&
         !(score < (1.0 - o.stallRatio) * progress[progress.size() - 1 - static_cast<size_t>(k)]))
