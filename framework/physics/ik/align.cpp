@@ -1,0 +1,136 @@
+// alignJoint: the one joint update shared by CCD (Workbook §2.4) and FABRIK's return from positions to
+// joint angles. Derivation for a rotation R(θ) about a unit world axis a through the pivot p, points
+// uᵢ = fromᵢ − p, vᵢ = toᵢ − p, weights wᵢ:
+//   Σ wᵢ |R uᵢ − vᵢ|² = const − 2 Σ wᵢ vᵢ·R uᵢ,   vᵢ·R uᵢ = vᵢ∥·uᵢ∥ + cos θ (u⊥ᵢ·v⊥ᵢ) + sin θ a·(u⊥ᵢ × v⊥ᵢ)
+// so the exact minimiser is θ = atan2(Σ wᵢ a·(uᵢ × vᵢ), Σ wᵢ u⊥ᵢ·v⊥ᵢ) (⊥: component normal to a).
+// For a translation d along a: d = Σ wᵢ a·(vᵢ − uᵢ) / Σ wᵢ. A single point on a ball or free joint is
+// turned exactly by the shortest arc; the Euler DOFs are then read back from the new local rotation.
+// Limiting cases: uᵢ ∥ a or vᵢ = 0 contribute nothing (atan2(0, 0) = 0: no motion, no NaN).
+#include <algorithm>
+#include <cmath>
+
+#include "physics/ik/exercises.h"
+#include "physics/ik/solver_internal.h"
+
+namespace pba::ik::detail {
+namespace {
+
+Vec3 perp(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
+
+Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+               const std::vector<Real>& w) {
+  Real S = 0.0, C = 0.0;
+  for (size_t i = 0; i < from.size(); ++i) {
+    const Vec3 u = perp(from[i] - p, a), v = perp(to[i] - p, a);
+    S += w[i] * glm::dot(a, glm::cross(u, v));
+    C += w[i] * glm::dot(u, v);
+  }
+  return std::atan2(S, C);
+}
+
+// Sets joint j's local rotation to `local` (ball: via XYZ Euler angles; free: directly), clamps, and
+// returns the world rotation applied about the pivot.
+Quat setLocalRotation(const Skeleton& s, Pose& pose, int j, const Frame& f, const Quat& oldLocal, const Quat& local,
+                      bool clampLimits) {
+  const Joint& joint = s.joint(j);
+  if (joint.type == JointType::Ball) {
+    const Vec3 e = eulerXYZFromQuat(local);
+    for (int k = 0; k < 3; ++k) pose.dofs[static_cast<size_t>(joint.firstDof + k)] = e[k];
+  } else {
+    pose.rotations[static_cast<size_t>(j)] = glm::normalize(local);
+  }
+  if (clampLimits) clampJointToLimits(s, pose, j);
+  const Quat newLocal = jointRotation(joint, pose, j);
+  return f.pre * newLocal * glm::inverse(oldLocal) * glm::inverse(f.pre);
+}
+
+// The hinge optimum is an angle modulo 2π. Of the representatives ψ − 2π, ψ, ψ + 2π, pick the one
+// whose clamped value is closest to the optimum in angle (the objective is proportional to
+// cos(value − ψ)): a joint at 100° with limits ±120° that should turn +170° goes to −90°, not to 120°.
+Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
+  if (!clampLimits) return psi;
+  Real best = psi, bestScore = -2.0;
+  for (Real candidate : {psi - 2.0 * kPi, psi, psi + 2.0 * kPi}) {
+    const Real clamped = std::clamp(candidate, lo, hi);
+    const Real score = std::cos(clamped - psi) - 1e-9 * std::abs(candidate - psi);
+    if (score > bestScore) {
+      bestScore = score;
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+Quat alignJoint(const Skeleton& s, Pose& pose, int j, const Frame& f, const std::vector<Vec3>& from,
+                const std::vector<Vec3>& to, const std::vector<Real>& w, bool clampLimits, bool useExercise,
+                Vec3* translation) {
+  const Joint& joint = s.joint(j);
+  if (translation) *translation = Vec3(0.0);
+  if (from.empty()) return Quat(1, 0, 0, 0);
+  const Vec3 p = f.position;
+  switch (joint.type) {
+    case JointType::Fixed: return Quat(1, 0, 0, 0);
+    case JointType::Prismatic: {
+      const Vec3 a = f.pre * joint.axis;
+      Real num = 0.0, den = 0.0;
+      for (size_t i = 0; i < from.size(); ++i) {
+        num += w[i] * glm::dot(a, to[i] - from[i]);
+        den += w[i];
+      }
+      Real& d = pose.dofs[static_cast<size_t>(joint.firstDof)];
+      const Real old = d;
+      if (den > 0.0) d += num / den;
+      if (clampLimits) clampJointToLimits(s, pose, j);
+      if (translation) *translation = a * (d - old);
+      return Quat(1, 0, 0, 0);
+    }
+    case JointType::Hinge: {
+      const Vec3 a = f.pre * joint.axis;
+      Real theta = 0.0;
+      if (from.size() == 1 && useExercise) {
+        // Workbook Algorithm 1 on the projections onto the hinge plane: the update's axis is ±a.
+        const Quat q = ccdJointUpdate(p, p + perp(from[0] - p, a), p + perp(to[0] - p, a));
+        theta = glm::dot(rotationVector(q), a);
+      } else {
+        theta = bestAngle(a, p, from, to, w);
+      }
+      Real& d = pose.dofs[static_cast<size_t>(joint.firstDof)];
+      const Real old = d;
+      d = bestHingeValue(old + theta, joint.lo[0], joint.hi[0], clampLimits);
+      if (clampLimits) clampJointToLimits(s, pose, j);
+      return glm::angleAxis(d - old, a);
+    }
+    case JointType::Ball:
+    case JointType::Free: {
+      const Quat oldLocal = jointRotation(joint, pose, j);
+      if (from.size() == 1) {
+        const Quat world = useExercise ? ccdJointUpdate(p, from[0], to[0]) : shortestArc(from[0] - p, to[0] - p);
+        const Quat local = glm::inverse(f.pre) * world * f.pre * oldLocal;
+        return setLocalRotation(s, pose, j, f, oldLocal, local, clampLimits);
+      }
+      // Several points: a few sweeps of exact single-axis updates about the axis Σ wᵢ uᵢ × vᵢ (the
+      // direction of steepest descent of the rotation), each the closed form above.
+      std::vector<Vec3> moved = from;
+      Quat total(1, 0, 0, 0);
+      for (int sweep = 0; sweep < 3; ++sweep) {
+        Vec3 axis(0.0);
+        for (size_t i = 0; i < moved.size(); ++i) axis += w[i] * glm::cross(moved[i] - p, to[i] - p);
+        const Real length = glm::length(axis);
+        if (length < 1e-15) break;
+        axis /= length;
+        const Real theta = bestAngle(axis, p, moved, to, w);
+        const Quat current = jointRotation(joint, pose, j);
+        const Quat local = glm::inverse(f.pre) * glm::angleAxis(theta, axis) * f.pre * current;
+        const Quat applied = setLocalRotation(s, pose, j, f, current, local, clampLimits);
+        for (Vec3& m : moved) m = p + applied * (m - p);
+        total = applied * total;
+      }
+      return total;
+    }
+  }
+  return Quat(1, 0, 0, 0);
+}
+
+}  // namespace pba::ik::detail

@@ -1,0 +1,115 @@
+// Cyclic coordinate descent (Workbook §2.4, Algorithm 1; IK slides, "Other techniques").
+// One pass visits every joint from the tips toward the root. Each joint turns so that the effector
+// points below it swing toward their goals (alignJoint: the exact single-joint optimum, clamped to the
+// limits). A 6-DOF effector adds three virtual points at s·(x̂, ŷ, ẑ) of its frame, with goals at the
+// same points of the goal frame (s = orientation scale [m/rad]), so one least-squares rule aligns
+// position and orientation together.
+//
+// Cost: O(n) per pass for a chain with one effector. Going from the tips to the root, a joint's pivot
+// and pre-rotation depend only on its ancestors, which this pass has not moved yet, so the frames from
+// the forward kinematics at the start of the pass stay valid; only the effector points move, and they
+// are updated incrementally by each joint's rotation (no full FK per joint, unlike the naive loop).
+#include <cmath>
+#include <memory>
+
+#include "physics/exercises/not_implemented.h"
+#include "physics/ik/exercises.h"
+#include "physics/ik/solver_internal.h"
+
+namespace pba::ik {
+
+// ***** IK-2: the CCD joint update (Workbook §2.4, Algorithm 1) *****
+// (1) V1 = effector − pivot (the direction the bone chain points now), V2 = target − pivot (where it
+//     should point).
+// (2) If either vector is (almost) zero, there is no defined rotation: return the identity.
+// (3) The rotation axis is V1 × V2; the angle between them is atan2(|V1 × V2|, V1 · V2) (better
+//     conditioned than acos of the normalised dot product, and never NaN).
+// (4) If the cross product is (almost) zero the vectors are parallel (angle 0: identity) or opposite
+//     (angle π about any axis perpendicular to V1).
+// (5) Return the quaternion glm::angleAxis(angle, unit axis).
+// *****
+Quat ccdJointUpdate([[maybe_unused]] const Vec3& pivot, [[maybe_unused]] const Vec3& effector,
+                    [[maybe_unused]] const Vec3& target) {
+  // BEGIN SOLUTION
+  const Vec3 v1 = effector - pivot, v2 = target - pivot;
+  const Real l1 = glm::length(v1), l2 = glm::length(v2);
+  if (l1 < 1e-12 || l2 < 1e-12) return Quat(1, 0, 0, 0);
+  const Vec3 axis = glm::cross(v1, v2);
+  const Real s = glm::length(axis), c = glm::dot(v1, v2);
+  if (s <= 1e-12 * l1 * l2) {
+    if (c > 0.0) return Quat(1, 0, 0, 0);
+    Vec3 n = glm::cross(v1, std::abs(v1.x) < 0.9 * l1 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+    return glm::angleAxis(kPi, n / glm::length(n));
+  }
+  return glm::angleAxis(std::atan2(s, c), axis / s);
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("IK-2", Quat(1, 0, 0, 0));
+}
+
+namespace detail {
+namespace {
+
+class Ccd final : public Method {
+ public:
+  void iterate(Context& c) override {
+    buildPoints(c);
+    const bool clamp = c.options.enforceLimits;
+    for (int j = c.skeleton.jointCount() - 1; j >= 0; --j) {
+      const std::vector<int>& below = c.effectorsBelow[static_cast<size_t>(j)];
+      if (below.empty() || c.skeleton.joint(j).type == JointType::Fixed) continue;
+      from_.clear();
+      to_.clear();
+      w_.clear();
+      for (int e : below)
+        for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
+          from_.push_back(points_[static_cast<size_t>(k)]);
+          to_.push_back(goals_[static_cast<size_t>(k)]);
+          w_.push_back(weights_[static_cast<size_t>(k)]);
+        }
+      const Frame& f = c.frames[static_cast<size_t>(j)];
+      Vec3 t(0.0);
+      const Quat q = alignJoint(c.skeleton, c.pose, j, f, from_, to_, w_, clamp, true, &t);
+      for (int e : below)
+        for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
+          Vec3& pt = points_[static_cast<size_t>(k)];
+          pt = f.position + q * (pt - f.position) + t;
+        }
+    }
+  }
+
+ private:
+  void buildPoints(const Context& c) {
+    points_.clear();
+    goals_.clear();
+    weights_.clear();
+    first_.assign(1, 0);
+    for (const Effector& e : c.effectors) {
+      points_.push_back(effectorPosition(e, c.frames));
+      goals_.push_back(e.targetPosition);
+      weights_.push_back(e.weight);
+      if (e.kind == EffectorKind::PositionOrientation) {
+        const Quat E = effectorOrientation(e, c.frames);
+        const Real s = c.orientationScale;
+        for (int k = 0; k < 3; ++k) {
+          Vec3 axis(0.0);
+          axis[k] = s;
+          points_.push_back(effectorPosition(e, c.frames) + E * axis);
+          goals_.push_back(e.targetPosition + e.targetOrientation * axis);
+          weights_.push_back(e.weight);
+        }
+      }
+      first_.push_back(static_cast<int>(points_.size()));
+    }
+  }
+
+  std::vector<Vec3> points_, goals_, from_, to_;
+  std::vector<Real> weights_, w_;
+  std::vector<int> first_;  // effector e owns points [first_[e], first_[e + 1])
+};
+
+}  // namespace
+
+std::unique_ptr<Method> makeCcd() { return std::make_unique<Ccd>(); }
+
+}  // namespace detail
+}  // namespace pba::ik

@@ -1,0 +1,38 @@
+// Joint limits (Workbook §2.1 task 5, §2.7; IK slides, "Joint limits"): the simplest enforcement is to
+// clamp the pose after every iteration. For a scalar DOF that is a clamp into [lo, hi]. For a free
+// (quaternion) joint limited to a largest rotation angle φ_max, the pose is projected onto the
+// allowed set along its own axis: q = (axis, φ) with φ > φ_max becomes (axis, φ_max) — the nearest
+// allowed rotation about the same axis.
+#include <algorithm>
+
+#include "physics/exercises/not_implemented.h"
+#include "physics/ik/exercises.h"
+
+namespace pba::ik {
+
+// ***** IK-6: joint-limit clamping (Workbook §2.7; IK slides, "Joint limits") *****
+// (1) Look up the joint and its first DOF index (Joint::firstDof) and DOF count (dofCount(type)).
+// (2) For each of its scalar DOFs k: clamp pose.dofs[firstDof + k] into [joint.lo[k], joint.hi[k]].
+// (3) For a Free joint: take the rotation vector of pose.rotations[j] (rotationVector: axis · angle).
+//     If its length (the angle) exceeds joint.maxRotation, scale it down to exactly maxRotation and
+//     store the quaternion of the shortened vector (quatFromRotationVector).
+// (4) Fixed joints have nothing to clamp.
+// *****
+void clampJointToLimits([[maybe_unused]] const Skeleton& skeleton, [[maybe_unused]] Pose& pose, [[maybe_unused]] int j) {
+  // BEGIN SOLUTION
+  const Joint& joint = skeleton.joint(j);
+  for (int k = 0; k < dofCount(joint.type); ++k) {
+    Real& v = pose.dofs[static_cast<size_t>(joint.firstDof + k)];
+    v = std::clamp(v, joint.lo[k], joint.hi[k]);
+  }
+  if (joint.type == JointType::Free) {
+    const Vec3 r = rotationVector(pose.rotations[static_cast<size_t>(j)]);
+    const Real angle = glm::length(r);
+    if (angle > joint.maxRotation) pose.rotations[static_cast<size_t>(j)] = quatFromRotationVector(r * (joint.maxRotation / angle));
+  }
+  return;
+  // END SOLUTION
+  // STUB: exercises::markNotImplemented("IK-6");
+}
+
+}  // namespace pba::ik

@@ -1,0 +1,199 @@
+// The IK driver: validation, repeatability, the reachability check, the iteration loop and the
+// stopping rules (IK slides, "Stopping"), around the methods of ccd.cpp, fabrik.cpp,
+// jacobian_solvers.cpp and analytic.cpp.
+#include "physics/ik/solver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "physics/ik/exercises.h"
+#include "physics/ik/solver_internal.h"
+
+namespace pba::ik {
+
+namespace {
+constexpr const char* kNames[kSolverKindCount] = {"analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls"};
+constexpr const char* kLongNames[kSolverKindCount] = {"Analytic",          "Cyclic coordinate descent",
+                                                      "FABRIK",            "Jacobian transpose",
+                                                      "Pseudo-inverse (SVD)", "Damped least squares",
+                                                      "Selectively damped least squares"};
+}  // namespace
+
+const char* solverName(SolverKind k) { return kNames[static_cast<int>(k)]; }
+const char* solverLongName(SolverKind k) { return kLongNames[static_cast<int>(k)]; }
+bool solverFromName(const std::string& name, SolverKind* kind) {
+  for (int i = 0; i < kSolverKindCount; ++i)
+    if (name == kNames[i]) {
+      *kind = static_cast<SolverKind>(i);
+      return true;
+    }
+  return false;
+}
+
+const char* statusName(SolveStatus s) {
+  switch (s) {
+    case SolveStatus::Success: return "success";
+    case SolveStatus::Unreachable: return "unreachable";
+    case SolveStatus::Stalled: return "stalled";
+    case SolveStatus::IterationCap: return "iteration_cap";
+    case SolveStatus::TimeCap: return "time_cap";
+    case SolveStatus::NotApplicable: return "not_applicable";
+    case SolveStatus::InvalidInput: return "invalid_input";
+  }
+  return "?";
+}
+
+namespace detail {
+
+void stretchToward(Context& c, const Effector& e) {
+  // Root → tip along the path to the effector: each joint turns so that the next point of the path
+  // (child joint or the effector) lies on the ray from the path's first joint toward the goal.
+  std::vector<int> path;
+  for (int j = e.joint; j >= 0; j = c.skeleton.joint(j).parent) path.insert(path.begin(), j);
+  const Vec3 base = c.frames[static_cast<size_t>(path.front())].position;
+  const Vec3 toGoal = e.targetPosition - base;
+  const Real distance = glm::length(toGoal);
+  if (distance < 1e-12) return;
+  const Vec3 dir = toGoal / distance;
+  for (size_t i = 0; i < path.size(); ++i) {
+    const int j = path[i];
+    if (c.skeleton.joint(j).type == JointType::Fixed) continue;
+    const Frame& f = c.frames[static_cast<size_t>(j)];
+    const Vec3 next = i + 1 < path.size() ? c.frames[static_cast<size_t>(path[i + 1])].position : effectorPosition(e, c.frames);
+    const Real along = glm::dot(f.position - base, dir);
+    const Real lever = glm::length(next - f.position);
+    if (lever < 1e-12) continue;
+    // The child should sit `lever` further along the ray than this joint's projection onto it.
+    const Vec3 goal = base + dir * (along + lever);
+    alignJoint(c.skeleton, c.pose, j, f, {next}, {goal}, {1.0}, c.options.enforceLimits, false, nullptr);
+    c.refresh();
+  }
+}
+
+}  // namespace detail
+
+namespace {
+
+Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o) {
+  if (s.jointCount() == 0) return Error{"skeleton: has no joints"};
+  if (Status st = validate(s, pose); !st) return st;
+  for (size_t k = 0; k < effectors.size(); ++k) {
+    const Effector& e = effectors[k];
+    const std::string f = "effectors[" + std::to_string(k) + "]";
+    if (e.joint < 0 || e.joint >= s.jointCount()) return Error{f + ".joint: no joint " + std::to_string(e.joint)};
+    if (!isFinite(e.localOffset) || !isFinite(e.targetPosition)) return Error{f + ": offset and target must be finite"};
+    if (!(e.weight > 0.0) || !isFinite(e.weight)) return Error{f + ".weight: must be > 0"};
+    const Quat& q = e.targetOrientation;
+    if (e.kind == EffectorKind::PositionOrientation && !(std::abs(glm::dot(q, q) - 1.0) < 1e-6))
+      return Error{f + ".targetOrientation: must be a unit quaternion"};
+  }
+  if (!(o.tolerance > 0.0) || !(o.angleTolerance > 0.0)) return Error{"options.tolerance: must be > 0"};
+  if (o.maxIterations < 1) return Error{"options.maxIterations: must be >= 1"};
+  if (!(o.damping >= 0.0) || !(o.singularCutoff >= 0.0) || !(o.maxJointStep > 0.0) || !(o.maxErrorStep >= 0.0) ||
+      !(o.orientationScale >= 0.0) || !(o.maxSeconds >= 0.0))
+    return Error{"options: damping, cut-off, step clamps, scale and time cap must be >= 0 (step clamp > 0)"};
+  return Status::success();
+}
+
+std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string* why) {
+  switch (c.options.solver) {
+    case SolverKind::Analytic: return detail::makeAnalytic(c, why);
+    case SolverKind::Ccd: return detail::makeCcd();
+    case SolverKind::Fabrik: return detail::makeFabrik();
+    default: return detail::makeJacobianMethod(c.options.solver);
+  }
+}
+
+}  // namespace
+
+SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  SolveResult result;
+  if (Status st = validateInputs(skeleton, pose, effectors, o); !st) {
+    result.message = st.error();
+    return result;
+  }
+  if (o.fromRest) pose = skeleton.restPose();
+  detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}};
+  c.refresh();
+  // Scales: mean bone length for the automatic error clamp and orientation scale.
+  Real bones = 0.0;
+  int count = 0;
+  for (int j = 0; j < skeleton.jointCount(); ++j)
+    if (skeleton.joint(j).parent >= 0) bones += glm::length(skeleton.joint(j).offset), ++count;
+  for (const Effector& e : effectors) bones += glm::length(e.localOffset), ++count;
+  c.meanBone = std::max(1e-6, count > 0 ? bones / count : 1.0);
+  c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
+  c.maxErrorStep = o.maxErrorStep > 0.0 ? o.maxErrorStep : c.meanBone;
+  c.effectorsBelow = effectorsBelowJoints(skeleton, effectors);
+  c.active.assign(static_cast<size_t>(skeleton.jointCount()), 0);
+  for (int j = 0; j < skeleton.jointCount(); ++j) c.active[static_cast<size_t>(j)] = !c.effectorsBelow[static_cast<size_t>(j)].empty();
+
+  std::string why;
+  std::unique_ptr<detail::Method> method = makeMethod(c, &why);
+  auto finish = [&](SolveStatus status) {
+    const Residual r = residual(effectors, c.frames);
+    result.status = status;
+    result.positionResidual = r.position;
+    result.orientationResidual = r.orientation;
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return result;
+  };
+  if (!method) {
+    result.message = why;
+    return finish(SolveStatus::NotApplicable);
+  }
+  if (o.recordHistory) result.effectorPath.assign(effectors.size(), {});
+  auto record = [&](Real positionResidual) {
+    if (!o.recordHistory) return;
+    result.residualHistory.push_back(positionResidual);
+    for (size_t k = 0; k < effectors.size(); ++k) result.effectorPath[k].push_back(effectorPosition(effectors[k], c.frames));
+  };
+
+  // Reachability (Aristidou & Lasenby 2011, Algorithm 1, first test): a goal farther from the root
+  // than the sum of the bones on its path cannot be reached. A lone position effector is then
+  // stretched toward it, and the method refines from there (the gradient vanishes at the exact
+  // stretched pose, so the methods keep it).
+  bool unreachable = false;
+  for (const Effector& e : effectors) {
+    int root = e.joint;
+    while (skeleton.joint(root).parent >= 0) root = skeleton.joint(root).parent;
+    if (glm::length(e.targetPosition - c.frames[static_cast<size_t>(root)].position) > reach(skeleton, root, e) + 1e-12) unreachable = true;
+  }
+  if (unreachable && effectors.size() == 1 && effectors[0].kind == EffectorKind::Position) {
+    detail::stretchToward(c, effectors[0]);
+  }
+
+  std::vector<Real> progress;  // combined residual per iteration for stall detection
+  auto measure = [&]() {
+    const Residual r = residual(effectors, c.frames);
+    return std::pair<Residual, Real>{r, r.position + c.orientationScale * r.orientation};
+  };
+  auto [r0, score0] = measure();
+  record(r0.position);
+  progress.push_back(score0);
+  for (int it = 0;; ++it) {
+    const auto [r, score] = measure();
+    if (r.position <= o.tolerance && r.orientation <= o.angleTolerance) return finish(SolveStatus::Success);
+    // A closed-form method that did not succeed has found the nearest reachable pose: the goal is
+    // out of its workspace (too far, too near, or outside the limits).
+    if (method->finished()) return finish(SolveStatus::Unreachable);
+    const int k = o.stallIterations;
+    if (k > 0 && static_cast<int>(progress.size()) > k &&
+        !(score < (1.0 - o.stallRatio) * progress[progress.size() - 1 - static_cast<size_t>(k)]))
+      return finish(unreachable ? SolveStatus::Unreachable : SolveStatus::Stalled);
+    if (it >= o.maxIterations) return finish(unreachable ? SolveStatus::Unreachable : SolveStatus::IterationCap);
+    if (o.maxSeconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > o.maxSeconds)
+      return finish(SolveStatus::TimeCap);
+    method->iterate(c);
+    c.refresh();
+    result.iterations = it + 1;
+    const auto [rn, sn] = measure();
+    record(rn.position);
+    progress.push_back(sn);
+  }
+}
+
+}  // namespace pba::ik

@@ -1,0 +1,79 @@
+#pragma once
+// One interface for every IK method of the course texts (Workbook §2.2–2.5, IK slides, CMU asst4,
+// Aristidou & Lasenby 2011, Buss & Kim 2005). A solve moves a Pose so that the effectors reach their
+// goals, and reports how it stopped (IK slides, "Stopping"): success within tolerance, target
+// unreachable, stalled (no progress over k iterations: a local minimum), iteration cap or time cap.
+#include <string>
+#include <vector>
+
+#include "physics/ik/effector.h"
+#include "physics/ik/skeleton.h"
+
+namespace pba::ik {
+
+enum class SolverKind {
+  Analytic,            ///< single joint (dot & cross product) or two bones (law of cosines + pole)
+  Ccd,                 ///< cyclic coordinate descent (Workbook §2.4, Algorithm 1)
+  Fabrik,              ///< forward and backward reaching IK (Aristidou & Lasenby 2011), sub-bases for trees
+  JacobianTranspose,   ///< Δθ = α Jᵀ Δe with a backtracking line search that guarantees descent
+  PseudoInverse,       ///< Δθ = J⁺ Δe, J⁺ from the SVD with a singular-value cut-off (Workbook §2.5)
+  DampedLeastSquares,  ///< Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe
+  SelectivelyDamped,   ///< Buss & Kim 2005: per-singular-vector damping
+};
+inline constexpr int kSolverKindCount = 7;
+const char* solverName(SolverKind kind);          ///< "analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls"
+const char* solverLongName(SolverKind kind);      ///< "Cyclic coordinate descent", …
+bool solverFromName(const std::string& name, SolverKind* kind);
+
+enum class SolveStatus {
+  Success,       ///< every effector within tolerance
+  Unreachable,   ///< a goal lies beyond the reach of its effector: the chain was stretched toward it
+  Stalled,       ///< the residual stopped decreasing for `stallIterations` iterations (local minimum)
+  IterationCap,  ///< maxIterations reached
+  TimeCap,       ///< maxSeconds reached
+  NotApplicable, ///< the method cannot handle this skeleton (e.g. analytic on a 5-link chain)
+  InvalidInput,  ///< bad skeleton, pose or effector: see SolveResult::message
+};
+const char* statusName(SolveStatus status);
+
+/// Joint limits in Jacobian methods (IK slides, "Joint limits"): clamp the pose after each step, or
+/// also zero the columns of DOFs sitting at a limit and pushed outward (one-sided derivative).
+enum class JacobianLimitMode { Clamp, ZeroColumns };
+
+struct SolveOptions {
+  SolverKind solver = SolverKind::DampedLeastSquares;
+  Real tolerance = 1e-4;          ///< [m] success when every effector is this close
+  Real angleTolerance = 1e-3;     ///< [rad] and 6-DOF effectors are this well aligned
+  int maxIterations = 200;        ///< iteration cap (CCD/FABRIK: passes; Jacobian: steps)
+  Real maxSeconds = 0.0;          ///< [s] time cap; 0 = none (never used by tests: not deterministic)
+  int stallIterations = 20;       ///< k: stalled when the residual has not dropped by stallRatio in k iterations
+  Real stallRatio = 1e-3;         ///< relative progress that counts as progress
+  bool fromRest = false;          ///< repeatability (IK slides): start every solve from the rest pose
+  bool enforceLimits = true;      ///< clamp to joint limits (CCD/FABRIK/analytic) or per limitMode
+  JacobianLimitMode limitMode = JacobianLimitMode::ZeroColumns;
+  Real damping = 0.05;            ///< λ of DLS [m]; typical 0.01–0.5 × the bone length
+  Real singularCutoff = 1e-3;     ///< pinv: singular values below cutoff · σ_max are dropped [1]
+  Real maxErrorStep = 0.0;        ///< [m] clamp of each effector's error per step; 0 = automatic (mean bone length)
+  Real maxJointStep = 0.5;        ///< [rad] clamp of the largest DOF change per Jacobian step (SDLS γ_max = π/4)
+  Real orientationScale = 0.0;    ///< [m/rad] weight of orientation rows; 0 = automatic (mean bone length)
+  bool usePole = false;            ///< analytic two-bone: bend toward polePoint (else keep the current bend plane)
+  Vec3 polePoint{0.0};            ///< [m] world point the elbow should point toward (the "pole target")
+  bool recordHistory = false;     ///< keep the residual and effector position of every iteration
+};
+
+struct SolveResult {
+  SolveStatus status = SolveStatus::InvalidInput;
+  int iterations = 0;
+  Real positionResidual = 0.0;     ///< [m] largest effector distance to its goal at the end
+  Real orientationResidual = 0.0;  ///< [rad] largest 6-DOF orientation error at the end
+  Real seconds = 0.0;              ///< [s] wall time of the solve (measurement only, never used for control unless maxSeconds)
+  std::string message;             ///< for InvalidInput / NotApplicable
+  std::vector<Real> residualHistory;           ///< [m] position residual after each iteration (recordHistory)
+  std::vector<std::vector<Vec3>> effectorPath; ///< per effector: world positions after each iteration (recordHistory)
+};
+
+/// Solves in place: moves `pose` toward the goals of `effectors`. Never throws; never produces NaN.
+SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors,
+                  const SolveOptions& options);
+
+}  // namespace pba::ik

@@ -1,0 +1,173 @@
+#include "ik_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "physics/collision/ray.h"
+
+namespace pba::labs::ik {
+
+namespace {
+constexpr Real kTargetRadiusFactor = 2.2;  // goal sphere radius in bone radii
+constexpr Real kJumpInterval = 1.5;        // [s] between random jumps
+}  // namespace
+
+IkScene::IkScene() { options_.recordHistory = true; }
+
+void IkScene::declareSolverParams(bool withPath) {
+  params_.choiceEnum("solver", &options_.solver, {"analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls"},
+                     "IK method: analytic (1-2 joints), CCD, FABRIK, Jacobian transpose, pseudo-inverse (SVD), "
+                     "damped least squares, selectively damped least squares.");
+  params_.integer("max_iterations", &options_.maxIterations, 1, 5000, "",
+                  "Iteration cap per solve (CCD/FABRIK: passes; Jacobian methods: steps). Typical 100.");
+  params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success when the effector is this close to its goal. Typical 1e-4 m.")
+      .logarithmic();
+  params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of damped least squares. Typical 0.05 m.");
+  params_.flag("from_rest", &options_.fromRest, "Repeatability: start every solve from the rest pose instead of the last pose.");
+  params_.flag("limits", &options_.enforceLimits, "Enforce the joint limits (clamping; Jacobian methods also zero blocked columns).");
+  if (withPath) {
+    params_.choiceEnum("path", &path_, {"mouse", "circle", "figure8", "random"},
+                       "How the goal moves: dragged with the mouse, or along a scripted path for lectures.");
+    params_.real("path_speed", &pathSpeed_, 0.0, 2.0, "Hz", "Laps per second of the scripted path. Typical 0.5 Hz.");
+  }
+}
+
+void IkScene::reset() {
+  rig_ = build();
+  pose_ = rig_.skeleton.restPose();
+  centers_.clear();
+  for (const Effector& e : rig_.effectors) centers_.push_back(e.targetPosition);
+  time_ = 0.0;
+  nextJump_ = 0.0;
+  rng_.seed(seed());
+  Real bones = 0.0;
+  for (int j = 1; j < rig_.skeleton.jointCount(); ++j) bones += glm::length(rig_.skeleton.joint(j).offset);
+  for (const Effector& e : rig_.effectors) bones += glm::length(e.localOffset);
+  const Real mean = bones / std::max(1, rig_.skeleton.jointCount() - 1 + static_cast<int>(rig_.effectors.size()));
+  boneRadius_ = std::clamp(0.12 * mean, 0.004, 0.05);
+  step(0.0);
+}
+
+void IkScene::step(Real dt) {
+  time_ += dt;
+  if (!dragging_ && path_ != TargetPath::Mouse) {
+    const Real w = 2.0 * kPi * pathSpeed_ * time_;
+    for (size_t k = 0; k < rig_.effectors.size(); ++k) {
+      const Real r = pathRadius(), phase = w + 0.7 * Real(k);
+      Vec3 offset(0.0);
+      if (path_ == TargetPath::Circle) offset = r * Vec3(std::cos(phase) - 1.0, std::sin(phase), 0.3 * std::sin(phase));
+      if (path_ == TargetPath::Figure8) offset = r * Vec3(std::sin(phase) - 0.5, std::sin(2.0 * phase), 0.3 * std::cos(phase));
+      if (path_ != TargetPath::RandomJumps) rig_.effectors[k].targetPosition = centers_[k] + offset;
+    }
+    if (path_ == TargetPath::RandomJumps && time_ >= nextJump_) {
+      nextJump_ = time_ + kJumpInterval;
+      std::uniform_real_distribution<Real> u(-1.0, 1.0);
+      for (size_t k = 0; k < rig_.effectors.size(); ++k)
+        rig_.effectors[k].targetPosition = centers_[k] + 1.5 * pathRadius() * Vec3(u(rng_) - 0.5, u(rng_), 0.5 * u(rng_));
+    }
+  }
+  solveNow();
+}
+
+void IkScene::solveNow() { last_ = solve(rig_.skeleton, pose_, rig_.effectors, options_); }
+
+void IkScene::draw(DebugDraw& d) const {
+  const std::vector<Frame> f = forwardKinematics(rig_.skeleton, pose_);
+  const Real r = boneRadius_;
+  const bool many = rig_.skeleton.jointCount() > 200;
+  for (int j = 0; j < rig_.skeleton.jointCount(); ++j) {
+    const Joint& joint = rig_.skeleton.joint(j);
+    const Frame& fj = f[static_cast<size_t>(j)];
+    if (joint.parent >= 0) d.capsule(f[static_cast<size_t>(joint.parent)].position, fj.position, r, colors::kBlue);
+    if (!many) d.sphere(fj.position, 1.3 * r, joint.type == JointType::Fixed ? colors::kGrey : colors::kDark);
+    if (!many && joint.type == JointType::Hinge) {
+      const Vec3 a = fj.pre * joint.axis;
+      d.line(fj.position - 3.0 * r * a, fj.position + 3.0 * r * a, colors::kRed);
+      if (showLimits_ && joint.hi[0] - joint.lo[0] < 2.0 * kPi - 1e-9) {
+        // Limit arc: the allowed range of the bone direction about the hinge axis.
+        const std::vector<int>& kids = rig_.skeleton.children(j);
+        Vec3 bone = kids.empty() ? Vec3(1, 0, 0) : rig_.skeleton.joint(kids[0]).offset;
+        for (const Effector& e : rig_.effectors)
+          if (e.joint == j) bone = e.localOffset;
+        const Vec3 from = fj.pre * glm::angleAxis(joint.lo[0], joint.axis) * bone;
+        d.arc(fj.position, a, from, joint.hi[0] - joint.lo[0], 6.0 * r, colors::kOrange);
+      }
+    }
+    if (!many && showLimits_ && joint.type == JointType::Ball && joint.hi[1] < kPi - 1e-9 && joint.parent >= 0) {
+      const Vec3 restDir = fj.pre * Vec3(1, 0, 0);
+      d.cone(fj.position, restDir, joint.hi[1], 5.0 * r, colors::kOrange);
+    }
+  }
+  for (size_t k = 0; k < rig_.effectors.size(); ++k) {
+    const Effector& e = rig_.effectors[k];
+    const Vec3 p = effectorPosition(e, f);
+    d.capsule(f[static_cast<size_t>(e.joint)].position, p, r, colors::kBlue);
+    d.sphere(p, 1.5 * r, colors::kGreen);
+    d.sphere(e.targetPosition, kTargetRadiusFactor * r, dragging_ ? colors::kYellow : colors::kRed);
+    if (e.kind == EffectorKind::PositionOrientation) {
+      d.frame(p, effectorOrientation(e, f), 8.0 * r);
+      d.frame(e.targetPosition, e.targetOrientation, 10.0 * r);
+    }
+    if (showPath_ && k < last_.effectorPath.size()) {
+      const std::vector<Vec3>& path = last_.effectorPath[k];
+      for (size_t i = 1; i < path.size(); ++i) d.line(path[i - 1], path[i], colors::kPurple);
+    }
+  }
+  char label[128];
+  std::snprintf(label, sizeof label, "%s: %s, %d it, %.2e m", solverName(options_.solver), statusName(last_.status), last_.iterations,
+                last_.positionResidual);
+  if (!rig_.effectors.empty()) d.text(rig_.effectors[0].targetPosition + Vec3(0, 4.0 * r, 0), label, colors::kDark);
+}
+
+nlohmann::json IkScene::metrics() const {
+  return {{"solver", solverName(options_.solver)},
+          {"iterations", last_.iterations},
+          {"residual", last_.positionResidual},
+          {"residual_rad", last_.orientationResidual},
+          {"status", statusName(last_.status)},
+          {"dofs", rig_.skeleton.dofCount()},
+          {"limit_violation", limitViolation(rig_.skeleton, pose_)},
+          {"solve_us", last_.seconds * 1e6}};
+}
+
+void IkScene::ui() {
+  ImGui::Checkbox("show limits", &showLimits_);
+  ImGui::SameLine();
+  ImGui::Checkbox("show effector path", &showPath_);
+  if (!last_.message.empty()) ImGui::TextWrapped("%s", last_.message.c_str());
+  // Per-joint angle bars (first DOF of each joint, within its limits).
+  const int n = std::min(rig_.skeleton.dofCount(), 24);
+  for (int i = 0; i < n; ++i) {
+    const Real lo = rig_.skeleton.dofLo(i), hi = rig_.skeleton.dofHi(i), v = pose_.dofs[static_cast<size_t>(i)];
+    const float fraction = hi > lo ? static_cast<float>((v - lo) / (hi - lo)) : 0.5f;
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "dof %d: %.1f deg", i, radToDeg(v));
+    ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
+  }
+}
+
+std::optional<std::string> IkScene::nonFiniteState() const {
+  for (Real v : pose_.dofs)
+    if (!isFinite(v)) return "a joint angle is not finite";
+  return std::nullopt;
+}
+
+std::optional<app::PickHit> IkScene::pick(const app::Ray& ray) const {
+  std::optional<app::PickHit> best;
+  for (size_t k = 0; k < rig_.effectors.size(); ++k) {
+    const std::optional<Real> t = intersectRaySphere(ray, rig_.effectors[k].targetPosition, 2.0 * kTargetRadiusFactor * boneRadius_);
+    if (t && (!best || *t < best->distance)) best = app::PickHit{static_cast<int>(k), *t, pointAt(ray, *t)};
+  }
+  return best;
+}
+
+void IkScene::drag(int handle, const Vec3& target) {
+  if (handle < 0 || handle >= static_cast<int>(rig_.effectors.size())) return;
+  dragging_ = true;
+  rig_.effectors[static_cast<size_t>(handle)].targetPosition = target;
+}
+
+}  // namespace pba::labs::ik

@@ -1,0 +1,40 @@
+// IK lab, scene "limits": joint limits shown as arcs (hinges) and cones (ball joints) while a goal
+// moves out of the allowed workspace (Workbook §2.1 task 5; IK slides, "Joint limits"; exercise IK-6).
+#include "ik_scene.h"
+
+namespace pba::labs::ik {
+namespace {
+
+class LimitsScene final : public IkScene {
+ public:
+  LimitsScene() {
+    options_.solver = SolverKind::Ccd;
+    options_.maxIterations = 50;
+    declareSolverParams();
+    params_.angle("limit", &limit_, 5.0, 180.0, "Every joint may turn at most ±limit from its rest angle.").needsReset();
+    params_.integer("links", &links_, 2, 12, "", "Number of hinge links.").needsReset();
+    path_ = TargetPath::Figure8;
+  }
+  std::string description() const override {
+    return "Hinges limited to ±limit (orange arcs): the chain clamps at its limits and stops short where the goal leaves the workspace.";
+  }
+
+ protected:
+  Rig build() const override {
+    ChainDesc d;
+    d.links = links_;
+    d.limit = limit_;
+    d.totalLength = 2.0;
+    return buildIkChain(d).value();
+  }
+  Real pathRadius() const override { return 0.8; }
+
+ private:
+  Real limit_ = degToRad(35.0);
+  int links_ = 6;
+};
+
+}  // namespace
+}  // namespace pba::labs::ik
+
+PBA_REGISTER_SCENE("Chains", "limits", pba::labs::ik::LimitsScene);

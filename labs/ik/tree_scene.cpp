@@ -1,0 +1,34 @@
+// IK lab, scene "tree": several effectors on one skeleton (Workbook §2.1 task 5, §2.7; IK slides,
+// "Multiple end effectors"): a hand reaching with five finger tips, or Buss & Kim's "double Y".
+#include "ik_scene.h"
+
+namespace pba::labs::ik {
+namespace {
+
+enum class TreeShape { Hand, DoubleY };
+
+class TreeScene final : public IkScene {
+ public:
+  TreeScene() {
+    options_.solver = SolverKind::SelectivelyDamped;
+    options_.maxIterations = 30;
+    declareSolverParams();
+    params_.choiceEnum("shape", &shape_, {"hand", "double-y"}, "The tree: a hand with five finger tips, or Buss & Kim's double Y.")
+        .needsReset();
+  }
+  std::string description() const override {
+    return "Several goals on one tree: the Jacobian stacks one 3-row block per effector; FABRIK averages at sub-bases.";
+  }
+
+ protected:
+  Rig build() const override { return shape_ == TreeShape::Hand ? buildHand().value() : buildDoubleY().value(); }
+  Real pathRadius() const override { return shape_ == TreeShape::Hand ? 0.03 : 0.3; }
+
+ private:
+  TreeShape shape_ = TreeShape::DoubleY;
+};
+
+}  // namespace
+}  // namespace pba::labs::ik
+
+PBA_REGISTER_SCENE("Trees", "tree", pba::labs::ik::TreeScene);

@@ -1,0 +1,182 @@
+// Tests of the IK library that use no exercise code: skeleton and forward kinematics, rotations,
+// linear algebra, the two-bone geometry, builders and input validation.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "physics/ik/analytic.h"
+#include "physics/ik/builders.h"
+#include "physics/ik/linalg.h"
+#include "physics/ik/solver.h"
+#include "support/expect_helpers.h"
+
+namespace pba::ik {
+namespace {
+
+TEST(IkSkeleton, ForwardKinematicsOfAPlanarChainMatchesTrigonometry) {
+  ChainDesc d;
+  d.links = 3;
+  d.totalLength = 3.0;
+  Rig rig = buildIkChain(d).value();
+  Pose pose = rig.skeleton.restPose();
+  pose.dofs = {0.3, -0.5, 1.1};
+  const std::vector<Frame> frames = forwardKinematics(rig.skeleton, pose);
+  // Reference: tip = Σ L (cos Θᵢ, sin Θᵢ) with Θᵢ the cumulative angle (CMU asst4, "Character").
+  Vec3 expected(0.0);
+  Real cumulative = 0.0;
+  for (Real a : pose.dofs) {
+    cumulative += a;
+    expected += Vec3(std::cos(cumulative), std::sin(cumulative), 0.0);
+  }
+  // A few roundings per link: 1e-14 m.
+  EXPECT_VEC3_NEAR(effectorPosition(rig.effectors[0], frames), expected, 1e-14);
+}
+
+TEST(IkSkeleton, EulerXYZRoundTripsAndRotationVectorsRoundTrip) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<Real> u(-1.5, 1.5);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 e(u(rng) * 2.0, u(rng), u(rng) * 2.0);
+    const Vec3 back = eulerXYZFromQuat(quatFromEulerXYZ(e));
+    EXPECT_VEC3_NEAR(back, e, 1e-9);
+    const Vec3 r(u(rng), u(rng), u(rng));
+    EXPECT_VEC3_NEAR(rotationVector(quatFromRotationVector(r)), r, 1e-12);
+  }
+  EXPECT_VEC3_NEAR(rotationVector(Quat(1, 0, 0, 0)), Vec3(0.0), 0.0);
+}
+
+TEST(IkSkeleton, ShortestArcHandlesParallelOppositeAndZeroVectors) {
+  const Vec3 x(1, 0, 0);
+  EXPECT_VEC3_NEAR(shortestArc(x, Vec3(0, 2, 0)) * x, Vec3(0, 1, 0), 1e-15);
+  EXPECT_VEC3_NEAR(shortestArc(x, Vec3(-3, 0, 0)) * x, Vec3(-1, 0, 0), 1e-15);
+  EXPECT_VEC3_NEAR(shortestArc(x, Vec3(0.0)) * x, x, 0.0);
+}
+
+TEST(IkSkeleton, AddRejectsBadParentsAxesAndLimitsNamingTheField) {
+  Skeleton s;
+  Joint j;
+  j.parent = 3;
+  Result<int> r = s.add(j);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().find("parent"), std::string::npos);
+  j.parent = -1;
+  j.axis = Vec3(0.0);
+  EXPECT_NE(s.add(j).error().find("axis"), std::string::npos);
+  j.axis = Vec3(0, 0, 1);
+  j.lo[0] = 1.0;
+  j.hi[0] = -1.0;
+  EXPECT_NE(s.add(j).error().find("limits"), std::string::npos);
+}
+
+TEST(IkLinalg, SvdReconstructsAWideMatrixWithOrthonormalFactors) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  Matrix J(6, 17);
+  for (Real& x : J.data) x = u(rng);
+  const Svd d = svd(J);
+  ASSERT_EQ(d.sigma.size(), 6u);
+  for (int r = 0; r < J.rows; ++r)
+    for (int c = 0; c < J.cols; ++c) {
+      Real sum = 0.0;
+      for (size_t i = 0; i < d.sigma.size(); ++i) sum += d.sigma[i] * d.u[i][static_cast<size_t>(r)] * d.v[i][static_cast<size_t>(c)];
+      EXPECT_NEAR(sum, J(r, c), 1e-12);
+    }
+  for (size_t i = 0; i < 6; ++i)
+    for (size_t k = 0; k < 6; ++k) EXPECT_NEAR(dot(d.v[i], d.v[k]), i == k ? 1.0 : 0.0, 1e-12);
+  for (size_t i = 1; i < 6; ++i) EXPECT_GE(d.sigma[i - 1], d.sigma[i]);
+}
+
+TEST(IkLinalg, SvdOfARankDeficientMatrixReportsZeroSingularValues) {
+  Matrix J(3, 4);  // two equal rows: rank 2
+  const Real rows[3][4] = {{1, 2, 3, 4}, {1, 2, 3, 4}, {0, 1, 0, 1}};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 4; ++c) J(r, c) = rows[r][c];
+  const Svd d = svd(J);
+  EXPECT_EQ(d.sigma[2], 0.0);
+  EXPECT_TRUE(d.v[2].empty());
+}
+
+TEST(IkLinalg, CholeskySolvesASymmetricPositiveDefiniteSystemAndRejectsASingularOne) {
+  Matrix A(2, 2);
+  A(0, 0) = 4;
+  A(0, 1) = A(1, 0) = 1;
+  A(1, 1) = 3;
+  std::vector<Real> x;
+  ASSERT_TRUE(solveSpd(A, {1, 2}, x));
+  EXPECT_NEAR(4 * x[0] + x[1], 1.0, 1e-15);
+  EXPECT_NEAR(x[0] + 3 * x[1], 2.0, 1e-15);
+  Matrix S(2, 2);
+  S(0, 0) = S(0, 1) = S(1, 0) = S(1, 1) = 1.0;
+  EXPECT_FALSE(solveSpd(S, {1, 2}, x));
+}
+
+TEST(IkTwoBone, GeometryPutsTheWristOnTheTargetAndTheElbowInThePolePlane) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  const Real a = 0.9, b = 0.7;
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 s(u(rng), u(rng), u(rng)), t = s + Vec3(u(rng), u(rng), u(rng)), pole(u(rng) * 3, u(rng) * 3, 2.0);
+    const TwoBonePose p = twoBoneGeometry(s, a, b, t, pole);
+    const Real d = glm::length(t - s);
+    if (d > a + b || d < a - b) {
+      EXPECT_FALSE(p.reachable);
+      continue;
+    }
+    // Law of cosines is exact up to rounding: 1e-12 m.
+    EXPECT_VEC3_NEAR(p.wrist, t, 1e-12);
+    EXPECT_NEAR(glm::length(p.elbow - s), a, 1e-12);
+    EXPECT_NEAR(glm::length(p.wrist - p.elbow), b, 1e-12);
+    const Vec3 normal = glm::cross(t - s, pole - s);
+    if (glm::length(normal) > 1e-6) {
+      EXPECT_NEAR(glm::dot(p.elbow - s, normal / glm::length(normal)), 0.0, 1e-12);
+    }
+  }
+}
+
+TEST(IkBuilders, RejectBadDescriptionsAndBuildTheDocumentedShapes) {
+  ChainDesc d;
+  d.links = 0;
+  EXPECT_NE(buildIkChain(d).error().find("links"), std::string::npos);
+  d.links = 1000;
+  const Rig chain = buildIkChain(d).value();
+  EXPECT_EQ(chain.skeleton.jointCount(), 1000);
+  EXPECT_NEAR(reach(chain.skeleton, 0, chain.effectors[0]), d.totalLength, 1e-9);
+  EXPECT_EQ(buildHand().value().effectors.size(), 5u);
+  EXPECT_EQ(buildDoubleY().value().effectors.size(), 4u);
+}
+
+TEST(IkSolve, InvalidInputsGiveAClearStatusAndMessage) {
+  Rig rig = buildIkChain(ChainDesc{}).value();
+  Pose pose = rig.skeleton.restPose();
+  pose.dofs.pop_back();
+  SolveResult r = solve(rig.skeleton, pose, rig.effectors, SolveOptions{});
+  EXPECT_EQ(r.status, SolveStatus::InvalidInput);
+  EXPECT_NE(r.message.find("pose.dofs"), std::string::npos);
+  pose = rig.skeleton.restPose();
+  rig.effectors[0].joint = 99;
+  r = solve(rig.skeleton, pose, rig.effectors, SolveOptions{});
+  EXPECT_EQ(r.status, SolveStatus::InvalidInput);
+  EXPECT_NE(r.message.find("effectors[0].joint"), std::string::npos);
+}
+
+TEST(IkSolve, AnalyticSolverRefusesLongChainsWithNotApplicable) {
+  Rig rig = buildIkChain(ChainDesc{}).value();
+  Pose pose = rig.skeleton.restPose();
+  SolveOptions o;
+  o.solver = SolverKind::Analytic;
+  const SolveResult r = solve(rig.skeleton, pose, rig.effectors, o);
+  EXPECT_EQ(r.status, SolveStatus::NotApplicable);
+  EXPECT_FALSE(r.message.empty());
+}
+
+TEST(IkSolve, SolverNamesRoundTrip) {
+  for (int k = 0; k < kSolverKindCount; ++k) {
+    SolverKind kind;
+    ASSERT_TRUE(solverFromName(solverName(static_cast<SolverKind>(k)), &kind));
+    EXPECT_EQ(static_cast<int>(kind), k);
+  }
+}
+
+}  // namespace
+}  // namespace pba::ik

@@ -1,0 +1,202 @@
+// Unit tests of the IK exercises' functions in isolation (suite names carry the tag: IK_1_… IK_6_…).
+// Expected values come from independent references computed here (rotations applied by glm,
+// finite differences, the SVD formula of the damped step).
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "physics/ik/builders.h"
+#include "physics/ik/exercises.h"
+#include "physics/ik/jacobian.h"
+#include "support/expect_helpers.h"
+
+namespace pba::ik {
+namespace {
+
+Vec3 randomVec(std::mt19937_64& rng, Real scale = 1.0) {
+  std::uniform_real_distribution<Real> u(-scale, scale);
+  return Vec3(u(rng), u(rng), u(rng));
+}
+
+TEST(IK_1_AnalyticSingleJoint, TurnsTheBoneOntoTheTargetDirection) {
+  std::mt19937_64 rng(1);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 b = randomVec(rng), t = randomVec(rng);
+    const AxisAngle r = analyticSingleJoint(b, t);
+    EXPECT_NEAR(glm::length(r.axis), 1.0, 1e-12);
+    // Rotating b by the answer points it along t: 1e-12 (unit vectors, a few roundings).
+    EXPECT_VEC3_NEAR(glm::angleAxis(r.angle, r.axis) * glm::normalize(b), glm::normalize(t), 1e-12);
+  }
+}
+
+TEST(IK_1_AnalyticSingleJoint, ParallelOppositeAndZeroDirectionsAreSafe) {
+  const Vec3 x(1, 0, 0);
+  EXPECT_NEAR(analyticSingleJoint(x, 2.0 * x).angle, 0.0, 1e-15);
+  const AxisAngle opposite = analyticSingleJoint(x, -x);
+  EXPECT_NEAR(opposite.angle, kPi, 1e-15);
+  EXPECT_NEAR(glm::dot(opposite.axis, x), 0.0, 1e-15);
+  EXPECT_VEC3_NEAR(glm::angleAxis(opposite.angle, opposite.axis) * x, -x, 1e-15);
+  EXPECT_EQ(analyticSingleJoint(Vec3(0.0), x).angle, 0.0);
+  EXPECT_EQ(analyticSingleJoint(x, Vec3(0.0)).angle, 0.0);
+}
+
+TEST(IK_2_CcdJointUpdate, RotatesTheEffectorOntoTheRayToTheTarget) {
+  std::mt19937_64 rng(2);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3 p = randomVec(rng), e = p + randomVec(rng), t = p + randomVec(rng, 3.0);
+    const Quat q = ccdJointUpdate(p, e, t);
+    const Vec3 moved = p + q * (e - p);
+    // Same distance from the pivot, and on the ray pivot → target.
+    EXPECT_NEAR(glm::length(moved - p), glm::length(e - p), 1e-12);
+    EXPECT_VEC3_NEAR(glm::normalize(moved - p), glm::normalize(t - p), 1e-12);
+  }
+}
+
+TEST(IK_2_CcdJointUpdate, DegenerateCasesGiveUnitQuaternions) {
+  const Vec3 p(0.0), x(1, 0, 0);
+  for (const Quat& q : {ccdJointUpdate(p, p, x), ccdJointUpdate(p, x, p), ccdJointUpdate(p, x, 3.0 * x), ccdJointUpdate(p, x, -x)}) {
+    EXPECT_NEAR(glm::length(glm::dvec4(q.w, q.x, q.y, q.z)), 1.0, 1e-15);
+  }
+  EXPECT_VEC3_NEAR(ccdJointUpdate(p, x, -2.0 * x) * x, -x, 1e-15);
+}
+
+TEST(IK_3_JacobianColumn, IsTheAxisCrossTheLever) {
+  EXPECT_VEC3_NEAR(rotationalColumn(Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(3, 0, 0)), Vec3(0, 2, 0), 1e-15);
+  EXPECT_VEC3_NEAR(rotationalColumn(Vec3(1, 0, 0), Vec3(0.0), Vec3(0, 1, 0)), Vec3(0, 0, 1), 1e-15);
+}
+
+// Every DOF type on one tree, with a position and a 6-DOF effector: analytic J vs central finite
+// differences. With h = 1e-6 the truncation error is O(h²) ≈ 1e-12 and rounding ≈ 1e-16/h = 1e-10.
+TEST(IK_3_JacobianColumn, MatchesCentralFiniteDifferencesForEveryDofType) {
+  for (JointType type : {JointType::Hinge, JointType::Ball, JointType::Free, JointType::Prismatic}) {
+    Skeleton s;
+    Joint root;
+    root.type = JointType::Ball;
+    root.offset = Vec3(0.1, 0.2, 0.3);
+    ASSERT_TRUE(s.add(root).ok());
+    Joint j;
+    j.parent = 0;
+    j.offset = Vec3(0.5, 0.1, 0.0);
+    j.type = type;
+    j.axis = glm::normalize(Vec3(0.3, 1.0, -0.4));
+    j.restRotation = glm::angleAxis(0.4, glm::normalize(Vec3(1, 1, 0)));
+    ASSERT_TRUE(s.add(j).ok());
+    Joint tip;
+    tip.parent = 1;
+    tip.offset = Vec3(0.4, 0.0, 0.1);
+    tip.type = JointType::Hinge;
+    ASSERT_TRUE(s.add(tip).ok());
+    std::mt19937_64 rng(11);
+    for (int trial = 0; trial < 20; ++trial) {
+      Pose pose = randomPose(s, rng);
+      std::vector<Effector> effectors(2);
+      effectors[0].joint = 2;
+      effectors[0].localOffset = Vec3(0.3, 0.0, 0.0);
+      effectors[0].kind = EffectorKind::PositionOrientation;
+      effectors[0].targetPosition = Vec3(1, 1, 1);
+      effectors[0].targetOrientation = glm::angleAxis(1.0, Vec3(0, 1, 0));
+      effectors[1].joint = 1;
+      effectors[1].localOffset = Vec3(0.1, 0.2, 0.0);
+      effectors[1].targetPosition = Vec3(-1, 0.5, 0.2);
+      const std::vector<Frame> frames = forwardKinematics(s, pose);
+      const Real scale = 0.7;
+      const JacobianLayout L = planJacobian(s, pose, effectors, frames, scale);
+      const Matrix J = jacobian(s, pose, effectors, frames, L, scale);
+      const Matrix N = numericalJacobian(s, pose, effectors, L, scale, 1e-6);
+      Real worst = 0.0;
+      for (size_t i = 0; i < J.data.size(); ++i) worst = std::max(worst, std::abs(J.data[i] - N.data[i]));
+      EXPECT_LT(worst, 1e-6) << jointTypeName(type) << " trial " << trial;
+    }
+  }
+}
+
+TEST(IK_4_DampedLeastSquaresStep, EqualsTheSingularValueFormula) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  for (Real lambda : {0.0, 0.1, 1.0}) {
+    Matrix J(3, 7);
+    for (Real& x : J.data) x = u(rng);
+    const std::vector<Real> e = {u(rng), u(rng), u(rng)};
+    const std::vector<Real> step = dampedLeastSquaresStep(J, e, lambda);
+    // Reference: Σ σ/(σ² + λ²) (u·e) v from the SVD.
+    const Svd d = svd(J);
+    std::vector<Real> expected(7, 0.0);
+    for (size_t i = 0; i < d.sigma.size(); ++i) {
+      const Real c = d.sigma[i] / (d.sigma[i] * d.sigma[i] + lambda * lambda) * dot(d.u[i], e);
+      for (size_t k = 0; k < 7; ++k) expected[k] += c * d.v[i][k];
+    }
+    ASSERT_EQ(step.size(), 7u);
+    for (size_t k = 0; k < 7; ++k) EXPECT_NEAR(step[k], expected[k], 1e-10) << "lambda " << lambda;
+  }
+}
+
+TEST(IK_4_DampedLeastSquaresStep, IsFiniteForASingularJacobian) {
+  Matrix J(3, 2);  // both columns equal: J Jᵀ singular; the damping keeps the solve well posed
+  J(0, 0) = J(0, 1) = 1.0;
+  const std::vector<Real> step = dampedLeastSquaresStep(J, {1.0, 1.0, 0.0}, 0.1);
+  ASSERT_EQ(step.size(), 2u);
+  EXPECT_TRUE(isFinite(step[0]) && isFinite(step[1]));
+  EXPECT_NEAR(step[0], step[1], 1e-15);
+}
+
+TEST(IK_5_FabrikPasses, KeepTheSegmentLengthsAndPinTheEnds) {
+  std::mt19937_64 rng(5);
+  std::vector<Vec3> points = {Vec3(0.0)};
+  std::vector<Real> lengths;
+  for (int i = 0; i < 8; ++i) {
+    points.push_back(points.back() + randomVec(rng, 0.5));
+    lengths.push_back(glm::length(points.back() - points[points.size() - 2]));
+  }
+  const Vec3 target(0.7, 0.4, -0.2);
+  fabrikBackward(points, lengths, target);
+  EXPECT_VEC3_NEAR(points.back(), target, 0.0);
+  for (size_t i = 0; i < lengths.size(); ++i) EXPECT_NEAR(glm::length(points[i + 1] - points[i]), lengths[i], 1e-12);
+  fabrikForward(points, lengths, Vec3(0.0));
+  EXPECT_VEC3_NEAR(points.front(), Vec3(0.0), 0.0);
+  for (size_t i = 0; i < lengths.size(); ++i) EXPECT_NEAR(glm::length(points[i + 1] - points[i]), lengths[i], 1e-12);
+}
+
+TEST(IK_5_FabrikPasses, ConvergeOnAReachableTargetAndCoincidentPointsStayFinite) {
+  std::vector<Vec3> points = {Vec3(0.0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0)};
+  const std::vector<Real> lengths = {1, 1, 1};
+  const Vec3 target(1.0, 1.5, 0.5);
+  for (int it = 0; it < 100; ++it) {
+    fabrikBackward(points, lengths, target);
+    fabrikForward(points, lengths, Vec3(0.0));
+  }
+  EXPECT_LT(glm::length(points.back() - target), 1e-6);
+  std::vector<Vec3> same(4, Vec3(0.0));
+  fabrikBackward(same, lengths, Vec3(0.0));
+  fabrikForward(same, lengths, Vec3(0.0));
+  for (const Vec3& p : same) EXPECT_TRUE(isFinite(p));
+}
+
+TEST(IK_6_JointLimitClamping, ClampsScalarDofsAndFreeJointAngles) {
+  Skeleton s;
+  Joint ball;
+  ball.type = JointType::Ball;
+  for (int k = 0; k < 3; ++k) {
+    ball.lo[k] = -0.5;
+    ball.hi[k] = 0.25;
+  }
+  ASSERT_TRUE(s.add(ball).ok());
+  Joint free;
+  free.parent = 0;
+  free.type = JointType::Free;
+  free.maxRotation = 0.3;
+  ASSERT_TRUE(s.add(free).ok());
+  Pose p = s.restPose();
+  p.dofs = {-2.0, 0.1, 3.0};
+  p.rotations[1] = glm::angleAxis(1.2, glm::normalize(Vec3(1, 2, 3)));
+  clampJointToLimits(s, p, 0);
+  clampJointToLimits(s, p, 1);
+  EXPECT_EQ(p.dofs[0], -0.5);
+  EXPECT_EQ(p.dofs[1], 0.1);
+  EXPECT_EQ(p.dofs[2], 0.25);
+  EXPECT_VEC3_NEAR(rotationVector(p.rotations[1]), 0.3 * glm::normalize(Vec3(1, 2, 3)), 1e-12);
+  EXPECT_LE(limitViolation(s, p), 1e-12);
+}
+
+}  // namespace
+}  // namespace pba::ik

@@ -1,0 +1,46 @@
+#pragma once
+// Shared helper of the IK solver tests: K solves from the rest pose toward goals made by forward
+// kinematics of random poses inside the limits (reachable by construction), with statistics.
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "physics/ik/builders.h"
+#include "physics/ik/solver.h"
+
+namespace pba::ik::testing {
+
+struct BatchStats {
+  int solves = 0;
+  int successes = 0;
+  int nonFinite = 0;
+  Real worstLimitViolation = 0.0;   ///< [rad]
+  Real worstResidual = 0.0;         ///< [m]
+  double meanIterations = 0.0;
+  Real successRate() const { return solves > 0 ? Real(successes) / solves : 0.0; }
+};
+
+inline BatchStats runRandomTargets(const Rig& rig, const SolveOptions& options, int count, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  BatchStats stats;
+  long iterations = 0;
+  for (int i = 0; i < count; ++i) {
+    std::vector<Effector> effectors = rig.effectors;
+    setGoalsFromPose(rig.skeleton, randomPose(rig.skeleton, rng), effectors);
+    Pose pose = rig.skeleton.restPose();
+    const SolveResult r = solve(rig.skeleton, pose, effectors, options);
+    ++stats.solves;
+    iterations += r.iterations;
+    bool finite = isFinite(r.positionResidual);
+    for (Real v : pose.dofs) finite = finite && isFinite(v);
+    if (!finite) ++stats.nonFinite;
+    if (r.status == SolveStatus::Success && r.positionResidual <= options.tolerance) ++stats.successes;
+    stats.worstResidual = std::max(stats.worstResidual, r.positionResidual);
+    stats.worstLimitViolation = std::max(stats.worstLimitViolation, limitViolation(rig.skeleton, pose));
+  }
+  stats.meanIterations = count > 0 ? double(iterations) / count : 0.0;
+  return stats;
+}
+
+}  // namespace pba::ik::testing
