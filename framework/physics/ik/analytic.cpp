@@ -57,6 +57,9 @@ TwoBonePose twoBoneGeometry(const Vec3& s, Real a, Real b, const Vec3& t, const 
   return out;
 }
 
+// Start-up probe: tells the lab whether IK-1 is still a stub.
+PBA_EXERCISE_PROBE(analyticSingleJoint(Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0)));
+
 namespace detail {
 namespace {
 

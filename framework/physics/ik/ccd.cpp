@@ -46,6 +46,9 @@ Quat ccdJointUpdate([[maybe_unused]] const Vec3& pivot, [[maybe_unused]] const V
   // STUB: return exercises::notImplemented("IK-2", Quat(1, 0, 0, 0));
 }
 
+// Start-up probe: tells the lab whether IK-2 is still a stub.
+PBA_EXERCISE_PROBE(ccdJointUpdate(Vec3(0.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0)));
+
 namespace detail {
 namespace {
 

@@ -63,6 +63,17 @@ void fabrikForward([[maybe_unused]] std::vector<Vec3>& points, [[maybe_unused]] 
   // STUB: exercises::markNotImplemented("IK-5");
 }
 
+// Start-up probe: tells the lab whether IK-5 is still a stub.
+namespace {
+void probeFabrikPasses() {
+  std::vector<Vec3> points{Vec3(0.0), Vec3(1.0, 0.0, 0.0)};
+  const std::vector<Real> lengths{1.0};
+  fabrikBackward(points, lengths, Vec3(0.0, 1.0, 0.0));
+  fabrikForward(points, lengths, Vec3(0.0));
+}
+}  // namespace
+PBA_EXERCISE_PROBE(probeFabrikPasses());
+
 namespace detail {
 namespace {
 

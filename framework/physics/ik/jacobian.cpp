@@ -134,4 +134,7 @@ Matrix numericalJacobian(const Skeleton& s, const Pose& pose, const std::vector<
   return J;
 }
 
+// Start-up probe: tells the lab whether IK-3 is still a stub.
+PBA_EXERCISE_PROBE(rotationalColumn(Vec3(0.0, 0.0, 1.0), Vec3(0.0), Vec3(1.0, 0.0, 0.0)));
+
 }  // namespace pba::ik

@@ -45,6 +45,9 @@ std::vector<Real> dampedLeastSquaresStep([[maybe_unused]] const Matrix& J, [[may
   // STUB: return exercises::notImplemented("IK-4", std::vector<Real>(static_cast<size_t>(J.cols), 0.0));
 }
 
+// Start-up probe: tells the lab whether IK-4 is still a stub.
+PBA_EXERCISE_PROBE(dampedLeastSquaresStep(Matrix(1, 1), std::vector<Real>{0.0}, 0.1));
+
 namespace detail {
 namespace {
 

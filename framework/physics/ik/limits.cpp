@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "physics/exercises/not_implemented.h"
+#include "physics/ik/builders.h"
 #include "physics/ik/exercises.h"
 
 namespace pba::ik {
@@ -34,5 +35,16 @@ void clampJointToLimits([[maybe_unused]] const Skeleton& skeleton, [[maybe_unuse
   // END SOLUTION
   // STUB: exercises::markNotImplemented("IK-6");
 }
+
+// Start-up probe: tells the lab whether IK-6 is still a stub.
+namespace {
+void probeLimitClamping() {
+  Result<Rig> rig = buildSingleJoint();
+  if (!rig) return;
+  Pose pose = rig.value().skeleton.restPose();
+  clampJointToLimits(rig.value().skeleton, pose, 0);
+}
+}  // namespace
+PBA_EXERCISE_PROBE(probeLimitClamping());
 
 }  // namespace pba::ik
