@@ -42,6 +42,7 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
     if (Status s = scene->params().setFromText(param, value); !s) return Error{"--set " + s.error()};
   }
   scene->setSeed(o.seed);
+  if (Status s = scene->validate(); !s) return s;
   runner.adopt(std::move(scene), name);
   return Status::success();
 }

@@ -70,6 +70,11 @@ bool LabSession::loadSceneFile(const std::string& path) {
     return false;
   }
   LoadedScene& scene = loaded.value();
+  if (Status s = scene.scene->validate(); !s) {
+    fileError_ = path + ": " + s.error();
+    message_ = "Could not load the scene file; the current scene keeps running.";
+    return false;
+  }
   if (scene.dt) runner_.setDt(*scene.dt);
   scene.scene->setSeed(seed_);
   runner_.adopt(std::move(scene.scene), scene.name);

@@ -53,6 +53,18 @@ void parameterWidgets(LabSession& session) {
   for (Param& p : scene.params().all()) {
     ImGui::PushID(p.name.c_str());
     const std::string label = p.unit.empty() ? p.name : p.name + " [" + p.unit + "]";
+    if (p.kind == ParamKind::Text) {
+      // Applied on Enter, so that a half-typed path is never loaded.
+      char buffer[512];
+      std::snprintf(buffer, sizeof buffer, "%s", p.getText().c_str());
+      if (ImGui::InputText(label.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
+        p.setText(buffer);
+        resetNeeded = resetNeeded || p.needsReset;
+      }
+      helpMarker(p.tooltip + "\nPress Enter to apply.");
+      ImGui::PopID();
+      continue;
+    }
     bool changed = false;
     double value = p.get();
     switch (p.kind) {
@@ -89,6 +101,7 @@ void parameterWidgets(LabSession& session) {
         value = v;
         break;
       }
+      case ParamKind::Text: break;  // handled above
     }
     helpMarker(p.tooltip + (p.needsReset ? "\nTakes effect on reset." : ""));
     // Sliders clamp to the declared range, so the value is always valid: slider extremes are safe.

@@ -61,6 +61,13 @@ Params& Params::choice(std::string name, int* index, std::vector<std::string> ch
   return add(std::move(p));
 }
 
+Params& Params::text(std::string name, std::string* value, std::string tooltip) {
+  Param p{std::move(name), "", std::move(tooltip), ParamKind::Text, 0.0, 0.0};
+  p.getText = [value] { return *value; };
+  p.setText = [value](const std::string& v) { *value = v; };
+  return add(std::move(p));
+}
+
 Params& Params::needsReset() {
   if (!params_.empty()) params_.back().needsReset = true;
   return *this;
@@ -93,6 +100,9 @@ Status Params::setFromText(const std::string& name, const std::string& text) {
   const Param* p = find(name);
   if (!p) return Error{name + ": no such parameter in this scene"};
   switch (p->kind) {
+    case ParamKind::Text:
+      p->setText(text);
+      return Status::success();
     case ParamKind::Flag:
       if (text == "true" || text == "1" || text == "on") return setChecked(*p, 1.0, name);
       if (text == "false" || text == "0" || text == "off") return setChecked(*p, 0.0, name);
@@ -121,6 +131,10 @@ Status Params::setFromJson(const std::string& name, const nlohmann::json& value,
   const Param* p = find(name);
   if (!p) return Error{field + ": no such parameter in this scene"};
   switch (p->kind) {
+    case ParamKind::Text:
+      if (!value.is_string()) return Error{field + ": expected a string, got " + value.dump()};
+      p->setText(value.get<std::string>());
+      return Status::success();
     case ParamKind::Flag:
       if (!value.is_boolean()) return Error{field + ": expected true or false, got " + value.dump()};
       return setChecked(*p, value.get<bool>() ? 1.0 : 0.0, field);
@@ -141,12 +155,17 @@ Status Params::setFromJson(const std::string& name, const nlohmann::json& value,
 nlohmann::json Params::toJson() const {
   nlohmann::json out = nlohmann::json::object();
   for (const Param& p : params_) {
+    if (p.kind == ParamKind::Text) {
+      out[p.name] = p.getText();
+      continue;
+    }
     const double v = p.get();
     switch (p.kind) {
       case ParamKind::Flag: out[p.name] = v != 0.0; break;
       case ParamKind::Choice: out[p.name] = p.choices.at(static_cast<size_t>(v)); break;
       case ParamKind::Integer: out[p.name] = static_cast<long long>(std::llround(v)); break;
       case ParamKind::Real: out[p.name] = v; break;
+      case ParamKind::Text: break;  // handled above
     }
   }
   return out;

@@ -13,7 +13,7 @@
 
 namespace pba::app {
 
-enum class ParamKind { Real, Integer, Flag, Choice };
+enum class ParamKind { Real, Integer, Flag, Choice, Text };
 
 /// One editable parameter. get/set read and write the scene's own field.
 struct Param {
@@ -25,8 +25,10 @@ struct Param {
   bool logarithmic = false;           ///< slider in log scale (wide positive ranges)
   bool needsReset = false;            ///< changing it rebuilds the scene (e.g. particle count)
   std::vector<std::string> choices;   ///< names of a Choice, in index order
-  std::function<double()> get;
+  std::function<double()> get;            ///< Real, Integer, Flag, Choice
   std::function<void(double)> set;
+  std::function<std::string()> getText;  ///< Text (file paths, lists of names)
+  std::function<void(const std::string&)> setText;
   /// For Real parameters whose UI shows degrees: stored in radians, shown in degrees.
   bool degrees = false;
 };
@@ -39,6 +41,9 @@ class Params {
   Params& integer(std::string name, int* value, int min, int max, std::string unit, std::string tooltip);
   Params& flag(std::string name, bool* value, std::string tooltip);
   Params& choice(std::string name, int* index, std::vector<std::string> choices, std::string tooltip);
+  /// Free text, e.g. a model file path or a comma-separated list of joint names. The scene checks
+  /// its meaning in reset() (a file that does not load is the scene's error to report).
+  Params& text(std::string name, std::string* value, std::string tooltip);
   template <typename Enum>
   Params& choiceEnum(std::string name, Enum* value, std::vector<std::string> choices, std::string tooltip) {
     Param p = makeChoice(std::move(name), std::move(choices), std::move(tooltip));

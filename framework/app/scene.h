@@ -39,6 +39,10 @@ class Scene {
 
   /// One sentence: what to look at in this scene.
   virtual std::string description() const = 0;
+  /// Checks what the parameters name before the scene is used (e.g. loads the model file of a text
+  /// parameter). The command line turns an error into exit code 2; a scene file or preset with an
+  /// error is not applied. The message names the file and field: "skeleton: arm.bvh: ...".
+  virtual Status validate() { return Status::success(); }
   /// Rebuilds the simulation state from the current parameters.
   virtual void reset() = 0;
   /// Advances the simulation by dt seconds (fixed step).

@@ -19,6 +19,8 @@ TEST(Params, SetFromTextParsesEveryKindAndValidatesTheRange) {
   EXPECT_EQ(s.mode, 2);
   EXPECT_TRUE(s.params().setFromText("heading", "90").ok());
   EXPECT_NEAR(s.heading, kPi / 2, 1e-15);
+  EXPECT_TRUE(s.params().setFromText("label", "hand_L,hand_R").ok());
+  EXPECT_EQ(s.label, "hand_L,hand_R");
 
   const Status range = s.params().setFromText("speed", "11");
   ASSERT_FALSE(range.ok());
@@ -36,6 +38,7 @@ TEST(Params, SetFromJsonChecksTypesAndPrefixesTheField) {
   EXPECT_EQ(s.params().setFromJson("speed", "fast", "params.").error(), "params.speed: expected a number, got \"fast\"");
   EXPECT_EQ(s.params().setFromJson("visible", 1, "params.").error(), "params.visible: expected true or false, got 1");
   EXPECT_NE(s.params().setFromJson("mode", "x", "params.").error().find("params.mode"), std::string::npos);
+  EXPECT_EQ(s.params().setFromJson("label", 3, "params.").error(), "params.label: expected a string, got 3");
   EXPECT_TRUE(s.params().setFromJson("speed", 3.0, "params.").ok());
   EXPECT_EQ(s.speed, 3.0);
 }
@@ -47,6 +50,7 @@ TEST(Params, ToJsonThenSetFromJsonRestoresEveryValueExactly) {
   a.visible = false;
   a.mode = 1;
   a.heading = 0.3;
+  a.label = "a \"quoted\" name";
   const nlohmann::json saved = nlohmann::json::parse(a.params().toJson().dump());
   ConstantVelocityScene b;
   for (const auto& [key, value] : saved.items()) ASSERT_TRUE(b.params().setFromJson(key, value, "").ok()) << key;
@@ -54,6 +58,7 @@ TEST(Params, ToJsonThenSetFromJsonRestoresEveryValueExactly) {
   EXPECT_EQ(b.count, a.count);
   EXPECT_EQ(b.visible, a.visible);
   EXPECT_EQ(b.mode, a.mode);
+  EXPECT_EQ(b.label, a.label);
   // Angles travel in degrees: one conversion each way, so equal to within a few ulps.
   EXPECT_NEAR(b.heading, a.heading, 4e-16);
   EXPECT_EQ(b.params().toJson(), saved) << "a second save must be identical to the first";

@@ -168,6 +168,9 @@ TEST(CommandLine, PrepareRunnerAppliesOverridesAndReportsBadOnes) {
   SceneRunner r;
   ASSERT_TRUE(prepareRunner("test", parse({"--scene", "constant", "--set", "speed=4"}).value(), r).ok());
   EXPECT_EQ(sceneOf(r).speed, 4.0);
+  SceneRunner invalid;
+  const Status v = prepareRunner("test", parse({"--scene", "constant", "--set", "label=invalid"}).value(), invalid);
+  EXPECT_EQ(v.error(), "label: 'invalid' is not a valid label") << "Scene::validate() runs before the scene is used";
   SceneRunner bad;
   const Status s = prepareRunner("test", parse({"--scene", "constant", "--set", "speed=40"}).value(), bad);
   ASSERT_FALSE(s.ok());

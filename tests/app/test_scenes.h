@@ -17,8 +17,13 @@ class ConstantVelocityScene final : public Scene {
     params_.flag("visible", &visible, "A flag parameter.");
     params_.choice("mode", &mode, {"first", "second", "third"}, "A choice parameter.");
     params_.angle("heading", &heading, -180.0, 180.0, "An angle parameter (radians inside, degrees outside).");
+    params_.text("label", &label, "A text parameter.");
   }
   std::string description() const override { return "A point moving at constant speed."; }
+  Status validate() override {
+    if (label == "invalid") return Error{"label: 'invalid' is not a valid label"};
+    return Status::success();
+  }
   void reset() override {
     x = 0.0;
     stepsTaken = 0;
@@ -42,6 +47,7 @@ class ConstantVelocityScene final : public Scene {
   bool visible = true;
   int mode = 0;
   Real heading = 0.0;
+  std::string label = "none";
   Real x = 0.0;
   int stepsTaken = 0;
   bool poison = false;
