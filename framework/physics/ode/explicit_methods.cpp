@@ -1,0 +1,65 @@
+// Generic explicit methods on any OdeSystem: explicit Euler, midpoint (RK2), RK4 (Lobb notes, "ODE view").
+#include <cstddef>
+
+#include "physics/exercises/not_implemented.h"
+#include "physics/ode/integrators.h"
+
+namespace pba::ode {
+namespace {
+void resize(std::vector<Real>& v, std::size_t n) {
+  if (v.size() != n) v.assign(n, 0.0);
+}
+}  // namespace
+
+void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
+  const std::size_t n = system.stateSize();
+  resize(w.s, n);
+  resize(w.k1, n);
+  // BEGIN SOLUTION
+  const Real t = system.time();
+  system.getState(w.s);
+  system.derivative(t, w.s, w.k1);
+  for (std::size_t i = 0; i < n; ++i) w.s[i] += h * w.k1[i];
+  system.setState(w.s);
+  system.setTime(t + h);
+  // END SOLUTION
+  // STUB: exercises::markNotImplemented("PART-1");  // the state stays where it is
+}
+
+void midpointStep(OdeSystem& system, Real h, Workspace& w) {
+  const std::size_t n = system.stateSize();
+  resize(w.s, n);
+  resize(w.k1, n);
+  resize(w.k2, n);
+  resize(w.tmp, n);
+  const Real t = system.time();
+  system.getState(w.s);
+  system.derivative(t, w.s, w.k1);
+  for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + 0.5 * h * w.k1[i];  // s + Δs/2
+  system.derivative(t + 0.5 * h, w.tmp, w.k2);                                  // g_mid
+  for (std::size_t i = 0; i < n; ++i) w.s[i] += h * w.k2[i];
+  system.setState(w.s);
+  system.setTime(t + h);
+}
+
+void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
+  const std::size_t n = system.stateSize();
+  for (std::vector<Real>* v : {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.tmp}) resize(*v, n);
+  // BEGIN SOLUTION
+  const Real t = system.time();
+  system.getState(w.s);
+  system.derivative(t, w.s, w.k1);
+  for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + 0.5 * h * w.k1[i];
+  system.derivative(t + 0.5 * h, w.tmp, w.k2);
+  for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + 0.5 * h * w.k2[i];
+  system.derivative(t + 0.5 * h, w.tmp, w.k3);
+  for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + h * w.k3[i];
+  system.derivative(t + h, w.tmp, w.k4);
+  for (std::size_t i = 0; i < n; ++i) w.s[i] += (h / 6.0) * (w.k1[i] + 2.0 * w.k2[i] + 2.0 * w.k3[i] + w.k4[i]);
+  system.setState(w.s);
+  system.setTime(t + h);
+  // END SOLUTION
+  // STUB: exercises::markNotImplemented("PART-3");  // the state stays where it is
+}
+
+}  // namespace pba::ode

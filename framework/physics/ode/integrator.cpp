@@ -1,0 +1,74 @@
+// Integrator names and the run-time dispatch of Integrator::step().
+#include <cassert>
+
+#include "physics/ode/integrators.h"
+
+namespace pba::ode {
+
+std::string_view integratorName(IntegratorKind kind) {
+  switch (kind) {
+    case IntegratorKind::Euler: return "euler";
+    case IntegratorKind::SymplecticEuler: return "symplectic-euler";
+    case IntegratorKind::Midpoint: return "midpoint";
+    case IntegratorKind::Rk4: return "rk4";
+    case IntegratorKind::Verlet: return "verlet";
+    case IntegratorKind::VelocityVerlet: return "velocity-verlet";
+    case IntegratorKind::ImplicitEuler: return "implicit-euler";
+    case IntegratorKind::Adaptive: return "adaptive";
+  }
+  return "unknown";
+}
+
+std::optional<IntegratorKind> parseIntegrator(std::string_view name) {
+  for (IntegratorKind k : kAllIntegrators) {
+    if (integratorName(k) == name) return k;
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> integratorNames() {
+  std::vector<std::string> names;
+  for (IntegratorKind k : kAllIntegrators) names.emplace_back(integratorName(k));
+  return names;
+}
+
+int integratorOrder(IntegratorKind kind) {
+  switch (kind) {
+    case IntegratorKind::Euler:
+    case IntegratorKind::SymplecticEuler:
+    case IntegratorKind::ImplicitEuler: return 1;
+    case IntegratorKind::Midpoint:
+    case IntegratorKind::Verlet:
+    case IntegratorKind::VelocityVerlet: return 2;
+    case IntegratorKind::Rk4: return 4;
+    case IntegratorKind::Adaptive: return 5;
+  }
+  return 1;
+}
+
+void Integrator::setKind(IntegratorKind kind) {
+  if (kind != kind_) reset();
+  kind_ = kind;
+}
+
+void Integrator::reset() {
+  verlet_ = VerletHistory{};
+  adaptive_ = AdaptiveState{};
+  implicitStats_ = ImplicitEulerStats{};
+}
+
+void Integrator::step(SecondOrderSystem& system, Real h) {
+  assert(h > 0.0);
+  switch (kind_) {
+    case IntegratorKind::Euler: explicitEulerStep(system, h, work_); break;
+    case IntegratorKind::SymplecticEuler: symplecticEulerStep(system, h, work_); break;
+    case IntegratorKind::Midpoint: midpointStep(system, h, work_); break;
+    case IntegratorKind::Rk4: rk4Step(system, h, work_); break;
+    case IntegratorKind::Verlet: verletStep(system, h, verlet_, work_); break;
+    case IntegratorKind::VelocityVerlet: velocityVerletStep(system, h, work_); break;
+    case IntegratorKind::ImplicitEuler: implicitStats_ = implicitEulerStep(system, h, implicitSettings, work_); break;
+    case IntegratorKind::Adaptive: adaptiveStep(system, h, adaptiveSettings, adaptive_, work_); break;
+  }
+}
+
+}  // namespace pba::ode

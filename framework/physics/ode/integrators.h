@@ -1,0 +1,173 @@
+#pragma once
+// The ODE layer's solver half (Lobb notes, "ODE view" and "Solver/state separation"): time integrators
+// that step any OdeSystem / SecondOrderSystem, interchangeable by name at run time.
+//
+//   name               order  kind                       source
+//   euler              1      explicit                   Lobb notes, Euler            (PART-1)
+//   symplectic-euler   1      semi-implicit, symplectic  Lobb "simple loop"; CMU asst4 (PART-2)
+//   midpoint           2      explicit RK2               Lobb notes, Midpoint
+//   rk4                4      explicit RK4               Lobb notes, RK4              (PART-3)
+//   verlet             2      position Verlet, symplectic Ragdoll paper §Verlet (Jakobsen) (PART-6)
+//   velocity-verlet    2      symplectic                 Swope et al. 1982
+//   implicit-euler     1      linearised backward Euler  Baraff & Witkin 1998 eq. 16–18, CG
+//   adaptive           5(4)   embedded RK (Dormand–Prince 1980) with error control (Lobb "adaptive")
+//
+// Stability on the undamped oscillator ẍ = −ω²x (amplification of the energy per step, z = ωh):
+//   euler 1 + z² (always grows) · symplectic Euler bounded for z < 2 · midpoint 1 + z⁴/4 ·
+//   rk4 1 − z⁶/72 + z⁸/576 (stable for z < 2√2) · verlet family bounded for z < 2 ·
+//   implicit Euler 1/(1 + z²) (always decays: unconditionally stable, and dissipative).
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/ode/ode_system.h"
+
+namespace pba::ode {
+
+enum class IntegratorKind {
+  Euler,
+  SymplecticEuler,
+  Midpoint,
+  Rk4,
+  Verlet,
+  VelocityVerlet,
+  ImplicitEuler,
+  Adaptive,
+};
+
+inline constexpr std::array kAllIntegrators = {
+    IntegratorKind::Euler,  IntegratorKind::SymplecticEuler, IntegratorKind::Midpoint,      IntegratorKind::Rk4,
+    IntegratorKind::Verlet, IntegratorKind::VelocityVerlet,  IntegratorKind::ImplicitEuler, IntegratorKind::Adaptive};
+
+/// "euler", "symplectic-euler", … (the names of the table above; command line and UI).
+std::string_view integratorName(IntegratorKind kind);
+/// Inverse of integratorName(); nothing for an unknown name.
+std::optional<IntegratorKind> parseIntegrator(std::string_view name);
+/// All names in kAllIntegrators order (for UI choices).
+std::vector<std::string> integratorNames();
+/// Asymptotic order of the global error (1, 2, 4; 5 for adaptive's propagated solution).
+int integratorOrder(IntegratorKind kind);
+
+/// Scratch buffers of the integrators, reused between steps so that stepping never allocates.
+struct Workspace {
+  std::vector<Real> s, k1, k2, k3, k4, k5, k6, k7, tmp, tmp2;
+};
+
+// ----- Generic methods: any OdeSystem (state copied out, advanced, copied back) -----
+
+// ***** PART-1: explicit Euler (Lobb notes, "ODE view": Euler) *****
+// (1) Read the current state s(t) from the system (getState) and the time t.
+// (2) Evaluate the derivative at the START of the step: k = f(s, t).
+// (3) Move along it: s(t + h) = s(t) + h k, component by component.
+// (4) Write the state back (setState) and advance the system's time to t + h.
+// *****
+void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
+
+/// Midpoint / RK2 (Lobb notes): Δs = h f(s, t); s += h f(s + Δs/2, t + h/2).
+void midpointStep(OdeSystem& system, Real h, Workspace& w);
+
+// ***** PART-3: classical Runge–Kutta 4 (Lobb notes, RK4) *****
+// (1) Read s and t. Evaluate four slopes, each from the previous one:
+//     k1 = f(s, t);  k2 = f(s + (h/2) k1, t + h/2);  k3 = f(s + (h/2) k2, t + h/2);  k4 = f(s + h k3, t + h).
+//     (The notes scale each k by h; here k is the slope itself, so h multiplies at the end.)
+// (2) Combine with Simpson-like weights: s(t + h) = s + h (k1 + 2 k2 + 2 k3 + k4) / 6.
+// (3) Write the state back and advance the time to t + h.
+// *****
+void rk4Step(OdeSystem& system, Real h, Workspace& w);
+
+// ----- Methods that use the split s = (q, v) of a SecondOrderSystem (in place) -----
+
+// ***** PART-2: symplectic (semi-implicit) Euler (Lobb notes, "simple loop"; CMU asst4 pendulum) *****
+// (1) Evaluate the acceleration at the start of the step: a = M⁻¹ f(t, q, v).
+// (2) Update the velocity FIRST: v ← v + h a.
+// (3) Update the position with the NEW velocity: q ← q + h v.
+//     (Using the old velocity here would be explicit Euler, whose energy grows every step.)
+// (4) Tell the system (stateChanged) and advance the time to t + h.
+// *****
+void symplecticEulerStep(SecondOrderSystem& system, Real h, Workspace& w);
+
+/// Velocity Verlet: q += h v + h²a/2; v_half = v + h a/2; v = v_half + h a(q_new, v_half)/2.
+/// Forces that depend on v see the half-step velocity (exact for position-only forces).
+void velocityVerletStep(SecondOrderSystem& system, Real h, Workspace& w);
+
+/// What position Verlet remembers between steps: q(t − h), and the (q, v, h) it produced last, so that
+/// it notices when someone else changed the state (collision, mouse drag, reset, new dt) and restarts.
+struct VerletHistory {
+  std::vector<Real> previous;  ///< q(t − h)
+  std::vector<Real> lastQ, lastV;
+  Real lastH = 0.0;
+  bool valid = false;
+};
+
+// ***** PART-6: position Verlet (Ragdoll paper §2, after Jakobsen 2001) *****
+// The step receives q(t), the previous positions q(t − h) (history.previous) and a = M⁻¹ f at time t.
+// (1) For every coordinate: q(t + h) = 2 q(t) − q(t − h) + h² a. No velocity is used.
+// (2) The velocity is implicit in the positions. Estimate it for the state (second order, exact under
+//     constant acceleration): v(t + h) = (q(t + h) − q(t)) / h + (h/2) a.
+// (3) Shift the history: the old q(t) becomes history.previous; q(t + h) becomes the current position.
+// *****
+void verletStep(SecondOrderSystem& system, Real h, VerletHistory& history, Workspace& w);
+
+struct ImplicitEulerSettings {
+  int maxIterations = 200;      ///< conjugate-gradient iterations per step
+  Real relativeTolerance = 1e-10;  ///< stop when |r| ≤ tol·|b|
+};
+struct ImplicitEulerStats {
+  int iterations = 0;
+  Real relativeResidual = 0.0;
+};
+/// Linearised backward Euler (Baraff & Witkin 1998, eq. 16–18): solve
+///   (M − h ∂f/∂v − h² ∂f/∂q) Δv = h (f₀ + h (∂f/∂q) v₀),   v ← v₀ + Δv,  q ← q₀ + h v,
+/// by preconditioned conjugate gradients, matrix-free through forceDifferential(). Pinned coordinates
+/// (M⁻¹ = 0) are filtered out of the solve (Baraff & Witkin §5.3, the S projection): their Δv is 0.
+ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const ImplicitEulerSettings& settings,
+                                     Workspace& w);
+
+struct AdaptiveSettings {
+  Real tolerance = 1e-6;   ///< local error per unit time, relative to max(1, |s_i|) [1/s]
+  Real minStep = 1e-9;     ///< [s]
+  int maxSubsteps = 100000;  ///< per call
+};
+struct AdaptiveState {
+  Real nextStep = 0.0;  ///< step size proposed by the controller [s]; 0 = start with the full interval
+  long accepted = 0, rejected = 0, evaluations = 0;  ///< running totals
+};
+/// Advances exactly h with as many Dormand–Prince 5(4) substeps as the error control needs
+/// (Dormand & Prince 1980; Hairer, Nørsett & Wanner, Solving ODEs I, §II.5). The embedded 4th-order
+/// solution estimates the local error e of each substep; a substep of size δ is accepted when
+/// e ≤ tolerance·δ ("error per unit step", so the global error stays ≲ tolerance × duration), and the
+/// next size is δ·clamp(0.9 (tolerance·δ/e)^(1/4), 0.2, 5). The notes' step doubling is the same idea
+/// with two half steps in place of the embedded pair.
+void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, AdaptiveState& state, Workspace& w);
+
+/// One object that steps a SecondOrderSystem with the method chosen by name; owns the workspace and
+/// the per-method memory (Verlet history, adaptive step size). Scenes keep one per system.
+class Integrator {
+ public:
+  explicit Integrator(IntegratorKind kind = IntegratorKind::SymplecticEuler) : kind_(kind) {}
+
+  IntegratorKind kind() const { return kind_; }
+  /// Switches method; forgets the per-method memory.
+  void setKind(IntegratorKind kind);
+  /// Forgets the per-method memory (call after a reset of the system).
+  void reset();
+
+  /// Advances the system by h [s] and its time by h.
+  void step(SecondOrderSystem& system, Real h);
+
+  ImplicitEulerSettings implicitSettings;
+  AdaptiveSettings adaptiveSettings;
+  const ImplicitEulerStats& lastImplicitStats() const { return implicitStats_; }
+  const AdaptiveState& adaptiveState() const { return adaptive_; }
+
+ private:
+  IntegratorKind kind_;
+  Workspace work_;
+  VerletHistory verlet_;
+  AdaptiveState adaptive_;
+  ImplicitEulerStats implicitStats_;
+};
+
+}  // namespace pba::ode

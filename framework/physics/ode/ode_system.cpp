@@ -1,0 +1,67 @@
+#include "physics/ode/ode_system.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <vector>
+
+namespace pba::ode {
+
+void SecondOrderSystem::acceleration(Real t, std::span<const Real> q, std::span<const Real> v,
+                                     std::span<Real> out) const {
+  force(t, q, v, out);
+  const std::span<const Real> w = inverseMasses();
+  assert(w.size() == out.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] *= w[i];
+}
+
+void SecondOrderSystem::getState(std::span<Real> out) const {
+  const std::size_t n = dofCount();
+  assert(out.size() == 2 * n);
+  std::ranges::copy(positions(), out.begin());
+  std::ranges::copy(velocities(), out.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
+void SecondOrderSystem::setState(std::span<const Real> state) {
+  const std::size_t n = dofCount();
+  assert(state.size() == 2 * n);
+  std::ranges::copy(state.first(n), positions().begin());
+  std::ranges::copy(state.subspan(n), velocities().begin());
+  stateChanged();
+}
+
+void SecondOrderSystem::derivative(Real t, std::span<const Real> state, std::span<Real> out) const {
+  const std::size_t n = dofCount();
+  std::ranges::copy(state.subspan(n), out.begin());  // q̇ = v
+  acceleration(t, state.first(n), state.subspan(n), out.subspan(n));
+}
+
+void SecondOrderSystem::forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v,
+                                          std::span<const Real> dq, std::span<const Real> dv,
+                                          std::span<Real> out) const {
+  // Central difference along the direction (dq, dv): [f(s + εd) − f(s − εd)] / 2ε, error O(ε²).
+  // ε scales with the size of s and of d so that the perturbation is a fixed relative change.
+  const std::size_t n = dofCount();
+  Real stateScale = 1.0, dirScale = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    stateScale = std::max({stateScale, std::abs(q[i]), std::abs(v[i])});
+    dirScale = std::max({dirScale, std::abs(dq[i]), std::abs(dv[i])});
+  }
+  if (dirScale == 0.0) {
+    std::ranges::fill(out, 0.0);
+    return;
+  }
+  const Real eps = 1e-6 * stateScale / dirScale;
+  std::vector<Real> qp(n), vp(n), qm(n), vm(n), fm(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    qp[i] = q[i] + eps * dq[i];
+    vp[i] = v[i] + eps * dv[i];
+    qm[i] = q[i] - eps * dq[i];
+    vm[i] = v[i] - eps * dv[i];
+  }
+  force(t, qp, vp, out);
+  force(t, qm, vm, fm);
+  for (std::size_t i = 0; i < n; ++i) out[i] = (out[i] - fm[i]) / (2.0 * eps);
+}
+
+}  // namespace pba::ode

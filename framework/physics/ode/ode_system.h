@@ -1,0 +1,76 @@
+#pragma once
+// The ODE layer's half that knows the physics: a "state source" in the words of the Lobb notes
+// ("Solver/state separation", after Witkin & Baraff's SIGGRAPH course notes). The solver
+// (integrators.h) knows nothing about particles; it only sees
+//   state length · get state · set state · derivative ṡ = f(s, t) · time.
+//
+// Glossary
+//   s    state vector, s ∈ ℝᴺ                       (for particles: N = 6n, s = (x₁…xₙ, v₁…vₙ))
+//   ṡ    its time derivative f(s, t)
+//   q, v generalised positions and velocities of a second-order system, q̈ = M⁻¹ f(t, q, q̇)
+//   M    diagonal mass matrix; M⁻¹ = 0 on a pinned coordinate
+#include <cstddef>
+#include <span>
+
+#include "physics/core/types.h"
+
+namespace pba::ode {
+
+/// A first-order initial value problem ṡ = f(s, t) (Lobb notes, "ODE view").
+class OdeSystem {
+ public:
+  virtual ~OdeSystem() = default;
+
+  /// N, the length of the state vector.
+  virtual std::size_t stateSize() const = 0;
+  /// Copies the current state into out (size N).
+  virtual void getState(std::span<Real> out) const = 0;
+  /// Replaces the current state (size N).
+  virtual void setState(std::span<const Real> state) = 0;
+  /// ṡ = f(s, t) at an arbitrary state s. The notes evaluate the derivative of the *current* state;
+  /// taking s as an argument lets the Runge–Kutta stages run without set/get round trips.
+  virtual void derivative(Real t, std::span<const Real> state, std::span<Real> out) const = 0;
+
+  /// Simulated time [s]; integrators advance it by the step they take (the notes' "advance time").
+  Real time() const { return time_; }
+  void setTime(Real t) { time_ = t; }
+
+ private:
+  Real time_ = 0.0;
+};
+
+/// A mechanical system q̈ = M⁻¹ f(t, q, q̇): state s = (q, v) with v = q̇. Symplectic Euler, Verlet and
+/// implicit Euler need this split; the generic methods see it as an OdeSystem.
+class SecondOrderSystem : public OdeSystem {
+ public:
+  /// n, the number of generalised coordinates (3 per particle).
+  virtual std::size_t dofCount() const = 0;
+  /// Views of the system's own position and velocity storage (n values each). Integrators update them
+  /// in place, so a second-order step copies nothing.
+  virtual std::span<Real> positions() = 0;
+  virtual std::span<const Real> positions() const = 0;
+  virtual std::span<Real> velocities() = 0;
+  virtual std::span<const Real> velocities() const = 0;
+  /// M⁻¹ per coordinate [1/kg] (or 1/(kg·m²) for angles); 0 marks a pinned coordinate.
+  virtual std::span<const Real> inverseMasses() const = 0;
+  /// Generalised force f(t, q, v) [N] (or N·m) written to out (n values; overwrite, do not add).
+  virtual void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const = 0;
+  /// Directional derivative of the force: out = (∂f/∂q)·dq + (∂f/∂v)·dv. Implicit Euler uses it as the
+  /// matrix-free Jacobian (Baraff & Witkin 1998 §5). The default takes central finite differences of
+  /// force(); mass-spring systems override it with the analytic Jacobian.
+  virtual void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
+                                 std::span<const Real> dv, std::span<Real> out) const;
+  /// Called by an integrator after it changed positions and velocities (e.g. to refresh caches).
+  virtual void stateChanged() {}
+
+  /// a = M⁻¹ f(t, q, v).
+  void acceleration(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const;
+
+  // OdeSystem, in terms of the split: s = (q, v), ṡ = (v, M⁻¹ f).
+  std::size_t stateSize() const final { return 2 * dofCount(); }
+  void getState(std::span<Real> out) const final;
+  void setState(std::span<const Real> state) final;
+  void derivative(Real t, std::span<const Real> state, std::span<Real> out) const final;
+};
+
+}  // namespace pba::ode

@@ -1,0 +1,83 @@
+#pragma once
+// Two small systems with closed-form solutions, used by the oscillator and orbit scenes, the integrator
+// tests and the benchmarks.
+//
+// Harmonic oscillator (Lobb notes, "ODE view": ẍ = −(k/m) x = −c x): n independent coordinates, each
+//   x(t) = x₀ cos ωt + (v₀/ω) sin ωt,  v(t) = −x₀ ω sin ωt + v₀ cos ωt,  ω = √(k/m),
+//   E = m v²/2 + k x²/2 (constant); phase-space orbits are ellipses.
+// Kepler orbit: a planet of mass m around a fixed sun, f = −G M m r/|r|³;
+//   E = m|v|²/2 − G M m/|r| and L = m r × v are conserved.
+#include <vector>
+
+#include "physics/core/types.h"
+#include "physics/ode/ode_system.h"
+
+namespace pba::ode {
+
+struct OscillatorDesc {
+  Real mass = 1.0;       ///< [kg] > 0
+  Real stiffness = 1.0;  ///< [N/m] > 0 (ω = 1 rad/s with the defaults: Lobb's example)
+  Real x0 = 1.0;         ///< [m] initial displacement
+  Real v0 = 0.0;         ///< [m/s] initial velocity
+  int copies = 1;        ///< independent identical coordinates (benchmarks use many)
+};
+
+class HarmonicOscillator final : public SecondOrderSystem {
+ public:
+  explicit HarmonicOscillator(const OscillatorDesc& desc = {});
+
+  Real omega() const;  ///< [rad/s]
+  const OscillatorDesc& desc() const { return desc_; }
+  /// Exact x(t), v(t) of coordinate 0.
+  Real exactPosition(Real t) const;
+  Real exactVelocity(Real t) const;
+  /// Energy of coordinate i [J].
+  Real energy(std::size_t i = 0) const;
+
+  std::size_t dofCount() const override { return q_.size(); }
+  std::span<Real> positions() override { return q_; }
+  std::span<const Real> positions() const override { return q_; }
+  std::span<Real> velocities() override { return v_; }
+  std::span<const Real> velocities() const override { return v_; }
+  std::span<const Real> inverseMasses() const override { return w_; }
+  void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
+  void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
+                         std::span<const Real> dv, std::span<Real> out) const override;
+
+ private:
+  OscillatorDesc desc_;
+  std::vector<Real> q_, v_, w_;
+};
+
+struct OrbitDesc {
+  Real gm = 1.0;            ///< [m³/s²] G·M of the sun (scaled units: a 1 m orbit has period 2π s)
+  Real planetMass = 1.0;    ///< [kg]
+  Vec3 position{1.0, 0.0, 0.0};  ///< [m] initial, relative to the sun at the origin
+  Vec3 velocity{0.0, 0.0, -1.2}; ///< [m/s] initial (1.0 would be circular; 1.2 gives e ≈ 0.44)
+};
+
+class KeplerOrbit final : public SecondOrderSystem {
+ public:
+  explicit KeplerOrbit(const OrbitDesc& desc = {});
+  const OrbitDesc& desc() const { return desc_; }
+  Vec3 position() const { return {q_[0], q_[1], q_[2]}; }
+  Vec3 velocity() const { return {v_[0], v_[1], v_[2]}; }
+  Real energy() const;           ///< [J]
+  Vec3 angularMomentum() const;  ///< [kg·m²/s]
+  /// Period from Kepler's third law, T = 2π √(a³/GM), a from the energy [s].
+  Real period() const;
+
+  std::size_t dofCount() const override { return 3; }
+  std::span<Real> positions() override { return q_; }
+  std::span<const Real> positions() const override { return q_; }
+  std::span<Real> velocities() override { return v_; }
+  std::span<const Real> velocities() const override { return v_; }
+  std::span<const Real> inverseMasses() const override { return w_; }
+  void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
+
+ private:
+  OrbitDesc desc_;
+  std::vector<Real> q_, v_, w_;
+};
+
+}  // namespace pba::ode

@@ -1,0 +1,46 @@
+#include "physics/ode/pendulum.h"
+
+#include <cmath>
+
+#include "physics/core/validate.h"
+
+namespace pba::ode {
+
+Status validate(const PendulumDesc& d) {
+  for (Status s : {checkPositive("pendulum.mass", d.mass), checkPositive("pendulum.comDistance", d.comDistance),
+                   checkRange("pendulum.comOffsetAngle", d.comOffsetAngle, -kPi, kPi),
+                   checkRange("pendulum.inertiaCm", d.inertiaCm, 0.0, 1e6), checkRange("pendulum.damping", d.damping, 0.0, 1e3),
+                   checkRange("pendulum.gravity", d.gravity, 0.0, 1e3)}) {
+    if (!s) return s;
+  }
+  return Status::success();
+}
+
+Real pivotInertia(const PendulumDesc& d) { return d.inertiaCm + d.mass * d.comDistance * d.comDistance; }
+
+Vec3 centerOfMassOffset(const PendulumDesc& d, Real angle) {
+  const Real phi = angle + d.comOffsetAngle;
+  return d.comDistance * Vec3(std::sin(phi), -std::cos(phi), 0.0);
+}
+
+Real angularAcceleration(const PendulumDesc& d, const PendulumState& s, const Vec3& ap) {
+  const Vec3 y = centerOfMassOffset(d, s.angle);
+  const Vec3 yPerp(-y.y, y.x, 0.0);  // y rotated by +90° about z
+  // In the pivot's frame the body feels gravity plus the fictitious force −m a_p at its centre of mass.
+  const Real torque = -d.mass * glm::dot(ap, yPerp) - d.mass * d.gravity * d.comDistance * std::sin(s.angle + d.comOffsetAngle);
+  return torque / pivotInertia(d);
+}
+
+PendulumState stepPendulum(const PendulumDesc& d, const PendulumState& s, const Vec3& ap, Real h) {
+  PendulumState n;
+  n.angularVelocity = (s.angularVelocity + h * angularAcceleration(d, s, ap)) * std::exp(-d.damping * h);
+  n.angle = s.angle + h * n.angularVelocity;
+  return n;
+}
+
+Real pendulumEnergy(const PendulumDesc& d, const PendulumState& s) {
+  return 0.5 * pivotInertia(d) * s.angularVelocity * s.angularVelocity +
+         d.mass * d.gravity * d.comDistance * (1.0 - std::cos(s.angle + d.comOffsetAngle));
+}
+
+}  // namespace pba::ode

@@ -1,0 +1,88 @@
+#pragma once
+// Particle collisions with static obstacles (planes, spheres, boxes), after the Lobb notes'
+// "particle–plane collision": split v = v_n + v_t with v_n = (N·v) N, reflect v_n' = −r v_n, and treat
+// slow contacts as resting contact.
+//
+// Our contact model, step by step (applied after each integrator step):
+//   1. Signed distance φ of the particle's surface to the obstacle and the outward normal N.
+//   2. Position projection: if φ < 0 move the particle out by −φ along N. The notes back the step up to
+//      the contact time; projecting is the cheap, robust alternative (Jakobsen 2001; also what the
+//      Ragdoll paper's "projection" does) and it guarantees that nothing ends below a surface.
+//   3. Velocity response (PART-5) when the particle touches (φ < slop) and moves inward (v_n < 0):
+//      restitution on the normal part — zero below a resting speed, so gravity's g·h per step never
+//      turns into a micro-bounce (no jitter: the notes' resting-contact switch) — and Coulomb friction
+//      on the tangential part, as an impulse bounded by μ times the normal impulse.
+// Why the impulse form is Coulomb's law: over a step the normal impulse per unit mass is Δv_n; Coulomb
+// bounds the tangential impulse by μ Δv_n. Resting on a plane under gravity Δv_n = g h each step, so
+// kinetic friction decelerates by exactly μ_k g, and a particle on a slope of angle θ sticks when
+// tan θ ≤ μ_s — the closed forms the tests check.
+#include <span>
+#include <vector>
+
+#include "physics/core/types.h"
+#include "physics/particles/particles.h"
+
+namespace pba::particles {
+
+struct ContactMaterial {
+  Real restitution = 0.5;      ///< r in [0, 1]: share of the normal speed a bounce keeps
+  Real staticFriction = 0.6;   ///< μ_s ≥ 0: sticks while |v_t| ≤ μ_s Δv_n
+  Real kineticFriction = 0.4;  ///< μ_k ≥ 0, ≤ μ_s: sliding loses μ_k Δv_n of tangential speed
+  Real restingSpeed = 0.1;     ///< [m/s] impacts slower than this do not bounce (resting contact)
+};
+
+/// Distance below which a particle moving inward counts as touching [m].
+inline constexpr Real kContactSlop = 1e-6;
+
+struct PlaneObstacle {
+  Vec3 point{0.0};           ///< [m] any point of the plane
+  Vec3 normal{0.0, 1.0, 0.0};  ///< unit, pointing to the free side
+};
+struct SphereObstacle {
+  Vec3 center{0.0};  ///< [m]
+  Real radius = 1.0; ///< [m] > 0
+};
+struct BoxObstacle {
+  Vec3 center{0.0};           ///< [m]
+  Vec3 halfExtents{0.5};      ///< [m] > 0
+  Quat orientation{1.0, 0.0, 0.0, 0.0};
+};
+
+struct Obstacles {
+  std::vector<PlaneObstacle> planes;
+  std::vector<SphereObstacle> spheres;
+  std::vector<BoxObstacle> boxes;
+  ContactMaterial material;
+};
+
+/// Signed distance from point x to the surface (negative inside) and the outward normal there.
+struct SurfacePoint {
+  Real distance = 0.0;  ///< [m]
+  Vec3 normal{0.0, 1.0, 0.0};
+};
+SurfacePoint closestSurface(const PlaneObstacle& o, const Vec3& x);
+SurfacePoint closestSurface(const SphereObstacle& o, const Vec3& x);
+SurfacePoint closestSurface(const BoxObstacle& o, const Vec3& x);
+
+// ***** PART-5: contact velocity with restitution and Coulomb friction (Lobb notes, collisions) *****
+// Given the velocity v of a particle touching a surface with outward unit normal N, return the velocity
+// after the contact.
+// (1) Normal speed v_n = N·v. If v_n ≥ 0 the particle is leaving: return v unchanged.
+// (2) Split v into the normal part v_n N and the tangential part v_t = v − v_n N.
+// (3) Restitution: e = material.restitution, but 0 when the impact is slow (−v_n ≤ restingSpeed):
+//     resting contact must not bounce. The new normal velocity is −e v_n (along N).
+// (4) The normal velocity change Δv_n = −(1 + e) v_n is the impulse per unit mass of the contact.
+// (5) Coulomb friction on v_t: if |v_t| ≤ μ_s Δv_n the particle sticks (v_t' = 0); otherwise it slides
+//     and loses μ_k Δv_n of tangential speed: v_t' = v_t (1 − μ_k Δv_n / |v_t|), never reversing.
+// (6) Return v_t' − e v_n N.
+// *****
+Vec3 contactVelocity(const Vec3& v, const Vec3& normal, const ContactMaterial& material);
+
+struct CollisionStats {
+  std::size_t contacts = 0;      ///< particle–obstacle contacts this call
+  Real deepestPenetration = 0.0; ///< [m] before projection
+};
+/// Steps 1–3 of the contact model for every free particle of radius `radius` [m] against every obstacle.
+CollisionStats collideWithObstacles(Particles& p, const Obstacles& obstacles, Real radius);
+
+}  // namespace pba::particles

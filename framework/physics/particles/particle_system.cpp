@@ -1,0 +1,41 @@
+#include "physics/particles/particle_system.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace pba::particles {
+
+void ParticleSystem::syncMasses() {
+  dofInverseMass_.resize(3 * particles.size());
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    for (std::size_t k = 0; k < 3; ++k) dofInverseMass_[3 * i + k] = particles.inverseMass[i];
+  }
+}
+
+Real ParticleSystem::energy() const {
+  return particles.kineticEnergy() + fieldPotentialEnergy(forces, particles.position, particles.inverseMass) +
+         springs::springPotentialEnergy(springs, particles.position);
+}
+
+void ParticleSystem::force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const {
+  assert(dofInverseMass_.size() == q.size() && "call syncMasses() after changing the particles");
+  std::fill(out.begin(), out.end(), 0.0);
+  const std::span<const Vec3> x = asVec3(q), vel = asVec3(v);
+  const std::span<Vec3> f = asVec3(out);
+  accumulateFieldForces(forces, t, x, vel, particles.inverseMass, f);
+  springs::accumulateSpringForces(springs, x, vel, f);
+  // Pinned particles feel nothing (their inverse mass is 0 anyway; zeroing keeps the reported force clean).
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    if (particles.inverseMass[i] <= 0.0) f[i] = Vec3(0.0);
+  }
+}
+
+void ParticleSystem::forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v,
+                                       std::span<const Real> dq, std::span<const Real> dv, std::span<Real> out) const {
+  std::fill(out.begin(), out.end(), 0.0);
+  const std::span<Vec3> df = asVec3(out);
+  springs::accumulateSpringDifferential(springs, asVec3(q), asVec3(dq), asVec3(dv), df);
+  accumulateDragDifferential(forces, t, asVec3(q), asVec3(v), particles.inverseMass, asVec3(dv), df);
+}
+
+}  // namespace pba::particles

@@ -1,0 +1,87 @@
+#pragma once
+// Shared pieces of the particles lab's scenes: the integrator parameter, particle drawing, metrics,
+// picking. Nothing here is reusable physics (that lives in framework/physics/{ode,particles,springs}).
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "app/scene.h"
+#include "physics/collision/ray.h"
+#include "physics/ode/integrators.h"
+#include "physics/particles/collision.h"
+#include "physics/particles/particle_system.h"
+
+namespace pba::lab {
+
+inline constexpr float kPointPixels = 4.0f;
+/// Above this many particles a scene draws a subsample as points (keeps the window responsive).
+inline constexpr std::size_t kMaxDrawn = 20000;
+
+/// Declares the "integrator" choice parameter (the lab flag --integrator sets it).
+inline void addIntegratorParam(app::Params& params, ode::IntegratorKind* kind, const std::string& extra = {}) {
+  params.choiceEnum("integrator", kind, ode::integratorNames(),
+                    "Time integrator (switch live): euler (1st order, gains energy), symplectic-euler (1st, "
+                    "energy bounded), midpoint (2nd), rk4 (4th), verlet / velocity-verlet (2nd, symplectic), "
+                    "implicit-euler (stable at any step, dissipative), adaptive (DOPRI5 with error control)." +
+                        extra);
+}
+
+/// Wall-clock timer for the particle_updates_per_s metric.
+class UpdateRate {
+ public:
+  void start() { t0_ = std::chrono::steady_clock::now(); }
+  void stop(std::size_t updates) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    if (s > 0.0) rate_ = 0.9 * rate_ + 0.1 * static_cast<double>(updates) / s;
+    if (rate_ == 0.0 && s > 0.0) rate_ = static_cast<double>(updates) / s;
+  }
+  double perSecond() const { return rate_; }
+
+ private:
+  std::chrono::steady_clock::time_point t0_{};
+  double rate_ = 0.0;
+};
+
+/// The metrics every particles scene reports (issue 4): integrator, particles, energy, energy_drift,
+/// particle_updates_per_s.
+inline nlohmann::json baseMetrics(ode::IntegratorKind kind, std::size_t particles, Real energy, Real initialEnergy,
+                                  const UpdateRate& rate) {
+  const Real scale = std::max(std::abs(initialEnergy), 1e-9);
+  return {{"integrator", std::string(ode::integratorName(kind))},
+          {"particles", particles},
+          {"energy", energy},
+          {"energy_drift", (energy - initialEnergy) / scale},
+          {"particle_updates_per_s", rate.perSecond()}};
+}
+
+/// Draws particles as spheres (few), points (many) or a subsample of points (huge).
+inline void drawParticles(DebugDraw& d, const particles::Particles& p, Real radius, std::size_t sphereLimit = 600) {
+  if (p.size() <= sphereLimit) {
+    for (std::size_t i = 0; i < p.size(); ++i) d.sphere(p.position[i], radius, p.color[i]);
+    return;
+  }
+  const std::size_t stride = std::max<std::size_t>(1, p.size() / kMaxDrawn);
+  for (std::size_t i = 0; i < p.size(); i += stride) d.point(p.position[i], kPointPixels, p.color[i]);
+}
+
+/// The particle whose sphere of radius `radius` the ray hits first.
+inline std::optional<app::PickHit> pickParticle(const app::Ray& ray, const particles::Particles& p, Real radius) {
+  std::optional<app::PickHit> best;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (const std::optional<Real> t = intersectRaySphere(ray, p.position[i], radius)) {
+      if (!best || *t < best->distance) best = app::PickHit{static_cast<int>(i), *t, pointAt(ray, *t)};
+    }
+  }
+  return best;
+}
+
+/// A ground grid line set (the renderer has its own grid; this marks the collision plane's extent).
+inline void drawGroundSquare(DebugDraw& d, Real half, Real y = 0.0) {
+  const Vec3 a(-half, y, -half), b(half, y, -half), c(half, y, half), e(-half, y, half);
+  d.line(a, b, colors::kGrey);
+  d.line(b, c, colors::kGrey);
+  d.line(c, e, colors::kGrey);
+  d.line(e, a, colors::kGrey);
+}
+
+}  // namespace pba::lab

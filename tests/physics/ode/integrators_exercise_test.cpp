@@ -1,0 +1,186 @@
+// Exercise tests of the ODE integrators: PART-1 explicit Euler, PART-2 symplectic Euler, PART-3 RK4,
+// PART-6 position Verlet. Each test also checks the one-step formula, so a stub never passes.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "oscillator_support.h"
+
+namespace pba::ode {
+namespace {
+using testing::convergenceOrders;
+
+constexpr Real kOrderTolerance = 0.05;  // issue 4: fitted order within ±0.05
+
+/// Applies one step of `kind` from (x₀, v₀) = (1, 0.5) with ω = 1, h = 0.1 and returns (x₁, v₁).
+std::pair<Real, Real> oneStep(IntegratorKind kind) {
+  OscillatorDesc desc;
+  desc.v0 = 0.5;
+  HarmonicOscillator osc(desc);
+  Integrator integrator(kind);
+  integrator.step(osc, 0.1);
+  return {osc.positions()[0], osc.velocities()[0]};
+}
+
+TEST(PART_1_ExplicitEuler, OneStepMovesAlongTheDerivativeAtTheStart) {
+  const auto [x, v] = oneStep(IntegratorKind::Euler);
+  EXPECT_NEAR(x, 1.0 + 0.1 * 0.5, 1e-15);
+  EXPECT_NEAR(v, 0.5 - 0.1 * 1.0, 1e-15);
+}
+
+TEST(PART_1_ExplicitEuler, ConvergesWithOrderOneOnTheOscillator) {
+  const testing::Orders o = convergenceOrders(IntegratorKind::Euler, 2000);
+  EXPECT_NEAR(o.phase, 1.0, kOrderTolerance);
+  EXPECT_NEAR(o.x, 1.0, kOrderTolerance);
+  EXPECT_NEAR(o.v, 1.0, kOrderTolerance);
+}
+
+TEST(PART_1_ExplicitEuler, MultipliesTheOscillatorEnergyByExactlyOnePlusZSquaredPerStep) {
+  // Euler's step matrix [[1, h], [−ω²h, 1]] has determinant 1 + (ωh)²: each step scales
+  // m v² + k x² by exactly that (Lobb notes: Euler spirals outward).
+  HarmonicOscillator osc;
+  Integrator integrator(IntegratorKind::Euler);
+  const Real h = 0.1, z = osc.omega() * h;
+  for (int i = 0; i < 200; ++i) {
+    const Real before = osc.energy();
+    integrator.step(osc, h);
+    ASSERT_NEAR(osc.energy() / before, 1.0 + z * z, 1e-13) << "step " << i;
+  }
+  // Lobb's observation: within three oscillations the energy is several times the initial one.
+  EXPECT_GT(osc.energy() / 0.5, 6.0);
+}
+
+TEST(PART_2_SymplecticEuler, OneStepUsesTheNewVelocityForThePosition) {
+  const auto [x, v] = oneStep(IntegratorKind::SymplecticEuler);
+  const Real vNew = 0.5 - 0.1 * 1.0;
+  EXPECT_NEAR(v, vNew, 1e-15);
+  EXPECT_NEAR(x, 1.0 + 0.1 * vNew, 1e-15);
+}
+
+TEST(PART_2_SymplecticEuler, ConvergesWithOrderOneOnTheOscillator) {
+  const testing::Orders o = convergenceOrders(IntegratorKind::SymplecticEuler, 2000);
+  EXPECT_NEAR(o.phase, 1.0, kOrderTolerance);
+  EXPECT_NEAR(o.x, 1.0, kOrderTolerance);
+  // The velocity alone converges with order 2: kick-then-drift is leapfrog with the positions shifted
+  // by half a step, x_n ≈ x(t_n + h/2), so the O(h) error lies entirely in x (h v/2).
+  EXPECT_NEAR(o.v, 2.0, kOrderTolerance);
+}
+
+TEST(PART_2_SymplecticEuler, EnergyErrorStaysWithinHalfOmegaHWithoutDriftOverAThousandPeriods) {
+  // Symplectic Euler conserves the modified energy Ẽ = ½(m v² + k x² − h k x v) exactly (ω = 1 here;
+  // check: substitute one step). With v₀ = 0, Ẽ = E₀, so E − E₀ = h k x v / 2, whose largest value on
+  // the level set Ẽ = E₀ is at x = v: (E − E₀)/E₀ ≤ ωh/(2 − ωh) = ωh/2 + O(h²). The energy therefore
+  // oscillates in that band and never drifts.
+  HarmonicOscillator osc;
+  Integrator integrator(IntegratorKind::SymplecticEuler);
+  const Real h = 0.05, e0 = osc.energy();
+  const int perPeriod = static_cast<int>(std::lround(2.0 * kPi / h));
+  const int periods = 1000;
+  Real worst = 0.0, firstPeriodMean = 0.0, lastPeriodMean = 0.0;
+  for (int p = 0; p < periods; ++p) {
+    Real mean = 0.0;
+    for (int i = 0; i < perPeriod; ++i) {
+      integrator.step(osc, h);
+      worst = std::max(worst, std::abs(osc.energy() - e0) / e0);
+      mean += osc.energy() / perPeriod;
+    }
+    if (p == 0) firstPeriodMean = mean;
+    if (p == periods - 1) lastPeriodMean = mean;
+  }
+  EXPECT_GT(worst, 0.0);
+  const Real z = osc.omega() * h;
+  EXPECT_LE(worst, z / (2.0 - z));
+  EXPECT_GT(worst, 0.9 * z / 2.0);  // and the band is really that wide (the bound is sharp)
+  // No drift: the mean over a period is the same after 1000 periods (to rounding and sampling).
+  EXPECT_NEAR(lastPeriodMean, firstPeriodMean, 1e-3 * e0);
+}
+
+TEST(PART_3_RungeKutta4, OneStepMatchesTheTaylorPolynomialOfDegreeFour) {
+  // For ẍ = −x, RK4's step is the degree-4 Taylor polynomial of exp(hA): x₁ = c x₀ + s v₀,
+  // v₁ = −s x₀ + c v₀ with c = 1 − h²/2 + h⁴/24, s = h − h³/6.
+  const auto [x, v] = oneStep(IntegratorKind::Rk4);
+  const Real h = 0.1, c = 1 - h * h / 2 + h * h * h * h / 24, s = h - h * h * h / 6;
+  EXPECT_NEAR(x, c * 1.0 + s * 0.5, 1e-15);
+  EXPECT_NEAR(v, -s * 1.0 + c * 0.5, 1e-15);
+}
+
+TEST(PART_3_RungeKutta4, ConvergesWithOrderFourOnTheOscillator) {
+  const testing::Orders o = convergenceOrders(IntegratorKind::Rk4, 100);
+  EXPECT_NEAR(o.phase, 4.0, kOrderTolerance);
+  EXPECT_NEAR(o.x, 4.0, kOrderTolerance);
+  EXPECT_NEAR(o.v, 4.0, kOrderTolerance);
+}
+
+TEST(PART_3_RungeKutta4, LosesEnergyByItsAmplificationFactorPerStep) {
+  // |c|² + |s|² with c, s above (ω = 1): 1 − z⁶/72 + z⁸/576.
+  HarmonicOscillator osc;
+  Integrator integrator(IntegratorKind::Rk4);
+  for (Real h : {0.1, 0.3, 0.6}) {
+    const Real z = osc.omega() * h;
+    const Real factor = 1.0 - std::pow(z, 6) / 72.0 + std::pow(z, 8) / 576.0;
+    for (int i = 0; i < 50; ++i) {
+      const Real before = osc.energy();
+      integrator.step(osc, h);
+      ASSERT_NEAR(osc.energy() / before, factor, 1e-13) << "h = " << h << " step " << i;
+    }
+  }
+}
+
+TEST(PART_6_Verlet, ConvergesWithOrderTwoOnTheOscillator) {
+  const testing::Orders o = convergenceOrders(IntegratorKind::Verlet, 200);
+  EXPECT_NEAR(o.phase, 2.0, kOrderTolerance);
+  EXPECT_NEAR(o.x, 2.0, kOrderTolerance);
+  EXPECT_NEAR(o.v, 2.0, kOrderTolerance);
+}
+
+/// A projectile: constant force, one particle (3 coordinates).
+class Projectile final : public SecondOrderSystem {
+ public:
+  std::vector<Real> q{0.0, 2.0, 0.0}, v{3.0, 10.0, -1.0}, w{0.5, 0.5, 0.5};
+  Vec3 g{0.0, -kStandardGravity, 0.0};
+  std::size_t dofCount() const override { return 3; }
+  std::span<Real> positions() override { return q; }
+  std::span<const Real> positions() const override { return q; }
+  std::span<Real> velocities() override { return v; }
+  std::span<const Real> velocities() const override { return v; }
+  std::span<const Real> inverseMasses() const override { return w; }
+  void force(Real, std::span<const Real>, std::span<const Real>, std::span<Real> out) const override {
+    for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(i)] = g[i] / w[0];
+  }
+};
+
+TEST(PART_6_Verlet, FollowsAProjectileExactly) {
+  // x(t) = x₀ + v₀ t + g t²/2 is quadratic in t: Verlet's central second difference is exact for it.
+  Projectile p;
+  const Vec3 x0{p.q[0], p.q[1], p.q[2]}, v0{p.v[0], p.v[1], p.v[2]};
+  Integrator integrator(IntegratorKind::Verlet);
+  const Real h = 0.01;
+  for (int n = 1; n <= 200; ++n) {
+    integrator.step(p, h);
+    const Real t = n * h;
+    const Vec3 x = x0 + v0 * t + 0.5 * p.g * t * t;
+    const Vec3 v = v0 + p.g * t;
+    for (int i = 0; i < 3; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      // Rounding only: |x| ≲ 10 m, 200 steps ⇒ 1e-11.
+      ASSERT_NEAR(p.q[k], x[i], 1e-11) << "step " << n;
+      ASSERT_NEAR(p.v[k], v[i], 1e-9) << "step " << n;
+    }
+  }
+}
+
+TEST(PART_6_Verlet, RestartsWhenTheStateIsChangedFromOutside) {
+  // A collision or a mouse drag changes q and v between steps: Verlet must start again from the new
+  // state instead of using its stale q(t − h).
+  Projectile p;
+  Integrator integrator(IntegratorKind::Verlet);
+  integrator.step(p, 0.01);
+  p.q = {5.0, 5.0, 5.0};
+  p.v = {0.0, 0.0, 0.0};
+  integrator.step(p, 0.01);
+  EXPECT_NEAR(p.q[1], 5.0 + 0.5 * p.g.y * 1e-4, 1e-12);
+  EXPECT_NEAR(p.v[1], p.g.y * 0.01, 1e-12);
+}
+
+}  // namespace
+}  // namespace pba::ode

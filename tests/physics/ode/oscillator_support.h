@@ -1,0 +1,59 @@
+#pragma once
+// Shared helpers of the integrator tests: run an integrator on the oscillator ẍ = −ω²x and compare with
+// the closed form x(t) = x₀ cos ωt + (v₀/ω) sin ωt (Lobb notes' example, ω = 1, x₀ = 1, v₀ = 0).
+#include <cmath>
+#include <vector>
+
+#include "physics/ode/integrators.h"
+#include "physics/ode/oscillator.h"
+
+namespace pba::ode::testing {
+
+struct Errors {
+  Real x = 0.0, v = 0.0;
+};
+
+/// Steps `n` steps of size T/n and returns |x − x_exact| and |v − v_exact| at T.
+inline Errors oscillatorErrors(IntegratorKind kind, Real T, int n, const OscillatorDesc& desc = {}) {
+  HarmonicOscillator osc(desc);
+  Integrator integrator(kind);
+  const Real h = T / n;
+  for (int i = 0; i < n; ++i) integrator.step(osc, h);
+  return {std::abs(osc.positions()[0] - osc.exactPosition(T)), std::abs(osc.velocities()[0] - osc.exactVelocity(T))};
+}
+
+/// Least-squares slope of log(error) against log(h): the observed order of convergence.
+inline Real fittedOrder(const std::vector<Real>& h, const std::vector<Real>& error) {
+  const std::size_t n = h.size();
+  Real sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Real x = std::log(h[i]), y = std::log(error[i]);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
+}
+
+/// Fitted orders of |Δx|, |Δv| and of the phase-space error √(Δx² + Δv²).
+struct Orders {
+  Real x = 0.0, v = 0.0, phase = 0.0;
+};
+
+/// Orders fitted over seven step sizes T/n0, T/(2n0), …, T/(64 n0) (six halvings) at T = 10 s.
+inline Orders convergenceOrders(IntegratorKind kind, int n0) {
+  std::vector<Real> hs, ex, ev, ep;
+  const Real T = 10.0;
+  for (int k = 0; k <= 6; ++k) {
+    const int n = n0 << k;
+    const Errors e = oscillatorErrors(kind, T, n);
+    hs.push_back(T / n);
+    ex.push_back(e.x);
+    ev.push_back(e.v);
+    ep.push_back(std::hypot(e.x, e.v));
+  }
+  return {fittedOrder(hs, ex), fittedOrder(hs, ev), fittedOrder(hs, ep)};
+}
+
+}  // namespace pba::ode::testing
