@@ -1,6 +1,7 @@
 // Generic explicit methods on any OdeSystem: explicit Euler, midpoint (RK2), RK4 (Lobb notes, "ODE view").
 #include <cstddef>
 
+#include "physics/ode/oscillator.h"
 #include "physics/exercises/not_implemented.h"
 #include "physics/ode/integrators.h"
 
@@ -61,5 +62,16 @@ void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   // END SOLUTION
   // STUB: exercises::markNotImplemented("PART-3");  // the state stays where it is
 }
+
+// Start-up probes: tell the lab whether PART-1 and PART-3 are still stubs.
+namespace {
+void probeExplicitMethods() {
+  HarmonicOscillator oscillator;
+  Workspace w;
+  explicitEulerStep(oscillator, 0.01, w);
+  rk4Step(oscillator, 0.01, w);
+}
+}  // namespace
+PBA_EXERCISE_PROBE(probeExplicitMethods());
 
 }  // namespace pba::ode

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "physics/ode/oscillator.h"
 #include "physics/exercises/not_implemented.h"
 #include "physics/ode/integrators.h"
 
@@ -80,5 +81,17 @@ void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistor
   system.stateChanged();
   system.setTime(t + h);
 }
+
+// Start-up probes: tell the lab whether PART-2 and PART-6 are still stubs.
+namespace {
+void probeSecondOrderMethods() {
+  HarmonicOscillator oscillator;
+  Workspace w;
+  VerletHistory history;
+  symplecticEulerStep(oscillator, 0.01, w);
+  verletStep(oscillator, 0.01, history, w);
+}
+}  // namespace
+PBA_EXERCISE_PROBE(probeSecondOrderMethods());
 
 }  // namespace pba::ode

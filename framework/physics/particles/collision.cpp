@@ -89,4 +89,7 @@ CollisionStats collideWithObstacles(Particles& p, const Obstacles& o, Real radiu
   return stats;
 }
 
+// Start-up probe: tells the lab whether PART-5 is still a stub.
+PBA_EXERCISE_PROBE(contactVelocity(Vec3(0.0, -1.0, 0.0), Vec3(0.0, 1.0, 0.0), ContactMaterial{}));
+
 }  // namespace pba::particles

@@ -69,4 +69,7 @@ Real maxRelativeStretch(std::span<const Spring> springs, std::span<const Vec3> x
   return worst;
 }
 
+// Start-up probe: tells the lab whether PART-4 is still a stub.
+PBA_EXERCISE_PROBE(dampedSpringForce(Vec3(0.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0), Vec3(0.0), 1.0, 0.5, 0.1));
+
 }  // namespace pba::springs
