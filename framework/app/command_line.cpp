@@ -151,7 +151,11 @@ std::string usage(const std::string& lab) {
       "  --help                  this text\n";
   if (!labFlags().empty()) {
     text += "\nLab options:\n";
-    for (const LabFlag& f : labFlags()) text += "  --" + f.flag + " VALUE    " + f.help + " (parameter '" + f.param + "')\n";
+    for (const LabFlag& f : labFlags()) {
+      const std::string option = "--" + f.flag + " VALUE";
+      text += "  " + option + std::string(option.size() < 22 ? 22 - option.size() : 1, ' ') + "  " + f.help +
+              " (parameter '" + f.param + "')\n";
+    }
   }
   text +=
       "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot\n"
