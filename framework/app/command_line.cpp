@@ -153,7 +153,7 @@ std::string usage(const std::string& lab) {
     text += "\nLab options:\n";
     for (const LabFlag& f : labFlags()) {
       const std::string option = "--" + f.flag + " VALUE";
-      text += "  " + option + std::string(option.size() < 22 ? 22 - option.size() : 1, ' ') + "  " + f.help +
+      text += "  " + option + std::string(option.size() < 24 ? 24 - option.size() : 1, ' ') + f.help +
               " (parameter '" + f.param + "')\n";
     }
   }
