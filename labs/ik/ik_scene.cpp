@@ -56,11 +56,7 @@ void IkScene::step(Real dt) {
   if (!dragging_ && path_ != TargetPath::Mouse) {
     const Real w = 2.0 * kPi * pathSpeed_ * time_;
     for (size_t k = 0; k < rig_.effectors.size(); ++k) {
-      const Real r = pathRadius(), phase = w + 0.7 * Real(k);
-      Vec3 offset(0.0);
-      if (path_ == TargetPath::Circle) offset = r * Vec3(std::cos(phase) - 1.0, std::sin(phase), 0.3 * std::sin(phase));
-      if (path_ == TargetPath::Figure8) offset = r * Vec3(std::sin(phase) - 0.5, std::sin(2.0 * phase), 0.3 * std::cos(phase));
-      if (path_ != TargetPath::RandomJumps) rig_.effectors[k].targetPosition = centers_[k] + offset;
+      if (path_ != TargetPath::RandomJumps) rig_.effectors[k].targetPosition = centers_[k] + pathOffset(k, w + 0.7 * Real(k));
     }
     if (path_ == TargetPath::RandomJumps && time_ >= nextJump_) {
       nextJump_ = time_ + kJumpInterval;
@@ -70,6 +66,12 @@ void IkScene::step(Real dt) {
     }
   }
   solveNow();
+}
+
+Vec3 IkScene::pathOffset(size_t, Real phase) const {
+  const Real r = pathRadius();
+  if (path_ == TargetPath::Figure8) return r * Vec3(std::sin(phase) - 0.5, std::sin(2.0 * phase), 0.3 * std::cos(phase));
+  return r * Vec3(std::cos(phase) - 1.0, std::sin(phase), 0.3 * std::sin(phase));
 }
 
 void IkScene::solveNow() { last_ = solve(rig_.skeleton, pose_, rig_.effectors, options_); }

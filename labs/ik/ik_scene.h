@@ -38,6 +38,9 @@ class IkScene : public app::Scene {
   virtual Rig build() const = 0;
   /// Radius [m] of the scripted path around each effector's rest position.
   virtual Real pathRadius() const { return 0.4; }
+  /// Offset [m] of effector k's goal from its rest position on the scripted circle or figure-8 at
+  /// `phase` [rad] (the path_ member says which).
+  virtual Vec3 pathOffset(size_t k, Real phase) const;
   void declareSolverParams(bool withPath = true);
   void solveNow();
   Real boneRadius() const { return boneRadius_; }
