@@ -69,6 +69,7 @@ class CharacterScene final : public IkScene {
     return rig_.skeleton.jointCount() > 0 ? rig_ : buildSingleJoint().value();
   }
   Real pathRadius() const override { return 0.1 * desc_.height; }
+  Real groundClearance() const override { return 0.0; }  // feet on the ground; their paths never go below it
   /// Hands draw circles in front of the body; feet step forward and up (never below the ground).
   Vec3 pathOffset(size_t k, Real phase) const override {
     const Real r = pathRadius();

@@ -38,6 +38,7 @@ void IkScene::declareSolverParams(bool withPath) {
 void IkScene::reset() {
   rig_ = build();
   pose_ = rig_.skeleton.restPose();
+  liftAboveGround();
   centers_.clear();
   for (const Effector& e : rig_.effectors) centers_.push_back(e.targetPosition);
   time_ = 0.0;
@@ -49,6 +50,20 @@ void IkScene::reset() {
   const Real mean = bones / std::max(1, rig_.skeleton.jointCount() - 1 + static_cast<int>(rig_.effectors.size()));
   boneRadius_ = std::clamp(0.12 * mean, 0.004, 0.05);
   step(0.0);
+}
+
+// The ground grid at y = 0 hides whatever goes below it, so a rig whose goals' paths (±1.5 path
+// radii for random jumps) would dip under it is lifted, roots and goals alike.
+void IkScene::liftAboveGround() {
+  const std::vector<Frame> f = forwardKinematics(rig_.skeleton, pose_);
+  Real lowest = 0.0;
+  for (const Frame& frame : f) lowest = std::min(lowest, frame.position.y);
+  for (const Effector& e : rig_.effectors) lowest = std::min({lowest, effectorPosition(e, f).y, e.targetPosition.y});
+  const Real lift = groundClearance() - lowest;
+  if (lift <= 0.0) return;
+  for (int j = 0; j < rig_.skeleton.jointCount(); ++j)
+    if (rig_.skeleton.joint(j).parent < 0) rig_.skeleton.joint(j).offset.y += lift;
+  for (Effector& e : rig_.effectors) e.targetPosition.y += lift;
 }
 
 void IkScene::step(Real dt) {
