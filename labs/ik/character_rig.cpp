@@ -15,6 +15,7 @@ using namespace pba::ik;
 namespace {
 
 constexpr int kListedJoints = 40;  // joint names listed in an error message before "..."
+constexpr Real kTrunkWeight = 0.1;  // [1] DOF weight of joints above several effectors
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -148,6 +149,12 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d) {
     e.targetPosition = frames[static_cast<size_t>(j)].position;
     rig.effectors.push_back(e);
   }
+  // Trunk joints shared by several effectors (spine, chest) get a small weight, so the limbs do the
+  // reaching and the body stays upright (IK slides, "Units": weights scale the Jacobian columns).
+  const std::vector<std::vector<int>> below = effectorsBelowJoints(rig.skeleton, rig.effectors);
+  for (int j = 0; j < rig.skeleton.jointCount(); ++j)
+    if (below[static_cast<size_t>(j)].size() > 1)
+      for (Real& w : rig.skeleton.joint(j).weight) w = kTrunkWeight;
   return rig;
 }
 

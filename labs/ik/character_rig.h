@@ -7,6 +7,7 @@
 // in the parent's rotated frame, i.e. the bone length comes from the node offsets. The root is pinned
 // (Fixed: the character stands where the file puts it), nodes with a child at a distinct position are
 // ball joints with ±limit on each Euler angle, the rest (end sites, helper nodes) are Fixed. The
+// trunk joints above several effectors get DOF weight 0.1 (the limbs reach, the body stays upright). The
 // whole skeleton is scaled so that its rest pose is `height` tall (files come in m, cm or inches)
 // and placed with its lowest joint on the ground and its root above the origin.
 //
