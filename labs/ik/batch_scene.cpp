@@ -1,6 +1,9 @@
 // IK lab, scene "batch": K solves, each from the rest pose, toward goals made by forward kinematics
 // of random poses inside the limits (reachable by construction), with statistics for scripts and CI:
 //   pba-ik --headless --solver ccd --links 10 --joint hinge --targets 1000 --seed 1 --metrics -
+// On an imported skeleton (the chosen effectors get the random goals; --targets after --skeleton,
+// since the last flag that selects a scene wins):
+//   pba-ik --headless --skeleton resources/models/humanoid.bvh --effectors LeftHand,RightFoot --targets 100 --metrics -
 // The solves run in reset(), so the metrics are ready after any number of frames and are identical
 // for identical seeds (timings excepted: their keys end in _us, so solve_median_us and solve_p95_us
 // stand for the solve_us_median and solve_us_p95).
@@ -8,6 +11,7 @@
 #include <cstdio>
 #include <random>
 
+#include "character_rig.h"
 #include "ik_scene.h"
 
 PBA_REGISTER_LAB_FLAG("solver", "solver", "IK method: analytic|ccd|fabrik|jt|pinv|dls|sdls", "batch");
@@ -41,14 +45,24 @@ class BatchScene final : public app::Scene {
     params_.real("tolerance", &options_.tolerance, 1e-9, 1.0, "m", "Success tolerance. Typical 1e-4 m.").logarithmic().needsReset();
     params_.integer("max_iterations", &options_.maxIterations, 1, 100000, "", "Iteration cap per solve.").needsReset();
     params_.angle("limit", &desc_.limit, 5.0, 180.0, "Every rotational DOF in ±limit.").needsReset();
+    params_.text("skeleton", &character_.skeleton, "Skeleton file to use instead of the chain (BVH, FBX, COLLADA, glTF). Empty: the chain.")
+        .needsReset();
+    params_.text("effectors", &character_.effectors, "Comma-separated joint names of the skeleton's effectors. Empty: hands and feet.")
+        .needsReset();
     targets_ = 100;
+  }
+  Status validate() override {
+    if (character_.skeleton.empty()) return Status::success();
+    const Result<Rig> r = loadCharacterRig(character_);
+    return r ? Status::success() : Status(Error{r.error()});
   }
   std::string description() const override {
     return "Batch statistics: K solves from rest toward random reachable goals (success rate, residuals, iterations, time).";
   }
   void reset() override {
     desc_.joint = joint_ == BatchJoint::Hinge ? JointType::Hinge : JointType::Ball;
-    rig_ = buildIkChain(desc_).value();
+    Result<Rig> character = character_.skeleton.empty() ? Result<Rig>(Error{""}) : loadCharacterRig(character_);
+    rig_ = character ? std::move(character).value() : buildIkChain(desc_).value();
     std::mt19937_64 rng(seed());
     std::vector<Real> residuals, times;
     successes_ = 0;
@@ -64,7 +78,8 @@ class BatchScene final : public app::Scene {
       iterations += last_.iterations;
       residuals.push_back(last_.positionResidual);
       times.push_back(last_.seconds * 1e6);
-      lastGoal_ = effectors[0].targetPosition;
+      lastGoals_.clear();
+      for (const Effector& e : effectors) lastGoals_.push_back(e.targetPosition);
     }
     residualMax_ = residuals.empty() ? 0.0 : *std::max_element(residuals.begin(), residuals.end());
     residualMedian_ = percentile(residuals, 0.5);
@@ -77,9 +92,8 @@ class BatchScene final : public app::Scene {
     const std::vector<Frame> f = forwardKinematics(rig_.skeleton, pose_);
     for (int j = 1; j < rig_.skeleton.jointCount(); ++j)
       d.capsule(f[static_cast<size_t>(rig_.skeleton.joint(j).parent)].position, f[static_cast<size_t>(j)].position, 0.02, colors::kBlue);
-    const Vec3 tip = effectorPosition(rig_.effectors[0], f);
-    d.capsule(f.back().position, tip, 0.02, colors::kBlue);
-    d.sphere(lastGoal_, 0.05, colors::kRed);
+    for (const Effector& e : rig_.effectors) d.capsule(f[static_cast<size_t>(e.joint)].position, effectorPosition(e, f), 0.02, colors::kBlue);
+    for (const Vec3& g : lastGoals_) d.sphere(g, 0.05, colors::kRed);
     char label[128];
     std::snprintf(label, sizeof label, "%s: %d/%d solved, median %.1f us", solverName(options_.solver), successes_, targets_, timeMedian_);
     d.text(Vec3(0.0, 1.2, 0.0), label, colors::kDark);
@@ -87,6 +101,8 @@ class BatchScene final : public app::Scene {
   nlohmann::json metrics() const override {
     return {{"solver", solverName(options_.solver)},
             {"links", desc_.links},
+            {"joints", rig_.skeleton.jointCount()},
+            {"effectors", rig_.effectors.size()},
             {"joint", joint_ == BatchJoint::Hinge ? "hinge" : "ball"},
             {"targets", targets_},
             {"success_rate", targets_ > 0 ? Real(successes_) / targets_ : 0.0},
@@ -111,7 +127,8 @@ class BatchScene final : public app::Scene {
   Rig rig_;
   Pose pose_;
   SolveResult last_;
-  Vec3 lastGoal_{0.0};
+  std::vector<Vec3> lastGoals_;
+  CharacterDesc character_{"", "", 1.7, degToRad(100.0)};
   int successes_ = 0, violations_ = 0;
   Real residualMax_ = 0.0, residualMedian_ = 0.0, iterationsMean_ = 0.0, timeMedian_ = 0.0, timeP95_ = 0.0;
 };

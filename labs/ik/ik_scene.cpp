@@ -38,6 +38,7 @@ void IkScene::declareSolverParams(bool withPath) {
 void IkScene::reset() {
   rig_ = build();
   pose_ = rig_.skeleton.restPose();
+  liftAboveGround();
   centers_.clear();
   for (const Effector& e : rig_.effectors) centers_.push_back(e.targetPosition);
   time_ = 0.0;
@@ -51,16 +52,26 @@ void IkScene::reset() {
   step(0.0);
 }
 
+// The ground grid at y = 0 hides whatever goes below it, so a rig whose goals' paths (±1.5 path
+// radii for random jumps) would dip under it is lifted, roots and goals alike.
+void IkScene::liftAboveGround() {
+  const std::vector<Frame> f = forwardKinematics(rig_.skeleton, pose_);
+  Real lowest = 0.0;
+  for (const Frame& frame : f) lowest = std::min(lowest, frame.position.y);
+  for (const Effector& e : rig_.effectors) lowest = std::min({lowest, effectorPosition(e, f).y, e.targetPosition.y});
+  const Real lift = groundClearance() - lowest;
+  if (lift <= 0.0) return;
+  for (int j = 0; j < rig_.skeleton.jointCount(); ++j)
+    if (rig_.skeleton.joint(j).parent < 0) rig_.skeleton.joint(j).offset.y += lift;
+  for (Effector& e : rig_.effectors) e.targetPosition.y += lift;
+}
+
 void IkScene::step(Real dt) {
   time_ += dt;
   if (!dragging_ && path_ != TargetPath::Mouse) {
     const Real w = 2.0 * kPi * pathSpeed_ * time_;
     for (size_t k = 0; k < rig_.effectors.size(); ++k) {
-      const Real r = pathRadius(), phase = w + 0.7 * Real(k);
-      Vec3 offset(0.0);
-      if (path_ == TargetPath::Circle) offset = r * Vec3(std::cos(phase) - 1.0, std::sin(phase), 0.3 * std::sin(phase));
-      if (path_ == TargetPath::Figure8) offset = r * Vec3(std::sin(phase) - 0.5, std::sin(2.0 * phase), 0.3 * std::cos(phase));
-      if (path_ != TargetPath::RandomJumps) rig_.effectors[k].targetPosition = centers_[k] + offset;
+      if (path_ != TargetPath::RandomJumps) rig_.effectors[k].targetPosition = centers_[k] + pathOffset(k, w + 0.7 * Real(k));
     }
     if (path_ == TargetPath::RandomJumps && time_ >= nextJump_) {
       nextJump_ = time_ + kJumpInterval;
@@ -70,6 +81,12 @@ void IkScene::step(Real dt) {
     }
   }
   solveNow();
+}
+
+Vec3 IkScene::pathOffset(size_t, Real phase) const {
+  const Real r = pathRadius();
+  if (path_ == TargetPath::Figure8) return r * Vec3(std::sin(phase) - 0.5, std::sin(2.0 * phase), 0.3 * std::cos(phase));
+  return r * Vec3(std::cos(phase) - 1.0, std::sin(phase), 0.3 * std::sin(phase));
 }
 
 void IkScene::solveNow() { last_ = solve(rig_.skeleton, pose_, rig_.effectors, options_); }

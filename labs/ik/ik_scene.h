@@ -38,7 +38,13 @@ class IkScene : public app::Scene {
   virtual Rig build() const = 0;
   /// Radius [m] of the scripted path around each effector's rest position.
   virtual Real pathRadius() const { return 0.4; }
+  /// Offset [m] of effector k's goal from its rest position on the scripted circle or figure-8 at
+  /// `phase` [rad] (the path_ member says which).
+  virtual Vec3 pathOffset(size_t k, Real phase) const;
+  /// Height [m] above the ground of the rig's lowest point at rest (see liftAboveGround()).
+  virtual Real groundClearance() const { return 1.5 * pathRadius(); }
   void declareSolverParams(bool withPath = true);
+  void liftAboveGround();
   void solveNow();
   Real boneRadius() const { return boneRadius_; }
 

@@ -138,6 +138,10 @@ TEST(IK_4_DampedLeastSquaresStep, IsFiniteForASingularJacobian) {
   ASSERT_EQ(step.size(), 2u);
   EXPECT_TRUE(isFinite(step[0]) && isFinite(step[1]));
   EXPECT_NEAR(step[0], step[1], 1e-15);
+  // Independent reference by hand: J Jᵀ = diag(2, 0, 0), so (J Jᵀ + λ² I)⁻¹ e = (1/2.01, 1/0.01, 0)
+  // and Jᵀ of that is (1/2.01, 1/2.01). Equivalently σ = √2, u = x, v = (1, 1)/√2 in the SVD formula.
+  EXPECT_NEAR(step[0], 1.0 / 2.01, 1e-12);
+  EXPECT_NEAR(step[1], 1.0 / 2.01, 1e-12);
 }
 
 TEST(IK_5_FabrikPasses, KeepTheSegmentLengthsAndPinTheEnds) {

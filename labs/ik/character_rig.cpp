@@ -1,0 +1,161 @@
+#include "character_rig.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "graphics/model.h"
+
+namespace pba::labs::ik {
+
+using namespace pba::ik;
+
+namespace {
+
+constexpr int kListedJoints = 40;  // joint names listed in an error message before "..."
+constexpr Real kTrunkWeight = 0.1;  // [1] DOF weight of joints above several effectors
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+struct RestFrame {
+  Vec3 position{0.0};
+  Quat rotation{1, 0, 0, 0};
+};
+
+/// Global rest frames of the nodes: positions from the full transforms, rotations with scale removed.
+std::vector<RestFrame> restFrames(const graphics::Model& m) {
+  std::vector<glm::dmat4> global(m.nodes.size());
+  std::vector<RestFrame> frames(m.nodes.size());
+  for (size_t i = 0; i < m.nodes.size(); ++i) {
+    const glm::dmat4 local(m.nodes[i].local);
+    global[i] = m.nodes[i].parent >= 0 ? global[static_cast<size_t>(m.nodes[i].parent)] * local : local;
+    frames[i].position = Vec3(global[i][3]);
+    Mat3 r(global[i]);
+    for (int c = 0; c < 3; ++c) {
+      const Real len = glm::length(r[c]);
+      r[c] = len > 1e-12 ? r[c] / len : Vec3(c == 0, c == 1, c == 2);
+    }
+    frames[i].rotation = glm::normalize(glm::quat_cast(r));
+  }
+  return frames;
+}
+
+std::string jointList(const Skeleton& s) {
+  std::string list;
+  for (int j = 0; j < s.jointCount() && j < kListedJoints; ++j) list += (j ? ", " : "") + s.joint(j).name;
+  if (s.jointCount() > kListedJoints) list += ", ...";
+  return list;
+}
+
+/// Hands and feet by name (topmost match on each branch), else the leaves.
+std::vector<int> automaticEffectors(const Skeleton& s) {
+  std::vector<int> picked;
+  std::vector<char> matched(static_cast<size_t>(s.jointCount()), 0);
+  for (int j = 0; j < s.jointCount(); ++j) {
+    const std::string n = lower(s.joint(j).name);
+    const int p = s.joint(j).parent;
+    const bool ancestorMatched = p >= 0 && matched[static_cast<size_t>(p)];
+    matched[static_cast<size_t>(j)] = ancestorMatched || n.find("hand") != std::string::npos || n.find("foot") != std::string::npos;
+    if (matched[static_cast<size_t>(j)] && !ancestorMatched) picked.push_back(j);
+  }
+  if (picked.empty())
+    for (int j = 1; j < s.jointCount(); ++j)
+      if (s.children(j).empty()) picked.push_back(j);
+  return picked;
+}
+
+}  // namespace
+
+std::string resolveModelPath(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
+  const fs::path fromRoot = fs::path(PBA_RESOURCE_DIR).parent_path() / path;
+  return fs::exists(fromRoot, ec) ? fromRoot.string() : path;
+}
+
+std::vector<std::string> splitNames(const std::string& list) {
+  std::vector<std::string> names;
+  size_t start = 0;
+  while (start <= list.size()) {
+    size_t end = list.find(',', start);
+    if (end == std::string::npos) end = list.size();
+    std::string name = list.substr(start, end - start);
+    const auto blank = [](unsigned char c) { return std::isspace(c) != 0; };
+    name.erase(name.begin(), std::find_if_not(name.begin(), name.end(), blank));
+    name.erase(std::find_if_not(name.rbegin(), name.rend(), blank).base(), name.end());
+    if (!name.empty()) names.push_back(name);
+    start = end + 1;
+  }
+  return names;
+}
+
+Result<Rig> loadCharacterRig(const CharacterDesc& d) {
+  const std::string path = resolveModelPath(d.skeleton);
+  if (path.empty()) return Error{"skeleton: no file given"};
+  std::string error;
+  const std::optional<graphics::Model> model = graphics::loadModel(path, &error);
+  if (!model) return Error{"skeleton: " + error};
+  if (model->nodes.empty()) return Error{"skeleton: " + path + ": has no joints"};
+  const std::vector<RestFrame> rest = restFrames(*model);
+
+  // Scale to the requested height; lowest joint on the ground, root above the origin.
+  Vec3 lo(1e300), hi(-1e300);
+  for (const RestFrame& f : rest) lo = glm::min(lo, f.position), hi = glm::max(hi, f.position);
+  const Real extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  const Real scale = extent > 1e-9 ? d.height / extent : 1.0;
+  const Vec3 shift(-rest[0].position.x, -lo.y, -rest[0].position.z);
+
+  Rig rig;
+  for (size_t i = 0; i < model->nodes.size(); ++i) {
+    const graphics::ModelNode& node = model->nodes[i];
+    Joint j;
+    j.name = node.name.empty() ? "node" + std::to_string(i) : node.name;
+    j.parent = node.parent;
+    if (node.parent < 0) {
+      j.offset = scale * (rest[i].position + shift);
+      j.restRotation = rest[i].rotation;
+    } else {
+      const RestFrame& p = rest[static_cast<size_t>(node.parent)];
+      j.offset = scale * (glm::inverse(p.rotation) * (rest[i].position - p.position));
+      j.restRotation = glm::normalize(glm::inverse(p.rotation) * rest[i].rotation);
+    }
+    bool hasBone = false;
+    for (size_t c = i + 1; c < model->nodes.size(); ++c)
+      if (model->nodes[c].parent == static_cast<int>(i) && glm::length(rest[c].position - rest[i].position) * scale > 1e-6) hasBone = true;
+    j.type = node.parent >= 0 && hasBone ? JointType::Ball : JointType::Fixed;
+    for (int k = 0; k < 3; ++k) j.lo[k] = -d.limit, j.hi[k] = d.limit;
+    if (Result<int> added = rig.skeleton.add(j); !added) return Error{"skeleton: " + path + ": joint '" + j.name + "': " + added.error()};
+  }
+
+  std::vector<int> chosen;
+  const std::vector<std::string> names = splitNames(d.effectors);
+  for (const std::string& name : names) {
+    const int j = rig.skeleton.find(name);
+    if (j < 0) return Error{"effectors: no joint named '" + name + "' in " + path + " (joints: " + jointList(rig.skeleton) + ")"};
+    chosen.push_back(j);
+  }
+  if (names.empty()) chosen = automaticEffectors(rig.skeleton);
+  const Pose restPose = rig.skeleton.restPose();
+  const std::vector<Frame> frames = forwardKinematics(rig.skeleton, restPose);
+  for (int j : chosen) {
+    Effector e;
+    e.joint = j;
+    e.targetPosition = frames[static_cast<size_t>(j)].position;
+    rig.effectors.push_back(e);
+  }
+  // Trunk joints shared by several effectors (spine, chest) get a small weight, so the limbs do the
+  // reaching and the body stays upright (IK slides, "Units": weights scale the Jacobian columns).
+  const std::vector<std::vector<int>> below = effectorsBelowJoints(rig.skeleton, rig.effectors);
+  for (int j = 0; j < rig.skeleton.jointCount(); ++j)
+    if (below[static_cast<size_t>(j)].size() > 1)
+      for (Real& w : rig.skeleton.joint(j).weight) w = kTrunkWeight;
+  return rig;
+}
+
+}  // namespace pba::labs::ik

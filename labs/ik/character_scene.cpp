@@ -1,0 +1,89 @@
+// IK lab, scene "character": any skeleton Assimp loads (BVH, FBX, COLLADA, glTF), converted into
+// ball joints (character_rig.h), with hands and feet reaching for moving goals. The default is the
+// project's own humanoid, resources/models/humanoid.bvh (made by tools/make_humanoid_bvh.py):
+//   pba-ik --skeleton /usr/share/assimp/models/BVH/01_01.bvh --effectors lHand,rHand
+#include <cmath>
+
+#include <imgui.h>
+
+#include "character_rig.h"
+#include "ik_scene.h"
+
+PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "skeleton file Assimp reads (BVH, FBX, COLLADA, glTF)", "character");
+PBA_REGISTER_LAB_FLAG("effectors", "effectors", "comma-separated joint names of the effectors (default: hands and feet)");
+
+namespace pba::labs::ik {
+namespace {
+
+class CharacterScene final : public IkScene {
+ public:
+  CharacterScene() {
+    options_.solver = SolverKind::DampedLeastSquares;
+    options_.maxIterations = 30;
+    options_.tolerance = 1e-3;
+    options_.damping = 0.03;
+    showLimits_ = false;  // ±limit on three Euler angles: cones would hide the body
+    declareSolverParams();
+    params_.text("skeleton", &desc_.skeleton,
+                 "Skeleton file (BVH, FBX, COLLADA, glTF: anything Assimp reads). Relative paths are also tried from the "
+                 "repository root. Default: the project's humanoid, resources/models/humanoid.bvh.")
+        .needsReset();
+    params_.text("effectors", &desc_.effectors,
+                 "Comma-separated joint names that reach for goals, e.g. LeftHand,RightFoot. Empty: the joints named "
+                 "hand or foot (else the leaves).")
+        .needsReset();
+    params_.real("height", &desc_.height, 0.2, 5.0, "m", "The skeleton is scaled so its rest pose is this tall. Typical 1.7 m.")
+        .needsReset();
+    params_.angle("limit", &desc_.limit, 10.0, 180.0, "Every ball joint's three Euler angles stay in ±limit. Typical 100 deg.")
+        .needsReset();
+  }
+  std::string description() const override {
+    return "An imported skeleton (any Assimp file): hands and feet reach for their goals; load your own with --skeleton.";
+  }
+  Status validate() override {
+    const Result<Rig> r = loadCharacterRig(desc_);
+    return r ? Status::success() : Status(Error{r.error()});
+  }
+  void ui() override {
+    if (!error_.empty()) ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous skeleton kept)", error_.c_str());
+    IkScene::ui();
+  }
+  nlohmann::json metrics() const override {
+    nlohmann::json m = IkScene::metrics();
+    m["joints"] = rig_.skeleton.jointCount();
+    m["effectors"] = rig_.effectors.size();
+    return m;
+  }
+  std::vector<app::Preset> presets() const override {
+    return {{"dls", {{"solver", "dls"}}}, {"sdls", {{"solver", "sdls"}}}, {"ccd", {{"solver", "ccd"}}}, {"fabrik", {{"solver", "fabrik"}}}};
+  }
+
+ protected:
+  Rig build() const override {
+    Result<Rig> r = loadCharacterRig(desc_);
+    if (r) {
+      error_.clear();
+      return std::move(r).value();
+    }
+    error_ = r.error();  // the window keeps the running skeleton (the command line exits 2 in validate)
+    return rig_.skeleton.jointCount() > 0 ? rig_ : buildSingleJoint().value();
+  }
+  Real pathRadius() const override { return 0.1 * desc_.height; }
+  Real groundClearance() const override { return 0.0; }  // feet on the ground; their paths never go below it
+  /// Hands draw circles in front of the body; feet step forward and up (never below the ground).
+  Vec3 pathOffset(size_t k, Real phase) const override {
+    const Real r = pathRadius();
+    if (path_ != TargetPath::Circle || k >= centers_.size()) return IkScene::pathOffset(k, phase);
+    if (centers_[k].y < 0.25 * desc_.height) return r * Vec3(0.0, 0.5 * (1.0 - std::cos(phase)), 0.8 * std::sin(phase));
+    return r * Vec3(0.5 * std::sin(phase), std::sin(phase), 0.8 + 0.8 * std::cos(phase));
+  }
+
+ private:
+  CharacterDesc desc_;
+  mutable std::string error_;
+};
+
+}  // namespace
+}  // namespace pba::labs::ik
+
+PBA_REGISTER_SCENE("Characters", "character", pba::labs::ik::CharacterScene);

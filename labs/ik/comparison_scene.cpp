@@ -1,0 +1,194 @@
+// IK lab, scene "comparison": the same chain solved by CCD, FABRIK, Jacobian transpose,
+// pseudo-inverse, DLS and SDLS toward the same moving goal (IK slides, "Comparison"; Workbook §2.6).
+// Each method has its own colour; the chains stand side by side (or overlaid as ghosts on one base),
+// and a 3D plot above them draws each method's residual after every iteration of the last solve
+// (log scale, one line per method) — the convergence curves of the methods, live. The metrics
+// residual_<method> and iterations_<method> are also plotted by the runner.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "ik_scene.h"
+
+namespace pba::labs::ik {
+namespace {
+
+struct Method {
+  SolverKind kind;
+  Color color;
+};
+constexpr std::array<Method, 6> kMethods = {{{SolverKind::Ccd, colors::kRed},
+                                             {SolverKind::Fabrik, colors::kGreen},
+                                             {SolverKind::JacobianTranspose, colors::kOrange},
+                                             {SolverKind::PseudoInverse, colors::kYellow},
+                                             {SolverKind::DampedLeastSquares, colors::kBlue},
+                                             {SolverKind::SelectivelyDamped, colors::kPurple}}};
+constexpr Real kPlotFloor = -7.0;  // [log10 m] bottom of the residual plot
+constexpr Real kPlotHeight = 0.8;  // [chain lengths] height of the 3D plot
+constexpr Real kSpacing = 0.8;     // [chain lengths] between neighbouring bases
+// The runner's default camera yaw (graphics/camera.h, OrbitCamera::yaw): the row of chains, their
+// bending plane and the plot face the default view, so nothing is foreshortened on a projector.
+constexpr Real kViewYaw = 0.6;
+
+enum class Layout { Overlay, SideBySide };
+enum class CompareJoint { Hinge, Ball };
+
+class ComparisonScene final : public app::Scene {
+ public:
+  ComparisonScene() {
+    options_.maxIterations = 60;
+    options_.recordHistory = true;
+    params_.integer("links", &desc_.links, 2, 50, "", "Links of every chain. Typical 8.").needsReset();
+    params_.choiceEnum("joint", &joint_, {"hinge", "ball"}, "Joint type of every link (hinges alternate z/y axes; FABRIK handles hinges poorly: compare).").needsReset();
+    params_.choiceEnum("layout", &layout_, {"overlay", "side-by-side"},
+                       "Chains overlaid on one base as ghosts of one another (compact, best on a projector), or side by side.");
+    params_.integer("max_iterations", &options_.maxIterations, 1, 1000, "", "Iteration cap per solve, for every method. Typical 60.");
+    params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success tolerance, for every method. Typical 1e-4 m.").logarithmic();
+    params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of DLS. Typical 0.05 m.");
+    params_.flag("from_rest", &options_.fromRest,
+                 "Start every solve from the rest pose (the plot then shows full convergence curves every frame).");
+    params_.real("path_speed", &speed_, 0.0, 2.0, "Hz", "Laps per second of the goal's figure-8. Typical 0.25 Hz.");
+    desc_.links = 8;
+    desc_.axes = HingeAxes::Alternating;
+    options_.fromRest = true;
+  }
+  std::string description() const override {
+    return "Six methods, six identical chains, one goal: watch the residual-per-iteration curves above (log scale) and the poses.";
+  }
+  void reset() override {
+    ChainDesc d = desc_;
+    d.joint = joint_ == CompareJoint::Hinge ? JointType::Hinge : JointType::Ball;
+    rig_ = buildIkChain(d).value();
+    // Stand the chain up (+x → +y) and turn it to face the default view.
+    rig_.skeleton.joint(0).restRotation = facing() * glm::angleAxis(kPi / 2.0, Vec3(0, 0, 1));
+    poses_.assign(kMethods.size(), rig_.skeleton.restPose());
+    results_.assign(kMethods.size(), SolveResult{});
+    time_ = 0.0;
+    step(0.0);
+  }
+  void step(Real dt) override {
+    time_ += dt;
+    const Real phase = 2.0 * kPi * speed_ * time_, L = desc_.totalLength;
+    if (!dragging_) goal_ = facing() * (L * Vec3(0.35 * std::sin(phase), 0.6 + 0.2 * std::sin(2.0 * phase), 0.25 + 0.15 * std::cos(phase)));
+    solveAll();
+  }
+  void draw(DebugDraw& d) const override {
+    const Real L = desc_.totalLength, r = std::clamp(0.08 * L / desc_.links, 0.006, 0.04);
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      const Vec3 base = baseOf(m);
+      const std::vector<Frame> f = forwardKinematics(rig_.skeleton, poses_[m]);
+      const Color c = kMethods[m].color;
+      for (int j = 1; j < rig_.skeleton.jointCount(); ++j)
+        d.capsule(base + f[static_cast<size_t>(rig_.skeleton.joint(j).parent)].position, base + f[static_cast<size_t>(j)].position, r, c);
+      d.capsule(base + f.back().position, base + effectorPosition(rig_.effectors[0], f), r, c);
+      d.sphere(base, 2.0 * r, colors::kDark);
+      if (layout_ == Layout::SideBySide || m == 0) d.sphere(base + goal_, 2.5 * r, colors::kDark);
+      char label[96];
+      std::snprintf(label, sizeof label, "%s: %d it, %.0e m", solverName(kMethods[m].kind), results_[m].iterations,
+                    results_[m].positionResidual);
+      // Side by side: under each chain. Overlaid: a legend under the plot, right of the chains.
+      const Vec3 at = layout_ == Layout::SideBySide ? base + facing() * Vec3(-0.25 * L, -0.06 * L, 0.2 * L)
+                                                     : facing() * Vec3(0.5 * L, (0.28 - 0.065 * Real(m)) * L, 0.0);
+      d.text(at, label, c);
+    }
+    drawPlot(d);
+  }
+  nlohmann::json metrics() const override {
+    nlohmann::json j = {{"links", desc_.links}, {"residual_max", 0.0}};
+    Real worst = 0.0;
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      const std::string n = solverName(kMethods[m].kind);
+      j["residual_" + n] = results_[m].positionResidual;
+      j["iterations_" + n] = results_[m].iterations;
+      j["status_" + n] = statusName(results_[m].status);
+      j[n + "_solve_us"] = results_[m].seconds * 1e6;
+      worst = std::max(worst, results_[m].positionResidual);
+    }
+    j["residual_max"] = worst;
+    return j;
+  }
+  std::vector<std::string> defaultPlots() const override {
+    return {"residual_max"};
+  }
+  std::optional<std::string> nonFiniteState() const override {
+    for (size_t m = 0; m < poses_.size(); ++m)
+      for (Real v : poses_[m].dofs)
+        if (!isFinite(v)) return std::string("a joint angle of the ") + solverName(kMethods[m].kind) + " chain is not finite";
+    return std::nullopt;
+  }
+  std::optional<app::PickHit> pick(const app::Ray& ray) const override {
+    return app::pickSphere(ray, baseOf(0) + goal_, 0.1 * desc_.totalLength, 0);
+  }
+  void drag(int, const Vec3& target) override {
+    dragging_ = true;
+    goal_ = target - baseOf(0);
+    solveAll();
+  }
+  void release(int) override { dragging_ = false; }
+
+ private:
+  void solveAll() {
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      std::vector<Effector> effectors = rig_.effectors;
+      effectors[0].targetPosition = goal_;  // chains are solved at the origin and drawn at their base
+      SolveOptions o = options_;
+      o.solver = kMethods[m].kind;
+      results_[m] = solve(rig_.skeleton, poses_[m], effectors, o);
+    }
+  }
+  static Quat facing() { return glm::angleAxis(kViewYaw, Vec3(0, 1, 0)); }
+  Vec3 baseOf(size_t m) const {
+    if (layout_ == Layout::Overlay) return Vec3(0.0);
+    return facing() * Vec3((Real(m) - 0.5 * Real(kMethods.size() - 1)) * kSpacing * desc_.totalLength, 0.0, 0.0);
+  }
+  /// Residual after each iteration of the last solve, log10 scale, above the chains.
+  void drawPlot(DebugDraw& d) const {
+    const Real L = desc_.totalLength;
+    const bool row = layout_ == Layout::SideBySide;
+    const Real width = row ? kSpacing * L * Real(kMethods.size() - 1) : 1.0 * L;
+    const Vec3 origin = facing() * (row ? Vec3(-0.5 * width, 1.15 * L, -0.3 * L) : Vec3(0.5 * L, 0.38 * L, 0.0));
+    const Vec3 right = facing() * Vec3(1, 0, 0);
+    size_t longest = 2;
+    Real top = -1.0;
+    for (const SolveResult& r : results_) {
+      longest = std::max(longest, r.residualHistory.size());
+      for (Real v : r.residualHistory) top = std::max(top, std::ceil(std::log10(std::max(v, 1e-12))));
+    }
+    const Real h = (row ? kPlotHeight : 0.55) * L;
+    auto at = [&](Real i, Real residual) {
+      const Real y = (std::log10(std::max(residual, 1e-12)) - kPlotFloor) / (top - kPlotFloor);
+      return origin + right * (width * i / Real(longest - 1)) + Vec3(0.0, h * std::clamp(y, 0.0, 1.0), 0.0);
+    };
+    d.line(origin, origin + width * right, colors::kDark);
+    d.line(origin, origin + Vec3(0, h, 0), colors::kDark);
+    for (Real e = kPlotFloor; e <= top; e += 1.0) d.line(at(0, std::pow(10.0, e)), at(Real(longest - 1), std::pow(10.0, e)), colors::kGrey);
+    d.line(at(0, options_.tolerance), at(Real(longest - 1), options_.tolerance), colors::kDark);
+    char label[64];
+    std::snprintf(label, sizeof label, "residual [m], 1e%.0f ... 1e%.0f", kPlotFloor, top);
+    d.text(origin + Vec3(0, h + 0.05 * L, 0), label, colors::kDark);
+    std::snprintf(label, sizeof label, "iteration %zu", longest - 1);
+    d.text(origin + width * right - Vec3(0.0, 0.06 * L, 0.0), label, colors::kDark);
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      const std::vector<Real>& hist = results_[m].residualHistory;
+      for (size_t i = 1; i < hist.size(); ++i) d.line(at(Real(i - 1), hist[i - 1]), at(Real(i), hist[i]), kMethods[m].color);
+    }
+  }
+
+  ChainDesc desc_;
+  CompareJoint joint_ = CompareJoint::Ball;
+  Layout layout_ = Layout::Overlay;
+  SolveOptions options_;
+  Real speed_ = 0.25;
+  Rig rig_;
+  std::vector<Pose> poses_;
+  std::vector<SolveResult> results_;
+  bool dragging_ = false;
+  Vec3 goal_{0.0};
+  Real time_ = 0.0;
+};
+
+}  // namespace
+}  // namespace pba::labs::ik
+
+PBA_REGISTER_SCENE("Chains", "comparison", pba::labs::ik::ComparisonScene);
