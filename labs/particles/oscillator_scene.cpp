@@ -2,7 +2,7 @@
 // integrator side by side against the exact solution (Lobb notes, "ODE view"). Each panel is a phase
 // portrait (x right, v up): the exact orbit is the grey unit circle; Euler spirals outward (energy × 1 + h²
 // per step), symplectic Euler and the Verlets stay on a nearby ellipse, RK4 hugs the circle, implicit
-// Euler spirals inward. Below, the energy of each method over time.
+// Euler spirals inward. The ninth cell plots the energy of each method over time.
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -14,8 +14,14 @@
 namespace {
 using namespace pba;
 
-constexpr int kColumns = 4;
-constexpr Real kPanel = 3.0;   // [m] spacing of the phase-plot panels in the scene
+// The figure is a 3 × 3 grid: eight phase portraits and, in the last cell, the energy plot. A square
+// grid keeps the bounding sphere the runner frames small, so panels and labels stay readable.
+constexpr int kColumns = 3;
+constexpr Real kPanel = 3.4;        // [m] horizontal spacing of the cells in the scene
+constexpr Real kPanelHeight = 3.7;  // [m] vertical spacing (room for the labels above and below)
+constexpr Real kPhaseLimit = 1.4;   // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
+constexpr Real kBottom = 0.6;       // [m] lowest cell edge above the ground (its label sits below it)
+constexpr Real kFacingYaw = 0.6;    // [rad] the figure faces the lab's default camera (OrbitCamera::yaw)
 constexpr std::size_t kTrail = 2000;  // samples kept per trajectory
 constexpr Color kMethodColors[] = {colors::kRed,    colors::kBlue,  colors::kGreen, colors::kPurple,
                                    colors::kOrange, colors::kYellow, colors::kDark,  colors::kGrey};
@@ -65,37 +71,41 @@ class OscillatorScene final : public app::Scene {
   }
 
   void draw(DebugDraw& d) const override {
+    // A 4 × 2 grid of phase portraits above an energy plot, all above the ground (y > 0) and in a
+    // vertical plane turned to face the lab's default camera, so the whole figure fits one screen.
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       const Vec3 c = panelCenter(i);
       const Color color = kMethodColors[i];
-      d.circle(c, Vec3(0, 0, 1), 1.0, colors::kGrey);  // exact orbit (radius √(2E) = 1)
-      d.line(c - Vec3(1.3, 0, 0), c + Vec3(1.3, 0, 0), colors::kGrey);
-      d.line(c - Vec3(0, 1.3, 0), c + Vec3(0, 1.3, 0), colors::kGrey);
+      d.circle(c, facingNormal(), 1.0, colors::kGrey);  // exact orbit (radius √(2E) = 1)
+      d.line(c - kPhaseLimit * right(), c + kPhaseLimit * right(), colors::kGrey);
+      d.line(c - kPhaseLimit * kUp, c + kPhaseLimit * kUp, colors::kGrey);
       const auto& trail = methods_[i].trail;
-      for (std::size_t k = 1; k < trail.size(); ++k) d.line(c + clampPhase(trail[k - 1]), c + clampPhase(trail[k]), color);
+      for (std::size_t k = 1; k < trail.size(); ++k) d.line(c + onPanel(trail[k - 1]), c + onPanel(trail[k]), color);
       const ode::HarmonicOscillator& s = *methods_[i].system;
-      d.sphere(c + clampPhase({s.positions()[0], s.velocities()[0]}), 0.06, color);
-      d.sphere(c + clampPhase({s.exactPosition(time_), s.exactVelocity(time_)}), 0.04, colors::kGrey);
-      char label[96];
-      std::snprintf(label, sizeof label, "%s  E/E0 = %.3g", std::string(ode::integratorName(methods_[i].integrator.kind())).c_str(),
-                    s.energy() / 0.5);
-      d.text(c + Vec3(-1.3, 1.45, 0), label, selected(i) ? colors::kRed : colors::kDark);
+      d.sphere(c + onPanel({s.positions()[0], s.velocities()[0]}), 0.07, color);
+      d.sphere(c + onPanel({s.exactPosition(time_), s.exactVelocity(time_)}), 0.05, colors::kGrey);
+      const Color labelColor = selected(i) ? colors::kRed : colors::kDark;
+      d.text(c + (kPhaseLimit + 0.15) * kUp - kPhaseLimit * right(), ode::integratorName(methods_[i].integrator.kind()),
+             labelColor);
+      char energy[48];
+      std::snprintf(energy, sizeof energy, "E/E0 = %.3g", s.energy() / 0.5);
+      d.text(c - (kPhaseLimit + 0.05) * kUp - kPhaseLimit * right(), energy, labelColor);
     }
-    // Energy plot below the panels: E/E₀ over time, one polyline per method (clipped to [0, 4]).
-    const Vec3 origin(-1.4, -3.8, 0.0);
-    const Real width = kColumns * kPanel, tScale = width / endTime_;
-    d.line(origin, origin + Vec3(width, 0, 0), colors::kDark);
-    d.line(origin, origin + Vec3(0, 2.0, 0), colors::kDark);
-    d.line(origin + Vec3(0, 0.5, 0), origin + Vec3(width, 0.5, 0), colors::kGrey);  // E/E₀ = 1
-    d.text(origin + Vec3(-0.1, 2.1, 0), "E/E0 (1 at the grey line)", colors::kDark);
+    // Energy plot in the last cell: E/E₀ over time, one polyline per method (clipped to [0, 4]).
+    const Vec3 origin = panelCenter(methods_.size()) - kPhaseLimit * (right() + kUp);
+    const Real width = 2.0 * kPhaseLimit, height = 2.0 * kPhaseLimit, tScale = width / endTime_;
+    d.line(origin, origin + width * right(), colors::kDark);
+    d.line(origin, origin + height * kUp, colors::kDark);
+    const Real yOne = height / 4.0;  // E/E₀ = 1 (the axis spans 0…4)
+    d.line(origin + yOne * kUp, origin + yOne * kUp + width * right(), colors::kGrey);
+    d.text(origin + (height + 0.15) * kUp, "E/E0 over t", colors::kDark);
+    d.text(origin - 0.05 * kUp, "grey: E/E0 = 1", colors::kGrey);
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       const auto& e = methods_[i].energy;
-      for (std::size_t k = 1; k < e.size(); ++k) {
-        auto pt = [&](std::size_t j) {
-          return origin + Vec3(e[j].x * tScale, 0.5 * std::clamp(e[j].y, 0.0, 4.0), 0.0);
-        };
-        d.line(pt(k - 1), pt(k), kMethodColors[i]);
-      }
+      auto pt = [&](std::size_t j) {
+        return origin + (e[j].x * tScale) * right() + (yOne * std::clamp(e[j].y, 0.0, 4.0)) * kUp;
+      };
+      for (std::size_t k = 1; k < e.size(); ++k) d.line(pt(k - 1), pt(k), kMethodColors[i]);
     }
   }
 
@@ -119,7 +129,9 @@ class OscillatorScene final : public app::Scene {
     return std::nullopt;
   }
   // No energy(): the runaway guard must not stop Euler's outward spiral, which is the point here.
-  std::vector<std::string> defaultPlots() const override { return {"energy_euler", "energy_symplectic-euler", "energy_rk4"}; }
+  // No default plot windows: the scene draws every method's energy itself (ninth cell), and a plot window
+  // would cover the lower row of the grid. Tick "plot" in the metrics panel for more.
+  std::vector<std::string> defaultPlots() const override { return {}; }
   std::vector<app::Preset> presets() const override {
     return {{"Lobb: h = 0.1", {{"h", 0.1}}}, {"coarse h = 0.3", {{"h", 0.3}}}, {"fine h = 0.01", {{"h", 0.01}}},
             {"very coarse h = 0.5", {{"h", 0.5}}}};
@@ -132,15 +144,21 @@ class OscillatorScene final : public app::Scene {
     std::deque<Vec2> trail;   // (x, v)
     std::deque<Vec2> energy = {};  // (t, E/E₀)
   };
-  static Vec3 clampPhase(const Vec2& p) {
+  // The figure's plane: x of the phase plot along right(), v along +y.
+  static Vec3 right() { return Vec3(std::cos(kFacingYaw), 0.0, -std::sin(kFacingYaw)); }
+  static Vec3 facingNormal() { return Vec3(std::sin(kFacingYaw), 0.0, std::cos(kFacingYaw)); }
+  static Vec3 onPanel(const Vec2& p) {
     const Real r = glm::length(p);
-    const Vec2 q = r > 1.4 ? p * (1.4 / r) : p;  // keep runaway spirals inside the panel
-    return Vec3(q.x, q.y, 0.0);
+    const Vec2 q = r > kPhaseLimit ? p * (kPhaseLimit / r) : p;  // keep runaway spirals inside the panel
+    return q.x * right() + q.y * kUp;
   }
   static std::size_t index(ode::IntegratorKind k) { return static_cast<std::size_t>(k); }
   bool selected(std::size_t i) const { return i == index(selected_); }
-  Vec3 panelCenter(std::size_t i) const {
-    return Vec3(static_cast<Real>(i % kColumns) * kPanel, (i < kColumns ? 1.0 : 0.0) * kPanel, 0.0);
+  // Cell i of the grid, row by row from the top left; cell 8 holds the energy plot.
+  static Vec3 panelCenter(std::size_t i) {
+    const Real column = static_cast<Real>(i % kColumns) - 0.5 * (kColumns - 1);
+    const Real rowFromBottom = static_cast<Real>(2 - static_cast<int>(i / kColumns));
+    return column * kPanel * right() + (kBottom + kPhaseLimit + rowFromBottom * kPanelHeight) * kUp;
   }
   Real errorOf(const Method& m) const {
     return std::hypot(m.system->positions()[0] - m.system->exactPosition(time_),

@@ -10,20 +10,26 @@ void SpatialHash::build(std::span<const Vec3> positions, Real cellSize) {
   assert(cellSize > 0.0);
   inverseCell_ = 1.0 / cellSize;
   const std::size_t n = positions.size();
-  const std::size_t table = std::max<std::size_t>(64, 2 * n + 1);  // load factor ≤ ½
+  std::size_t table = 64;  // power of two, load factor ≤ ½
+  shift_ = 58;
+  while (table < 2 * n) {
+    table *= 2;
+    --shift_;
+  }
+  // assign/resize reuse the capacity of earlier builds: no allocation once the count has been reached.
   cellStart_.assign(table + 1, 0);
   entries_.resize(n);
-  std::vector<std::uint32_t> bucketOf(n);
+  bucketOf_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3& p = positions[i];
-    bucketOf[i] = bucket(static_cast<std::int64_t>(std::floor(p.x * inverseCell_)),
-                         static_cast<std::int64_t>(std::floor(p.y * inverseCell_)),
-                         static_cast<std::int64_t>(std::floor(p.z * inverseCell_)));
-    ++cellStart_[bucketOf[i] + 1];
+    bucketOf_[i] = bucket(static_cast<std::int64_t>(std::floor(p.x * inverseCell_)),
+                          static_cast<std::int64_t>(std::floor(p.y * inverseCell_)),
+                          static_cast<std::int64_t>(std::floor(p.z * inverseCell_)));
+    ++cellStart_[bucketOf_[i] + 1];
   }
   for (std::size_t b = 0; b < table; ++b) cellStart_[b + 1] += cellStart_[b];
-  std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) entries_[fill[bucketOf[i]]++] = static_cast<std::uint32_t>(i);
+  fill_.assign(cellStart_.begin(), cellStart_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) entries_[fill_[bucketOf_[i]]++] = static_cast<std::uint32_t>(i);
 }
 
 PairCollisionStats collideParticlePairs(Particles& p, Real radius, Real restitution, SpatialHash& hash) {

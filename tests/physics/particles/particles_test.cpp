@@ -50,7 +50,7 @@ TEST(ParticleForces, AttractorForceIsMinusTheGradientOfItsPotential) {
   const Vec3 x{1.0, 0.5, -0.4};
   std::vector<Vec3> f{Vec3(0.0)};
   accumulateFieldForces(desc, 0.0, std::vector<Vec3>{x}, std::vector<Vec3>{Vec3(0.0)}, w, f);
-  Vec3 gradient;
+  Vec3 gradient(0.0);  // initialised: GCC -O3 -Werror sees the per-axis fill as maybe-uninitialized
   const Real step = 1e-6;
   for (int a = 0; a < 3; ++a) {
     Vec3 d(0.0);
