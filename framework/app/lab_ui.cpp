@@ -146,11 +146,16 @@ void metricsTable(LabSession& session, const UiState& ui) {
   ImGui::Text("frame %.2f ms   physics %.3f ms", ui.frameMs, runner.frameStats().last());
   const nlohmann::json metrics = runner.scene().metrics();
   auto& plotted = session.settings().plotted;
-  if (ImGui::BeginTable("metrics", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+  if (ImGui::BeginTable("metrics", 3, ImGuiTableFlags_RowBg)) {
+    // Name and value share the width; the plot box keeps a fixed column so it is never cut off.
+    ImGui::TableSetupColumn("metric", ImGuiTableColumnFlags_WidthStretch, 1.3f);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableSetupColumn("plot", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFrameHeight());
     for (const auto& [key, value] : metrics.items()) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(key.c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (tick the box to plot it)", key.c_str());
       ImGui::TableNextColumn();
       if (value.is_number_float()) ImGui::Text("%.5g", value.get<double>());
       else if (value.is_string()) ImGui::TextUnformatted(value.get<std::string>().c_str());
@@ -159,7 +164,7 @@ void metricsTable(LabSession& session, const UiState& ui) {
       if (value.is_number() || value.is_boolean()) {
         bool on = std::find(plotted.begin(), plotted.end(), key) != plotted.end();
         ImGui::PushID(key.c_str());
-        if (ImGui::Checkbox("plot", &on)) {
+        if (ImGui::Checkbox("##plot", &on)) {
           if (on) plotted.push_back(key);
           else plotted.erase(std::remove(plotted.begin(), plotted.end(), key), plotted.end());
         }

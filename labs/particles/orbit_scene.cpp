@@ -2,6 +2,7 @@
 // Energy and angular momentum are conserved exactly by the true motion; the metrics show each method's
 // drift: Euler spirals out, implicit Euler falls in, the symplectic methods keep the energy bounded and
 // (being built from central kicks) the angular momentum exact up to rounding.
+#include <cmath>
 #include <deque>
 #include <memory>
 
@@ -13,6 +14,9 @@ namespace {
 using namespace pba;
 
 constexpr std::size_t kTrail = 600;
+// The orbital plane is y = 0 in the simulation; it is drawn this high so the ground grid hides nothing.
+constexpr Vec3 kDrawOffset{0.0, 0.6, 0.0};  // [m]
+constexpr int kEllipseSegments = 128;
 constexpr Color kColors[] = {colors::kRed, colors::kBlue, colors::kGreen, colors::kPurple,
                              colors::kOrange, colors::kYellow, colors::kDark, colors::kGrey};
 
@@ -63,11 +67,32 @@ class OrbitScene final : public app::Scene {
     rate_.stop(updates);
   }
   void draw(DebugDraw& d) const override {
-    d.sphere(Vec3(0.0), 0.08, colors::kYellow);
+    d.sphere(kDrawOffset, 0.08, colors::kYellow);
+    drawExactOrbit(d);
     for (std::size_t i = 0; i < planets_.size(); ++i) {
       const auto& t = planets_[i].trail;
-      for (std::size_t k = 1; k < t.size(); ++k) d.line(t[k - 1], t[k], kColors[i]);
-      d.sphere(planets_[i].orbit->position(), 0.04, kColors[i]);
+      for (std::size_t k = 1; k < t.size(); ++k) d.line(t[k - 1] + kDrawOffset, t[k] + kDrawOffset, kColors[i]);
+      d.sphere(planets_[i].orbit->position() + kDrawOffset, 0.04, kColors[i]);
+    }
+  }
+  // The true Kepler ellipse of the initial state (grey): r(θ) = p / (1 + e cos θ) about the sun,
+  // with eccentricity vector e = v × L / GM − r̂ and semi-latus rectum p = |L|² / GM.
+  void drawExactOrbit(DebugDraw& d) const {
+    const ode::OrbitDesc desc;
+    const Vec3 r0 = desc.position, v0(0.0, 0.0, -speed_);
+    const Vec3 L = glm::cross(r0, v0);
+    const Vec3 ecc = glm::cross(v0, L) / desc.gm - glm::normalize(r0);
+    const Real e = glm::length(ecc);
+    if (e >= 1.0) return;  // not bound: no ellipse
+    const Real semiLatus = glm::dot(L, L) / desc.gm;
+    const Vec3 u = e > 1e-9 ? ecc / e : glm::normalize(r0);
+    const Vec3 w = glm::normalize(glm::cross(glm::normalize(L), u));
+    Vec3 previous(0.0);
+    for (int k = 0; k <= kEllipseSegments; ++k) {
+      const Real theta = 2.0 * kPi * k / kEllipseSegments;
+      const Vec3 p = kDrawOffset + semiLatus / (1.0 + e * std::cos(theta)) * (std::cos(theta) * u + std::sin(theta) * w);
+      if (k > 0) d.line(previous, p, colors::kGrey);
+      previous = p;
     }
   }
   nlohmann::json metrics() const override {
