@@ -13,11 +13,13 @@ namespace {
 using namespace pba;
 using namespace pba::ik;
 
-void solveChain(benchmark::State& state, SolverKind kind, JointType joint) {
+// limit 0: ±120° for 10 links, ±30° per DOF for 100 and 1,000 links; otherwise the given limit
+// (kPi: unconstrained ball joints, the setting of the FABRIK paper's Table 1).
+void solveChain(benchmark::State& state, SolverKind kind, JointType joint, Real limit = 0.0) {
   ChainDesc d;
   d.links = static_cast<int>(state.range(0));
   d.joint = joint;
-  d.limit = d.links >= 100 ? degToRad(30.0) : degToRad(120.0);
+  d.limit = limit > 0.0 ? limit : d.links >= 100 ? degToRad(30.0) : degToRad(120.0);
   const Rig rig = buildIkChain(d).value();
   std::mt19937_64 rng(1);
   std::vector<std::vector<Effector>> goals;
@@ -45,9 +47,10 @@ void solveChain(benchmark::State& state, SolverKind kind, JointType joint) {
   state.counters["success"] = solves ? double(successes) / double(solves) : 0.0;
 }
 
-#define PBA_IK_BENCH(name, kind, joint)                                                         \
-  void name(benchmark::State& s) { solveChain(s, kind, joint); }                              \
+#define PBA_IK_BENCH_LIMIT(name, kind, joint, limit)                                            \
+  void name(benchmark::State& s) { solveChain(s, kind, joint, limit); }                       \
   BENCHMARK(name)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond)->MinTime(0.5)
+#define PBA_IK_BENCH(name, kind, joint) PBA_IK_BENCH_LIMIT(name, kind, joint, 0.0)
 
 PBA_IK_BENCH(BM_Ccd_Ball, SolverKind::Ccd, JointType::Ball);
 PBA_IK_BENCH(BM_Fabrik_Ball, SolverKind::Fabrik, JointType::Ball);
@@ -58,6 +61,9 @@ PBA_IK_BENCH(BM_Sdls_Ball, SolverKind::SelectivelyDamped, JointType::Ball);
 PBA_IK_BENCH(BM_Ccd_Hinge, SolverKind::Ccd, JointType::Hinge);
 PBA_IK_BENCH(BM_Fabrik_Hinge, SolverKind::Fabrik, JointType::Hinge);
 PBA_IK_BENCH(BM_Dls_Hinge, SolverKind::DampedLeastSquares, JointType::Hinge);
+PBA_IK_BENCH_LIMIT(BM_Ccd_BallFree, SolverKind::Ccd, JointType::Ball, kPi);
+PBA_IK_BENCH_LIMIT(BM_Fabrik_BallFree, SolverKind::Fabrik, JointType::Ball, kPi);
+PBA_IK_BENCH_LIMIT(BM_Dls_BallFree, SolverKind::DampedLeastSquares, JointType::Ball, kPi);
 
 }  // namespace
 

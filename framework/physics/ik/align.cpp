@@ -28,20 +28,37 @@ Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, cons
   return std::atan2(S, C);
 }
 
-// Sets joint j's local rotation to `local` (ball: via XYZ Euler angles; free: directly), clamps, and
-// returns the world rotation applied about the pivot.
-Quat setLocalRotation(const Skeleton& s, Pose& pose, int j, const Frame& f, const Quat& oldLocal, const Quat& local,
-                      bool clampLimits) {
-  const Joint& joint = s.joint(j);
+// Turns joint j by the world rotation `world` about its pivot: its local rotation becomes
+// R_pre⁻¹ · world · R_pre · oldLocal (ball: stored as XYZ Euler angles; free: directly), clamped to the
+// limits; `oldWorld` = R_pre · oldLocal is the joint's current world rotation (Frame::rotation). Keeps c.local[j] current and returns the world rotation actually applied (`world` itself
+// unless clamping changed it). An unclamped ball update needs no sincos (the Euler round trip is the
+// same rotation), and when no limit can act the Euler angles are written later (flushPose).
+Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Quat& oldWorld, const Quat& world,
+               bool clampLimits) {
+  const Joint& joint = c.skeleton.joint(j);
+  const Quat preInverse = glm::conjugate(f.pre);
+  const Quat wanted = glm::normalize(preInverse * (world * oldWorld));
+  Quat newLocal = wanted;
+  const bool clampNow = clampLimits && !rotationUnlimited(joint);
   if (joint.type == JointType::Ball) {
-    const Vec3 e = eulerXYZFromQuat(local);
-    for (int k = 0; k < 3; ++k) pose.dofs[static_cast<size_t>(joint.firstDof + k)] = e[k];
+    if (clampNow) {
+      Real* dofs = c.pose.dofs.data() + joint.firstDof;
+      const Vec3 e = eulerXYZFromQuat(wanted);
+      for (int k = 0; k < 3; ++k) dofs[k] = e[k];
+      clampJointToLimits(c.skeleton, c.pose, j);
+      if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) newLocal = jointRotation(joint, c.pose, j);
+    }
+    c.staleEuler[static_cast<size_t>(j)] = !clampNow;
   } else {
-    pose.rotations[static_cast<size_t>(j)] = glm::normalize(local);
+    c.pose.rotations[static_cast<size_t>(j)] = wanted;
+    if (clampNow) {
+      clampJointToLimits(c.skeleton, c.pose, j);
+      newLocal = c.pose.rotations[static_cast<size_t>(j)];
+    }
   }
-  if (clampLimits) clampJointToLimits(s, pose, j);
-  const Quat newLocal = jointRotation(joint, pose, j);
-  return f.pre * newLocal * glm::inverse(oldLocal) * glm::inverse(f.pre);
+  c.local[static_cast<size_t>(j)] = newLocal;
+  if (newLocal == wanted) return world;
+  return f.pre * newLocal * glm::conjugate(oldLocal) * preInverse;
 }
 
 // The hinge optimum is an angle modulo 2π. Of the representatives ψ − 2π, ψ, ψ + 2π, pick the one
@@ -63,9 +80,17 @@ Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
 
 }  // namespace
 
-Quat alignJoint(const Skeleton& s, Pose& pose, int j, const Frame& f, const std::vector<Vec3>& from,
-                const std::vector<Vec3>& to, const std::vector<Real>& w, bool clampLimits, bool useExercise,
-                Vec3* translation) {
+bool rotationUnlimited(const Joint& joint) {
+  if (joint.type == JointType::Free) return joint.maxRotation >= kPi;
+  if (joint.type != JointType::Ball) return false;
+  return joint.lo[0] <= -kPi && joint.hi[0] >= kPi && joint.lo[1] <= -0.5 * kPi && joint.hi[1] >= 0.5 * kPi &&
+         joint.lo[2] <= -kPi && joint.hi[2] >= kPi;
+}
+
+Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation) {
+  const Skeleton& s = c.skeleton;
+  Pose& pose = c.pose;
   const Joint& joint = s.joint(j);
   if (translation) *translation = Vec3(0.0);
   if (from.empty()) return Quat(1, 0, 0, 0);
@@ -100,15 +125,15 @@ Quat alignJoint(const Skeleton& s, Pose& pose, int j, const Frame& f, const std:
       const Real old = d;
       d = bestHingeValue(old + theta, joint.lo[0], joint.hi[0], clampLimits);
       if (clampLimits) clampJointToLimits(s, pose, j);
+      c.local[static_cast<size_t>(j)] = jointRotation(joint, pose, j);
       return glm::angleAxis(d - old, a);
     }
     case JointType::Ball:
     case JointType::Free: {
-      const Quat oldLocal = jointRotation(joint, pose, j);
+      const Quat oldLocal = c.local[static_cast<size_t>(j)];
       if (from.size() == 1) {
         const Quat world = useExercise ? ccdJointUpdate(p, from[0], to[0]) : shortestArc(from[0] - p, to[0] - p);
-        const Quat local = glm::inverse(f.pre) * world * f.pre * oldLocal;
-        return setLocalRotation(s, pose, j, f, oldLocal, local, clampLimits);
+        return turnJoint(c, j, f, oldLocal, f.rotation, world, clampLimits);
       }
       // Several points: a few sweeps of exact single-axis updates about the axis Σ wᵢ uᵢ × vᵢ (the
       // direction of steepest descent of the rotation), each the closed form above.
@@ -121,9 +146,8 @@ Quat alignJoint(const Skeleton& s, Pose& pose, int j, const Frame& f, const std:
         if (length < 1e-15) break;
         axis /= length;
         const Real theta = bestAngle(axis, p, moved, to, w);
-        const Quat current = jointRotation(joint, pose, j);
-        const Quat local = glm::inverse(f.pre) * glm::angleAxis(theta, axis) * f.pre * current;
-        const Quat applied = setLocalRotation(s, pose, j, f, current, local, clampLimits);
+        const Quat current = c.local[static_cast<size_t>(j)];
+        const Quat applied = turnJoint(c, j, f, current, f.pre * current, glm::angleAxis(theta, axis), clampLimits);
         for (Vec3& m : moved) m = p + applied * (m - p);
         total = applied * total;
       }

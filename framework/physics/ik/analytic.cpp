@@ -115,7 +115,7 @@ class Analytic final : public Method {
     const Vec3 w = effectorPosition(e, c.frames);
     if (c.skeleton.joint(shoulder).type == JointType::Hinge) {
       const Frame f = c.frames[static_cast<size_t>(shoulder)];
-      alignJoint(c.skeleton, c.pose, shoulder, f, {w}, {e.targetPosition}, {1.0}, c.options.enforceLimits, false, nullptr);
+      alignJoint(c, shoulder, f, {w}, {e.targetPosition}, {1.0}, c.options.enforceLimits, false, nullptr);
       c.refresh();
       return;
     }

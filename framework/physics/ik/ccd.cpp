@@ -54,11 +54,12 @@ namespace {
 
 class Ccd final : public Method {
  public:
+  FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::FromCache; }
   void iterate(Context& c) override {
     buildPoints(c);
     const bool clamp = c.options.enforceLimits;
     for (int j = c.skeleton.jointCount() - 1; j >= 0; --j) {
-      const std::vector<int>& below = c.effectorsBelow[static_cast<size_t>(j)];
+      const std::span<const int> below = c.effectorsBelow(j);
       if (below.empty() || c.skeleton.joint(j).type == JointType::Fixed) continue;
       from_.clear();
       to_.clear();
@@ -71,17 +72,29 @@ class Ccd final : public Method {
         }
       const Frame& f = c.frames[static_cast<size_t>(j)];
       Vec3 t(0.0);
-      const Quat q = alignJoint(c.skeleton, c.pose, j, f, from_, to_, w_, clamp, true, &t);
+      const Quat q = alignJoint(c, j, f, from_, to_, w_, clamp, true, &t);
       for (int e : below)
         for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
           Vec3& pt = points_[static_cast<size_t>(k)];
           pt = f.position + q * (pt - f.position) + t;
         }
+      // Stop the pass once every goal is met: the joints nearer the root would only make rotations
+      // that the tolerance cannot see (position effectors; 6-DOF ones always finish the pass).
+      if (positionsOnly_ && goalsMet(c.options.tolerance)) return;
     }
   }
 
  private:
+  bool goalsMet(Real tolerance) const {
+    for (size_t k = 0; k < points_.size(); ++k) {
+      const Vec3 d = points_[k] - goals_[k];
+      if (glm::dot(d, d) > tolerance * tolerance) return false;
+    }
+    return true;
+  }
+
   void buildPoints(const Context& c) {
+    positionsOnly_ = true;
     points_.clear();
     goals_.clear();
     weights_.clear();
@@ -91,6 +104,7 @@ class Ccd final : public Method {
       goals_.push_back(e.targetPosition);
       weights_.push_back(e.weight);
       if (e.kind == EffectorKind::PositionOrientation) {
+        positionsOnly_ = false;
         const Quat E = effectorOrientation(e, c.frames);
         const Real s = c.orientationScale;
         for (int k = 0; k < 3; ++k) {
@@ -108,6 +122,7 @@ class Ccd final : public Method {
   std::vector<Vec3> points_, goals_, from_, to_;
   std::vector<Real> weights_, w_;
   std::vector<int> first_;  // effector e owns points [first_[e], first_[e + 1])
+  bool positionsOnly_ = true;
 };
 
 }  // namespace

@@ -13,6 +13,9 @@
 // FABRIK positions (alignJoint, clamped to the limits), and the next iteration restarts from the FK
 // positions. For ball and free joints without limits this reproduces plain FABRIK exactly; hinges and
 // limits project each bone onto what the joint can reach. Cost: O(n) per iteration.
+// On a single chain of ball or free joints that no limit restricts (the setting of the FABRIK paper)
+// the conversion is exact and adds nothing, so that case iterates on the points alone and turns
+// them into joint angles once, when the driver stops (finish()).
 // Orientation goals of 6-DOF effectors are ignored by FABRIK (position-only method; use CCD or a
 // Jacobian method for them).
 #include <memory>
@@ -79,12 +82,36 @@ namespace {
 
 class Fabrik final : public Method {
  public:
+  FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::Current; }
+  bool posesDeferred() const override { return pointsOnly_ && pointsLoaded_; }
+  void effectorPoints(const Context& /*c*/, std::vector<Vec3>& points) const override { points.assign(1, pts_.back()); }
+
   void iterate(Context& c) override {
     if (!built_) build(c);
+    if (pointsOnly_) {
+      // Plain FABRIK (Aristidou & Lasenby 2011, Algorithm 1): on an unconstrained chain the joint
+      // angles reproduce the points exactly, so they are computed once, in finish().
+      if (!pointsLoaded_) {
+        syncPositions(c);
+        load(segments_[0]);
+        pointsLoaded_ = true;
+      }
+      fabrikBackward(pts_, lens_, c.effectors[0].targetPosition);
+      fabrikForward(pts_, lens_, q_[static_cast<size_t>(segments_[0][0])]);
+      return;
+    }
     syncPositions(c);
     backward(c);
     forward();
     toAngles(c);
+  }
+
+  void finish(Context& c) override {
+    if (!posesDeferred()) return;
+    const std::vector<int>& seg = segments_[0];
+    for (size_t i = 0; i < seg.size(); ++i) q_[static_cast<size_t>(seg[i])] = pts_[i];
+    toAngles(c);
+    pointsLoaded_ = false;
   }
 
  private:
@@ -125,6 +152,15 @@ class Fabrik final : public Method {
         if (n < J && !kids[static_cast<size_t>(n)].empty()) stack.push_back(n);
         segments_.push_back(std::move(seg));
       }
+    }
+    // Points only: one chain from the root to a single position effector through ball or free joints
+    // that no limit restricts. Then every point placement is reachable by the joint angles.
+    pointsOnly_ = E == 1 && segments_.size() == 1 && c.effectors[0].kind == EffectorKind::Position;
+    for (int j = 0; j < J && pointsOnly_; ++j) {
+      const Joint& joint = c.skeleton.joint(j);
+      if (!used_[static_cast<size_t>(j)]) continue;
+      const bool rotates = joint.type == JointType::Ball || joint.type == JointType::Free;
+      pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
     q_.assign(static_cast<size_t>(J + E), Vec3(0.0));
     length_.assign(static_cast<size_t>(J + E), 0.0);
@@ -177,12 +213,13 @@ class Fabrik final : public Method {
     }
   }
 
+  // Root outward: each joint's frame from its (already updated) parent, then the joint turns its
+  // children onto their FABRIK positions. Leaves every frame current, so the driver skips its FK.
   void toAngles(Context& c) {
     const int J = c.skeleton.jointCount();
     for (int j = 0; j < J; ++j) {
       const Joint& joint = c.skeleton.joint(j);
-      const Frame* parent = joint.parent >= 0 ? &c.frames[static_cast<size_t>(joint.parent)] : nullptr;
-      Frame f = childFrame(joint, c.pose, j, parent);
+      Frame f = c.frameFromParent(j);
       if (used_[static_cast<size_t>(j)] && joint.type != JointType::Fixed && !kids_[static_cast<size_t>(j)].empty()) {
         from_.clear();
         to_.clear();
@@ -193,14 +230,14 @@ class Fabrik final : public Method {
           to_.push_back(q_[static_cast<size_t>(n)]);
           w_.push_back(1.0);
         }
-        alignJoint(c.skeleton, c.pose, j, f, from_, to_, w_, c.options.enforceLimits, false, nullptr);
-        f = childFrame(joint, c.pose, j, parent);
+        alignJoint(c, j, f, from_, to_, w_, c.options.enforceLimits, false, nullptr);
+        f.rotation = f.pre * c.local[static_cast<size_t>(j)];
       }
       c.frames[static_cast<size_t>(j)] = f;
     }
   }
 
-  bool built_ = false;
+  bool built_ = false, pointsOnly_ = false, pointsLoaded_ = false;
   std::vector<int> parent_;
   std::vector<std::vector<int>> kids_, segments_;
   std::vector<char> used_;

@@ -149,8 +149,9 @@ std::vector<Frame> forwardKinematics(const Skeleton& s, const Pose& p) {
 Vec3 eulerXYZFromQuat(const Quat& q) {
   const Mat3 m = glm::mat3_cast(q);
   const Real r02 = m[2][0], r12 = m[2][1], r22 = m[2][2], r00 = m[0][0], r01 = m[1][0];
-  const Real b = std::atan2(std::clamp(r02, -1.0, 1.0), std::hypot(r00, r01));
-  if (std::hypot(r00, r01) < 1e-12) {
+  const Real cosB = std::sqrt(r00 * r00 + r01 * r01);  // entries of a rotation: no overflow, hypot not needed
+  const Real b = std::atan2(std::clamp(r02, -1.0, 1.0), cosB);
+  if (cosB < 1e-12) {
     // Gimbal lock (b = ±π/2): only a ± c is defined; put it all in a.
     const Real r10 = m[0][1], r11 = m[1][1];
     return Vec3(std::atan2(r10, r11), b, 0.0);
@@ -159,6 +160,7 @@ Vec3 eulerXYZFromQuat(const Quat& q) {
 }
 
 Quat quatFromEulerXYZ(const Vec3& e) {
+  if (e.x == 0.0 && e.y == 0.0 && e.z == 0.0) return Quat(1, 0, 0, 0);  // rest poses: skip three sincos
   return glm::angleAxis(e.x, Vec3(1, 0, 0)) * glm::angleAxis(e.y, Vec3(0, 1, 0)) * glm::angleAxis(e.z, Vec3(0, 0, 1));
 }
 

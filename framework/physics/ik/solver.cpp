@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <tuple>
 
 #include "physics/ik/exercises.h"
 #include "physics/ik/solver_internal.h"
@@ -46,6 +47,61 @@ const char* statusName(SolveStatus s) {
 
 namespace detail {
 
+void Context::flushPose() {
+  for (size_t j = 0; j < staleEuler.size(); ++j) {
+    if (!staleEuler[j]) continue;
+    const Vec3 e = eulerXYZFromQuat(local[j]);
+    Real* dofs = pose.dofs.data() + skeleton.joint(static_cast<int>(j)).firstDof;
+    for (int k = 0; k < 3; ++k) dofs[k] = e[k];
+    staleEuler[j] = 0;
+  }
+}
+
+void Context::refresh() {
+  flushPose();
+  staleEuler.assign(static_cast<size_t>(skeleton.jointCount()), 0);
+  local.resize(static_cast<size_t>(skeleton.jointCount()));
+  for (int j = 0; j < skeleton.jointCount(); ++j) local[static_cast<size_t>(j)] = jointRotation(skeleton.joint(j), pose, j);
+  refreshFrames();
+}
+
+namespace {
+// Joint j's frame from its parent's frame (nullptr: root) and its cached local rotation.
+[[gnu::always_inline]] inline Frame frameFrom(const Joint& joint, const Pose& pose, const Quat& local, const Frame* parent) {
+  Frame f;
+  if (parent) {
+    const Quat& rest = joint.restRotation;
+    // Most rest rotations are the identity: four compares are cheaper than a quaternion product.
+    f.pre = rest.w == 1.0 && rest.x == 0.0 && rest.y == 0.0 && rest.z == 0.0 ? parent->rotation : parent->rotation * rest;
+    f.position = parent->position + parent->rotation * jointTranslation(joint, pose);
+  } else {
+    f.pre = joint.restRotation;
+    f.position = jointTranslation(joint, pose);
+  }
+  f.rotation = f.pre * local;
+  return f;
+}
+}  // namespace
+
+void Context::refreshFrames() {
+  const int n = skeleton.jointCount();
+  frames.resize(static_cast<size_t>(n));
+  // Chains (parent = j − 1) take the parent from a local copy: reading it back from `frames` right
+  // after writing it stalls on store forwarding, which made this loop twice as slow.
+  Frame previous;
+  for (int j = 0; j < n; ++j) {
+    const Joint& joint = skeleton.joint(j);
+    const Frame* parent = joint.parent < 0 ? nullptr : joint.parent == j - 1 ? &previous : &frames[static_cast<size_t>(joint.parent)];
+    previous = frameFrom(joint, pose, local[static_cast<size_t>(j)], parent);
+    frames[static_cast<size_t>(j)] = previous;
+  }
+}
+
+Frame Context::frameFromParent(int j) const {
+  const Joint& joint = skeleton.joint(j);
+  return frameFrom(joint, pose, local[static_cast<size_t>(j)], joint.parent >= 0 ? &frames[static_cast<size_t>(joint.parent)] : nullptr);
+}
+
 void stretchToward(Context& c, const Effector& e) {
   // Root → tip along the path to the effector: each joint turns so that the next point of the path
   // (child joint or the effector) lies on the ray from the path's first joint toward the goal.
@@ -66,8 +122,8 @@ void stretchToward(Context& c, const Effector& e) {
     if (lever < 1e-12) continue;
     // The child should sit `lever` further along the ray than this joint's projection onto it.
     const Vec3 goal = base + dir * (along + lever);
-    alignJoint(c.skeleton, c.pose, j, f, {next}, {goal}, {1.0}, c.options.enforceLimits, false, nullptr);
-    c.refresh();
+    alignJoint(c, j, f, {next}, {goal}, {1.0}, c.options.enforceLimits, false, nullptr);
+    c.refreshFrames();
   }
 }
 
@@ -116,7 +172,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     return result;
   }
   if (o.fromRest) pose = skeleton.restPose();
-  detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}};
+  detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}, {}, {}, {}};
   c.refresh();
   // Scales: mean bone length for the automatic error clamp and orientation scale.
   Real bones = 0.0;
@@ -127,13 +183,24 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   c.meanBone = std::max(1e-6, count > 0 ? bones / count : 1.0);
   c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
   c.maxErrorStep = o.maxErrorStep > 0.0 ? o.maxErrorStep : c.meanBone;
-  c.effectorsBelow = effectorsBelowJoints(skeleton, effectors);
-  c.active.assign(static_cast<size_t>(skeleton.jointCount()), 0);
-  for (int j = 0; j < skeleton.jointCount(); ++j) c.active[static_cast<size_t>(j)] = !c.effectorsBelow[static_cast<size_t>(j)].empty();
+  const auto J = static_cast<size_t>(skeleton.jointCount());
+  c.belowStart.assign(J + 1, 0);
+  for (const Effector& e : effectors)
+    for (int j = e.joint; j >= 0; j = skeleton.joint(j).parent) ++c.belowStart[static_cast<size_t>(j) + 1];
+  for (size_t j = 0; j < J; ++j) c.belowStart[j + 1] += c.belowStart[j];
+  c.belowList.resize(static_cast<size_t>(c.belowStart[J]));
+  std::vector<int> fill(c.belowStart.begin(), c.belowStart.end() - 1);
+  for (size_t k = 0; k < effectors.size(); ++k)
+    for (int j = effectors[k].joint; j >= 0; j = skeleton.joint(j).parent)
+      c.belowList[static_cast<size_t>(fill[static_cast<size_t>(j)]++)] = static_cast<int>(k);
+  c.active.assign(J, 0);
+  for (size_t j = 0; j < J; ++j) c.active[j] = c.belowStart[j + 1] > c.belowStart[j];
 
   std::string why;
   std::unique_ptr<detail::Method> method = makeMethod(c, &why);
   auto finish = [&](SolveStatus status) {
+    if (method) method->finish(c);
+    c.flushPose();
     const Residual r = residual(effectors, c.frames);
     result.status = status;
     result.positionResidual = r.position;
@@ -146,10 +213,14 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     return finish(SolveStatus::NotApplicable);
   }
   if (o.recordHistory) result.effectorPath.assign(effectors.size(), {});
+  std::vector<Vec3> points;  // effector points of a method that defers the pose
+  auto effectorPoint = [&](size_t k) {
+    return method->posesDeferred() ? points[k] : effectorPosition(effectors[k], c.frames);
+  };
   auto record = [&](Real positionResidual) {
     if (!o.recordHistory) return;
     result.residualHistory.push_back(positionResidual);
-    for (size_t k = 0; k < effectors.size(); ++k) result.effectorPath[k].push_back(effectorPosition(effectors[k], c.frames));
+    for (size_t k = 0; k < effectors.size(); ++k) result.effectorPath[k].push_back(effectorPoint(k));
   };
 
   // Reachability (Aristidou & Lasenby 2011, Algorithm 1, first test): a goal farther from the root
@@ -164,18 +235,25 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   }
   if (unreachable && effectors.size() == 1 && effectors[0].kind == EffectorKind::Position) {
     detail::stretchToward(c, effectors[0]);
+    c.flushPose();
   }
 
   std::vector<Real> progress;  // combined residual per iteration for stall detection
   auto measure = [&]() {
-    const Residual r = residual(effectors, c.frames);
+    Residual r;
+    if (method->posesDeferred()) {  // position effectors only (FABRIK's condition for deferring)
+      method->effectorPoints(c, points);
+      for (size_t k = 0; k < effectors.size(); ++k)
+        r.position = std::max(r.position, glm::length(effectors[k].targetPosition - points[k]));
+    } else {
+      r = residual(effectors, c.frames);
+    }
     return std::pair<Residual, Real>{r, r.position + c.orientationScale * r.orientation};
   };
-  auto [r0, score0] = measure();
-  record(r0.position);
-  progress.push_back(score0);
+  auto [r, score] = measure();
+  record(r.position);
+  progress.push_back(score);
   for (int it = 0;; ++it) {
-    const auto [r, score] = measure();
     if (r.position <= o.tolerance && r.orientation <= o.angleTolerance) return finish(SolveStatus::Success);
     // A closed-form method that did not succeed has found the nearest reachable pose: the goal is
     // out of its workspace (too far, too near, or outside the limits).
@@ -188,11 +266,15 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     if (o.maxSeconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > o.maxSeconds)
       return finish(SolveStatus::TimeCap);
     method->iterate(c);
-    c.refresh();
+    switch (method->framesAfterIterate()) {
+      case detail::Method::FramesAfterIterate::Refresh: c.refresh(); break;
+      case detail::Method::FramesAfterIterate::FromCache: c.refreshFrames(); break;
+      case detail::Method::FramesAfterIterate::Current: break;
+    }
     result.iterations = it + 1;
-    const auto [rn, sn] = measure();
-    record(rn.position);
-    progress.push_back(sn);
+    std::tie(r, score) = measure();
+    record(r.position);
+    progress.push_back(score);
   }
 }
 

@@ -2,6 +2,7 @@
 // Internals shared by the IK methods (not part of the public interface): the state of one solve and
 // the per-method iteration functions called by solve() in solver.cpp.
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "physics/ik/solver.h"
@@ -10,6 +11,11 @@ namespace pba::ik::detail {
 
 /// Everything one solve works on. `frames` is kept up to date with `pose` by the driver after every
 /// iteration (methods that change the pose call refresh() before reading frames again).
+///
+/// `local` caches every joint's own rotation R_dof for `pose`, so that forward kinematics needs no
+/// trigonometry: a ball joint's R_dof from its Euler DOFs costs three sincos, the dominant cost of
+/// CCD and FABRIK on long chains before this cache. alignJoint() keeps `local` current for the
+/// joints it turns; methods that write pose.dofs directly (Jacobian, analytic) call refresh().
 struct Context {
   const Skeleton& skeleton;
   Pose& pose;
@@ -19,12 +25,28 @@ struct Context {
   Real meanBone = 1.0;          ///< [m] mean distance between a joint and its parent (≥ 1e-6)
   Real orientationScale = 1.0;  ///< [m/rad] resolved options.orientationScale
   Real maxErrorStep = 1.0;      ///< [m] resolved options.maxErrorStep
-  /// Per joint: indices of the effectors in its subtree (joint is an ancestor of the effector's joint).
-  std::vector<std::vector<int>> effectorsBelow;
+  /// Per joint j: indices of the effectors in its subtree (j is an ancestor of the effector's joint),
+  /// as belowList[belowStart[j] .. belowStart[j + 1]) — one allocation, not one per joint.
+  std::vector<int> belowStart, belowList;
+  std::span<const int> effectorsBelow(int j) const {
+    const auto first = static_cast<size_t>(belowStart[static_cast<size_t>(j)]);
+    return std::span<const int>(belowList).subspan(first, static_cast<size_t>(belowStart[static_cast<size_t>(j) + 1]) - first);
+  }
   /// Per joint: true when it lies on the path from the root to some effector.
   std::vector<char> active;
+  std::vector<Quat> local;  ///< R_dof per joint for `pose` (see above)
+  /// Per joint: its Euler DOFs in `pose` lag behind `local` (alignJoint defers the quaternion → Euler
+  /// conversion, two atan2 and a hypot, while no limit needs the angles); flushPose() writes them.
+  std::vector<char> staleEuler;
 
-  void refresh() { forwardKinematics(skeleton, pose, frames); }
+  /// Writes the Euler DOFs of every joint marked stale from `local`.
+  void flushPose();
+  /// Flushes, recomputes `local` from the pose, then every frame. O(n) with trigonometry.
+  void refresh();
+  /// Every frame from the cached `local` (valid when only alignJoint() changed the pose). O(n).
+  void refreshFrames();
+  /// Joint j's frame from its parent's entry in `frames` and the cached local rotation. O(1).
+  Frame frameFromParent(int j) const;
 };
 
 /// One IK method: iterate() does one pass (CCD, FABRIK) or one step (Jacobian methods).
@@ -34,6 +56,17 @@ class Method {
   virtual void iterate(Context& c) = 0;
   /// True when the method solved the problem in closed form and needs no more iterations.
   virtual bool finished() const { return false; }
+  /// How the driver brings `frames` up to date after iterate(): methods that change the pose only
+  /// through alignJoint() keep `local` current (FromCache), FABRIK also leaves every frame
+  /// current (Current); the others need the full refresh().
+  enum class FramesAfterIterate { Refresh, FromCache, Current };
+  virtual FramesAfterIterate framesAfterIterate() const { return FramesAfterIterate::Refresh; }
+  /// True while the method iterates on points alone and the pose lags behind (FABRIK on an
+  /// unconstrained chain): the driver then measures the residual on effectorPoints() and calls
+  /// finish() once, before its final measurement, to write the pose and the frames.
+  virtual bool posesDeferred() const { return false; }
+  virtual void effectorPoints(const Context& /*c*/, std::vector<Vec3>& /*points*/) const {}
+  virtual void finish(Context& /*c*/) {}
 };
 
 std::unique_ptr<Method> makeCcd();
@@ -49,9 +82,14 @@ std::unique_ptr<Method> makeAnalytic(const Context& c, std::string* why);
 /// Returns the world rotation actually applied about the pivot (identity for prismatic) and, through
 /// *translation, the world translation applied (prismatic).
 /// `useExercise` routes single-point ball/free updates through IK-2 (ccdJointUpdate), as CCD does.
-Quat alignJoint(const Skeleton& s, Pose& pose, int j, const Frame& frame, const std::vector<Vec3>& from,
-                const std::vector<Vec3>& to, const std::vector<Real>& w, bool clampLimits, bool useExercise,
-                Vec3* translation);
+/// Updates c.local[j] (not c.frames).
+Quat alignJoint(Context& c, int j, const Frame& frame, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation);
+
+/// True when joint j's rotation limits admit every rotation (ball: Euler ranges cover [−π, π] ×
+/// [−π/2, π/2] × [−π, π]; free: maxRotation ≥ π), so clamping can never change it. Hinges,
+/// prismatic and fixed joints: false.
+bool rotationUnlimited(const Joint& joint);
 
 /// The straight pose toward the goal for a single unreachable position effector: each joint on the
 /// path, from the root, turns its bone toward the goal (Aristidou & Lasenby 2011, Algorithm 1, lines

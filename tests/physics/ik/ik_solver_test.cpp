@@ -40,6 +40,7 @@ void expectRandomTargets(SolverKind kind, const Rig& rig, Real minimumRate, cons
   EXPECT_EQ(s.nonFinite, 0);
   EXPECT_GE(s.successRate(), minimumRate) << "mean iterations " << s.meanIterations;
   EXPECT_LE(s.worstLimitViolation, 1e-9);
+  EXPECT_LE(s.worstReportMismatch, 1e-9) << "the reported residual must be the returned pose's";
 }
 
 TEST(IK_2_CcdSolver, ReachesRandomReachableTargets) {
@@ -50,6 +51,51 @@ TEST(IK_2_CcdSolver, ReachesRandomReachableTargets) {
 TEST(IK_5_FabrikSolver, ReachesRandomReachableTargets) {
   expectRandomTargets(SolverKind::Fabrik, chain(JointType::Ball), 0.99, "10 ball joints, limits ±120°");
   expectRandomTargets(SolverKind::Fabrik, chain(JointType::Hinge), 0.99, "10 hinges, limits ±120°");
+  // Unconstrained ball joints: FABRIK iterates on points alone and writes the angles once at the end.
+  expectRandomTargets(SolverKind::Fabrik, chain(JointType::Ball, 10, 180.0), 0.99, "10 unconstrained ball joints");
+}
+
+TEST(IK_2_CcdSolver, ReachesRandomReachableTargetsOnUnconstrainedChains) {
+  // No limit can act, so CCD defers the Euler angles to the end of the solve (Context::flushPose).
+  expectRandomTargets(SolverKind::Ccd, chain(JointType::Ball, 10, 180.0), 0.99, "10 unconstrained ball joints");
+}
+
+// Plain FABRIK (Aristidou & Lasenby 2011, Algorithm 1) written out here on points, independently of
+// the library: on an unconstrained chain the solver must place every joint where the points are,
+// iteration for iteration.
+TEST(IK_5_FabrikSolver, UnconstrainedChainMatchesPlainFabrikOnPoints) {
+  const Rig rig = chain(JointType::Ball, 12, 180.0);
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Effector> goals = rig.effectors;
+    setGoalsFromPose(rig.skeleton, randomPose(rig.skeleton, rng), goals);
+    const std::vector<Frame> rest = forwardKinematics(rig.skeleton, rig.skeleton.restPose());
+    std::vector<Vec3> p;
+    for (const Frame& f : rest) p.push_back(f.position);
+    p.push_back(effectorPosition(goals[0], rest));
+    std::vector<Real> length;
+    for (size_t i = 0; i + 1 < p.size(); ++i) length.push_back(glm::length(p[i + 1] - p[i]));
+    const Vec3 base = p.front(), goal = goals[0].targetPosition;
+    const int iterations = 1 + trial % 4;
+    for (int it = 0; it < iterations; ++it) {
+      p.back() = goal;
+      for (size_t i = p.size() - 1; i-- > 0;) p[i] = p[i + 1] + glm::normalize(p[i] - p[i + 1]) * length[i];
+      p.front() = base;
+      for (size_t i = 1; i < p.size(); ++i) p[i] = p[i - 1] + glm::normalize(p[i] - p[i - 1]) * length[i - 1];
+    }
+    SolveOptions o;
+    o.solver = SolverKind::Fabrik;
+    o.maxIterations = iterations;
+    o.tolerance = 1e-15;  // run exactly `iterations` passes
+    o.stallIterations = 0;
+    Pose pose = rig.skeleton.restPose();
+    const SolveResult r = solve(rig.skeleton, pose, goals, o);
+    ASSERT_EQ(r.iterations, iterations);
+    const std::vector<Frame> frames = forwardKinematics(rig.skeleton, pose);
+    for (size_t j = 0; j < frames.size(); ++j) EXPECT_NEAR(glm::length(frames[j].position - p[j]), 0.0, 1e-9) << "joint " << j;
+    EXPECT_NEAR(glm::length(effectorPosition(goals[0], frames) - p.back()), 0.0, 1e-9);
+    EXPECT_NEAR(r.positionResidual, glm::length(goal - p.back()), 1e-9);
+  }
 }
 
 TEST(IK_4_DampedLeastSquaresSolver, ReachesRandomReachableTargets) {
@@ -217,6 +263,20 @@ TEST(IK_2_CcdSolver, Solves1000LinkChains) {
     const SolveResult r = solve(rig.skeleton, pose, rig.effectors, o);
     EXPECT_EQ(r.status, SolveStatus::Success) << solverName(kind) << " " << statusName(r.status) << " " << r.positionResidual;
     EXPECT_LE(limitViolation(rig.skeleton, pose), 1e-9);
+  }
+  // Unconstrained (the FABRIK paper's setting): both converge to 1e-4 m, and the returned pose
+  // reaches the goal (checked by forward kinematics here, not by the solver's own residual).
+  for (SolverKind kind : {SolverKind::Ccd, SolverKind::Fabrik}) {
+    Rig rig = chain(JointType::Ball, 1000, 180.0);
+    std::mt19937_64 rng(3);
+    setGoalsFromPose(rig.skeleton, randomPose(rig.skeleton, rng), rig.effectors);
+    Pose pose = rig.skeleton.restPose();
+    SolveOptions o;
+    o.solver = kind;
+    o.maxIterations = 200;
+    const SolveResult r = solve(rig.skeleton, pose, rig.effectors, o);
+    EXPECT_EQ(r.status, SolveStatus::Success) << solverName(kind) << " " << statusName(r.status);
+    EXPECT_LE(residual(rig.effectors, forwardKinematics(rig.skeleton, pose)).position, 1e-4 * (1.0 + 1e-9)) << solverName(kind);
   }
 }
 
