@@ -23,4 +23,10 @@ if [[ -x "$build/bin/pba-hello" ]]; then
   echo "wrote docs/images/hello-lecture.png"
   count=$((count + 1))
 fi
+# The Jacobian view of the IK lab (heat map and singular values), for the workbook.
+if [[ -x "$build/bin/pba-ik" ]]; then
+  "${run[@]}" "$build/bin/pba-ik" --scene tree --set solver=dls --frames 150 --screenshot "$root/docs/images/ik-jacobian.png" >/dev/null
+  echo "wrote docs/images/ik-jacobian.png"
+  count=$((count + 1))
+fi
 echo "screenshots: $count images in docs/images"

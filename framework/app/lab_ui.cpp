@@ -13,6 +13,7 @@ namespace pba::app {
 namespace {
 
 constexpr float kPanelWidth = 400.0f;       // [px at UI scale 1]
+constexpr float kOverlayWidth = 350.0f;     // [px at UI scale 1] a scene's own right-hand column
 constexpr float kWidgetWidthInFonts = 11.5f;  // slider width in font heights: leaves room for labels
 const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
 const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
@@ -257,15 +258,16 @@ void mainPanel(LabSession& session, UiState& ui) {
   ImGui::End();
 }
 
-void plotPanel(LabSession& session) {
+// Returns the top of the plot window [pixels] (the display height when there is none).
+float plotPanel(LabSession& session) {
   // Only the chosen metrics this scene has (a plotted metric of another scene is kept, not shown).
   std::vector<std::pair<std::string, std::vector<float>>> shown;
   for (const std::string& name : session.settings().plotted) {
     std::vector<float> series = session.plots().series(name);
     if (!series.empty()) shown.emplace_back(name, std::move(series));
   }
-  if (shown.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (shown.empty()) return display.y;
   const float height = ImGui::GetFontSize() * 5.0f;
   ImGui::SetNextWindowPos(ImVec2(display.x - 8, display.y - 8), ImGuiCond_Always, ImVec2(1, 1));
   // An explicit size: an auto-fitted axis set every frame would hide the window's contents.
@@ -282,6 +284,7 @@ void plotPanel(LabSession& session) {
                      FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, height));
   }
   ImGui::End();
+  return display.y - 8.0f - windowHeight;
 }
 
 void banners(LabSession& session) {
@@ -327,13 +330,19 @@ void helpOverlay(UiState& ui) {
 }  // namespace
 
 float panelWidthPixels() { return kPanelWidth * ImGui::GetFontSize() / 16.0f + 8.0f; }
+float overlayWidthPixels() { return kOverlayWidth * ImGui::GetFontSize() / 16.0f + 8.0f; }
 
 void drawLabUi(LabSession& session, UiState& ui) {
   banners(session);
   if (ui.showHelp) helpOverlay(ui);
   if (ui.hideUi) return;
   mainPanel(session, ui);
-  plotPanel(session);
+  const float plotsTop = plotPanel(session);
+  Scene& scene = session.runner().scene();
+  if (scene.wantsOverlay()) {
+    const float right = ImGui::GetIO().DisplaySize.x - 8.0f;
+    scene.overlayUi(ScreenRect{right - overlayWidthPixels() + 8.0f, 8.0f, right, plotsTop - 8.0f});
+  }
 }
 
 }  // namespace pba::app

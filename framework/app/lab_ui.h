@@ -23,5 +23,7 @@ void drawLabUi(LabSession& session, UiState& ui);
 
 /// Width of the main panel in pixels at the current font size (for camera framing).
 float panelWidthPixels();
+/// Width [pixels] of the right-hand column reserved for a scene's own window (Scene::wantsOverlay).
+float overlayWidthPixels();
 
 }  // namespace pba::app

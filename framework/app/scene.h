@@ -33,6 +33,11 @@ struct Preset {
   nlohmann::json params;  ///< same shape as a scene file's "params"
 };
 
+/// A rectangle of the window in pixels, y down (ImGui's convention).
+struct ScreenRect {
+  float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
+};
+
 class Scene {
  public:
   virtual ~Scene() = default;
@@ -53,6 +58,11 @@ class Scene {
   virtual nlohmann::json metrics() const = 0;
   /// Extra ImGui widgets beyond the automatic parameter panel (optional; window mode only).
   virtual void ui() {}
+  /// True while the scene wants a window of its own in the right-hand column (the IK lab's Jacobian
+  /// heat map): the framework then reserves that column and frames the camera beside it.
+  virtual bool wantsOverlay() const { return false; }
+  /// Draws that window inside `column` [pixels] (window mode only, while the panels are shown).
+  virtual void overlayUi(const ScreenRect& /*column*/) {}
 
   /// The time step this scene is designed for [s].
   virtual Real defaultDt() const { return 1.0 / 120.0; }

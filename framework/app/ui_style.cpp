@@ -42,8 +42,19 @@ UiFonts loadUiFonts(float contentScale) {
   fonts.contentScale = contentScale > 0.0f ? contentScale : 1.0f;
   ImGuiIO& io = ImGui::GetIO();
   if (std::filesystem::exists(kFontPath)) {
-    fonts.regular = io.Fonts->AddFontFromFileTTF(kFontPath, kRegularPixels * fonts.contentScale);
-    fonts.lecture = io.Fonts->AddFontFromFileTTF(kFontPath, kLecturePixels * fonts.contentScale);
+    // Latin-1, Greek (σ, λ, ω, θ in labels and tooltips) and the math signs the panels use; the
+    // builder's storage must outlive the atlas build, hence static.
+    static ImVector<ImWchar> ranges;
+    if (ranges.empty()) {
+      ImFontGlyphRangesBuilder builder;
+      builder.AddRanges(io.Fonts->GetGlyphRangesDefault());
+      static const ImWchar kGreek[] = {0x0370, 0x03FF, 0};  // ImGui 1.86 has no Greek preset
+      builder.AddRanges(kGreek);
+      builder.AddText("−–—·×÷²³⁻¹√∞≈≠≤≥→←↑↓±°…‖∥⊥∑∂∆ΔΣλ");
+      builder.BuildRanges(&ranges);
+    }
+    fonts.regular = io.Fonts->AddFontFromFileTTF(kFontPath, kRegularPixels * fonts.contentScale, nullptr, ranges.Data);
+    fonts.lecture = io.Fonts->AddFontFromFileTTF(kFontPath, kLecturePixels * fonts.contentScale, nullptr, ranges.Data);
   }
   if (!fonts.regular) {
     ImFontConfig config;

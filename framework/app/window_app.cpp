@@ -72,8 +72,10 @@ std::string timestampedScreenshotName(const std::string& lab, const std::string&
 
 // Fits the scene in view; shifts it right of the panel and, when plots are shown, up from the
 // plot panel in the lower right corner, so that neither covers it.
+// Frames the scene's bounds in the part of the window the panels leave free: the controls on the
+// left (panelPixels), a scene's own column on the right (overlayPixels), the plots at the bottom.
 void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 viewport, float panelPixels,
-                 bool plotsShown) {
+                 float overlayPixels, bool plotsShown) {
   const float aspect = viewport.y > 0.0f ? viewport.x / viewport.y : 1.0f;
   graphics::DebugRenderer probe;
   SceneDraw draw(probe);
@@ -83,7 +85,7 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
     lo.y = std::min(lo.y, 0.0f);  // keep the ground in view
     camera.frame(lo, hi, aspect);
     camera.zoom(-2.0f);  // a margin around the scene: room to move
-    camera.pan(0.5f * panelPixels, plotsShown ? -0.12f * viewport.y : 0.0f, viewport);
+    camera.pan(0.5f * (panelPixels - overlayPixels), plotsShown ? -0.12f * viewport.y : 0.0f, viewport);
   }
 }
 
@@ -158,6 +160,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     if (!capture) input.update(session, ui, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
     if (session.takeFrameRequest() || ui.frameRequested) {
       frameCamera(camera, runner.scene(), glm::vec2(ws), ui.hideUi ? 0.0f : panelWidthPixels(),
+                  ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(),
                   !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }

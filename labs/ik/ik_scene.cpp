@@ -44,11 +44,7 @@ void IkScene::reset() {
   time_ = 0.0;
   nextJump_ = 0.0;
   rng_.seed(seed());
-  Real bones = 0.0;
-  for (int j = 1; j < rig_.skeleton.jointCount(); ++j) bones += glm::length(rig_.skeleton.joint(j).offset);
-  for (const Effector& e : rig_.effectors) bones += glm::length(e.localOffset);
-  const Real mean = bones / std::max(1, rig_.skeleton.jointCount() - 1 + static_cast<int>(rig_.effectors.size()));
-  boneRadius_ = std::clamp(0.12 * mean, 0.004, 0.05);
+  boneRadius_ = std::clamp(0.12 * meanBoneLength(rig_.skeleton, rig_.effectors), 0.004, 0.05);
   step(0.0);
 }
 
@@ -154,6 +150,7 @@ void IkScene::ui() {
   ImGui::Checkbox("show limits", &showLimits_);
   ImGui::SameLine();
   ImGui::Checkbox("show effector path", &showPath_);
+  if (usesJacobian(options_.solver)) ImGui::Checkbox("show Jacobian", &showJacobian_);
   if (!last_.message.empty()) ImGui::TextWrapped("%s", last_.message.c_str());
   // Per-joint angle bars (first DOF of each joint, within its limits).
   const int n = std::min(rig_.skeleton.dofCount(), 24);
@@ -164,6 +161,10 @@ void IkScene::ui() {
     std::snprintf(overlay, sizeof overlay, "dof %d: %.1f deg", i, radToDeg(v));
     ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
   }
+}
+
+void IkScene::overlayUi(const app::ScreenRect& column) {
+  drawJacobianWindow(computeJacobianView(rig_.skeleton, pose_, rig_.effectors, options_), options_, column);
 }
 
 std::optional<std::string> IkScene::nonFiniteState() const {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/scene_registry.h"
+#include "jacobian_view.h"
 #include "physics/ik/builders.h"
 #include "physics/ik/solver.h"
 
@@ -27,6 +28,8 @@ class IkScene : public app::Scene {
   void draw(DebugDraw& d) const override;
   nlohmann::json metrics() const override;
   void ui() override;
+  bool wantsOverlay() const override { return showJacobian_ && usesJacobian(options_.solver); }
+  void overlayUi(const app::ScreenRect& column) override;
   std::optional<std::string> nonFiniteState() const override;
   std::vector<std::string> defaultPlots() const override { return {"residual", "iterations"}; }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override;
@@ -56,6 +59,7 @@ class IkScene : public app::Scene {
   Real pathSpeed_ = 0.5;   // [Hz] laps per second of the scripted path
   bool showLimits_ = true;
   bool showPath_ = true;
+  bool showJacobian_ = true;
   std::vector<Vec3> centers_;  // rest goals: centres of the scripted paths
   Real time_ = 0.0;
   bool dragging_ = false;

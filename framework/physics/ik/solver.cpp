@@ -163,6 +163,19 @@ std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string
 
 }  // namespace
 
+Real meanBoneLength(const Skeleton& skeleton, const std::vector<Effector>& effectors) {
+  Real bones = 0.0;
+  int count = 0;
+  for (int j = 0; j < skeleton.jointCount(); ++j)
+    if (skeleton.joint(j).parent >= 0) bones += glm::length(skeleton.joint(j).offset), ++count;
+  for (const Effector& e : effectors) bones += glm::length(e.localOffset), ++count;
+  return std::max(1e-6, count > 0 ? bones / count : 1.0);
+}
+
+Real resolvedOrientationScale(const Skeleton& skeleton, const std::vector<Effector>& effectors, const SolveOptions& o) {
+  return o.orientationScale > 0.0 ? o.orientationScale : meanBoneLength(skeleton, effectors);
+}
+
 SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -174,13 +187,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   if (o.fromRest) pose = skeleton.restPose();
   detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}, {}, {}, {}};
   c.refresh();
-  // Scales: mean bone length for the automatic error clamp and orientation scale.
-  Real bones = 0.0;
-  int count = 0;
-  for (int j = 0; j < skeleton.jointCount(); ++j)
-    if (skeleton.joint(j).parent >= 0) bones += glm::length(skeleton.joint(j).offset), ++count;
-  for (const Effector& e : effectors) bones += glm::length(e.localOffset), ++count;
-  c.meanBone = std::max(1e-6, count > 0 ? bones / count : 1.0);
+  c.meanBone = meanBoneLength(skeleton, effectors);
   c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
   c.maxErrorStep = o.maxErrorStep > 0.0 ? o.maxErrorStep : c.meanBone;
   const auto J = static_cast<size_t>(skeleton.jointCount());

@@ -76,4 +76,10 @@ struct SolveResult {
 SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors,
                   const SolveOptions& options);
 
+/// [m] Mean distance between a joint and its parent, effector offsets included (≥ 1e-6): the scale
+/// of the automatic error clamp and orientation weight.
+Real meanBoneLength(const Skeleton& skeleton, const std::vector<Effector>& effectors);
+/// [m/rad] The orientation-row weight solve() uses: options.orientationScale, or the mean bone length.
+Real resolvedOrientationScale(const Skeleton& skeleton, const std::vector<Effector>& effectors, const SolveOptions& options);
+
 }  // namespace pba::ik
