@@ -29,4 +29,11 @@ if [[ -x "$build/bin/pba-ik" ]]; then
   echo "wrote docs/images/ik-jacobian.png"
   count=$((count + 1))
 fi
+# A skinned character (the mesh follows the solved skeleton).
+if [[ -x "$build/bin/pba-ik" && -f /usr/share/assimp/models/X/Testwuson.X ]]; then
+  "${run[@]}" "$build/bin/pba-ik" --scene character --skeleton /usr/share/assimp/models/X/Testwuson.X --frames 150 \
+    --screenshot "$root/docs/images/ik-character-skinned.png" >/dev/null
+  echo "wrote docs/images/ik-character-skinned.png"
+  count=$((count + 1))
+fi
 echo "screenshots: $count images in docs/images"

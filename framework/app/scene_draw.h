@@ -17,6 +17,8 @@ class SceneDraw final : public DebugDraw {
   void box(const Vec3& center, const Vec3& halfExtents, const Quat& orientation, const Color& color) override;
   void capsule(const Vec3& a, const Vec3& b, Real radius, const Color& color) override;
   void text(const Vec3& p, std::string_view label, const Color& color) override;
+  void triangles(std::span<const Vec3> positions, std::span<const Vec3> normals, std::span<const std::uint32_t> indices,
+                 const Color& color) override;
 
  private:
   graphics::DebugRenderer& out_;

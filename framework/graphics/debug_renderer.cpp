@@ -94,6 +94,7 @@ void DebugRenderer::flush(Renderer& renderer) const {
       case Shape::Cone: renderer.drawCone(s.a, s.b, s.radius, s.color); break;
     }
   }
+  for (const auto& [mesh, color] : meshes_) renderer.drawTriangles(mesh, color);
   for (const Segment& l : lines_) renderer.drawLine(l.a, l.b, l.color);
   for (const Dot& d : points_) renderer.drawPoint(d.p, d.size, d.color);
 }
@@ -103,6 +104,7 @@ void DebugRenderer::clear() {
   lines_.clear();
   points_.clear();
   labels_.clear();
+  meshes_.clear();
   hasBounds_ = false;
 }
 
@@ -123,6 +125,14 @@ bool DebugRenderer::bounds(glm::vec3* min, glm::vec3* max) const {
   return true;
 }
 
-bool DebugRenderer::empty() const { return solids_.empty() && lines_.empty() && points_.empty() && labels_.empty(); }
+bool DebugRenderer::empty() const {
+  return solids_.empty() && lines_.empty() && points_.empty() && labels_.empty() && meshes_.empty();
+}
+
+void DebugRenderer::triangles(MeshData mesh, const glm::vec4& color) {
+  if (mesh.indices.empty()) return;
+  for (const glm::vec3& p : mesh.positions) grow(p);
+  meshes_.emplace_back(std::move(mesh), color);
+}
 
 }  // namespace pba::graphics

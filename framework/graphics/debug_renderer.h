@@ -5,6 +5,7 @@
 
 #include "graphics/camera.h"
 #include "graphics/colors.h"
+#include "graphics/mesh_data.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -42,6 +43,8 @@ class DebugRenderer {
   /// Axes x (red), y (green), z (blue) of a frame, `length` m long, as arrows.
   void frame(const glm::vec3& origin, const glm::quat& rotation, float length);
   void label(const glm::vec3& position, const std::string& text, const glm::vec4& color = colors::kDark);
+  /// A lit triangle mesh in world space (streamed to the GPU each frame).
+  void triangles(MeshData mesh, const glm::vec4& color);
 
   /// Submits everything to the renderer (between its beginFrame and endFrame). Keeps the data.
   void flush(Renderer& renderer) const;
@@ -78,6 +81,7 @@ class DebugRenderer {
   std::vector<Segment> lines_;
   std::vector<Dot> points_;
   std::vector<Label> labels_;
+  std::vector<std::pair<MeshData, glm::vec4>> meshes_;
   glm::vec3 min_{0.0f}, max_{0.0f};
   bool hasBounds_ = false;
 };

@@ -53,6 +53,28 @@ Mesh::~Mesh() {
   glDeleteVertexArrays(1, &vao_);
 }
 
+void Mesh::update(const MeshData& data) {
+  indexCount_ = static_cast<GLsizei>(data.indices.size());
+  if (!data.positions.empty()) {
+    boundsMin_ = boundsMax_ = data.positions.front();
+    for (const glm::vec3& p : data.positions) {
+      boundsMin_ = glm::min(boundsMin_, p);
+      boundsMax_ = glm::max(boundsMax_, p);
+    }
+  }
+  glBindVertexArray(vao_);
+  glBindBuffer(GL_ARRAY_BUFFER, positionVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.positions.size() * sizeof(glm::vec3)), data.positions.data(),
+               GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, normalVbo_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.normals.size() * sizeof(glm::vec3)), data.normals.data(),
+               GL_STREAM_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.indices.size() * sizeof(std::uint32_t)),
+               data.indices.data(), GL_STREAM_DRAW);
+  glBindVertexArray(0);
+}
+
 void Mesh::drawInstanced(const std::vector<Instance>& instances) const {
   if (instances.empty() || indexCount_ == 0) return;
   glBindVertexArray(vao_);

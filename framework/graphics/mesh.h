@@ -25,6 +25,8 @@ class Mesh {
   Mesh(const Mesh&) = delete;
   Mesh& operator=(const Mesh&) = delete;
 
+  /// Replaces the geometry (same layout; for meshes that change every frame).
+  void update(const MeshData& data);
   /// Uploads `instances` and draws them all in one instanced call (no-op when empty).
   void drawInstanced(const std::vector<Instance>& instances) const;
   GLsizei indexCount() const { return indexCount_; }

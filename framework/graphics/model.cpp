@@ -70,6 +70,10 @@ ModelMesh convertMesh(const aiMesh* src, const aiScene* scene, Model& model) {
     if (scene->mMaterials[src->mMaterialIndex]->Get(AI_MATKEY_COLOR_DIFFUSE, diffuse) == AI_SUCCESS) {
       mesh.color = glm::vec4(diffuse.r, diffuse.g, diffuse.b, 1.0f);
     }
+    // Assimp's SkeletonMeshBuilder gives joint-only files (BVH) a stand-in mesh with this material.
+    aiString material;
+    if (scene->mMaterials[src->mMaterialIndex]->Get(AI_MATKEY_NAME, material) == AI_SUCCESS)
+      mesh.placeholder = std::string(material.C_Str()) == "SkeletonMaterial";
   }
   if (src->mNumBones == 0) return mesh;
   mesh.boneIds.assign(src->mNumVertices, glm::ivec4(0));

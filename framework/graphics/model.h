@@ -26,6 +26,7 @@ struct ModelMesh {
   std::vector<glm::vec4> boneWeights;  ///< sum to 1 per vertex when skinned; empty if unskinned
   int node = -1;                       ///< node that instances the mesh (its global transform places it when unskinned)
   glm::vec4 color{0.8f, 0.8f, 0.8f, 1.0f};  ///< material diffuse colour (sRGB)
+  bool placeholder = false;  ///< Assimp's stand-in for a file without meshes (BVH): boxes along the bones
 
   bool skinned() const { return !boneWeights.empty(); }
 };

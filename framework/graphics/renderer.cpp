@@ -94,6 +94,7 @@ void Renderer::beginFrame(const OrbitCamera& camera, int viewportW, int viewport
   viewProj_ = camera.projection(static_cast<float>(viewport_.x) / static_cast<float>(viewport_.y)) * camera.view();
   for (MeshBatch& batch : batches_) batch.instances.clear();
   skinned_.clear();
+  streamedUsed_ = 0;
   lines_->clear();
   building_ = FrameStats{};
   boundsMin_ = glm::vec3(std::numeric_limits<float>::max());
@@ -163,6 +164,15 @@ void Renderer::drawPoint(const glm::vec3& p, float sizePx, const glm::vec4& colo
 
 void Renderer::drawMesh(const Mesh& mesh, const glm::mat4& model, const glm::vec4& color) {
   addInstance(mesh, model, color);
+}
+
+void Renderer::drawTriangles(const MeshData& mesh, const glm::vec4& color) {
+  if (mesh.indices.empty()) return;
+  if (streamedUsed_ == streamed_.size())
+    streamed_.push_back(std::make_unique<Mesh>(mesh));
+  else
+    streamed_[streamedUsed_]->update(mesh);
+  addInstance(*streamed_[streamedUsed_++], glm::mat4(1.0f), color);
 }
 
 void Renderer::drawSkinned(const SkinnedMesh& mesh, const std::vector<glm::mat4>& skinning, const glm::mat4& model,

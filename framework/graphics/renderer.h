@@ -60,6 +60,8 @@ class Renderer {
   void drawPoint(const glm::vec3& p, float sizePx, const glm::vec4& color);
   /// An uploaded mesh (e.g. from mesh_data generators) placed by `model`; instanced per Mesh.
   void drawMesh(const Mesh& mesh, const glm::mat4& model, const glm::vec4& color);
+  /// A world-space triangle mesh that changes every frame (uploaded to a pooled stream buffer).
+  void drawTriangles(const MeshData& mesh, const glm::vec4& color);
   /// A skinned mesh posed by `skinning` (skinningMatrices(), at most kMaxSkinningBones) and placed by `model`.
   void drawSkinned(const SkinnedMesh& mesh, const std::vector<glm::mat4>& skinning, const glm::mat4& model,
                    const glm::vec4& color);
@@ -106,6 +108,8 @@ class Renderer {
   GLuint emptyVao_ = 0, boneUbo_ = 0;
   std::vector<MeshBatch> batches_;
   std::vector<SkinnedDraw> skinned_;
+  std::vector<std::unique_ptr<Mesh>> streamed_;  ///< pool for drawTriangles, reused frame to frame
+  std::size_t streamedUsed_ = 0;
   OrbitCamera camera_;
   glm::ivec2 viewport_{1, 1};
   glm::mat4 viewProj_{1.0f};

@@ -122,4 +122,20 @@ std::vector<glm::vec3> skinPositions(const ModelMesh& mesh, const std::vector<gl
   return out;
 }
 
+std::vector<glm::vec3> skinNormals(const ModelMesh& mesh, const std::vector<glm::mat4>& skinning) {
+  if (!mesh.skinned()) return mesh.normals;
+  std::vector<glm::vec3> out(mesh.normals.size());
+  for (std::size_t v = 0; v < mesh.normals.size() && v < mesh.boneWeights.size(); ++v) {
+    glm::vec3 n(0.0f);
+    for (int k = 0; k < kMaxBonesPerVertex; ++k) {
+      const float w = mesh.boneWeights[v][k];
+      const auto bone = static_cast<std::size_t>(mesh.boneIds[v][k]);
+      if (w > 0.0f && bone < skinning.size()) n += w * (glm::mat3(skinning[bone]) * mesh.normals[v]);
+    }
+    const float length = glm::length(n);
+    out[v] = length > 1e-12f ? n / length : mesh.normals[v];
+  }
+  return out;
+}
+
 }  // namespace pba::graphics

@@ -29,5 +29,7 @@ std::vector<glm::mat4> skinningMatrices(const Model& model, const std::vector<gl
 
 /// CPU linear blend skinning of one mesh's positions (unskinned meshes are returned unchanged).
 std::vector<glm::vec3> skinPositions(const ModelMesh& mesh, const std::vector<glm::mat4>& skinning);
+/// The same blend applied to the normals (linear parts of the skinning matrices), renormalised.
+std::vector<glm::vec3> skinNormals(const ModelMesh& mesh, const std::vector<glm::mat4>& skinning);
 
 }  // namespace pba::graphics

@@ -36,6 +36,7 @@ class CharacterScene final : public IkScene {
         .needsReset();
     params_.angle("limit", &desc_.limit, 10.0, 180.0, "Every ball joint's three Euler angles stay in ±limit. Typical 100 deg.")
         .needsReset();
+    params_.flag("skin", &showSkin_, "Draw the file's meshes (skinned by the solved pose) over the skeleton, when it has any.");
   }
   std::string description() const override {
     return "An imported skeleton (any Assimp file): hands and feet reach for their goals; load your own with --skeleton.";
@@ -48,20 +49,36 @@ class CharacterScene final : public IkScene {
     if (!error_.empty()) ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous skeleton kept)", error_.c_str());
     IkScene::ui();
   }
+  void draw(DebugDraw& d) const override {
+    if (showSkin_ && skin_.model) {
+      // Translucent, so the bones, axes and goals inside stay visible.
+      const std::vector<SkinSurface> surfaces = poseSkin(skin_, forwardKinematics(rig_.skeleton, pose_));
+      for (const SkinSurface& s : surfaces) d.triangles(s.positions, s.normals, s.indices, Color{0.93f, 0.76f, 0.62f, 0.55f});
+    }
+    IkScene::draw(d);
+  }
   nlohmann::json metrics() const override {
     nlohmann::json m = IkScene::metrics();
     m["joints"] = rig_.skeleton.jointCount();
+    m["meshes"] = skin_.model ? poseSkin(skin_, forwardKinematics(rig_.skeleton, pose_)).size() : 0;
     m["effectors"] = rig_.effectors.size();
     return m;
   }
   std::vector<app::Preset> presets() const override {
-    return {{"dls", {{"solver", "dls"}}}, {"sdls", {{"solver", "sdls"}}}, {"ccd", {{"solver", "ccd"}}}, {"fabrik", {{"solver", "fabrik"}}}};
+    return {{"dls", {{"solver", "dls"}}},
+            {"sdls", {{"solver", "sdls"}}},
+            {"ccd", {{"solver", "ccd"}}},
+            {"fabrik", {{"solver", "fabrik"}}},
+            // A skinned file from Debian's assimp-testmodels (installed by ./pba): the mesh follows the IK.
+            {"skinned wuson", {{"skeleton", "/usr/share/assimp/models/X/Testwuson.X"}, {"effectors", ""}}}};
   }
 
  protected:
   Rig build() const override {
-    Result<Rig> r = loadCharacterRig(desc_);
+    CharacterSkin skin;
+    Result<Rig> r = loadCharacterRig(desc_, &skin);
     if (r) {
+      skin_ = std::move(skin);
       error_.clear();
       return std::move(r).value();
     }
@@ -81,6 +98,8 @@ class CharacterScene final : public IkScene {
  private:
   CharacterDesc desc_;
   mutable std::string error_;
+  mutable CharacterSkin skin_;  // set by build() with the rig
+  bool showSkin_ = true;
 };
 
 }  // namespace

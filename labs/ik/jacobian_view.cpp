@@ -103,15 +103,20 @@ void singularValues(const JacobianView& v, const SolveOptions& o) {
   const float font = ImGui::GetFontSize();
   const float textWidth = ImGui::CalcTextSize("σ00 = 0.000e+00").x + 0.5f * font;
   const float barArea = std::max(ImGui::GetContentRegionAvail().x - textWidth, 4.0f * font);
-  const size_t shown = std::min<size_t>(v.sigma.size(), 12);
+  // At most 12 bars: the 6 largest and the 6 smallest (those decide how near singular the pose is).
+  std::vector<size_t> index;
+  for (size_t i = 0; i < v.sigma.size(); ++i)
+    if (v.sigma.size() <= 12 || i < 6 || i + 6 >= v.sigma.size()) index.push_back(i);
+  const size_t shown = index.size();
   const float rowHeight = shown > 6 ? 0.75f * font : font;
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  for (size_t i = 0; i < shown; ++i) {
-    const float y = origin.y + static_cast<float>(i) * rowHeight;
+  for (size_t row = 0; row < shown; ++row) {
+    const size_t i = index[row];
+    const float y = origin.y + static_cast<float>(row) * rowHeight;
     char label[48];
     std::snprintf(label, sizeof label, "σ%zu = %.3g", i + 1, v.sigma[i]);
     // Compressed rows: label every other one, always the first and the last (the smallest σ).
-    if (shown <= 6 || i + 1 == shown || (i % 2 == 0 && i + 2 != shown)) draw->AddText(ImVec2(origin.x, y + 0.5f * (rowHeight - font)), ImGui::GetColorU32(ImGuiCol_Text), label);
+    if (shown <= 6 || row + 1 == shown || (row % 2 == 0 && row + 2 != shown)) draw->AddText(ImVec2(origin.x, y + 0.5f * (rowHeight - font)), ImGui::GetColorU32(ImGuiCol_Text), label);
     const float w = static_cast<float>(v.sigma[i] / scale) * barArea;
     draw->AddRectFilled(ImVec2(origin.x + textWidth, y + 0.15f * rowHeight), ImVec2(origin.x + textWidth + std::max(w, 1.0f), y + 0.85f * rowHeight),
                         ImGui::GetColorU32(kBar));
@@ -124,7 +129,7 @@ void singularValues(const JacobianView& v, const SolveOptions& o) {
                   ImGui::GetColorU32(kMarker), markerName);
   }
   ImGui::Dummy(ImVec2(textWidth + barArea, static_cast<float>(shown) * rowHeight + (marker >= 0.0 ? font : 0.0f)));
-  if (shown < v.sigma.size()) ImGui::TextDisabled("(%zu more)", v.sigma.size() - shown);
+  if (shown < v.sigma.size()) ImGui::TextDisabled("(σ7 … σ%zu not shown)", v.sigma.size() - 6);
 }
 
 }  // namespace

@@ -54,4 +54,13 @@ void DebugDraw::cone(const Vec3& apex, const Vec3& axis, Real halfAngle, Real le
   for (const Vec3& d : {u, v, -u, -v}) line(apex, rimCenter + rimRadius * d, color);
 }
 
+void DebugDraw::triangles(std::span<const Vec3> positions, std::span<const Vec3> /*normals*/,
+                          std::span<const std::uint32_t> indices, const Color& color) {
+  for (size_t t = 0; t + 2 < indices.size(); t += 3)
+    for (size_t k = 0; k < 3; ++k) {
+      const std::uint32_t a = indices[t + k], b = indices[t + (k + 1) % 3];
+      if (a < positions.size() && b < positions.size()) line(positions[a], positions[b], color);
+    }
+}
+
 }  // namespace pba

@@ -2,6 +2,8 @@
 // pba::DebugDraw: how solvers and scenes show themselves without knowing about OpenGL.
 // The physics library calls this interface; pba::app implements it with pba::graphics
 // (the model is Box2D's b2DebugDraw). All positions are world space [m].
+#include <cstdint>
+#include <span>
 #include <string_view>
 
 #include "physics/core/types.h"
@@ -44,6 +46,11 @@ class DebugDraw {
   virtual void capsule(const Vec3& a, const Vec3& b, Real radius, const Color& color) = 0;
   /// A text label anchored at a world position (drawn in screen space, always facing the viewer).
   virtual void text(const Vec3& p, std::string_view label, const Color& color) = 0;
+  /// A lit triangle mesh (skinned characters, cloth): world positions, unit normals (one per position),
+  /// indices in threes, counter-clockwise seen from outside. Backends without a triangle path draw the
+  /// edges instead (this default).
+  virtual void triangles(std::span<const Vec3> positions, std::span<const Vec3> normals,
+                         std::span<const std::uint32_t> indices, const Color& color);
 
   // Helpers composed from the primitives above (not virtual: every backend gets them for free).
 
@@ -68,6 +75,7 @@ class NullDebugDraw final : public DebugDraw {
   void box(const Vec3&, const Vec3&, const Quat&, const Color&) override {}
   void capsule(const Vec3&, const Vec3&, Real, const Color&) override {}
   void text(const Vec3&, std::string_view, const Color&) override {}
+  void triangles(std::span<const Vec3>, std::span<const Vec3>, std::span<const std::uint32_t>, const Color&) override {}
 };
 
 }  // namespace pba
