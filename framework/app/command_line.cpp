@@ -48,6 +48,7 @@ bool looksLikeSceneFile(const std::string& scene) {
 
 Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
   LabOptions o;
+  int impliedPriority = 0;  // of the lab flag that set o.impliedScene
   for (int i = 1; i < argc; ++i) {
     std::string arg = argv[i];
     std::string value;
@@ -119,7 +120,10 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     } else if (const LabFlag* f = arg.rfind("--", 0) == 0 ? findLabFlag(arg.substr(2)) : nullptr) {
       if (!(s = next(v))) return Error{s.error()};
       o.overrides.emplace_back(f->param, v);
-      if (!f->impliesScene.empty()) o.impliedScene = f->impliesScene;
+      if (!f->impliesScene.empty() && (o.impliedScene.empty() || f->priority >= impliedPriority)) {
+        o.impliedScene = f->impliesScene;
+        impliedPriority = f->priority;
+      }
     } else {
       return Error{"unknown option '" + arg + "' (see --help)"};
     }

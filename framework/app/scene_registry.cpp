@@ -40,8 +40,8 @@ int sceneIndex(const std::string& name) {
 
 const std::vector<LabFlag>& labFlags() { return mutableFlags(); }
 
-bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene) {
-  mutableFlags().push_back({std::move(flag), std::move(param), std::move(help), std::move(impliesScene)});
+bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene, int priority) {
+  mutableFlags().push_back({std::move(flag), std::move(param), std::move(help), std::move(impliesScene), priority});
   return true;
 }
 

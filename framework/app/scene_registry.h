@@ -35,9 +35,12 @@ struct LabFlag {
   /// When set and no --scene is given, using the flag selects this scene (e.g. --targets K selects
   /// the IK lab's "batch" scene).
   std::string impliesScene;
+  /// Of several scene-selecting flags on one command line, the highest priority picks the scene
+  /// (the order of the flags does not matter; equal priorities: the last one).
+  int priority = 0;
 };
 const std::vector<LabFlag>& labFlags();
-bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene = {});
+bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene = {}, int priority = 0);
 
 }  // namespace pba::app
 

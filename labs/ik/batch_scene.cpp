@@ -17,7 +17,8 @@
 PBA_REGISTER_LAB_FLAG("solver", "solver", "IK method: analytic|ccd|fabrik|jt|pinv|dls|sdls", "batch");
 PBA_REGISTER_LAB_FLAG("links", "links", "number of links of the batch chain", "batch");
 PBA_REGISTER_LAB_FLAG("joint", "joint", "joint type of the batch chain: hinge|ball", "batch");
-PBA_REGISTER_LAB_FLAG("targets", "targets", "number of random reachable targets (solves)", "batch");
+// --targets means batch mode whatever else is given (priority 2 beats --skeleton's character scene).
+PBA_REGISTER_LAB_FLAG("targets", "targets", "number of random reachable targets (solves)", "batch", 2);
 PBA_REGISTER_LAB_FLAG("tolerance", "tolerance", "success tolerance [m]", "batch");
 PBA_REGISTER_LAB_FLAG("max-iterations", "max_iterations", "iteration cap per solve", "batch");
 

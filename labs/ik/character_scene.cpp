@@ -9,7 +9,9 @@
 #include "character_rig.h"
 #include "ik_scene.h"
 
-PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "skeleton file Assimp reads (BVH, FBX, COLLADA, glTF)", "character");
+// --skeleton picks the character scene over the batch-only flags (--solver, --links, …) but not
+// over --targets (priority 1 < 2): "--skeleton F --solver ccd" solves the character with CCD.
+PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "skeleton file Assimp reads (BVH, FBX, COLLADA, glTF)", "character", 1);
 PBA_REGISTER_LAB_FLAG("effectors", "effectors", "comma-separated joint names of the effectors (default: hands and feet)");
 
 namespace pba::labs::ik {

@@ -153,6 +153,18 @@ TEST(CommandLine, ParsesTheContractOfDesignSection4) {
   EXPECT_EQ(parse({}).value().frameCount(), kDefaultHeadlessFrames);
 }
 
+// Scene-selecting lab flags of this test binary only (the scenes need not exist for parsing).
+PBA_REGISTER_LAB_FLAG("test-low", "speed", "selects scene 'low'", "low");
+PBA_REGISTER_LAB_FLAG("test-high", "speed", "selects scene 'high' over 'low'", "high", 1);
+
+TEST(CommandLine, TheHighestPriorityLabFlagPicksTheSceneInAnyOrder) {
+  EXPECT_EQ(parse({"--test-low", "1"}).value().impliedScene, "low");
+  EXPECT_EQ(parse({"--test-low", "1", "--test-high", "2"}).value().impliedScene, "high");
+  EXPECT_EQ(parse({"--test-high", "2", "--test-low", "1"}).value().impliedScene, "high");
+  // Both values still reach the parameter, in command-line order.
+  EXPECT_EQ(parse({"--test-high", "2", "--test-low", "1"}).value().overrides.size(), 2u);
+}
+
 TEST(CommandLine, BadArgumentsNameTheOption) {
   EXPECT_EQ(parse({"--bogus"}).error(), "unknown option '--bogus' (see --help)");
   EXPECT_NE(parse({"--frames", "0"}).error().find("--frames"), std::string::npos);
