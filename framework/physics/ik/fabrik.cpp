@@ -162,6 +162,7 @@ class Fabrik final : public Method {
       const bool rotates = joint.type == JointType::Ball || joint.type == JointType::Free;
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
+    buildLookahead(c);
     q_.assign(static_cast<size_t>(J + E), Vec3(0.0));
     length_.assign(static_cast<size_t>(J + E), 0.0);
     sum_.assign(static_cast<size_t>(J + E), Vec3(0.0));
@@ -215,11 +216,22 @@ class Fabrik final : public Method {
 
   // Root outward: each joint's frame from its (already updated) parent, then the joint turns its
   // children onto their FABRIK positions. Leaves every frame current, so the driver skips its FK.
+  //
+  // Look-ahead. A ball joint followed by hinges (a finger: ball knuckle, hinged phalanges) cannot
+  // be placed by its child alone: one point leaves the twist about the bone free, and the hinges
+  // below can then only bend in the wrong plane. Such joints also aim the deeper descendants (up to
+  // kLookahead levels) at their FABRIK positions. Their current positions are their positions at the
+  // start of the pass moved by the rigid turns of the joints above, tracked per joint as (dq, dp).
   void toAngles(Context& c) {
     const int J = c.skeleton.jointCount();
     for (int j = 0; j < J; ++j) {
       const Joint& joint = c.skeleton.joint(j);
       Frame f = c.frameFromParent(j);
+      const int parent = joint.parent;
+      const Quat dqParent = parent >= 0 ? dq_[static_cast<size_t>(parent)] : Quat(1, 0, 0, 0);
+      const Vec3 dpParent = parent >= 0 ? dp_[static_cast<size_t>(parent)] : Vec3(0.0);
+      Quat turn(1, 0, 0, 0);
+      Vec3 shift(0.0);
       if (used_[static_cast<size_t>(j)] && joint.type != JointType::Fixed && !kids_[static_cast<size_t>(j)].empty()) {
         from_.clear();
         to_.clear();
@@ -230,12 +242,51 @@ class Fabrik final : public Method {
           to_.push_back(q_[static_cast<size_t>(n)]);
           w_.push_back(1.0);
         }
-        alignJoint(c, j, f, from_, to_, w_, c.options.enforceLimits, false, nullptr);
+        if (lookahead_[static_cast<size_t>(j)])
+          for (int n : deeper_[static_cast<size_t>(j)]) {
+            from_.push_back(dqParent * base_[static_cast<size_t>(n)] + dpParent);
+            to_.push_back(q_[static_cast<size_t>(n)]);
+            w_.push_back(1.0);
+          }
+        turn = alignJoint(c, j, f, from_, to_, w_, c.options.enforceLimits, false, &shift);
         f.rotation = f.pre * c.local[static_cast<size_t>(j)];
       }
+      // This subtree's motion so far: x ↦ turn · (dqParent · x + dpParent − p) + p + shift.
+      dq_[static_cast<size_t>(j)] = turn * dqParent;
+      dp_[static_cast<size_t>(j)] = turn * (dpParent - f.position) + f.position + shift;
       c.frames[static_cast<size_t>(j)] = f;
     }
   }
+
+  // The look-ahead tables of toAngles(): which joints use it, and their descendants 2..kLookahead
+  // levels down (joints and effector nodes).
+  void buildLookahead(const Context& c) {
+    const int J = c.skeleton.jointCount();
+    lookahead_.assign(static_cast<size_t>(J), 0);
+    deeper_.assign(static_cast<size_t>(J), {});
+    dq_.assign(static_cast<size_t>(J), Quat(1, 0, 0, 0));
+    dp_.assign(static_cast<size_t>(J), Vec3(0.0));
+    for (int j = 0; j < J; ++j) {
+      const JointType type = c.skeleton.joint(j).type;
+      if (!used_[static_cast<size_t>(j)] || (type != JointType::Ball && type != JointType::Free)) continue;
+      std::vector<int> level = kids_[static_cast<size_t>(j)];
+      bool hinged = false;
+      for (int depth = 2; depth <= kLookahead; ++depth) {
+        std::vector<int> next;
+        for (int n : level) {
+          if (n >= J) continue;
+          const JointType t = c.skeleton.joint(n).type;
+          hinged = hinged || t == JointType::Hinge || t == JointType::Prismatic;
+          for (int k : kids_[static_cast<size_t>(n)]) next.push_back(k);
+        }
+        deeper_[static_cast<size_t>(j)].insert(deeper_[static_cast<size_t>(j)].end(), next.begin(), next.end());
+        level = std::move(next);
+      }
+      lookahead_[static_cast<size_t>(j)] = hinged && !deeper_[static_cast<size_t>(j)].empty();
+    }
+  }
+
+  static constexpr int kLookahead = 3;
 
   bool built_ = false, pointsOnly_ = false, pointsLoaded_ = false;
   std::vector<int> parent_;
@@ -244,6 +295,10 @@ class Fabrik final : public Method {
   std::vector<Vec3> q_, base_, sum_, pts_, from_, to_;
   std::vector<Real> length_, lens_, w_;
   std::vector<int> count_;
+  std::vector<char> lookahead_;
+  std::vector<std::vector<int>> deeper_;
+  std::vector<Quat> dq_;
+  std::vector<Vec3> dp_;
 };
 
 }  // namespace
