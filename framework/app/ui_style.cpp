@@ -50,7 +50,7 @@ UiFonts loadUiFonts(float contentScale) {
       builder.AddRanges(io.Fonts->GetGlyphRangesDefault());
       static const ImWchar kGreek[] = {0x0370, 0x03FF, 0};  // ImGui 1.86 has no Greek preset
       builder.AddRanges(kGreek);
-      builder.AddText("−–—·×÷²³⁻¹√∞≈≠≤≥→←↑↓±°…‖∥⊥∑∂∆ΔΣλ");
+      builder.AddText("−–—·×÷²³⁻¹√∞≈≠≤≥→←↑↓±°…‖∥⊥∑∂∆ΔΣλ■●▲");
       builder.BuildRanges(&ranges);
     }
     fonts.regular = io.Fonts->AddFontFromFileTTF(kFontPath, kRegularPixels * fonts.contentScale, nullptr, ranges.Data);

@@ -1,13 +1,15 @@
 // IK lab, scene "comparison": the same chain solved by CCD, FABRIK, Jacobian transpose,
 // pseudo-inverse, DLS and SDLS toward the same moving goal (IK slides, "Comparison"; Workbook §2.6).
 // Each method has its own colour; the chains stand side by side (or overlaid as ghosts on one base),
-// and a 3D plot above them draws each method's residual after every iteration of the last solve
+// and a window on the right plots each method's residual after every iteration of the last solve
 // (log scale, one line per method) — the convergence curves of the methods, live. The metrics
-// residual_<method> and iterations_<method> are also plotted by the runner.
+// residual_<method> and iterations_<method> can also be plotted by the runner.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+
+#include <imgui.h>
 
 #include "ik_scene.h"
 
@@ -25,7 +27,6 @@ constexpr std::array<Method, 6> kMethods = {{{SolverKind::Ccd, colors::kRed},
                                              {SolverKind::DampedLeastSquares, colors::kBlue},
                                              {SolverKind::SelectivelyDamped, colors::kPurple}}};
 constexpr Real kPlotFloor = -7.0;  // [log10 m] bottom of the residual plot
-constexpr Real kPlotHeight = 0.8;  // [chain lengths] height of the 3D plot
 constexpr Real kSpacing = 0.8;     // [chain lengths] between neighbouring bases
 // The runner's default camera yaw (graphics/camera.h, OrbitCamera::yaw): the row of chains, their
 // bending plane and the plot face the default view, so nothing is foreshortened on a projector.
@@ -54,7 +55,7 @@ class ComparisonScene final : public app::Scene {
     options_.fromRest = true;
   }
   std::string description() const override {
-    return "Six methods, six identical chains, one goal: watch the residual-per-iteration curves above (log scale) and the poses.";
+    return "Six methods, six identical chains, one goal: watch the residual-per-iteration curves on the right (log scale) and the poses.";
   }
   void reset() override {
     ChainDesc d = desc_;
@@ -84,16 +85,15 @@ class ComparisonScene final : public app::Scene {
       d.capsule(base + f.back().position, base + effectorPosition(rig_.effectors[0], f), r, c);
       d.sphere(base, 2.0 * r, colors::kDark);
       if (layout_ == Layout::SideBySide || m == 0) d.sphere(base + goal_, 2.5 * r, colors::kDark);
-      char label[96];
-      std::snprintf(label, sizeof label, "%s: %d it, %.0e m", solverName(kMethods[m].kind), results_[m].iterations,
-                    results_[m].positionResidual);
-      // Side by side: under each chain. Overlaid: a legend under the plot, right of the chains.
-      const Vec3 at = layout_ == Layout::SideBySide ? base + facing() * Vec3(-0.25 * L, -0.06 * L, 0.2 * L)
-                                                     : facing() * Vec3(0.5 * L, (0.28 - 0.065 * Real(m)) * L, 0.0);
-      d.text(at, label, c);
+      if (layout_ == Layout::SideBySide) {  // a name under each chain (overlaid: the plot's legend)
+        char label[96];
+        std::snprintf(label, sizeof label, "%s: %d it", solverName(kMethods[m].kind), results_[m].iterations);
+        d.text(base + facing() * Vec3(-0.15 * L, -0.06 * L, 0.2 * L), label, c);
+      }
     }
-    drawPlot(d);
   }
+  bool wantsOverlay() const override { return true; }
+  void overlayUi(const app::ScreenRect& column) override { plotWindow(column); }
   nlohmann::json metrics() const override {
     nlohmann::json j = {{"links", desc_.links}, {"residual_max", 0.0}};
     Real worst = 0.0;
@@ -108,9 +108,8 @@ class ComparisonScene final : public app::Scene {
     j["residual_max"] = worst;
     return j;
   }
-  std::vector<std::string> defaultPlots() const override {
-    return {"residual_max"};
-  }
+  // The residual window on the right is the plot of this scene; no runner plot by default.
+  std::vector<std::string> defaultPlots() const override { return {}; }
   std::optional<std::string> nonFiniteState() const override {
     for (size_t m = 0; m < poses_.size(); ++m)
       for (Real v : poses_[m].dofs)
@@ -142,37 +141,52 @@ class ComparisonScene final : public app::Scene {
     if (layout_ == Layout::Overlay) return Vec3(0.0);
     return facing() * Vec3((Real(m) - 0.5 * Real(kMethods.size() - 1)) * kSpacing * desc_.totalLength, 0.0, 0.0);
   }
-  /// Residual after each iteration of the last solve, log10 scale, above the chains.
-  void drawPlot(DebugDraw& d) const {
-    const Real L = desc_.totalLength;
-    const bool row = layout_ == Layout::SideBySide;
-    const Real width = row ? kSpacing * L * Real(kMethods.size() - 1) : 1.0 * L;
-    const Vec3 origin = facing() * (row ? Vec3(-0.5 * width, 1.15 * L, -0.3 * L) : Vec3(0.5 * L, 0.38 * L, 0.0));
-    const Vec3 right = facing() * Vec3(1, 0, 0);
+  /// Residual after each iteration of the last solve, log10 scale, one curve per method, with the
+  /// tolerance as a dark line and a legend (iterations, final residual, status).
+  void plotWindow(const app::ScreenRect& column) const {
+    ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+    ImGui::SetNextWindowSize(ImVec2(column.x1 - column.x0, 0.0f), ImGuiCond_Always);
+    ImGui::Begin("Residual per iteration (log scale)", nullptr,
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
     size_t longest = 2;
     Real top = -1.0;
     for (const SolveResult& r : results_) {
       longest = std::max(longest, r.residualHistory.size());
       for (Real v : r.residualHistory) top = std::max(top, std::ceil(std::log10(std::max(v, 1e-12))));
     }
-    const Real h = (row ? kPlotHeight : 0.55) * L;
-    auto at = [&](Real i, Real residual) {
-      const Real y = (std::log10(std::max(residual, 1e-12)) - kPlotFloor) / (top - kPlotFloor);
-      return origin + right * (width * i / Real(longest - 1)) + Vec3(0.0, h * std::clamp(y, 0.0, 1.0), 0.0);
+    const float font = ImGui::GetFontSize();
+    const float axis = ImGui::CalcTextSize("1e-7").x + 0.3f * font;
+    const float width = ImGui::GetContentRegionAvail().x - axis, height = 9.0f * font;
+    const ImVec2 o = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    auto point = [&](Real i, Real residual) {
+      const Real y = std::clamp((std::log10(std::max(residual, 1e-12)) - kPlotFloor) / (top - kPlotFloor), 0.0, 1.0);
+      return ImVec2(o.x + axis + width * static_cast<float>(i / Real(longest - 1)), o.y + height * static_cast<float>(1.0 - y));
     };
-    d.line(origin, origin + width * right, colors::kDark);
-    d.line(origin, origin + Vec3(0, h, 0), colors::kDark);
-    for (Real e = kPlotFloor; e <= top; e += 1.0) d.line(at(0, std::pow(10.0, e)), at(Real(longest - 1), std::pow(10.0, e)), colors::kGrey);
-    d.line(at(0, options_.tolerance), at(Real(longest - 1), options_.tolerance), colors::kDark);
-    char label[64];
-    std::snprintf(label, sizeof label, "residual [m], 1e%.0f ... 1e%.0f", kPlotFloor, top);
-    d.text(origin + Vec3(0, h + 0.05 * L, 0), label, colors::kDark);
-    std::snprintf(label, sizeof label, "iteration %zu", longest - 1);
-    d.text(origin + width * right - Vec3(0.0, 0.06 * L, 0.0), label, colors::kDark);
+    auto rgba = [](const Color& c) { return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, c.a)); };
+    const ImU32 grid = ImGui::GetColorU32(ImVec4(0.6f, 0.6f, 0.62f, 0.6f));
+    for (Real e = kPlotFloor; e <= top; e += 1.0) {
+      const ImVec2 a = point(0, std::pow(10.0, e)), b = point(Real(longest - 1), std::pow(10.0, e));
+      draw->AddLine(a, b, grid);
+      char tick[16];
+      std::snprintf(tick, sizeof tick, "1e%.0f", e);
+      draw->AddText(ImVec2(o.x, a.y - 0.5f * font), ImGui::GetColorU32(ImGuiCol_TextDisabled), tick);
+    }
+    draw->AddLine(point(0, options_.tolerance), point(Real(longest - 1), options_.tolerance), rgba(colors::kDark), 1.5f);
     for (size_t m = 0; m < kMethods.size(); ++m) {
       const std::vector<Real>& hist = results_[m].residualHistory;
-      for (size_t i = 1; i < hist.size(); ++i) d.line(at(Real(i - 1), hist[i - 1]), at(Real(i), hist[i]), kMethods[m].color);
+      std::vector<ImVec2> line;
+      for (size_t i = 0; i < hist.size(); ++i) line.push_back(point(Real(i), hist[i]));
+      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 2.5f);
     }
+    ImGui::Dummy(ImVec2(axis + width, height));
+    ImGui::TextDisabled("iterations 0 … %zu; dark line: tolerance %.0e m", longest - 1, options_.tolerance);
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      const Color& c = kMethods[m].color;
+      ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "■ %-6s %3d it  %.1e m  %s", solverName(kMethods[m].kind), results_[m].iterations,
+                         results_[m].positionResidual, statusName(results_[m].status));
+    }
+    ImGui::End();
   }
 
   ChainDesc desc_;
