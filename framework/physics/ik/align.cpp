@@ -30,8 +30,9 @@ Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, cons
 
 // Turns joint j by the world rotation `world` about its pivot: its local rotation becomes
 // R_pre⁻¹ · world · R_pre · oldLocal (ball: stored as XYZ Euler angles; free: directly), clamped to the
-// limits; `oldWorld` = R_pre · oldLocal is the joint's current world rotation (Frame::rotation). Keeps c.local[j] current and returns the world rotation actually applied (`world` itself
-// unless clamping changed it). An unclamped ball update needs no sincos (the Euler round trip is the
+// limits; `oldWorld` = R_pre · oldLocal is the joint's current world rotation (Frame::rotation).
+// Keeps c.local[j] current and returns the world rotation actually applied (`world` itself unless
+// clamping changed it). An unclamped ball update needs no sincos (the Euler round trip is the
 // same rotation), and when no limit can act the Euler angles are written later (flushPose).
 Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Quat& oldWorld, const Quat& world,
                bool clampLimits) {
