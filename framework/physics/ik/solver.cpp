@@ -58,6 +58,14 @@ void Context::flushPose() {
 }
 
 void Context::refresh() {
+  if (links.size() != static_cast<size_t>(skeleton.jointCount())) {
+    links.clear();
+    for (const Joint& joint : skeleton.joints()) {
+      const Quat& r = joint.restRotation;
+      links.push_back(Link{joint.parent, r.w == 1.0 && r.x == 0.0 && r.y == 0.0 && r.z == 0.0,
+                           joint.type == JointType::Prismatic, joint.offset, r});
+    }
+  }
   flushPose();
   staleEuler.assign(static_cast<size_t>(skeleton.jointCount()), 0);
   local.resize(static_cast<size_t>(skeleton.jointCount()));
@@ -65,42 +73,38 @@ void Context::refresh() {
   refreshFrames();
 }
 
-namespace {
 // Joint j's frame from its parent's frame (nullptr: root) and its cached local rotation.
-[[gnu::always_inline]] inline Frame frameFrom(const Joint& joint, const Pose& pose, const Quat& local, const Frame* parent) {
+Frame Context::frameFrom(int j, const Frame* parent) const {
+  const Link& link = links[static_cast<size_t>(j)];
+  const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), pose) : link.offset;
   Frame f;
   if (parent) {
-    const Quat& rest = joint.restRotation;
-    // Most rest rotations are the identity: four compares are cheaper than a quaternion product.
-    f.pre = rest.w == 1.0 && rest.x == 0.0 && rest.y == 0.0 && rest.z == 0.0 ? parent->rotation : parent->rotation * rest;
-    f.position = parent->position + parent->rotation * jointTranslation(joint, pose);
+    f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
+    f.position = parent->position + parent->rotation * t;
   } else {
-    f.pre = joint.restRotation;
-    f.position = jointTranslation(joint, pose);
+    f.pre = link.rest;
+    f.position = t;
   }
-  f.rotation = f.pre * local;
+  f.rotation = f.pre * local[static_cast<size_t>(j)];
   return f;
 }
-}  // namespace
 
 void Context::refreshFrames() {
   const int n = skeleton.jointCount();
   frames.resize(static_cast<size_t>(n));
-  // Chains (parent = j − 1) take the parent from a local copy: reading it back from `frames` right
-  // after writing it stalls on store forwarding, which made this loop twice as slow.
-  Frame previous;
+  Frame previous;  // chains (parent = j − 1) take the parent from this copy, not back from `frames`
   for (int j = 0; j < n; ++j) {
-    const Joint& joint = skeleton.joint(j);
-    const Frame* parent = joint.parent < 0 ? nullptr : joint.parent == j - 1 ? &previous : &frames[static_cast<size_t>(joint.parent)];
-    previous = frameFrom(joint, pose, local[static_cast<size_t>(j)], parent);
+    const int parent = links[static_cast<size_t>(j)].parent;
+    previous = frameFrom(j, parent < 0 ? nullptr : parent == j - 1 ? &previous : &frames[static_cast<size_t>(parent)]);
     frames[static_cast<size_t>(j)] = previous;
   }
 }
 
 Frame Context::frameFromParent(int j) const {
-  const Joint& joint = skeleton.joint(j);
-  return frameFrom(joint, pose, local[static_cast<size_t>(j)], joint.parent >= 0 ? &frames[static_cast<size_t>(joint.parent)] : nullptr);
+  const int parent = links[static_cast<size_t>(j)].parent;
+  return frameFrom(j, parent >= 0 ? &frames[static_cast<size_t>(parent)] : nullptr);
 }
+
 
 void stretchToward(Context& c, const Effector& e) {
   // Root → tip along the path to the effector: each joint turns so that the next point of the path
@@ -185,7 +189,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     return result;
   }
   if (o.fromRest) pose = skeleton.restPose();
-  detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}, {}, {}, {}};
+  detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}, {}, {}, {}, {}};
   c.refresh();
   c.meanBone = meanBoneLength(skeleton, effectors);
   c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;

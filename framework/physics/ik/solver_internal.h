@@ -38,6 +38,16 @@ struct Context {
   /// Per joint: its Euler DOFs in `pose` lag behind `local` (alignJoint defers the quaternion → Euler
   /// conversion, two atan2 and a hypot, while no limit needs the angles); flushPose() writes them.
   std::vector<char> staleEuler;
+  /// What forward kinematics reads of each joint, packed (a Joint with its name and limits is ~250
+  /// bytes; walking 1,000 of them per pass cost more than the arithmetic).
+  struct Link {
+    int parent;
+    bool identityRest;  ///< restRotation is the identity: skip one quaternion product
+    bool prismatic;     ///< translation depends on the pose
+    Vec3 offset;
+    Quat rest;
+  };
+  std::vector<Link> links;  ///< filled by the first refresh()
 
   /// Writes the Euler DOFs of every joint marked stale from `local`.
   void flushPose();
@@ -47,6 +57,7 @@ struct Context {
   void refreshFrames();
   /// Joint j's frame from its parent's entry in `frames` and the cached local rotation. O(1).
   Frame frameFromParent(int j) const;
+  Frame frameFrom(int j, const Frame* parent) const;
 };
 
 /// One IK method: iterate() does one pass (CCD, FABRIK) or one step (Jacobian methods).
