@@ -54,14 +54,21 @@ inline nlohmann::json baseMetrics(ode::IntegratorKind kind, std::size_t particle
           {"particle_updates_per_s", rate.perSecond()}};
 }
 
+/// Draws at most about kMaxDrawn of the particles as points, an even stride through the arrays, in the
+/// colour colorOf(i) (evaluated for the drawn ones only).
+template <typename ColorOf>
+void drawPointSubsample(DebugDraw& d, const particles::Particles& p, ColorOf&& colorOf) {
+  const std::size_t stride = std::max<std::size_t>(1, p.size() / kMaxDrawn);
+  for (std::size_t i = 0; i < p.size(); i += stride) d.point(p.position[i], kPointPixels, colorOf(i));
+}
+
 /// Draws particles as spheres (few), points (many) or a subsample of points (huge).
 inline void drawParticles(DebugDraw& d, const particles::Particles& p, Real radius, std::size_t sphereLimit = 600) {
   if (p.size() <= sphereLimit) {
     for (std::size_t i = 0; i < p.size(); ++i) d.sphere(p.position[i], radius, p.color[i]);
     return;
   }
-  const std::size_t stride = std::max<std::size_t>(1, p.size() / kMaxDrawn);
-  for (std::size_t i = 0; i < p.size(); i += stride) d.point(p.position[i], kPointPixels, p.color[i]);
+  drawPointSubsample(d, p, [&](std::size_t i) { return p.color[i]; });
 }
 
 /// The particle whose sphere of radius `radius` the ray hits first.
