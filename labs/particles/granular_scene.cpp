@@ -36,7 +36,7 @@ class GranularScene final : public app::Scene {
     std::mt19937_64 rng(seed());
     std::uniform_real_distribution<Real> u(-1.0, 1.0);
     for (int i = 0; i < count_; ++i) {
-      const Vec3 x(0.5 * kBin * u(rng), 0.5 + 1.5 * (u(rng) + 1.0), 0.5 * kBin * u(rng));
+      const Vec3 x(0.9 * kBin * u(rng), 0.3 + 0.9 * (u(rng) + 1.0), 0.9 * kBin * u(rng));
       system_.particles.add(x, Vec3(0.0), 0.01, i % 2 ? colors::kYellow : colors::kOrange);
     }
     system_.syncMasses();

@@ -9,6 +9,7 @@ namespace {
 using namespace pba;
 
 constexpr Real kBeadRadius = 0.05;  // [m] drawn and picking radius
+constexpr Real kPinHeight = 3.0;    // [m] both pins; the ropes are 2 m long
 
 class RopeScene final : public app::Scene {
  public:
@@ -32,12 +33,15 @@ class RopeScene final : public app::Scene {
 
   void reset() override {
     system_ = particles::ParticleSystem{};
-    rope_.start = Vec3(-1.0, 3.0, 0.0);
-    rope_.end = Vec3(1.0, 3.0, 0.0);
+    // Both start horizontal, 0.6 m apart, pinned at opposite ends: they swing down in opposite
+    // directions and hang 2 m apart, so the picture (and the camera's framing of the start) is the
+    // 2.4 m × 3 m × 0.6 m box they sweep, not the whole floor.
+    rope_.start = Vec3(-1.0, kPinHeight, 0.3);
+    rope_.end = Vec3(1.0, kPinHeight, 0.3);
     (void)springs::appendRope(rope_, system_);
     springs::RopeDesc chain = rope_;
-    chain.start = Vec3(-1.0, 3.0, -1.0);
-    chain.end = Vec3(-1.0, 3.0 - 0.0, 1.0);
+    chain.start = Vec3(1.0, kPinHeight, -0.3);
+    chain.end = Vec3(-1.0, kPinHeight, -0.3);
     chain.mass = 4.0 * rope_.mass;
     chain.stiffness = 4.0 * rope_.stiffness;
     chain.bending = true;
@@ -61,11 +65,12 @@ class RopeScene final : public app::Scene {
   }
 
   void draw(DebugDraw& d) const override {
-    lab::drawGroundSquare(d, 3.0);
+    lab::drawGroundSquare(d, 1.2);
     for (const springs::Spring& s : system_.springs) {
       if (s.j != s.i + 1) continue;  // skip bending springs
-      d.line(system_.particles.position[s.i], system_.particles.position[s.j],
-             s.i >= chainFirst_ ? colors::kDark : colors::kOrange);
+      // Shaded capsules rather than hairlines: the rope reads as a rope on a projector.
+      d.capsule(system_.particles.position[s.i], system_.particles.position[s.j], 0.4 * kBeadRadius,
+                s.i >= chainFirst_ ? colors::kDark : colors::kOrange);
     }
     for (std::size_t i = 0; i < system_.particles.size(); ++i) {
       const bool pinned = system_.particles.inverseMass[i] == 0.0;
