@@ -91,7 +91,8 @@ class OrbitScene final : public app::Scene {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       const float side = ImGui::GetTextLineHeight();
-      ImGui::ColorButton(("##" + name).c_str(), ImVec4(c.r, c.g, c.b, 1.0f), ImGuiColorEditFlags_NoTooltip, ImVec2(side, side));
+      ImGui::ColorButton(("##" + name).c_str(), ImVec4(c.r, c.g, c.b, 1.0f), ImGuiColorEditFlags_NoTooltip,
+                         ImVec2(side, side));
       ImGui::SameLine();
       ImGui::TextUnformatted(name.c_str());
       ImGui::TableNextColumn();

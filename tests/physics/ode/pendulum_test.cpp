@@ -34,28 +34,32 @@ PendulumDesc undamped() {
   return d;
 }
 
-TEST(Pendulum, AdaptiveSystemReturnsAfterTheExactLargeAmplitudePeriod) {
-  // A compound pendulum released at rest from θ₀ = 1 rad: θ̈ = −(m g L / I) sin θ has period
-  // T = 4 K(sin(θ₀/2)) √(I / (m g L)) = 2π / AGM(1, cos(θ₀/2)) · √(I / (m g L)).
-  const PendulumDesc d = undamped();
-  const Real theta0 = 1.0;
-  const Real period = 2.0 * kPi / agm(1.0, std::cos(0.5 * theta0)) *
-                      std::sqrt(pivotInertia(d) / (d.mass * d.gravity * d.comDistance));
+/// Period of the undamped compound pendulum swinging with amplitude A [rad] about its rest angle:
+/// θ̈ = −(m g L / I) sin θ gives T = 4 K(sin(A/2)) √(I / (m g L)) = 2π / AGM(1, cos(A/2)) · √(I / (m g L)).
+Real exactPeriod(const PendulumDesc& d, Real amplitude) {
+  const Real omega0 = std::sqrt(d.mass * d.gravity * d.comDistance / pivotInertia(d));  // small-angle [rad/s]
+  return 2.0 * kPi / (agm(1.0, std::cos(0.5 * amplitude)) * omega0);
+}
+
+/// The pendulum from `start` after `duration` [s], by the adaptive integrator (tolerance 1e-11, 50
+/// calls): the reference of the large-amplitude tests (global error ≲ tolerance × duration).
+PendulumState adaptiveRun(const PendulumDesc& d, const PendulumState& start, Real duration) {
   PendulumSystem system(d);
-  system.setPendulumState({theta0, 0.0});
+  system.setPendulumState(start);
   Integrator integrator(IntegratorKind::Adaptive);
   integrator.adaptiveSettings.tolerance = 1e-11;
-  for (int i = 0; i < 100; ++i) integrator.step(system, period / 100);
-  // Global error ≲ tolerance × T; the small-angle period (2π √(I/mgL)) would be 6.6 % short.
-  EXPECT_NEAR(system.pendulumState().angle, theta0, 1e-8);
-  EXPECT_NEAR(system.pendulumState().angularVelocity, 0.0, 1e-8);
-  // Halfway it is at the other extreme, −θ₀.
-  PendulumSystem half(d);
-  half.setPendulumState({theta0, 0.0});
-  Integrator again(IntegratorKind::Adaptive);
-  again.adaptiveSettings.tolerance = 1e-11;
-  for (int i = 0; i < 50; ++i) again.step(half, period / 100);
-  EXPECT_NEAR(half.pendulumState().angle, -theta0, 1e-8);
+  for (int i = 0; i < 50; ++i) integrator.step(system, duration / 50);
+  return system.pendulumState();
+}
+
+TEST(Pendulum, AdaptiveSystemReturnsAfterTheExactLargeAmplitudePeriod) {
+  // Released at rest from θ₀ = 1 rad; the small-angle period 2π √(I/mgL) would be 6.6 % short.
+  const PendulumDesc d = undamped();
+  const Real theta0 = 1.0, period = exactPeriod(d, theta0);
+  const PendulumState full = adaptiveRun(d, {theta0, 0.0}, period);
+  EXPECT_NEAR(full.angle, theta0, 1e-8);
+  EXPECT_NEAR(full.angularVelocity, 0.0, 1e-8);
+  EXPECT_NEAR(adaptiveRun(d, {theta0, 0.0}, 0.5 * period).angle, -theta0, 1e-8);  // halfway: the other extreme
 }
 
 TEST(Pendulum, DampingDecaysTheSpinAsExpOfMinusAT) {
@@ -111,17 +115,9 @@ TEST(Pendulum, HangsStillAtMinusPsiWithACentreOfMassOffset) {
     for (int i = 0; i < 240; ++i) integrator.step(system, 1.0 / 240.0);
     EXPECT_NEAR(system.pendulumState().angle, -0.4, 1e-12) << integratorName(k);
   }
-  // Released from the vertical instead, it swings symmetrically about −ψ: one undamped half period
-  // later it is at −2ψ (adaptive, as in the period test).
-  PendulumSystem swing(d);
-  swing.setPendulumState({0.0, 0.0});
-  const Real amplitude = 0.4;
-  const Real period = 2.0 * kPi / agm(1.0, std::cos(0.5 * amplitude)) *
-                      std::sqrt(pivotInertia(d) / (d.mass * d.gravity * d.comDistance));
-  Integrator adaptive(IntegratorKind::Adaptive);
-  adaptive.adaptiveSettings.tolerance = 1e-11;
-  for (int i = 0; i < 50; ++i) adaptive.step(swing, 0.5 * period / 50);
-  EXPECT_NEAR(swing.pendulumState().angle, -0.8, 1e-8);
+  // Released from the vertical instead, it swings symmetrically about −ψ with amplitude ψ: half a
+  // period later it is at −2ψ.
+  EXPECT_NEAR(adaptiveRun(d, {0.0, 0.0}, 0.5 * exactPeriod(d, 0.4)).angle, -0.8, 1e-8);
 }
 
 TEST(Pendulum, AnAcceleratingPivotTiltsTheEquilibriumToTanThetaEqualsMinusAOverG) {
