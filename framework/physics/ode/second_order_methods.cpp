@@ -31,7 +31,8 @@ void finishInPlace(SecondOrderSystem& system, const InPlaceStep& s, Real h) {
 }
 }  // namespace
 
-void symplecticEulerStep(SecondOrderSystem& system, [[maybe_unused]] Real h, [[maybe_unused]] Workspace& w) {
+void symplecticEulerStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unused]] Real h,
+                         [[maybe_unused]] Workspace& w) {
   // BEGIN SOLUTION
   const InPlaceStep s = startInPlace(system, w);  // q, v, t and a = M⁻¹ f(t, q, v)
   for (std::size_t i = 0; i < s.n; ++i) {
