@@ -1,7 +1,8 @@
 // Particles benchmarks (issue 4, DESIGN.md §7): particle updates per second per core of the fused
 // gravity + drag + plane kernel at 10⁴ and 10⁶ particles beside a STREAM-like triad (the memory
-// bandwidth limit, measured in the same run); cost per particle of spatial-hash pair collisions at 10⁵;
-// ns per degree of freedom per step of every integrator on a large oscillator system.
+// bandwidth limit, measured in the same run); cost per particle of spatial-hash pair collisions at 10⁵,
+// per sweep and through a neighbour list; one fountain pool step at 10⁶; ns per degree of freedom per
+// step of every integrator on a large oscillator system.
 // Run: build/release/bench/pba_particles_bench (see docs/performance-particles.md).
 #include <benchmark/benchmark.h>
 
@@ -10,6 +11,7 @@
 
 #include "physics/ode/integrators.h"
 #include "physics/ode/oscillator.h"
+#include "physics/particles/emitter.h"
 #include "physics/particles/kernels.h"
 #include "physics/particles/spatial_hash.h"
 
@@ -74,6 +76,69 @@ void BM_SpatialHashCollisions(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
 BENCHMARK(BM_SpatialHashCollisions)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+// The same particles through a Verlet neighbour list: one list build (hash build + one query per
+// particle, skin = radius) and the granular scene's three sweeps over the pairs.
+void BM_NeighbourListBuildAndThreeSweeps(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const Real radius = 0.01;
+  const Real side = std::cbrt(static_cast<Real>(n)) * 2.5 * radius;
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<Real> u(0.0, side);
+  particles::Particles p;
+  for (std::size_t i = 0; i < n; ++i) p.add(Vec3(u(rng), u(rng), u(rng)), Vec3(0.0), 1.0);
+  const particles::Particles start = p;
+  particles::SpatialHash hash;
+  particles::NeighbourList list;
+  for (auto _ : state) {
+    state.PauseTiming();
+    p = start;
+    list.invalidate();
+    state.ResumeTiming();
+    list.update(p.position, 2.0 * radius, radius, hash);
+    for (int sweep = 0; sweep < 3; ++sweep) {
+      benchmark::DoNotOptimize(particles::collideParticlePairs(p, radius, 0.2, list.pairs()));
+    }
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+}
+BENCHMARK(BM_NeighbourListBuildAndThreeSweeps)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+// One step of the fountain's pool at 10⁶ (particles::stepFountain + Emitter::spawn) with the lab's
+// fountain settings, after 6 s of filling so that the pool is full and in steady state (a third of
+// it resting on the ground). The lab takes two such steps per displayed frame.
+void BM_FountainPoolStep(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  particles::EmitterDesc ed{Vec3(0.0, 0.1, 0.0), kUp, 0.0, 3.0, 0.3, degToRad(12.0), 8.0, 0.1, 0.01, n,
+                            colors::kBlue, colors::kOrange};
+  ed.rate = static_cast<Real>(n) / (ed.lifetime * (1.0 - ed.lifetimeJitter));  // the scene's keep_full
+  particles::Emitter emitter(ed, 1);
+  particles::Particles p;
+  p.reserve(n);
+  const std::vector<particles::PlaneObstacle> planes{particles::PlaneObstacle{}};
+  const std::vector<particles::SphereObstacle> spheres{
+      {Vec3(1.2, 1.0, 0.0), 0.6}, {Vec3(-0.8, 0.5, 1.0), 0.5}, {Vec3(0.2, 0.4, -1.3), 0.4}};
+  particles::FusedFountainDesc f;
+  f.dragRate = 0.005 / ed.particleMass;
+  f.wind = Vec3(2.0, 0.0, 0.0);
+  f.vortexStrength = 3.0;
+  f.vortexCore = 0.5;
+  f.planes = planes;
+  f.spheres = spheres;
+  f.material = particles::ContactMaterial{0.4, 0.3, 0.2, 0.1};
+  f.radius = 0.02;
+  const Real h = 1.0 / 120.0;
+  for (int s = 0; s < 720; ++s) {
+    particles::stepFountain(p, f, h);
+    emitter.spawn(p, h);
+  }
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(particles::stepFountain(p, f, h));
+    emitter.spawn(p, h);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+}
+BENCHMARK(BM_FountainPoolStep)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 // ns per DOF-step of each integrator on 10⁵ independent oscillators (force evaluation included).
 void BM_Integrator(benchmark::State& state) {

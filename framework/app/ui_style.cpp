@@ -11,6 +11,18 @@ constexpr float kRegularPixels = 16.0f;
 constexpr float kLecturePixels = 28.0f;
 // Debian's fonts-dejavu-core; ./pba installs it. Without it ImGui's built-in font is used.
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+// The glyphs the labs' texts use, all in DejaVu Sans: ImGui loads only Latin-1 by default, and every
+// ω, μ_s, θ, ψ, − (minus), ≈, ≤, √, ₀, → in a description or tooltip showed as '?'. (Pairs of first
+// and last code point; zero-terminated; must outlive the font atlas.)
+constexpr ImWchar kGlyphRanges[] = {
+    0x0020, 0x00FF,  // Basic Latin + Latin-1 (², ·, ×, ±, °)
+    0x0370, 0x03FF,  // Greek (ω, μ, θ, ψ, φ, Δ)
+    0x1E00, 0x1EFF,  // Latin Extended Additional (ẍ)
+    0x2000, 0x209F,  // General Punctuation (– — …), superscripts and subscripts (⁻¹, ₀)
+    0x2190, 0x22FF,  // Arrows (→ ← ⇒) and Mathematical Operators (− ≈ ≤ √ ∞)
+    0x25A0, 0x25CF,  // Geometric Shapes (■ ● ▲: legend swatches)
+    0,
+};
 
 ImGuiStyle makeStyle(float scale, bool lecture) {
   ImGuiStyle style;
@@ -42,19 +54,8 @@ UiFonts loadUiFonts(float contentScale) {
   fonts.contentScale = contentScale > 0.0f ? contentScale : 1.0f;
   ImGuiIO& io = ImGui::GetIO();
   if (std::filesystem::exists(kFontPath)) {
-    // Latin-1, Greek (σ, λ, ω, θ in labels and tooltips) and the math signs the panels use; the
-    // builder's storage must outlive the atlas build, hence static.
-    static ImVector<ImWchar> ranges;
-    if (ranges.empty()) {
-      ImFontGlyphRangesBuilder builder;
-      builder.AddRanges(io.Fonts->GetGlyphRangesDefault());
-      static const ImWchar kGreek[] = {0x0370, 0x03FF, 0};  // ImGui 1.86 has no Greek preset
-      builder.AddRanges(kGreek);
-      builder.AddText("−–—·×÷²³⁻¹√∞≈≠≤≥→←↑↓±°…‖∥⊥∑∂∆ΔΣλ■●▲");
-      builder.BuildRanges(&ranges);
-    }
-    fonts.regular = io.Fonts->AddFontFromFileTTF(kFontPath, kRegularPixels * fonts.contentScale, nullptr, ranges.Data);
-    fonts.lecture = io.Fonts->AddFontFromFileTTF(kFontPath, kLecturePixels * fonts.contentScale, nullptr, ranges.Data);
+    fonts.regular = io.Fonts->AddFontFromFileTTF(kFontPath, kRegularPixels * fonts.contentScale, nullptr, kGlyphRanges);
+    fonts.lecture = io.Fonts->AddFontFromFileTTF(kFontPath, kLecturePixels * fonts.contentScale, nullptr, kGlyphRanges);
   }
   if (!fonts.regular) {
     ImFontConfig config;

@@ -20,9 +20,8 @@ class BouncingScene final : public app::Scene {
                  "μ_s: a contact sticks while the tangential speed ≤ μ_s × normal speed change. Typical 0.6.");
     params_.real("kinetic_friction", &obstacles_.material.kineticFriction, 0.0, 2.0, "",
                  "μ_k: sliding loses μ_k × normal speed change of tangential speed. Typical 0.4.");
-    params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration. Earth 9.81.");
     params_.flag("ball_collisions", &ballCollisions_, "Collide the balls with each other (spatial hash grid).");
-    lab::addIntegratorParam(params_, &kind_);
+    sim_.declareParams(params_);
   }
 
   std::string description() const override {
@@ -31,56 +30,51 @@ class BouncingScene final : public app::Scene {
   }
 
   void reset() override {
-    system_ = particles::ParticleSystem{};
+    sim_.system = particles::ParticleSystem{};
     std::mt19937_64 rng(seed());
     std::uniform_real_distribution<Real> u(-1.0, 1.0);
     for (int i = 0; i < count_; ++i) {
       const Vec3 x(1.5 * u(rng), 2.0 + 1.5 * (u(rng) + 1.0), 1.5 * u(rng));
       const Color c = i % 3 == 0 ? colors::kOrange : (i % 3 == 1 ? colors::kBlue : colors::kGreen);
-      system_.particles.add(x, Vec3(1.5 * u(rng), 0.0, 1.5 * u(rng)), 0.2, c);
+      sim_.system.particles.add(x, Vec3(1.5 * u(rng), 0.0, 1.5 * u(rng)), 0.2, c);
     }
-    system_.syncMasses();
     obstacles_.planes = {particles::PlaneObstacle{}};
     obstacles_.spheres = {particles::SphereObstacle{Vec3(0.6, 0.0, 0.0), 0.8}};
     obstacles_.boxes = {particles::BoxObstacle{Vec3(-1.2, 0.3, 0.2), Vec3(0.5, 0.3, 0.5),
                                                glm::angleAxis(0.4, Vec3(0.0, 1.0, 0.0))}};
-    integrator_.reset();
-    system_.setTime(0.0);
-    system_.forces.gravity = Vec3(0.0, -gravity_, 0.0);
-    initialEnergy_ = system_.energy();
+    sim_.finishReset();
   }
 
   void step(Real dt) override {
-    system_.forces.gravity = Vec3(0.0, -gravity_, 0.0);
-    integrator_.setKind(kind_);
-    rate_.start();
-    integrator_.step(system_, dt);
-    if (ballCollisions_) particles::collideParticlePairs(system_.particles, radius_, obstacles_.material.restitution, hash_);
-    particles::collideWithObstacles(system_.particles, obstacles_, radius_);
-    rate_.stop(system_.particles.size());
+    sim_.integrate(dt);
+    particles::Particles& p = sim_.system.particles;
+    if (ballCollisions_) particles::collideParticlePairs(p, radius_, obstacles_.material.restitution, hash_);
+    particles::collideWithObstacles(p, obstacles_, radius_);
+    sim_.finishStep();
   }
 
   void draw(DebugDraw& d) const override {
     lab::drawGroundSquare(d, 3.0);
     for (const auto& s : obstacles_.spheres) d.sphere(s.center, s.radius, colors::kGrey);
     for (const auto& b : obstacles_.boxes) d.box(b.center, b.halfExtents, b.orientation, colors::kGrey);
-    lab::drawParticles(d, system_.particles, radius_, 2000);
+    lab::drawParticles(d, sim_.system.particles, radius_, 2000);
   }
 
   nlohmann::json metrics() const override {
-    nlohmann::json j = lab::baseMetrics(kind_, system_.particles.size(), system_.energy(), initialEnergy_, rate_);
+    nlohmann::json j = sim_.metrics();
+    const particles::Particles& p = sim_.system.particles;
     std::size_t resting = 0;
     Real lowest = 1e9;
-    for (std::size_t i = 0; i < system_.particles.size(); ++i) {
-      if (glm::length(system_.particles.velocity[i]) < 1e-3) ++resting;
-      lowest = std::min(lowest, system_.particles.position[i].y - radius_);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (glm::length(p.velocity[i]) < 1e-3) ++resting;
+      lowest = std::min(lowest, p.position[i].y - radius_);
     }
     j["resting"] = resting;
     j["lowest_m"] = lowest;
     return j;
   }
-  std::optional<std::string> nonFiniteState() const override { return particles::describeNonFinite(system_.particles); }
-  std::optional<Real> energy() const override { return system_.energy(); }
+  std::optional<std::string> nonFiniteState() const override { return sim_.nonFiniteState(); }
+  std::optional<Real> energy() const override { return sim_.system.energy(); }
   std::vector<std::string> defaultPlots() const override { return {"energy", "resting"}; }
   std::vector<app::Preset> presets() const override {
     return {{"superballs", {{"restitution", 0.95}, {"static_friction", 0.1}, {"kinetic_friction", 0.05}}},
@@ -89,26 +83,21 @@ class BouncingScene final : public app::Scene {
             {"a crowd", {{"particles", 400}, {"radius", 0.06}}}};
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
-    return lab::pickParticle(ray, system_.particles, radius_);
+    return lab::pickParticle(ray, sim_.system.particles, radius_);
   }
   void drag(int handle, const Vec3& target) override {
     auto i = static_cast<std::size_t>(handle);
-    system_.particles.position[i] = Vec3(target.x, std::max(target.y, radius_), target.z);
-    system_.particles.velocity[i] = Vec3(0.0);
+    sim_.system.particles.position[i] = Vec3(target.x, std::max(target.y, radius_), target.z);
+    sim_.system.particles.velocity[i] = Vec3(0.0);
   }
 
  private:
   int count_ = 40;
   Real radius_ = 0.12;
-  Real gravity_ = kStandardGravity;
   bool ballCollisions_ = true;
-  ode::IntegratorKind kind_ = ode::IntegratorKind::SymplecticEuler;
-  ode::Integrator integrator_;
-  particles::ParticleSystem system_;
+  lab::IntegratedSystem sim_;
   particles::Obstacles obstacles_{{}, {}, {}, particles::ContactMaterial{0.7, 0.6, 0.4, 0.1}};
   particles::SpatialHash hash_;
-  Real initialEnergy_ = 0.0;
-  lab::UpdateRate rate_;
 };
 
 }  // namespace

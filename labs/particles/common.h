@@ -3,6 +3,7 @@
 // picking. Nothing here is reusable physics (that lives in framework/physics/{ode,particles,springs}).
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "app/scene.h"
@@ -54,14 +55,64 @@ inline nlohmann::json baseMetrics(ode::IntegratorKind kind, std::size_t particle
           {"particle_updates_per_s", rate.perSecond()}};
 }
 
+/// What the ParticleSystem scenes (bouncing, granular, rope, stiff-spring) each repeated: the system,
+/// its integrator with the kind the `integrator` parameter selects, gravity as a parameter, the
+/// particle_updates_per_s timer and the energy at reset that energy_drift compares with.
+struct IntegratedSystem {
+  particles::ParticleSystem system;
+  ode::Integrator integrator;
+  ode::IntegratorKind kind = ode::IntegratorKind::SymplecticEuler;
+  Real gravity = kStandardGravity;  ///< [m/s²] downwards
+  Real initialEnergy = 0.0;         ///< [J] at the last reset
+  UpdateRate rate;
+
+  /// Declares the `gravity` and `integrator` parameters (integratorNote is appended to the latter's help).
+  void declareParams(app::Params& params, const std::string& integratorNote = {}) {
+    params.real("gravity", &gravity, 0.0, 30.0, "m/s²", "Gravitational acceleration. Earth 9.81.");
+    addIntegratorParam(params, &kind, integratorNote);
+  }
+  /// The end of reset(), after the particles were built: inverse masses synced, the integrator's
+  /// memory forgotten, time 0, gravity applied and the energy recorded.
+  void finishReset() {
+    system.syncMasses();
+    integrator.reset();
+    system.setTime(0.0);
+    system.forces.gravity = Vec3(0.0, -gravity, 0.0);
+    initialEnergy = system.energy();
+  }
+  /// The start of step(dt): gravity and integrator kind from the parameters (both may change live),
+  /// the timer started, one integrator step. Collisions follow; then finishStep().
+  void integrate(Real dt) {
+    system.forces.gravity = Vec3(0.0, -gravity, 0.0);
+    integrator.setKind(kind);
+    rate.start();
+    integrator.step(system, dt);
+  }
+  /// The end of step(dt): stops the timer (every particle counts as one update).
+  void finishStep() { rate.stop(system.particles.size()); }
+  /// For Scene::nonFiniteState(): names the first particle whose state is not finite.
+  std::optional<std::string> nonFiniteState() const { return particles::describeNonFinite(system.particles); }
+  /// baseMetrics() of this system.
+  nlohmann::json metrics() const {
+    return baseMetrics(kind, system.particles.size(), system.energy(), initialEnergy, rate);
+  }
+};
+
+/// Draws at most about kMaxDrawn of the particles as points, an even stride through the arrays, in the
+/// colour colorOf(i) (evaluated for the drawn ones only).
+template <typename ColorOf>
+void drawPointSubsample(DebugDraw& d, const particles::Particles& p, ColorOf&& colorOf) {
+  const std::size_t stride = std::max<std::size_t>(1, p.size() / kMaxDrawn);
+  for (std::size_t i = 0; i < p.size(); i += stride) d.point(p.position[i], kPointPixels, colorOf(i));
+}
+
 /// Draws particles as spheres (few), points (many) or a subsample of points (huge).
 inline void drawParticles(DebugDraw& d, const particles::Particles& p, Real radius, std::size_t sphereLimit = 600) {
   if (p.size() <= sphereLimit) {
     for (std::size_t i = 0; i < p.size(); ++i) d.sphere(p.position[i], radius, p.color[i]);
     return;
   }
-  const std::size_t stride = std::max<std::size_t>(1, p.size() / kMaxDrawn);
-  for (std::size_t i = 0; i < p.size(); i += stride) d.point(p.position[i], kPointPixels, p.color[i]);
+  drawPointSubsample(d, p, [&](std::size_t i) { return p.color[i]; });
 }
 
 /// The particle whose sphere of radius `radius` the ray hits first.

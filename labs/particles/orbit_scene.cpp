@@ -6,6 +6,8 @@
 #include <deque>
 #include <memory>
 
+#include <imgui.h>
+
 #include "app/scene_registry.h"
 #include "common.h"
 #include "physics/ode/oscillator.h"
@@ -72,8 +74,33 @@ class OrbitScene final : public app::Scene {
     for (std::size_t i = 0; i < planets_.size(); ++i) {
       const auto& t = planets_[i].trail;
       for (std::size_t k = 1; k < t.size(); ++k) d.line(t[k - 1] + kDrawOffset, t[k] + kDrawOffset, kColors[i]);
-      d.sphere(planets_[i].orbit->position() + kDrawOffset, 0.04, kColors[i]);
+      d.sphere(planets_[i].orbit->position() + kDrawOffset, 0.06, kColors[i]);
     }
+  }
+  // The legend (which colour is which method, and its drift so far), in the panel under the parameters.
+  void ui() override {
+    if (!ImGui::BeginTable("planets", 3, ImGuiTableFlags_SizingFixedFit)) return;
+    ImGui::TableSetupColumn("method");
+    ImGui::TableSetupColumn("ΔE/E₀");
+    ImGui::TableSetupColumn("ΔL/L₀");
+    ImGui::TableHeadersRow();
+    for (std::size_t i = 0; i < planets_.size(); ++i) {
+      const ode::KeplerOrbit& o = *planets_[i].orbit;
+      const Color c = kColors[i];
+      const std::string name(ode::integratorName(planets_[i].integrator.kind()));
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      const float side = ImGui::GetTextLineHeight();
+      ImGui::ColorButton(("##" + name).c_str(), ImVec4(c.r, c.g, c.b, 1.0f), ImGuiColorEditFlags_NoTooltip,
+                         ImVec2(side, side));
+      ImGui::SameLine();
+      ImGui::TextUnformatted(name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%+.2e", (o.energy() - e0_) / std::abs(e0_));
+      ImGui::TableNextColumn();
+      ImGui::Text("%+.2e", (glm::length(o.angularMomentum()) - l0_) / l0_);
+    }
+    ImGui::EndTable();
   }
   // The true Kepler ellipse of the initial state (grey): r(θ) = p / (1 + e cos θ) about the sun,
   // with eccentricity vector e = v × L / GM − r̂ and semi-latus rectum p = |L|² / GM.

@@ -99,7 +99,7 @@ class OscillatorScene final : public app::Scene {
     const Real yOne = height / 4.0;  // E/E₀ = 1 (the axis spans 0…4)
     d.line(origin + yOne * kUp, origin + yOne * kUp + width * right(), colors::kGrey);
     d.text(origin + (height + 0.15) * kUp, "E/E0 over t", colors::kDark);
-    d.text(origin - 0.05 * kUp, "grey: E/E0 = 1", colors::kGrey);
+    d.text(origin - 0.3 * kUp, "grey: E/E0 = 1", colors::kGrey);  // below the time axis, clear of it
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       const auto& e = methods_[i].energy;
       auto pt = [&](std::size_t j) {

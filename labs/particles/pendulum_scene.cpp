@@ -1,6 +1,8 @@
 // Particles lab, scene "pendulum": the CMU asst4 pendulum joint — symplectic Euler, damping by
 // exp(−a h), a centre-of-mass offset, and a pivot that swings back and forth (secondary motion: the
-// pendulum lags and overshoots the moving pivot).
+// pendulum lags and overshoots the moving pivot). The integrator is choosable like in the other
+// scenes: symplectic-euler (default) is asst4's own step; any other method steps ode::PendulumSystem,
+// where the damping is the torque −a I ω.
 #include <cmath>
 
 #include "app/scene_registry.h"
@@ -22,7 +24,13 @@ class PendulumScene final : public app::Scene {
     params_.real("pivot_frequency", &frequency_, 0.0, 3.0, "Hz", "Frequency of the pivot's swing. Typical 0.3 Hz.");
     params_.real("gravity", &desc_.gravity, 0.0, 30.0, "m/s²", "Gravitational acceleration. Earth 9.81.");
     params_.angle("initial_angle", &initialAngle_, -170.0, 170.0, "θ at reset.").needsReset();
+    lab::addIntegratorParam(params_, &kind_,
+                            " Default symplectic-euler: asst4's step, damping as the exact factor exp(−a h); the "
+                            "others integrate the damping torque −a I ω like any force.");
   }
+
+  PendulumScene(const PendulumScene&) = delete;  // system_ calls back into this object
+  PendulumScene& operator=(const PendulumScene&) = delete;
 
   std::string description() const override {
     return "A pendulum hanging from a moving pivot (CMU asst4): it lags, swings up and settles as damping "
@@ -34,12 +42,20 @@ class PendulumScene final : public app::Scene {
     state_ = ode::PendulumState{initialAngle_, 0.0};
     time_ = 0.0;
     initialEnergy_ = ode::pendulumEnergy(desc_, state_);
+    integrator_.reset();
   }
   void step(Real dt) override {
     rate_.start();
-    const Real w = 2.0 * kPi * frequency_;
-    const Vec3 ap(-amplitude_ * w * w * std::sin(w * time_), 0.0, 0.0);  // pivot x = A sin ωt
-    state_ = ode::stepPendulum(desc_, state_, ap, dt);
+    if (kind_ == ode::IntegratorKind::SymplecticEuler) {
+      state_ = ode::stepPendulum(desc_, state_, pivotAcceleration(time_), dt);
+    } else {
+      system_.setDesc(desc_);
+      system_.setPendulumState(state_);  // unchanged values: Verlet keeps its history
+      system_.setTime(time_);
+      integrator_.setKind(kind_);
+      integrator_.step(system_, dt);
+      state_ = system_.pendulumState();
+    }
     time_ += dt;
     rate_.stop(1);
   }
@@ -56,8 +72,7 @@ class PendulumScene final : public app::Scene {
     d.arc(p, Vec3(0, 0, 1), Vec3(0, -1, 0), state_.angle, 0.35, colors::kRed);
   }
   nlohmann::json metrics() const override {
-    nlohmann::json j = lab::baseMetrics(ode::IntegratorKind::SymplecticEuler, 1, ode::pendulumEnergy(desc_, state_),
-                                        initialEnergy_, rate_);
+    nlohmann::json j = lab::baseMetrics(kind_, 1, ode::pendulumEnergy(desc_, state_), initialEnergy_, rate_);
     j["angle_rad"] = state_.angle;
     j["angular_velocity_rad_s"] = state_.angularVelocity;
     return j;
@@ -71,15 +86,24 @@ class PendulumScene final : public app::Scene {
     return {{"still pivot", {{"pivot_amplitude", 0.0}, {"initial_angle", 60.0}}},
             {"resonance", {{"pivot_frequency", 0.41}, {"pivot_amplitude", 0.2}, {"damping", 0.05}}},
             {"tilted body", {{"com_offset", 30.0}}},
-            {"no damping", {{"damping", 0.0}}}};
+            {"no damping", {{"damping", 0.0}}},
+            {"euler gains energy", {{"integrator", "euler"}, {"damping", 0.0}, {"pivot_amplitude", 0.0}}}};
   }
 
  private:
   static constexpr Real kPivotHeight = 3.0;  // [m]
   Vec3 pivot() const { return Vec3(amplitude_ * std::sin(2.0 * kPi * frequency_ * time_), kPivotHeight, 0.0); }
+  // Second derivative of pivot(): x = A sin ωt ⇒ ẍ = −A ω² sin ωt [m/s²].
+  Vec3 pivotAcceleration(Real t) const {
+    const Real w = 2.0 * kPi * frequency_;
+    return Vec3(-amplitude_ * w * w * std::sin(w * t), 0.0, 0.0);
+  }
 
   ode::PendulumDesc desc_{1.0, 1.5, 0.0, 0.02, 0.1, kStandardGravity};
   ode::PendulumState state_;
+  ode::IntegratorKind kind_ = ode::IntegratorKind::SymplecticEuler;
+  ode::Integrator integrator_;
+  ode::PendulumSystem system_{desc_, [this](Real t) { return pivotAcceleration(t); }};
   Real amplitude_ = 0.5, frequency_ = 0.3, initialAngle_ = degToRad(30.0), time_ = 0.0, initialEnergy_ = 0.0;
   lab::UpdateRate rate_;
 };

@@ -9,6 +9,7 @@ namespace {
 using namespace pba;
 
 constexpr Real kBeadRadius = 0.05;  // [m] drawn and picking radius
+constexpr Real kPinHeight = 3.0;    // [m] both pins; the ropes are 2 m long
 
 class RopeScene final : public app::Scene {
  public:
@@ -21,8 +22,7 @@ class RopeScene final : public app::Scene {
                  "Damping along each spring (resists stretching speed, not swinging). Typical 2.")
         .needsReset();
     params_.real("drag", &drag_, 0.0, 2.0, "N·s/m", "Linear air drag on every particle. Typical 0.02.");
-    params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration. Earth 9.81.");
-    lab::addIntegratorParam(params_, &kind_, " Explicit methods need h < 2/ω of the stiffest spring.");
+    sim_.declareParams(params_, " Explicit methods need h < 2/ω of the stiffest spring.");
   }
 
   std::string description() const override {
@@ -31,98 +31,90 @@ class RopeScene final : public app::Scene {
   Real defaultDt() const override { return 1.0 / 1000.0; }
 
   void reset() override {
-    system_ = particles::ParticleSystem{};
-    rope_.start = Vec3(-1.0, 3.0, 0.0);
-    rope_.end = Vec3(1.0, 3.0, 0.0);
-    (void)springs::appendRope(rope_, system_);
+    sim_.system = particles::ParticleSystem{};
+    // Both start horizontal, 0.6 m apart, pinned at opposite ends: they swing down in opposite
+    // directions and hang 2 m apart, so the picture (and the camera's framing of the start) is the
+    // 2.4 m × 3 m × 0.6 m box they sweep, not the whole floor.
+    rope_.start = Vec3(-1.0, kPinHeight, 0.3);
+    rope_.end = Vec3(1.0, kPinHeight, 0.3);
+    (void)springs::appendRope(rope_, sim_.system);
     springs::RopeDesc chain = rope_;
-    chain.start = Vec3(-1.0, 3.0, -1.0);
-    chain.end = Vec3(-1.0, 3.0 - 0.0, 1.0);
+    chain.start = Vec3(1.0, kPinHeight, -0.3);
+    chain.end = Vec3(-1.0, kPinHeight, -0.3);
     chain.mass = 4.0 * rope_.mass;
     chain.stiffness = 4.0 * rope_.stiffness;
     chain.bending = true;
-    chainFirst_ = springs::appendRope(chain, system_).value();
-    for (std::size_t i = chainFirst_; i < system_.particles.size(); ++i) system_.particles.color[i] = colors::kDark;
-    system_.syncMasses();
-    integrator_.reset();
-    system_.setTime(0.0);
-    applyForces();
-    initialEnergy_ = system_.energy();
+    chainFirst_ = springs::appendRope(chain, sim_.system).value();
+    for (std::size_t i = chainFirst_; i < sim_.system.particles.size(); ++i) sim_.system.particles.color[i] = colors::kDark;
+    sim_.system.forces.drag.linear = drag_;
+    sim_.finishReset();
     dragged_ = -1;
   }
 
   void step(Real dt) override {
-    applyForces();
-    integrator_.setKind(kind_);
-    rate_.start();
-    integrator_.step(system_, dt);
-    particles::collideWithObstacles(system_.particles, ground_, kBeadRadius);
-    rate_.stop(system_.particles.size());
+    sim_.system.forces.drag.linear = drag_;
+    sim_.integrate(dt);
+    particles::collideWithObstacles(sim_.system.particles, ground_, kBeadRadius);
+    sim_.finishStep();
   }
 
   void draw(DebugDraw& d) const override {
-    lab::drawGroundSquare(d, 3.0);
-    for (const springs::Spring& s : system_.springs) {
+    lab::drawGroundSquare(d, 1.2);
+    for (const springs::Spring& s : sim_.system.springs) {
       if (s.j != s.i + 1) continue;  // skip bending springs
-      d.line(system_.particles.position[s.i], system_.particles.position[s.j],
-             s.i >= chainFirst_ ? colors::kDark : colors::kOrange);
+      // Shaded capsules rather than hairlines: the rope reads as a rope on a projector.
+      d.capsule(sim_.system.particles.position[s.i], sim_.system.particles.position[s.j], 0.4 * kBeadRadius,
+                s.i >= chainFirst_ ? colors::kDark : colors::kOrange);
     }
-    for (std::size_t i = 0; i < system_.particles.size(); ++i) {
-      const bool pinned = system_.particles.inverseMass[i] == 0.0;
-      d.sphere(system_.particles.position[i], pinned ? 1.6 * kBeadRadius : kBeadRadius,
-               static_cast<int>(i) == dragged_ ? colors::kYellow : (pinned ? colors::kRed : system_.particles.color[i]));
+    const particles::Particles& p = sim_.system.particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const bool pinned = p.inverseMass[i] == 0.0;
+      d.sphere(p.position[i], pinned ? 1.6 * kBeadRadius : kBeadRadius,
+               static_cast<int>(i) == dragged_ ? colors::kYellow : (pinned ? colors::kRed : p.color[i]));
     }
   }
 
   nlohmann::json metrics() const override {
-    nlohmann::json j = lab::baseMetrics(kind_, system_.particles.size(), system_.energy(), initialEnergy_, rate_);
-    j["max_stretch"] = springs::maxRelativeStretch(system_.springs, system_.particles.position);
+    nlohmann::json j = sim_.metrics();
+    j["max_stretch"] = springs::maxRelativeStretch(sim_.system.springs, sim_.system.particles.position);
     return j;
   }
-  std::optional<std::string> nonFiniteState() const override { return particles::describeNonFinite(system_.particles); }
-  std::optional<Real> energy() const override { return system_.energy(); }
+  std::optional<std::string> nonFiniteState() const override { return sim_.nonFiniteState(); }
+  std::optional<Real> energy() const override { return sim_.system.energy(); }
   std::vector<std::string> defaultPlots() const override { return {"energy", "max_stretch"}; }
   std::vector<app::Preset> presets() const override {
     return {{"slack", {{"stiffness", 200.0}}}, {"stiff", {{"stiffness", 20000.0}}},
             {"undamped", {{"damping", 0.0}, {"drag", 0.0}}}, {"implicit", {{"integrator", "implicit-euler"}}}};
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
-    return lab::pickParticle(ray, system_.particles, 2.0 * kBeadRadius);
+    return lab::pickParticle(ray, sim_.system.particles, 2.0 * kBeadRadius);
   }
   void drag(int handle, const Vec3& target) override {
     const auto i = static_cast<std::size_t>(handle);
     if (dragged_ != handle) {
       dragged_ = handle;
-      savedInverseMass_ = system_.particles.inverseMass[i];
-      system_.particles.inverseMass[i] = 0.0;  // kinematic while held
-      system_.syncMasses();
+      savedInverseMass_ = sim_.system.particles.inverseMass[i];
+      sim_.system.particles.inverseMass[i] = 0.0;  // kinematic while held
+      sim_.system.syncMasses();
     }
-    system_.particles.position[i] = target;
-    system_.particles.velocity[i] = Vec3(0.0);
+    sim_.system.particles.position[i] = target;
+    sim_.system.particles.velocity[i] = Vec3(0.0);
   }
   void release(int handle) override {
     if (handle != dragged_) return;
-    system_.particles.inverseMass[static_cast<std::size_t>(handle)] = savedInverseMass_;
-    system_.syncMasses();
+    sim_.system.particles.inverseMass[static_cast<std::size_t>(handle)] = savedInverseMass_;
+    sim_.system.syncMasses();
     dragged_ = -1;
   }
 
  private:
-  void applyForces() {
-    system_.forces.gravity = Vec3(0.0, -gravity_, 0.0);
-    system_.forces.drag.linear = drag_;
-  }
-
   springs::RopeDesc rope_;
-  Real drag_ = 0.02, gravity_ = kStandardGravity;
-  ode::IntegratorKind kind_ = ode::IntegratorKind::SymplecticEuler;
-  ode::Integrator integrator_;
-  particles::ParticleSystem system_;
+  Real drag_ = 0.02;
+  lab::IntegratedSystem sim_;
   particles::Obstacles ground_{{particles::PlaneObstacle{}}, {}, {}, {}};
   std::size_t chainFirst_ = 0;
   int dragged_ = -1;
-  Real savedInverseMass_ = 0.0, initialEnergy_ = 0.0;
-  lab::UpdateRate rate_;
+  Real savedInverseMass_ = 0.0;
 };
 
 }  // namespace

@@ -11,10 +11,6 @@
 
 namespace pba::ode {
 namespace {
-void resize(std::vector<Real>& v, std::size_t n) {
-  if (v.size() != n) v.assign(n, 0.0);
-}
-
 // Butcher tableau of DOPRI5.
 constexpr Real c2 = 1.0 / 5, c3 = 3.0 / 10, c4 = 4.0 / 5, c5 = 8.0 / 9;
 constexpr Real a21 = 1.0 / 5;
@@ -34,8 +30,7 @@ constexpr Real kSafety = 0.9, kMinFactor = 0.2, kMaxFactor = 5.0;
 
 void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, AdaptiveState& st, Workspace& w) {
   const std::size_t n = system.stateSize();
-  for (std::vector<Real>* v : {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2})
-    resize(*v, n);
+  Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2});
   std::vector<Real>& s = w.s;
   std::vector<Real>& y = w.tmp;     // stage argument, then the candidate solution
   std::vector<Real>& err = w.tmp2;  // error estimate

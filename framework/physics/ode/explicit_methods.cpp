@@ -6,16 +6,10 @@
 #include "physics/ode/integrators.h"
 
 namespace pba::ode {
-namespace {
-void resize(std::vector<Real>& v, std::size_t n) {
-  if (v.size() != n) v.assign(n, 0.0);
-}
-}  // namespace
 
 void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   const std::size_t n = system.stateSize();
-  resize(w.s, n);
-  resize(w.k1, n);
+  Workspace::fit(n, {&w.s, &w.k1});
   // BEGIN SOLUTION
   const Real t = system.time();
   system.getState(w.s);
@@ -29,10 +23,7 @@ void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w)
 
 void midpointStep(OdeSystem& system, Real h, Workspace& w) {
   const std::size_t n = system.stateSize();
-  resize(w.s, n);
-  resize(w.k1, n);
-  resize(w.k2, n);
-  resize(w.tmp, n);
+  Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.tmp});
   const Real t = system.time();
   system.getState(w.s);
   system.derivative(t, w.s, w.k1);
@@ -45,7 +36,7 @@ void midpointStep(OdeSystem& system, Real h, Workspace& w) {
 
 void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   const std::size_t n = system.stateSize();
-  for (std::vector<Real>* v : {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.tmp}) resize(*v, n);
+  Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.tmp});
   // BEGIN SOLUTION
   const Real t = system.time();
   system.getState(w.s);

@@ -24,15 +24,12 @@ Real dot(std::span<const Real> a, std::span<const Real> b) {
   for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
   return s;
 }
-void resize(std::vector<Real>& v, std::size_t n) {
-  if (v.size() != n) v.assign(n, 0.0);
-}
 }  // namespace
 
 ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const ImplicitEulerSettings& settings,
                                      Workspace& w) {
   const std::size_t n = system.dofCount();
-  for (std::vector<Real>* v : {&w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2}) resize(*v, n);
+  Workspace::fit(n, {&w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2});
   std::vector<Real>& b = w.k1;   // right-hand side, then scratch
   std::vector<Real>& x = w.k2;   // Δv
   std::vector<Real>& r = w.k3;   // residual

@@ -17,6 +17,8 @@
 //   rk4 1 − z⁶/72 + z⁸/576 (stable for z < 2√2) · verlet family bounded for z < 2 ·
 //   implicit Euler 1/(1 + z²) (always decays: unconditionally stable, and dissipative).
 #include <array>
+#include <cstddef>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -53,6 +55,14 @@ int integratorOrder(IntegratorKind kind);
 /// Scratch buffers of the integrators, reused between steps so that stepping never allocates.
 struct Workspace {
   std::vector<Real> s, k1, k2, k3, k4, k5, k6, k7, tmp, tmp2;
+
+  /// Makes each of `buffers` (members of a Workspace) n long; a buffer that changes size is zeroed,
+  /// one that already fits is left alone (no allocation once sized).
+  static void fit(std::size_t n, std::initializer_list<std::vector<Real>*> buffers) {
+    for (std::vector<Real>* b : buffers) {
+      if (b->size() != n) b->assign(n, 0.0);
+    }
+  }
 };
 
 // ----- Generic methods: any OdeSystem (state copied out, advanced, copied back) -----
@@ -85,6 +95,8 @@ void rk4Step(OdeSystem& system, Real h, Workspace& w);
 // (3) Update the position with the NEW velocity: q ← q + h v.
 //     (Using the old velocity here would be explicit Euler, whose energy grows every step.)
 // (4) Tell the system (stateChanged) and advance the time to t + h.
+// (second_order_methods.cpp has two helpers the other in-place methods use: startInPlace() does the
+// bookkeeping and step (1), finishInPlace() step (4).)
 // *****
 void symplecticEulerStep(SecondOrderSystem& system, Real h, Workspace& w);
 

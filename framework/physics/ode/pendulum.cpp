@@ -43,4 +43,26 @@ Real pendulumEnergy(const PendulumDesc& d, const PendulumState& s) {
          d.mass * d.gravity * d.comDistance * (1.0 - std::cos(s.angle + d.comOffsetAngle));
 }
 
+PendulumSystem::PendulumSystem(const PendulumDesc& desc, PivotAcceleration pivotAcceleration)
+    : pivotAcceleration_(std::move(pivotAcceleration)) {
+  setDesc(desc);
+}
+
+void PendulumSystem::setDesc(const PendulumDesc& desc) {
+  desc_ = desc;
+  w_[0] = 1.0 / pivotInertia(desc_);
+}
+
+void PendulumSystem::setPendulumState(const PendulumState& s) {
+  q_[0] = s.angle;
+  v_[0] = s.angularVelocity;
+  stateChanged();
+}
+
+void PendulumSystem::force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const {
+  const Vec3 ap = pivotAcceleration_ ? pivotAcceleration_(t) : Vec3(0.0);
+  const Real inertia = pivotInertia(desc_);
+  out[0] = inertia * (angularAcceleration(desc_, PendulumState{q[0], v[0]}, ap) - desc_.damping * v[0]);
+}
+
 }  // namespace pba::ode

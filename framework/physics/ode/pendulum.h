@@ -7,10 +7,23 @@
 // θ = 0 (atan2; the asst4 writes sin(θ − ψ) with its own sign convention), a_p the pivot's acceleration
 // and y⊥ the unit-free perpendicular (y rotated by +90°). Departure from asst4: it writes ⟨a, y⊥⟩/L² for
 // the pivot term, which is the point-mass case I = m L² of our m⟨a, y⊥⟩/I.
-// Integrated with symplectic Euler as asst4 prescribes (energy-stable, no temporaries); damping is
-// applied as ω ← ω·exp(−a h), exact for the linear decay ω̇ = −a ω.
+// Damping a [1/s] adds ω̇ = −a ω, whose exact solution over a step h is the factor exp(−a h).
+//
+// Two ways to step it:
+//  - stepPendulum(): asst4's own step, symplectic Euler (energy-stable, no temporaries) with the
+//    damping applied as the exact factor between kick and drift:
+//      ω ← (ω + h θ̈) exp(−a h);  θ ← θ + h ω.
+//  - PendulumSystem: the same joint as an ode::SecondOrderSystem (q = θ, v = ω, M = I about the pivot),
+//    so that any ode::Integrator steps it; there the damping is a torque −a I ω like any other force
+//    and each method integrates the decay exp(−a t) to its own order.
+// The pendulum scene uses the first for symplectic-euler (its default, as asst4 prescribes) and the
+// second for every other integrator.
+#include <functional>
+#include <vector>
+
 #include "physics/core/result.h"
 #include "physics/core/types.h"
+#include "physics/ode/ode_system.h"
 
 namespace pba::ode {
 
@@ -33,11 +46,39 @@ struct PendulumState {
 Real pivotInertia(const PendulumDesc& d);
 /// θ̈ for a pivot accelerating at pivotAcceleration [m/s²] (xy components used).
 Real angularAcceleration(const PendulumDesc& d, const PendulumState& s, const Vec3& pivotAcceleration);
-/// One symplectic Euler step with exponential damping (CMU asst4).
+/// One symplectic Euler step with the exact damping factor between kick and drift (CMU asst4).
 PendulumState stepPendulum(const PendulumDesc& d, const PendulumState& s, const Vec3& pivotAcceleration, Real h);
 /// Centre of mass relative to the pivot [m].
 Vec3 centerOfMassOffset(const PendulumDesc& d, Real angle);
 /// Energy in the pivot frame (kinetic about the pivot + gravity, zero at the lowest point) [J].
 Real pendulumEnergy(const PendulumDesc& d, const PendulumState& s);
+
+/// The pendulum joint for any ode::Integrator (one coordinate): force = I θ̈(θ, a_p(t)) − a I ω [N·m],
+/// inverse mass 1/I. The pivot's acceleration is a function of the system's time.
+class PendulumSystem final : public SecondOrderSystem {
+ public:
+  using PivotAcceleration = std::function<Vec3(Real t)>;  ///< [m/s²] at time t [s]
+  explicit PendulumSystem(const PendulumDesc& desc = {}, PivotAcceleration pivotAcceleration = {});
+
+  const PendulumDesc& desc() const { return desc_; }
+  /// Changes the body (mass, length, damping, … may change between steps).
+  void setDesc(const PendulumDesc& desc);
+  void setPivotAcceleration(PivotAcceleration a) { pivotAcceleration_ = std::move(a); }
+  PendulumState pendulumState() const { return {q_[0], v_[0]}; }
+  void setPendulumState(const PendulumState& s);
+
+  std::size_t dofCount() const override { return 1; }
+  std::span<Real> positions() override { return q_; }
+  std::span<const Real> positions() const override { return q_; }
+  std::span<Real> velocities() override { return v_; }
+  std::span<const Real> velocities() const override { return v_; }
+  std::span<const Real> inverseMasses() const override { return w_; }
+  void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
+
+ private:
+  PendulumDesc desc_;
+  PivotAcceleration pivotAcceleration_;
+  std::vector<Real> q_{0.0}, v_{0.0}, w_{1.0};
+};
 
 }  // namespace pba::ode

@@ -9,54 +9,57 @@
 
 namespace pba::ode {
 namespace {
-void resize(std::vector<Real>& v, std::size_t n) {
-  if (v.size() != n) v.assign(n, 0.0);
+// What every in-place method starts from: the coordinates q and velocities v of the system (its own
+// storage), the time t, and the acceleration a = M⁻¹ f(t, q, v) at the start of the step in w.k1.
+struct InPlaceStep {
+  std::size_t n;
+  Real t;
+  std::span<Real> q, v;
+  std::span<const Real> a;
+};
+InPlaceStep startInPlace(SecondOrderSystem& system, Workspace& w) {
+  const std::size_t n = system.dofCount();
+  Workspace::fit(n, {&w.k1});
+  const InPlaceStep s{n, system.time(), system.positions(), system.velocities(), w.k1};
+  system.acceleration(s.t, s.q, s.v, w.k1);
+  return s;
+}
+// And what every one ends with: tell the system its state changed and advance its time to t + h.
+void finishInPlace(SecondOrderSystem& system, const InPlaceStep& s, Real h) {
+  system.stateChanged();
+  system.setTime(s.t + h);
 }
 }  // namespace
 
-void symplecticEulerStep(SecondOrderSystem& system, [[maybe_unused]] Real h, Workspace& w) {
-  const std::size_t n = system.dofCount();
-  resize(w.k1, n);
+void symplecticEulerStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unused]] Real h,
+                         [[maybe_unused]] Workspace& w) {
   // BEGIN SOLUTION
-  const Real t = system.time();
-  const std::span<Real> q = system.positions();
-  const std::span<Real> v = system.velocities();
-  system.acceleration(t, q, v, w.k1);
-  for (std::size_t i = 0; i < n; ++i) {
-    v[i] += h * w.k1[i];
-    q[i] += h * v[i];
+  const InPlaceStep s = startInPlace(system, w);  // q, v, t and a = M⁻¹ f(t, q, v)
+  for (std::size_t i = 0; i < s.n; ++i) {
+    s.v[i] += h * s.a[i];
+    s.q[i] += h * s.v[i];
   }
-  system.stateChanged();
-  system.setTime(t + h);
+  finishInPlace(system, s, h);
   // END SOLUTION
   // STUB: exercises::markNotImplemented("PART-2");  // the state stays where it is
 }
 
 void velocityVerletStep(SecondOrderSystem& system, Real h, Workspace& w) {
-  const std::size_t n = system.dofCount();
-  resize(w.k1, n);
-  const Real t = system.time();
-  const std::span<Real> q = system.positions();
-  const std::span<Real> v = system.velocities();
-  system.acceleration(t, q, v, w.k1);
-  for (std::size_t i = 0; i < n; ++i) {
-    q[i] += h * v[i] + 0.5 * h * h * w.k1[i];
-    v[i] += 0.5 * h * w.k1[i];  // half kick
+  const InPlaceStep s = startInPlace(system, w);
+  for (std::size_t i = 0; i < s.n; ++i) {
+    s.q[i] += h * s.v[i] + 0.5 * h * h * s.a[i];
+    s.v[i] += 0.5 * h * s.a[i];  // half kick
   }
-  system.acceleration(t + h, q, v, w.k1);
-  for (std::size_t i = 0; i < n; ++i) v[i] += 0.5 * h * w.k1[i];  // second half kick
-  system.stateChanged();
-  system.setTime(t + h);
+  system.acceleration(s.t + h, s.q, s.v, w.k1);  // a at the new positions (s.a views w.k1)
+  for (std::size_t i = 0; i < s.n; ++i) s.v[i] += 0.5 * h * s.a[i];  // second half kick
+  finishInPlace(system, s, h);
 }
 
 void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistory& history, Workspace& w) {
-  const std::size_t n = system.dofCount();
-  resize(w.k1, n);
-  const Real t = system.time();
-  const std::span<Real> q = system.positions();
-  const std::span<Real> v = system.velocities();
-  system.acceleration(t, q, v, w.k1);
-  const std::span<const Real> a = w.k1;
+  const InPlaceStep s = startInPlace(system, w);
+  const std::size_t n = s.n;
+  const std::span<Real> q = s.q, v = s.v;
+  const std::span<const Real> a = s.a;
   // Start (or restart) the two-step recurrence when the state is not the one this method produced:
   // q(t − h) from the Taylor expansion q − h v + h²a/2, exact under constant acceleration.
   const bool same = history.valid && history.lastH == h && history.previous.size() == n &&
@@ -78,8 +81,7 @@ void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistor
   history.lastV.assign(v.begin(), v.end());
   history.lastH = h;
   history.valid = true;
-  system.stateChanged();
-  system.setTime(t + h);
+  finishInPlace(system, s, h);
 }
 
 // Start-up probes: tell the lab whether PART-2 and PART-6 are still stubs.

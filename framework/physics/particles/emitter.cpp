@@ -1,5 +1,6 @@
 #include "physics/particles/emitter.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "physics/core/validate.h"
@@ -30,6 +31,13 @@ Vec3 Emitter::sampleCone(const Vec3& axis, Real spread) {
   return cosTheta * a + sinTheta * (std::cos(phi) * t + std::sin(phi) * b);
 }
 
+Color colorOverLife(const EmitterDesc& d, Real age, Real lifetime) {
+  const float s = static_cast<float>(std::clamp(age / lifetime, 0.0, 1.0));
+  const Color& a = d.startColor;
+  const Color& b = d.endColor;
+  return Color{a.r + s * (b.r - a.r), a.g + s * (b.g - a.g), a.b + s * (b.b - a.b), a.a + s * (b.a - a.a)};
+}
+
 std::size_t Emitter::update(Particles& p, Real h) {
   for (std::size_t i = p.size(); i-- > 0;) {
     p.age[i] += h;
@@ -37,11 +45,12 @@ std::size_t Emitter::update(Particles& p, Real h) {
       p.swapRemove(i);
       continue;
     }
-    const float s = static_cast<float>(p.age[i] / p.lifetime[i]);
-    const Color& a = desc_.startColor;
-    const Color& b = desc_.endColor;
-    p.color[i] = Color{a.r + s * (b.r - a.r), a.g + s * (b.g - a.g), a.b + s * (b.b - a.b), a.a + s * (b.a - a.a)};
+    p.color[i] = colorOverLife(desc_, p.age[i], p.lifetime[i]);
   }
+  return spawn(p, h);
+}
+
+std::size_t Emitter::spawn(Particles& p, Real h) {
   carry_ += desc_.rate * h;
   std::uniform_real_distribution<Real> u(-1.0, 1.0);
   std::size_t spawned = 0;

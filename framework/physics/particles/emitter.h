@@ -27,6 +27,11 @@ struct EmitterDesc {
 
 Status validate(const EmitterDesc& desc);
 
+/// The emitter's colour at `age` of a particle living `lifetime` [s]: startColor blended linearly into
+/// endColor over the life. Emitter::update stores it in Particles::color every step; a huge pool
+/// (the fused fountain) evaluates it only for the particles it draws.
+Color colorOverLife(const EmitterDesc& desc, Real age, Real lifetime);
+
 class Emitter {
  public:
   explicit Emitter(const EmitterDesc& desc = {}, std::uint64_t seed = 1) : desc_(desc), rng_(seed) {}
@@ -37,6 +42,9 @@ class Emitter {
   /// spawns rate·h new particles (fractions carried to the next step) while the pool has room.
   /// Returns the number spawned.
   std::size_t update(Particles& p, Real h);
+  /// Only the last part of update(): spawns rate·h new particles (age 0, startColor) while the pool has
+  /// room. For callers that age and remove particles themselves (particles::stepFountain).
+  std::size_t spawn(Particles& p, Real h);
   /// A random unit direction inside the cone of half-angle `spread` about `axis`, uniform in solid angle.
   Vec3 sampleCone(const Vec3& axis, Real spread);
 

@@ -34,6 +34,15 @@ void Particles::swapRemove(std::size_t i) {
   color.pop_back();
 }
 
+void Particles::truncate(std::size_t n) {
+  position.resize(n);
+  velocity.resize(n);
+  inverseMass.resize(n);
+  age.resize(n);
+  lifetime.resize(n);
+  color.resize(n);
+}
+
 void Particles::clear() { *this = Particles{}; }
 
 void Particles::reserve(std::size_t n) {

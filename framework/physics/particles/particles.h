@@ -30,6 +30,8 @@ struct Particles {
   std::size_t add(const Vec3& x, const Vec3& v, Real mass, const Color& c = colors::kBlue, Real life = kImmortal);
   /// Removes particle i by moving the last one into its slot (O(1), order not kept: storage is recycled).
   void swapRemove(std::size_t i);
+  /// Keeps the first n particles (n ≤ size()); the storage stays allocated.
+  void truncate(std::size_t n);
   void clear();
   void reserve(std::size_t n);
   Real mass(std::size_t i) const { return inverseMass[i] > 0.0 ? 1.0 / inverseMass[i] : 0.0; }

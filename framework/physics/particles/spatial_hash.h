@@ -4,8 +4,10 @@
 // k·83492791) mod T). Cells have the size of a particle diameter, so touching particles are in the same
 // or adjacent cells: each particle checks 27 cells. Built by counting sort into one index array
 // (no per-cell allocation): O(n) build, O(n) queries for bounded density.
+#include <algorithm>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "physics/core/types.h"
@@ -19,6 +21,7 @@ class SpatialHash {
   void build(std::span<const Vec3> positions, Real cellSize);
   /// Calls visit(j) for every particle j in the 27 cells around p (each bucket once; may include
   /// particles farther away than one cell when cells collide in the table, so callers test distance).
+  /// Not thread-safe: it marks the buckets it has visited in a scratch array of the hash.
   template <typename Visit>
   void forEachNear(const Vec3& p, Visit&& visit) const;
 
@@ -35,6 +38,11 @@ class SpatialHash {
   std::vector<std::uint32_t> bucketOf_;   ///< scratch of build(): each particle's bucket (kept: no allocation per build)
   std::vector<std::uint32_t> fill_;       ///< scratch of build(): next free entry per bucket
   unsigned shift_ = 58;                   ///< 64 − b, where tableSize() = 2^b
+  // forEachNear()'s record of the buckets it has visited: bucket b was visited by the current query
+  // when visited_[b] == query_. One store and one load per cell instead of comparing each of the 27
+  // buckets with all earlier ones (27·26/2 comparisons, a third of a collision sweep before).
+  mutable std::vector<std::uint32_t> visited_;
+  mutable std::uint32_t query_ = 0;
 };
 
 template <typename Visit>
@@ -42,16 +50,16 @@ void SpatialHash::forEachNear(const Vec3& p, Visit&& visit) const {
   const auto ci = static_cast<std::int64_t>(std::floor(p.x * inverseCell_));
   const auto cj = static_cast<std::int64_t>(std::floor(p.y * inverseCell_));
   const auto ck = static_cast<std::int64_t>(std::floor(p.z * inverseCell_));
-  std::uint32_t seen[27];
-  int nSeen = 0;
+  if (++query_ == 0) {  // the stamp wrapped around: forget every old mark
+    std::fill(visited_.begin(), visited_.end(), 0u);
+    query_ = 1;
+  }
   for (std::int64_t di = -1; di <= 1; ++di)
     for (std::int64_t dj = -1; dj <= 1; ++dj)
       for (std::int64_t dk = -1; dk <= 1; ++dk) {
         const std::uint32_t b = bucket(ci + di, cj + dj, ck + dk);
-        bool repeated = false;
-        for (int s = 0; s < nSeen; ++s) repeated = repeated || seen[s] == b;
-        if (repeated) continue;
-        seen[nSeen++] = b;
+        if (visited_[b] == query_) continue;  // two of the 27 cells share this bucket
+        visited_[b] = query_;
         for (std::uint32_t e = cellStart_[b]; e < cellStart_[b + 1]; ++e) visit(entries_[e]);
       }
 }
@@ -66,10 +74,41 @@ struct PairCollisionStats {
   std::size_t contacts = 0;
   Real deepestPenetration = 0.0;  ///< [m] before projection
 };
+/// A Verlet neighbour list (Verlet 1967, the "skin" of molecular dynamics): the pairs i < j that were
+/// closer than reach = contactDistance + skin when it was built. Two particles farther apart than reach
+/// come within contactDistance only after moving more than skin between them, so while no particle has
+/// moved more than skin/2 since the build, the list holds every pair that can touch. update() checks
+/// exactly that (one pass over the positions) and rebuilds only when needed: the granular pile queries
+/// the hash about once per step while grains fall and almost never once they rest, instead of once per
+/// collision sweep.
+class NeighbourList {
+ public:
+  using Pair = std::pair<std::uint32_t, std::uint32_t>;
+  /// Makes the list complete for `positions`: rebuilds (through `hash`, cells of size reach) on first
+  /// use, when the particle count, contactDistance or skin changed, or when a particle moved more than
+  /// skin/2 since the last build. contactDistance and skin [m] > 0. Returns true when it rebuilt.
+  bool update(std::span<const Vec3> positions, Real contactDistance, Real skin, SpatialHash& hash);
+  /// Forces a rebuild on the next update() (e.g. after particles were added, removed or teleported).
+  void invalidate() { valid_ = false; }
+  std::span<const Pair> pairs() const { return pairs_; }
+  std::size_t builds() const { return builds_; }  ///< rebuilds so far
+
+ private:
+  std::vector<Pair> pairs_;     ///< ordered by i, then by j's bucket
+  std::vector<Vec3> builtAt_;   ///< [m] positions at the last build
+  Real contactDistance_ = 0.0, skin_ = 0.0;
+  std::size_t builds_ = 0;
+  bool valid_ = false;
+};
+
 /// Separates overlapping particles of equal radius [m] (positions split by inverse mass, like the Ragdoll
 /// paper's mass-weighted projection) and applies a normal impulse with restitution to approaching pairs:
 ///   J = −(1 + e) (v_i − v_j)·n / (w_i + w_j),  v_i += w_i J n,  v_j −= w_j J n  (momentum conserved).
 /// Rebuilds `hash` first. One Gauss–Seidel sweep; call again for stiffer piles.
 PairCollisionStats collideParticlePairs(Particles& p, Real radius, Real restitution, SpatialHash& hash);
+/// The same sweep over the pairs of a neighbour list (call NeighbourList::update with contact distance
+/// 2·radius first): no hash query at all.
+PairCollisionStats collideParticlePairs(Particles& p, Real radius, Real restitution,
+                                        std::span<const NeighbourList::Pair> pairs);
 
 }  // namespace pba::particles
