@@ -58,9 +58,12 @@ void heatMap(const JacobianView& v) {
   for (int r = 0; r < J.rows; ++r) {
     const float y = origin.y + static_cast<float>(r) * cellHeight;
     const std::string& label = v.rowLabels[static_cast<size_t>(r)];
-    if (rowLabels || (label[0] == 'x' && J.rows >= 3))  // per row, or one label per effector (its x row)
+    if (rowLabels || (label[0] == 'x' && J.rows >= 3)) {  // per row, or one label per effector (its x row)
+      char effector[24];
+      std::snprintf(effector, sizeof effector, "e%s", label.c_str() + 1);
       draw->AddText(ImVec2(origin.x, y + (rowLabels ? 0.5f * (cellHeight - font) : 0.0f)), ImGui::GetColorU32(ImGuiCol_Text),
-                    rowLabels ? label.c_str() : ("e" + label.substr(1)).c_str());
+                    rowLabels ? label.c_str() : effector);
+    }
     for (int b = 0; b < bins; ++b) {
       // A cell covering several columns shows the entry of largest magnitude among them.
       const int c0 = b * J.cols / bins, c1 = std::max(c0 + 1, (b + 1) * J.cols / bins);
@@ -150,8 +153,11 @@ JacobianView computeJacobianView(const Skeleton& s, const Pose& pose, const std:
   for (size_t k = 0; k < effectors.size(); ++k) {
     const int first = layout.rowOfEffector[k];
     const int count = effectors[k].kind == EffectorKind::PositionOrientation ? 6 : 3;
-    for (int i = 0; i < count; ++i)
-      v.rowLabels[static_cast<size_t>(first + i)] = std::string(i < 3 ? "" : "r") + "xyz"[i % 3] + std::to_string(k);
+    for (int i = 0; i < count; ++i) {
+      char label[24];  // snprintf: GCC 12 -O3 misreports -Wrestrict on short string concatenations
+      std::snprintf(label, sizeof label, "%s%c%zu", i < 3 ? "" : "r", "xyz"[i % 3], k);
+      v.rowLabels[static_cast<size_t>(first + i)] = label;
+    }
   }
   for (int c = 0; c < v.J.cols; ++c)
     v.jointOfColumn.push_back(c < s.dofCount() ? s.dofJoint(c) : layout.freeJoints[static_cast<size_t>(c - s.dofCount())]);
