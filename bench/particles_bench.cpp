@@ -57,15 +57,23 @@ void BM_ParticlesGravityDragPlane(benchmark::State& state) {
 BENCHMARK(BM_ParticlesGravityDragPlane)->Arg(10000)->Arg(1000000)->Arg(4000000);
 
 // Spatial hash build + one sweep of pair collisions, random particles at a granular density.
-void BM_SpatialHashCollisions(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
-  const Real radius = 0.01;
-  const Real side = std::cbrt(static_cast<Real>(n)) * 2.5 * radius;  // ~0.13 volume fraction
+constexpr Real kCloudRadius = 0.01;  // [m] particle radius of the pair-collision benchmarks
+
+/// n particles of radius kCloudRadius at random in a cube sized for a volume fraction of ≈ 0.13.
+particles::Particles randomCloud(std::size_t n) {
+  const Real side = std::cbrt(static_cast<Real>(n)) * 2.5 * kCloudRadius;
   std::mt19937_64 rng(2);
   std::uniform_real_distribution<Real> u(0.0, side);
   particles::Particles p;
   for (std::size_t i = 0; i < n; ++i) p.add(Vec3(u(rng), u(rng), u(rng)), Vec3(0.0), 1.0);
-  const particles::Particles start = p;
+  return p;
+}
+
+void BM_SpatialHashCollisions(benchmark::State& state) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const Real radius = kCloudRadius;
+  const particles::Particles start = randomCloud(n);
+  particles::Particles p = start;
   particles::SpatialHash hash;
   for (auto _ : state) {
     state.PauseTiming();
@@ -81,13 +89,9 @@ BENCHMARK(BM_SpatialHashCollisions)->Arg(100000)->Unit(benchmark::kMillisecond);
 // particle, skin = radius) and the granular scene's three sweeps over the pairs.
 void BM_NeighbourListBuildAndThreeSweeps(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
-  const Real radius = 0.01;
-  const Real side = std::cbrt(static_cast<Real>(n)) * 2.5 * radius;
-  std::mt19937_64 rng(2);
-  std::uniform_real_distribution<Real> u(0.0, side);
-  particles::Particles p;
-  for (std::size_t i = 0; i < n; ++i) p.add(Vec3(u(rng), u(rng), u(rng)), Vec3(0.0), 1.0);
-  const particles::Particles start = p;
+  const Real radius = kCloudRadius;
+  const particles::Particles start = randomCloud(n);
+  particles::Particles p = start;
   particles::SpatialHash hash;
   particles::NeighbourList list;
   for (auto _ : state) {

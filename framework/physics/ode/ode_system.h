@@ -11,6 +11,8 @@
 //   M    diagonal mass matrix; M⁻¹ = 0 on a pinned coordinate
 #include <cstddef>
 #include <span>
+#include <utility>
+#include <vector>
 
 #include "physics/core/types.h"
 
@@ -71,6 +73,24 @@ class SecondOrderSystem : public OdeSystem {
   void getState(std::span<Real> out) const final;
   void setState(std::span<const Real> state) final;
   void derivative(Real t, std::span<const Real> state, std::span<Real> out) const final;
+};
+
+/// A SecondOrderSystem that owns its coordinates, velocities and inverse masses as three vectors of
+/// equal length: the storage and the views every small closed-form system (oscillator, orbit,
+/// pendulum) needs; a subclass adds its force.
+class OwnedStateSystem : public SecondOrderSystem {
+ public:
+  std::size_t dofCount() const override { return q_.size(); }
+  std::span<Real> positions() override { return q_; }
+  std::span<const Real> positions() const override { return q_; }
+  std::span<Real> velocities() override { return v_; }
+  std::span<const Real> velocities() const override { return v_; }
+  std::span<const Real> inverseMasses() const override { return w_; }
+
+ protected:
+  OwnedStateSystem(std::vector<Real> q, std::vector<Real> v, std::vector<Real> w)
+      : q_(std::move(q)), v_(std::move(v)), w_(std::move(w)) {}
+  std::vector<Real> q_, v_, w_;  ///< coordinates, velocities, M⁻¹ (0 = pinned)
 };
 
 }  // namespace pba::ode

@@ -5,10 +5,10 @@
 namespace pba::ode {
 
 HarmonicOscillator::HarmonicOscillator(const OscillatorDesc& d)
-    : desc_(d),
-      q_(static_cast<std::size_t>(d.copies), d.x0),
-      v_(static_cast<std::size_t>(d.copies), d.v0),
-      w_(static_cast<std::size_t>(d.copies), 1.0 / d.mass) {}
+    : OwnedStateSystem(std::vector<Real>(static_cast<std::size_t>(d.copies), d.x0),
+                       std::vector<Real>(static_cast<std::size_t>(d.copies), d.v0),
+                       std::vector<Real>(static_cast<std::size_t>(d.copies), 1.0 / d.mass)),
+      desc_(d) {}
 
 Real HarmonicOscillator::omega() const { return std::sqrt(desc_.stiffness / desc_.mass); }
 
@@ -37,10 +37,9 @@ void HarmonicOscillator::forceDifferential(Real, std::span<const Real>, std::spa
 }
 
 KeplerOrbit::KeplerOrbit(const OrbitDesc& d)
-    : desc_(d),
-      q_{d.position.x, d.position.y, d.position.z},
-      v_{d.velocity.x, d.velocity.y, d.velocity.z},
-      w_(3, 1.0 / d.planetMass) {}
+    : OwnedStateSystem({d.position.x, d.position.y, d.position.z}, {d.velocity.x, d.velocity.y, d.velocity.z},
+                       std::vector<Real>(3, 1.0 / d.planetMass)),
+      desc_(d) {}
 
 Real KeplerOrbit::energy() const {
   return 0.5 * desc_.planetMass * glm::dot(velocity(), velocity()) - desc_.gm * desc_.planetMass / glm::length(position());

@@ -22,7 +22,7 @@ struct OscillatorDesc {
   int copies = 1;        ///< independent identical coordinates (benchmarks use many)
 };
 
-class HarmonicOscillator final : public SecondOrderSystem {
+class HarmonicOscillator final : public OwnedStateSystem {
  public:
   explicit HarmonicOscillator(const OscillatorDesc& desc = {});
 
@@ -34,19 +34,12 @@ class HarmonicOscillator final : public SecondOrderSystem {
   /// Energy of coordinate i [J].
   Real energy(std::size_t i = 0) const;
 
-  std::size_t dofCount() const override { return q_.size(); }
-  std::span<Real> positions() override { return q_; }
-  std::span<const Real> positions() const override { return q_; }
-  std::span<Real> velocities() override { return v_; }
-  std::span<const Real> velocities() const override { return v_; }
-  std::span<const Real> inverseMasses() const override { return w_; }
   void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
   void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
                          std::span<const Real> dv, std::span<Real> out) const override;
 
  private:
   OscillatorDesc desc_;
-  std::vector<Real> q_, v_, w_;
 };
 
 struct OrbitDesc {
@@ -56,7 +49,7 @@ struct OrbitDesc {
   Vec3 velocity{0.0, 0.0, -1.2}; ///< [m/s] initial (1.0 would be circular; 1.2 gives e ≈ 0.44)
 };
 
-class KeplerOrbit final : public SecondOrderSystem {
+class KeplerOrbit final : public OwnedStateSystem {
  public:
   explicit KeplerOrbit(const OrbitDesc& desc = {});
   const OrbitDesc& desc() const { return desc_; }
@@ -67,17 +60,10 @@ class KeplerOrbit final : public SecondOrderSystem {
   /// Period from Kepler's third law, T = 2π √(a³/GM), a from the energy [s].
   Real period() const;
 
-  std::size_t dofCount() const override { return 3; }
-  std::span<Real> positions() override { return q_; }
-  std::span<const Real> positions() const override { return q_; }
-  std::span<Real> velocities() override { return v_; }
-  std::span<const Real> velocities() const override { return v_; }
-  std::span<const Real> inverseMasses() const override { return w_; }
   void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
 
  private:
   OrbitDesc desc_;
-  std::vector<Real> q_, v_, w_;
 };
 
 }  // namespace pba::ode

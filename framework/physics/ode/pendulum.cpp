@@ -1,6 +1,7 @@
 #include "physics/ode/pendulum.h"
 
 #include <cmath>
+#include <utility>
 
 #include "physics/core/validate.h"
 
@@ -44,7 +45,7 @@ Real pendulumEnergy(const PendulumDesc& d, const PendulumState& s) {
 }
 
 PendulumSystem::PendulumSystem(const PendulumDesc& desc, PivotAcceleration pivotAcceleration)
-    : pivotAcceleration_(std::move(pivotAcceleration)) {
+    : OwnedStateSystem({0.0}, {0.0}, {1.0}), pivotAcceleration_(std::move(pivotAcceleration)) {
   setDesc(desc);
 }
 

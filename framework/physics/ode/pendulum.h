@@ -19,7 +19,6 @@
 // The pendulum scene uses the first for symplectic-euler (its default, as asst4 prescribes) and the
 // second for every other integrator.
 #include <functional>
-#include <vector>
 
 #include "physics/core/result.h"
 #include "physics/core/types.h"
@@ -55,7 +54,7 @@ Real pendulumEnergy(const PendulumDesc& d, const PendulumState& s);
 
 /// The pendulum joint for any ode::Integrator (one coordinate): force = I θ̈(θ, a_p(t)) − a I ω [N·m],
 /// inverse mass 1/I. The pivot's acceleration is a function of the system's time.
-class PendulumSystem final : public SecondOrderSystem {
+class PendulumSystem final : public OwnedStateSystem {
  public:
   using PivotAcceleration = std::function<Vec3(Real t)>;  ///< [m/s²] at time t [s]
   explicit PendulumSystem(const PendulumDesc& desc = {}, PivotAcceleration pivotAcceleration = {});
@@ -67,18 +66,11 @@ class PendulumSystem final : public SecondOrderSystem {
   PendulumState pendulumState() const { return {q_[0], v_[0]}; }
   void setPendulumState(const PendulumState& s);
 
-  std::size_t dofCount() const override { return 1; }
-  std::span<Real> positions() override { return q_; }
-  std::span<const Real> positions() const override { return q_; }
-  std::span<Real> velocities() override { return v_; }
-  std::span<const Real> velocities() const override { return v_; }
-  std::span<const Real> inverseMasses() const override { return w_; }
   void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
 
  private:
   PendulumDesc desc_;
   PivotAcceleration pivotAcceleration_;
-  std::vector<Real> q_{0.0}, v_{0.0}, w_{1.0};
 };
 
 }  // namespace pba::ode
