@@ -2,6 +2,7 @@
 // ball joints (character_rig.h), with hands and feet reaching for moving goals. The default is the
 // project's own humanoid, resources/models/humanoid.bvh (made by tools/make_humanoid_bvh.py):
 //   pba-ik --skeleton /usr/share/assimp/models/BVH/01_01.bvh --effectors lHand,rHand
+#include <algorithm>
 #include <cmath>
 
 #include <imgui.h>
@@ -62,7 +63,9 @@ class CharacterScene final : public IkScene {
   nlohmann::json metrics() const override {
     nlohmann::json m = IkScene::metrics();
     m["joints"] = rig_.skeleton.jointCount();
-    m["meshes"] = skin_.model ? poseSkin(skin_, forwardKinematics(rig_.skeleton, pose_)).size() : 0;
+    m["meshes"] = skin_.model ? std::count_if(skin_.model->meshes.begin(), skin_.model->meshes.end(),
+                                              [](const graphics::ModelMesh& mesh) { return !mesh.placeholder; })
+                              : 0;
     m["effectors"] = rig_.effectors.size();
     return m;
   }
