@@ -119,9 +119,8 @@ inline void drawParticles(DebugDraw& d, const particles::Particles& p, Real radi
 inline std::optional<app::PickHit> pickParticle(const app::Ray& ray, const particles::Particles& p, Real radius) {
   std::optional<app::PickHit> best;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (const std::optional<Real> t = intersectRaySphere(ray, p.position[i], radius)) {
-      if (!best || *t < best->distance) best = app::PickHit{static_cast<int>(i), *t, pointAt(ray, *t)};
-    }
+    const std::optional<app::PickHit> hit = app::pickSphere(ray, p.position[i], radius, static_cast<int>(i));
+    if (hit && (!best || hit->distance < best->distance)) best = hit;
   }
   return best;
 }
