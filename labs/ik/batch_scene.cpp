@@ -14,7 +14,7 @@
 #include "character_rig.h"
 #include "ik_scene.h"
 
-PBA_REGISTER_LAB_FLAG("solver", "solver", "IK method: analytic|ccd|fabrik|jt|pinv|dls|sdls", "batch");
+PBA_REGISTER_LAB_FLAG("solver", "solver", "IK method: analytic|ccd|fabrik|jt|pinv|dls|sdls|gradient|lbfgs", "batch");
 PBA_REGISTER_LAB_FLAG("links", "links", "number of links of the batch chain", "batch");
 PBA_REGISTER_LAB_FLAG("joint", "joint", "joint type of the batch chain: hinge|ball", "batch");
 // --targets means batch mode whatever else is given (priority 2 beats --skeleton's character scene).
@@ -39,7 +39,7 @@ class BatchScene final : public app::Scene {
   BatchScene() {
     options_.solver = SolverKind::Ccd;
     options_.maxIterations = 1000;
-    params_.choiceEnum("solver", &options_.solver, {"analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls"}, "IK method.").needsReset();
+    params_.choiceEnum("solver", &options_.solver, solverNames(), "IK method.").needsReset();
     params_.integer("links", &desc_.links, 1, 10000, "", "Links of the chain.").needsReset();
     params_.choiceEnum("joint", &joint_, {"hinge", "ball"}, "Joint type of every link.").needsReset();
     params_.integer("targets", &targets_, 1, 1000000, "", "Number of solves.").needsReset();

@@ -37,6 +37,10 @@ const char* methodCaption(SolverKind kind) {
                                                 "(orange) are damped, the rest behave like the pseudo-inverse.";
     case SolverKind::SelectivelyDamped: return "Selectively damped least squares: each singular direction gets its own "
                                                "clamp on the joint change it may cause (Buss & Kim 2005).";
+    case SolverKind::GradientDescent: return "Gradient descent: the direction Jᵀr, like the transpose; along each singular "
+                                             "direction the gain is σ times the step length, chosen by the line search.";
+    case SolverKind::Lbfgs: return "L-BFGS: the gradient Jᵀr bent by an inverse-Hessian estimate built from the last "
+                                   "steps, so directions with small σ catch up (a quasi-Newton method).";
     default: return "";
   }
 }
@@ -139,7 +143,7 @@ void singularValues(const JacobianView& v, const SolveOptions& o) {
 
 bool usesJacobian(SolverKind kind) {
   return kind == SolverKind::JacobianTranspose || kind == SolverKind::PseudoInverse || kind == SolverKind::DampedLeastSquares ||
-         kind == SolverKind::SelectivelyDamped;
+         kind == SolverKind::SelectivelyDamped || kind == SolverKind::GradientDescent || kind == SolverKind::Lbfgs;
 }
 
 JacobianView computeJacobianView(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& options) {

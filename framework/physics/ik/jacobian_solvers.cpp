@@ -22,6 +22,7 @@
 #include "physics/exercises/not_implemented.h"
 #include "physics/ik/exercises.h"
 #include "physics/ik/jacobian.h"
+#include "physics/ik/least_squares.h"
 #include "physics/ik/solver_internal.h"
 
 namespace pba::ik {
@@ -55,46 +56,17 @@ constexpr Real kSdlsGammaMax = kPi / 4.0;  // [rad] Buss & Kim 2005, γ_max
 constexpr Real kArmijo = 1e-4;             // sufficient-decrease constant of the JT line search
 constexpr int kMaxHalvings = 30;
 
-Vec3 clampLength(const Vec3& v, Real maxLength) {
-  const Real l = glm::length(v);
-  return l > maxLength ? v * (maxLength / l) : v;
-}
-
 class JacobianMethod final : public Method {
  public:
   explicit JacobianMethod(SolverKind kind) : kind_(kind) {}
 
   void iterate(Context& c) override {
-    const Skeleton& s = c.skeleton;
-    layout_ = planJacobian(s, c.pose, c.effectors, c.frames, c.orientationScale);
-    Matrix J = jacobian(s, c.pose, c.effectors, c.frames, layout_, c.orientationScale);
-    const int m = J.rows, n = J.cols;
-    std::vector<Real> full(static_cast<size_t>(m)), clamped(static_cast<size_t>(m));
-    for (size_t k = 0; k < c.effectors.size(); ++k) {
-      const Effector& e = c.effectors[k];
-      const int row = layout_.rowOfEffector[k];
-      const Vec3 dp = e.targetPosition - effectorPosition(e, c.frames);
-      const Vec3 cp = clampLength(dp, c.maxErrorStep);
-      for (int i = 0; i < 3; ++i) {
-        full[static_cast<size_t>(row + i)] = e.weight * dp[i];
-        clamped[static_cast<size_t>(row + i)] = e.weight * cp[i];
-      }
-      if (e.kind == EffectorKind::PositionOrientation) {
-        const Vec3 w = c.orientationScale * orientationError(e, c.frames);
-        const Vec3 cw = clampLength(w, c.maxErrorStep);
-        for (int i = 0; i < 3; ++i) {
-          full[static_cast<size_t>(row + 3 + i)] = e.weight * w[i];
-          clamped[static_cast<size_t>(row + 3 + i)] = e.weight * cw[i];
-        }
-      }
-      for (int r = row; r < row + (e.kind == EffectorKind::PositionOrientation ? 6 : 3); ++r)
-        for (int col = 0; col < n; ++col) J(r, col) *= e.weight;
-    }
-    weights_.assign(static_cast<size_t>(n), 1.0);
-    for (int i = 0; i < s.dofCount(); ++i) weights_[static_cast<size_t>(i)] = s.dofWeight(i);
-    for (int r = 0; r < m; ++r)
-      for (int col = 0; col < n; ++col) J(r, col) *= weights_[static_cast<size_t>(col)];
-
+    LeastSquaresSystem sys = leastSquaresSystem(c);
+    layout_ = sys.layout;
+    weights_ = sys.dofWeights;
+    Matrix& J = sys.J;
+    const std::vector<Real>& full = sys.residual;
+    const std::vector<Real>& clamped = sys.clamped;
     std::vector<Real> delta = step(c, J, full, clamped);
     if (c.options.enforceLimits && c.options.limitMode == JacobianLimitMode::ZeroColumns && zeroBlockedColumns(c, J, delta))
       delta = step(c, J, full, clamped);
@@ -182,19 +154,6 @@ class JacobianMethod final : public Method {
     return any;
   }
 
-  static Real objective(const Context& c, const std::vector<Frame>& frames) {
-    Real f = 0.0;
-    for (const Effector& e : c.effectors) {
-      const Vec3 d = e.targetPosition - effectorPosition(e, frames);
-      f += e.weight * e.weight * glm::dot(d, d);
-      if (e.kind == EffectorKind::PositionOrientation) {
-        const Vec3 w = c.orientationScale * orientationError(e, frames);
-        f += e.weight * e.weight * glm::dot(w, w);
-      }
-    }
-    return 0.5 * f;
-  }
-
   void jacobianTransposeStep(Context& c, const Matrix& J, const std::vector<Real>& full, const std::vector<Real>& direction) {
     // |J̃ᵀ r|² is the directional derivative's magnitude; Buss's α uses J̃ J̃ᵀ r.
     std::vector<Real> g = multiplyTransposed(J, full);
@@ -217,12 +176,7 @@ class JacobianMethod final : public Method {
     std::vector<Real> trial(direction.size());
     for (int h = 0; h < kMaxHalvings; ++h, alpha *= 0.5) {
       for (size_t i = 0; i < trial.size(); ++i) trial[i] = alpha * direction[i];
-      c.pose = start;
-      applyStep(c.skeleton, c.pose, c.frames, layout_, trial);
-      if (c.options.enforceLimits)
-        for (int j = 0; j < c.skeleton.jointCount(); ++j) clampJointToLimits(c.skeleton, c.pose, j);
-      forwardKinematics(c.skeleton, c.pose, scratch_);
-      const Real f = objective(c, scratch_);
+      const Real f = trialObjective(c, start, c.frames, layout_, trial, scratch_);
       if (armijoSlope > 0.0 ? f <= f0 - alpha * armijoSlope : f < f0) return;
     }
     c.pose = start;  // no acceptable step: the driver sees no progress and reports a stall

@@ -14,12 +14,17 @@
 namespace pba::ik {
 
 namespace {
-constexpr const char* kNames[kSolverKindCount] = {"analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls"};
+constexpr const char* kNames[kSolverKindCount] = {"analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls", "gradient", "lbfgs"};
 constexpr const char* kLongNames[kSolverKindCount] = {"Analytic",          "Cyclic coordinate descent",
                                                       "FABRIK",            "Jacobian transpose",
                                                       "Pseudo-inverse (SVD)", "Damped least squares",
-                                                      "Selectively damped least squares"};
+                                                      "Selectively damped least squares", "Gradient descent",
+                                                      "L-BFGS (quasi-Newton)"};
+constexpr const char* kLineSearchNames[kLineSearchCount] = {"fixed", "backtracking", "golden"};
 }  // namespace
+
+std::vector<std::string> solverNames() { return {std::begin(kNames), std::end(kNames)}; }
+const char* lineSearchName(LineSearch s) { return kLineSearchNames[static_cast<int>(s)]; }
 
 const char* solverName(SolverKind k) { return kNames[static_cast<int>(k)]; }
 const char* solverLongName(SolverKind k) { return kLongNames[static_cast<int>(k)]; }
@@ -153,6 +158,8 @@ Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Eff
   if (!(o.damping >= 0.0) || !(o.singularCutoff >= 0.0) || !(o.maxJointStep > 0.0) || !(o.maxErrorStep >= 0.0) ||
       !(o.orientationScale >= 0.0) || !(o.maxSeconds >= 0.0))
     return Error{"options: damping, cut-off, step clamps, scale and time cap must be >= 0 (step clamp > 0)"};
+  if (!(o.gradientStep > 0.0) || !isFinite(o.gradientStep)) return Error{"options.gradientStep: must be > 0"};
+  if (o.lbfgsMemory < 1) return Error{"options.lbfgsMemory: must be >= 1"};
   return Status::success();
 }
 
@@ -161,6 +168,8 @@ std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string
     case SolverKind::Analytic: return detail::makeAnalytic(c, why);
     case SolverKind::Ccd: return detail::makeCcd();
     case SolverKind::Fabrik: return detail::makeFabrik();
+    case SolverKind::GradientDescent:
+    case SolverKind::Lbfgs: return detail::makeDescentMethod(c.options.solver);
     default: return detail::makeJacobianMethod(c.options.solver);
   }
 }

@@ -19,11 +19,24 @@ enum class SolverKind {
   PseudoInverse,       ///< Δθ = J⁺ Δe, J⁺ from the SVD with a singular-value cut-off (Workbook §2.5)
   DampedLeastSquares,  ///< Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe
   SelectivelyDamped,   ///< Buss & Kim 2005: per-singular-vector damping
+  GradientDescent,     ///< CMU asst4: descent on ½|g − e|², step by SolveOptions::lineSearch, projected on the limits
+  Lbfgs,               ///< quasi-Newton L-BFGS (CMU asst4 extension; Nocedal & Wright Alg. 7.4), projected
 };
-inline constexpr int kSolverKindCount = 7;
-const char* solverName(SolverKind kind);          ///< "analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls"
+inline constexpr int kSolverKindCount = 9;
+const char* solverName(SolverKind kind);          ///< "analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls", "gradient", "lbfgs"
 const char* solverLongName(SolverKind kind);      ///< "Cyclic coordinate descent", …
 bool solverFromName(const std::string& name, SolverKind* kind);
+/// Every solver's short name, in SolverKind order (for menus and command-line choices).
+std::vector<std::string> solverNames();
+
+/// Step-length rule of the gradient-descent solver (CMU asst4 and its extensions).
+enum class LineSearch {
+  Fixed,          ///< α = SolveOptions::gradientStep every step (asst4's plain method)
+  Backtracking,   ///< halve α from the quadratic model's minimiser until Armijo's sufficient decrease holds
+  GoldenSection,  ///< minimise f along the direction by golden-section search (an exact line search)
+};
+inline constexpr int kLineSearchCount = 3;
+const char* lineSearchName(LineSearch search);  ///< "fixed", "backtracking", "golden"
 
 enum class SolveStatus {
   Success,       ///< every effector within tolerance
@@ -59,6 +72,10 @@ struct SolveOptions {
   bool usePole = false;            ///< analytic two-bone: bend toward polePoint (else keep the current bend plane)
   Vec3 polePoint{0.0};            ///< [m] world point the elbow should point toward (the "pole target")
   bool recordHistory = false;     ///< keep the residual and effector position of every iteration
+  LineSearch lineSearch = LineSearch::GoldenSection;  ///< gradient descent's step length
+  Real gradientStep = 0.2;        ///< [rad²/m²] α of LineSearch::Fixed: Δθ = −α ∇f, f in m²; stable below
+                                  ///< 2/λ_max(JᵀJ) (≈ 0.5 for a 1 m, 10-link chain); typical 0.05–0.5
+  int lbfgsMemory = 7;            ///< pairs (s, y) L-BFGS remembers; typical 5–10
 };
 
 struct SolveResult {

@@ -83,6 +83,8 @@ class Method {
 std::unique_ptr<Method> makeCcd();
 std::unique_ptr<Method> makeFabrik();
 std::unique_ptr<Method> makeJacobianMethod(SolverKind kind);
+/// Gradient descent or L-BFGS (descent_solvers.cpp).
+std::unique_ptr<Method> makeDescentMethod(SolverKind kind);
 /// nullptr with *why set when the skeleton/effectors are not a single joint or a two-bone limb.
 std::unique_ptr<Method> makeAnalytic(const Context& c, std::string* why);
 

@@ -1,0 +1,84 @@
+// The weighted least-squares problem shared by the Jacobian and descent methods (least_squares.h).
+#include "physics/ik/least_squares.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/ik/exercises.h"
+
+namespace pba::ik::detail {
+
+namespace {
+Vec3 clampLength(const Vec3& v, Real maxLength) {
+  const Real l = glm::length(v);
+  return l > maxLength ? v * (maxLength / l) : v;
+}
+}  // namespace
+
+LeastSquaresSystem leastSquaresSystem(const Context& c) {
+  const Skeleton& s = c.skeleton;
+  LeastSquaresSystem sys;
+  sys.layout = planJacobian(s, c.pose, c.effectors, c.frames, c.orientationScale);
+  sys.J = jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale);
+  Matrix& J = sys.J;
+  const int m = J.rows, n = J.cols;
+  sys.residual.assign(static_cast<size_t>(m), 0.0);
+  sys.clamped.assign(static_cast<size_t>(m), 0.0);
+  for (size_t k = 0; k < c.effectors.size(); ++k) {
+    const Effector& e = c.effectors[k];
+    const int row = sys.layout.rowOfEffector[k];
+    const Vec3 dp = e.targetPosition - effectorPosition(e, c.frames);
+    const Vec3 cp = clampLength(dp, c.maxErrorStep);
+    for (int i = 0; i < 3; ++i) {
+      sys.residual[static_cast<size_t>(row + i)] = e.weight * dp[i];
+      sys.clamped[static_cast<size_t>(row + i)] = e.weight * cp[i];
+    }
+    const bool oriented = e.kind == EffectorKind::PositionOrientation;
+    if (oriented) {
+      const Vec3 w = c.orientationScale * orientationError(e, c.frames);
+      const Vec3 cw = clampLength(w, c.maxErrorStep);
+      for (int i = 0; i < 3; ++i) {
+        sys.residual[static_cast<size_t>(row + 3 + i)] = e.weight * w[i];
+        sys.clamped[static_cast<size_t>(row + 3 + i)] = e.weight * cw[i];
+      }
+    }
+    for (int r = row; r < row + (oriented ? 6 : 3); ++r)
+      for (int col = 0; col < n; ++col) J(r, col) *= e.weight;
+  }
+  sys.dofWeights.assign(static_cast<size_t>(n), 1.0);
+  for (int i = 0; i < s.dofCount(); ++i) sys.dofWeights[static_cast<size_t>(i)] = s.dofWeight(i);
+  for (int r = 0; r < m; ++r)
+    for (int col = 0; col < n; ++col) J(r, col) *= sys.dofWeights[static_cast<size_t>(col)];
+  return sys;
+}
+
+Real objective(const Context& c, const std::vector<Frame>& frames) {
+  Real f = 0.0;
+  for (const Effector& e : c.effectors) {
+    const Vec3 d = e.targetPosition - effectorPosition(e, frames);
+    f += e.weight * e.weight * glm::dot(d, d);
+    if (e.kind == EffectorKind::PositionOrientation) {
+      const Vec3 w = c.orientationScale * orientationError(e, frames);
+      f += e.weight * e.weight * glm::dot(w, w);
+    }
+  }
+  return 0.5 * f;
+}
+
+Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& frames, const JacobianLayout& layout,
+                    const std::vector<Real>& delta, std::vector<Frame>& scratch) {
+  c.pose = start;
+  applyStep(c.skeleton, c.pose, frames, layout, delta);
+  if (c.options.enforceLimits)
+    for (int j = 0; j < c.skeleton.jointCount(); ++j) clampJointToLimits(c.skeleton, c.pose, j);
+  forwardKinematics(c.skeleton, c.pose, scratch);
+  return objective(c, scratch);
+}
+
+Real maxAbs(const std::vector<Real>& v) {
+  Real largest = 0.0;
+  for (Real x : v) largest = std::max(largest, std::abs(x));
+  return largest;
+}
+
+}  // namespace pba::ik::detail

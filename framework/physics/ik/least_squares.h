@@ -1,0 +1,40 @@
+#pragma once
+// The weighted least-squares problem behind every Jacobian-based IK method (internal).
+//
+//   f(θ) = ½ Σₖ wₖ² ( |gₖ − eₖ(θ)|² + s² |ωₖ(θ)|² )            [m²]
+//
+// gₖ, eₖ: goal and effector positions; ωₖ: orientation error of a 6-DOF effector (IK slides, "6-DOF
+// end effector"), s the orientation scale [m/rad]; wₖ the effector weight. The DOF weights W
+// (IK slides, "Units": a per-DOF stiffness) act as a change of variables θ = θ₀ + W y, so the
+// methods work with the scaled Jacobian J̃ = Wₑ J W and the gradient ∇_y f = −J̃ᵀ r, r = Wₑ (g − e).
+#include <vector>
+
+#include "physics/ik/jacobian.h"
+#include "physics/ik/solver_internal.h"
+
+namespace pba::ik::detail {
+
+struct LeastSquaresSystem {
+  JacobianLayout layout;
+  Matrix J;                      ///< J̃ = Wₑ J W: effector weights on the rows, DOF weights on the columns
+  std::vector<Real> residual;    ///< r = Wₑ (g − e) (orientation rows s·ω)
+  std::vector<Real> clamped;     ///< r with each effector's block clamped to maxErrorStep (Buss's D_max)
+  std::vector<Real> dofWeights;  ///< diagonal of W (1 for free-joint columns)
+};
+
+/// The system at the current pose (c.frames must be current).
+LeastSquaresSystem leastSquaresSystem(const Context& c);
+
+/// f at `frames` (see above).
+Real objective(const Context& c, const std::vector<Frame>& frames);
+
+/// Sets c.pose = start + Δθ (free joints turn about their column's axis in `layout`), projected onto
+/// the box of the joint limits when they are enforced, and returns f there. `frames` are those of
+/// `start`; `scratch` receives the trial pose's frames. c.frames is left alone.
+Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& frames, const JacobianLayout& layout,
+                    const std::vector<Real>& delta, std::vector<Frame>& scratch);
+
+/// Largest |entry| of v.
+Real maxAbs(const std::vector<Real>& v);
+
+}  // namespace pba::ik::detail
