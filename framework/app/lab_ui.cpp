@@ -52,6 +52,7 @@ void parameterWidgets(LabSession& session) {
   Scene& scene = session.runner().scene();
   bool resetNeeded = false;
   for (Param& p : scene.params().all()) {
+    if (p.shown && !p.shown()) continue;
     ImGui::PushID(p.name.c_str());
     const std::string label = p.unit.empty() ? p.name : p.name + " [" + p.unit + "]";
     if (p.kind == ParamKind::Text) {

@@ -78,6 +78,11 @@ Params& Params::logarithmic() {
   return *this;
 }
 
+Params& Params::shownWhen(std::function<bool()> predicate) {
+  if (!params_.empty()) params_.back().shown = std::move(predicate);
+  return *this;
+}
+
 const Param* Params::find(const std::string& name) const {
   for (const Param& p : params_)
     if (p.name == name) return &p;

@@ -31,6 +31,9 @@ struct Param {
   std::function<void(const std::string&)> setText;
   /// For Real parameters whose UI shows degrees: stored in radians, shown in degrees.
   bool degrees = false;
+  /// When set and false, the panel hides the widget (a setting of another mode, e.g. the line search
+  /// of a solver that is not selected). Scene files and the command line still read and write it.
+  std::function<bool()> shown;
 };
 
 class Params {
@@ -55,6 +58,8 @@ class Params {
   Params& needsReset();
   /// Marks the most recently added Real parameter for a logarithmic slider.
   Params& logarithmic();
+  /// Shows the most recently added parameter in the panel only while `predicate` holds.
+  Params& shownWhen(std::function<bool()> predicate);
 
   const std::vector<Param>& all() const { return params_; }
   std::vector<Param>& all() { return params_; }

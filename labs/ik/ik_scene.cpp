@@ -26,14 +26,17 @@ void IkScene::declareSolverParams(bool withPath) {
                   "Iteration cap per solve (CCD/FABRIK: passes; Jacobian methods: steps). Typical 100.");
   params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success when the effector is this close to its goal. Typical 1e-4 m.")
       .logarithmic();
-  params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of damped least squares. Typical 0.05 m.");
+  params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of damped least squares. Typical 0.05 m.")
+      .shownWhen([this] { return options_.solver == SolverKind::DampedLeastSquares; });
   params_.choiceEnum("line_search", &options_.lineSearch, {"fixed", "backtracking", "golden"},
                      "Step length of gradient descent: fixed (asst4: gradient_step every step), backtracking "
-                     "(Armijo's sufficient decrease) or golden (golden-section search, an exact line search).");
+                     "(Armijo's sufficient decrease) or golden (golden-section search, an exact line search).")
+      .shownWhen([this] { return options_.solver == SolverKind::GradientDescent; });
   params_.real("gradient_step", &options_.gradientStep, 1e-4, 10.0, "rad²/m²",
                "Fixed step alpha of gradient descent: dtheta = -alpha grad f. Too large oscillates (stable below "
-               "2 / largest eigenvalue of JᵀJ); too small crawls. Typical 0.2.")
-      .logarithmic();
+               "2 / largest eigenvalue of J^T J); too small crawls. Typical 0.2.")
+      .logarithmic()
+      .shownWhen([this] { return options_.solver == SolverKind::GradientDescent && options_.lineSearch == LineSearch::Fixed; });
   params_.flag("from_rest", &options_.fromRest, "Repeatability: start every solve from the rest pose instead of the last pose.");
   params_.flag("limits", &options_.enforceLimits, "Enforce the joint limits (clamping; Jacobian methods also zero blocked columns).");
   if (withPath) {

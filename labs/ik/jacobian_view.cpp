@@ -37,9 +37,9 @@ const char* methodCaption(SolverKind kind) {
                                                 "(orange) are damped, the rest behave like the pseudo-inverse.";
     case SolverKind::SelectivelyDamped: return "Selectively damped least squares: each singular direction gets its own "
                                                "clamp on the joint change it may cause (Buss & Kim 2005).";
-    case SolverKind::GradientDescent: return "Gradient descent: the direction Jᵀr, like the transpose; along each singular "
+    case SolverKind::GradientDescent: return "Gradient descent: the direction J^T r, like the transpose; along each singular "
                                              "direction the gain is σ times the step length, chosen by the line search.";
-    case SolverKind::Lbfgs: return "L-BFGS: the gradient Jᵀr bent by an inverse-Hessian estimate built from the last "
+    case SolverKind::Lbfgs: return "L-BFGS: the gradient J^T r bent by an inverse-Hessian estimate built from the last "
                                    "steps, so directions with small σ catch up (a quasi-Newton method).";
     default: return "";
   }

@@ -64,5 +64,24 @@ TEST(Params, ToJsonThenSetFromJsonRestoresEveryValueExactly) {
   EXPECT_EQ(b.params().toJson(), saved) << "a second save must be identical to the first";
 }
 
+// A parameter shown only in some mode keeps working in scene files and on the command line.
+TEST(Params, ShownWhenHidesOnlyTheWidgetNotTheValue) {
+  Params params;
+  bool advanced = false;
+  Real step = 0.2;
+  params.flag("advanced", &advanced, "Show the step.");
+  params.real("step", &step, 0.01, 1.0, "s", "A step.").shownWhen([&advanced] { return advanced; });
+  const Param* p = params.find("step");
+  ASSERT_NE(p, nullptr);
+  ASSERT_TRUE(static_cast<bool>(p->shown));
+  EXPECT_FALSE(p->shown());
+  advanced = true;
+  EXPECT_TRUE(p->shown());
+  EXPECT_FALSE(static_cast<bool>(params.find("advanced")->shown)) << "parameters without a predicate are always shown";
+  EXPECT_TRUE(params.setFromText("step", "0.5").ok());
+  EXPECT_EQ(step, 0.5);
+  EXPECT_EQ(params.toJson().at("step"), 0.5);
+}
+
 }  // namespace
 }  // namespace pba::app
