@@ -58,6 +58,8 @@ PBA_IK_BENCH(BM_JacobianTranspose_Ball, SolverKind::JacobianTranspose, JointType
 PBA_IK_BENCH(BM_PseudoInverse_Ball, SolverKind::PseudoInverse, JointType::Ball);
 PBA_IK_BENCH(BM_Dls_Ball, SolverKind::DampedLeastSquares, JointType::Ball);
 PBA_IK_BENCH(BM_Sdls_Ball, SolverKind::SelectivelyDamped, JointType::Ball);
+PBA_IK_BENCH(BM_Gradient_Ball, SolverKind::GradientDescent, JointType::Ball);  // golden-section line search
+PBA_IK_BENCH(BM_Lbfgs_Ball, SolverKind::Lbfgs, JointType::Ball);
 PBA_IK_BENCH(BM_Ccd_Hinge, SolverKind::Ccd, JointType::Hinge);
 PBA_IK_BENCH(BM_Fabrik_Hinge, SolverKind::Fabrik, JointType::Hinge);
 PBA_IK_BENCH(BM_Dls_Hinge, SolverKind::DampedLeastSquares, JointType::Hinge);
