@@ -37,8 +37,27 @@ void IkScene::declareSolverParams(bool withPath) {
                "2 / largest eigenvalue of J^T J); too small crawls. Typical 0.2.")
       .logarithmic()
       .shownWhen([this] { return options_.solver == SolverKind::GradientDescent && options_.lineSearch == LineSearch::Fixed; });
+  params_.real("cutoff", &options_.singularCutoff, 1e-6, 0.5, "",
+               "Pseudo-inverse: singular values below cutoff x sigma_max are dropped (near-singular directions "
+               "would give huge steps). Typical 1e-3.")
+      .logarithmic()
+      .shownWhen([this] { return options_.solver == SolverKind::PseudoInverse; });
+  params_.integer("stall_iterations", &options_.stallIterations, 0, 1000, "",
+                  "Stop as 'stalled' when the residual has not dropped by 0.1 % over this many iterations (a local "
+                  "minimum, IK slides). 0 = never. Typical 20.");
+  params_.real("time_cap", &options_.maxSeconds, 0.0, 0.1, "s",
+               "Stop a solve after this much wall time (status time_cap). 0 = no cap. Results then depend on the "
+               "machine's speed.");
   params_.flag("from_rest", &options_.fromRest, "Repeatability: start every solve from the rest pose instead of the last pose.");
   params_.flag("limits", &options_.enforceLimits, "Enforce the joint limits (clamping; Jacobian methods also zero blocked columns).");
+  params_.choiceEnum("limit_mode", &options_.limitMode, {"clamp", "zero_columns"},
+                     "Jacobian methods at a limit: clamp the pose after each step, or also zero the columns of DOFs "
+                     "pushed against their limit (one-sided derivative, IK slides).")
+      .shownWhen([this] {
+        const SolverKind k = options_.solver;
+        return options_.enforceLimits && (k == SolverKind::JacobianTranspose || k == SolverKind::PseudoInverse ||
+                                          k == SolverKind::DampedLeastSquares || k == SolverKind::SelectivelyDamped);
+      });
   if (withPath) {
     params_.choiceEnum("path", &path_, {"mouse", "circle", "figure8", "random"},
                        "How the goal moves: dragged with the mouse, or along a scripted path for lectures.");
