@@ -5,6 +5,8 @@
 namespace pba::labs::ik {
 namespace {
 
+const Vec3 kGoalCentre(0.7, 0.9, 0.0);  // [m] from the base: centre of the goal's figure-8
+
 class LimitsScene final : public IkScene {
  public:
   LimitsScene() {
@@ -25,9 +27,14 @@ class LimitsScene final : public IkScene {
     d.links = links_;
     d.limit = limit_;
     d.totalLength = 2.0;
-    return buildIkChain(d).value();
+    Rig rig = buildIkChain(d).value();
+    // The goal circles up and back over the chain (the rest pose points along +x), where reaching
+    // it needs more bend than ±limit per joint allows: joints clamp at their limits (orange bars)
+    // and the chain curls as far as it may.
+    rig.effectors[0].targetPosition = rig.skeleton.joint(0).offset + kGoalCentre;
+    return rig;
   }
-  Real pathRadius() const override { return 0.8; }
+  Real pathRadius() const override { return 0.5; }
 
  private:
   Real limit_ = degToRad(35.0);
