@@ -18,6 +18,13 @@ namespace {
 
 constexpr int kListedJoints = 40;  // joint names listed in an error message before "..."
 constexpr Real kTrunkWeight = 0.1;  // [1] DOF weight of joints above several effectors
+constexpr Real kTrunkLimit = 15.0 * kPi / 180.0;     // [rad] per Euler angle of those trunk joints
+constexpr Real kClavicleLimit = 30.0 * kPi / 180.0;  // [rad] per Euler angle of a clavicle
+
+/// Narrows every DOF of a ball joint to [−limit, limit] (never widens it).
+void clampRange(Joint& joint, Real limit) {
+  for (int k = 0; k < 3; ++k) joint.lo[k] = std::max(joint.lo[k], -limit), joint.hi[k] = std::min(joint.hi[k], limit);
+}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -194,6 +201,9 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
     const std::optional<Vec3> bone = firstBone(*model, rest, i, scale);
     j.type = node.parent >= 0 && bone ? JointType::Ball : JointType::Fixed;
     for (int k = 0; k < 3; ++k) j.lo[k] = -d.limit, j.hi[k] = d.limit;
+    // Clavicles ("LeftShoulder" in BVH, Mixamo and CMU files; "Collar", "Clavicle") barely move.
+    if (const std::string n = bareName(j.name); j.type == JointType::Ball && (contains(n, "shoulder") || contains(n, "clavicle") || contains(n, "collar")))
+      clampRange(j, kClavicleLimit);
     if (j.type == JointType::Ball && limbs[i] != LimbJoint::None) {
       // Flexion axis (world, at rest): elbow bone × forward, knee forward × bone; then in the
       // joint's pre-rotation frame, which at rest is the node's global rotation.
@@ -228,9 +238,15 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
   // Trunk joints shared by several effectors (spine, chest) get a small weight, so the limbs do the
   // reaching and the body stays upright (IK slides, "Units": weights scale the Jacobian columns).
   const std::vector<std::vector<int>> below = effectorsBelowJoints(rig.skeleton, rig.effectors);
-  for (int j = 0; j < rig.skeleton.jointCount(); ++j)
-    if (below[static_cast<size_t>(j)].size() > 1)
-      for (Real& w : rig.skeleton.joint(j).weight) w = kTrunkWeight;
+  // They also bend at most kTrunkLimit per Euler angle: without it, the small steps of a low weight
+  // still add up over the frames of a moving goal, and the spine ends up folded.
+  for (int j = 0; j < rig.skeleton.jointCount(); ++j) {
+    Joint& joint = rig.skeleton.joint(j);
+    if (below[static_cast<size_t>(j)].size() > 1) {
+      for (Real& w : joint.weight) w = kTrunkWeight;
+      if (joint.type == JointType::Ball) clampRange(joint, kTrunkLimit);
+    }
+  }
   if (skin) {
     *skin = CharacterSkin{};
     const bool hasMesh = std::any_of(model->meshes.begin(), model->meshes.end(), [](const graphics::ModelMesh& m) { return !m.placeholder; });

@@ -11,8 +11,9 @@
 // bone × forward (elbow: the forearm swings to the front, in [−5°, 150°]) or forward × bone (knee:
 // the shin swings to the back, same range), where forward is the character's facing direction
 // estimated from its Left*/Right* joints (lateral × up; +z when it has none). The rest (end sites,
-// helper nodes) are Fixed. The
-// trunk joints above several effectors get DOF weight 0.1 (the limbs reach, the body stays upright). The
+// helper nodes) are Fixed. Clavicles ("Shoulder", "Collar", "Clavicle") turn at most ±30°. The
+// trunk joints above several effectors get DOF weight 0.1 and at most ±15° per Euler angle (the limbs
+// reach, the body stays upright). The
 // whole skeleton is scaled so that its rest pose is `height` tall (files come in m, cm or inches)
 // and placed with its lowest joint on the ground and its root above the origin.
 //

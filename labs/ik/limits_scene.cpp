@@ -5,7 +5,7 @@
 namespace pba::labs::ik {
 namespace {
 
-const Vec3 kGoalCentre(0.7, 0.9, 0.0);  // [m] from the base: centre of the goal's figure-8
+const Vec3 kGoalCentre(0.2, 0.5, 0.0);  // [m] from the base: centre of the goal's scripted path
 
 class LimitsScene final : public IkScene {
  public:
@@ -15,7 +15,7 @@ class LimitsScene final : public IkScene {
     declareSolverParams();
     params_.angle("limit", &limit_, 5.0, 180.0, "Every joint may turn at most ±limit from its rest angle.").needsReset();
     params_.integer("links", &links_, 2, 12, "", "Number of hinge links.").needsReset();
-    path_ = TargetPath::Figure8;
+    path_ = TargetPath::Circle;
   }
   std::string description() const override {
     return "Hinges limited to ±limit (orange arcs): the chain clamps at its limits and stops short where the goal leaves the workspace.";
@@ -35,6 +35,12 @@ class LimitsScene final : public IkScene {
     return rig;
   }
   Real pathRadius() const override { return 0.5; }
+  /// In the chain's plane (the hinges turn about z), so only the limits keep the goal out of reach.
+  Vec3 pathOffset(size_t k, Real phase) const override {
+    Vec3 o = IkScene::pathOffset(k, phase);
+    o.z = 0.0;
+    return o;
+  }
 
  private:
   Real limit_ = degToRad(35.0);
