@@ -83,12 +83,12 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     else if (arg == "--frames") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
-      if (!r) return Error{r.error()};
+      if (!r || r.value() > kMaxFrames) return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
       o.frames = r.value();
     } else if (arg == "--seconds") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parsePositive(arg, v);
-      if (!r) return Error{r.error()};
+      if (!r || r.value() > kMaxSeconds) return Error{"--seconds: expected a number in (0, 100000] s, got '" + v + "'"};
       o.seconds = r.value();
     } else if (arg == "--dt") {
       if (!(s = next(v))) return Error{s.error()};
@@ -116,10 +116,10 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       if (!(s = next(v))) return Error{s.error()};
       const auto eq = v.find('=');
       if (eq == std::string::npos || eq == 0) return Error{"--set: expected NAME=VALUE, got '" + v + "'"};
-      o.overrides.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+      o.overrides.push_back({v.substr(0, eq), v.substr(eq + 1), "--set"});
     } else if (const LabFlag* f = arg.rfind("--", 0) == 0 ? findLabFlag(arg.substr(2)) : nullptr) {
       if (!(s = next(v))) return Error{s.error()};
-      o.overrides.emplace_back(f->param, v);
+      o.overrides.push_back({f->param, v, arg});
       if (!f->impliesScene.empty() && (o.impliedScene.empty() || f->priority >= impliedPriority)) {
         o.impliedScene = f->impliesScene;
         impliedPriority = f->priority;
@@ -134,6 +134,12 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
   return o;
 }
 
+std::string overrideError(const ParamOverride& o, const std::string& error) {
+  if (o.option == "--set") return "--set " + error;
+  const std::string prefix = o.param + ": ";
+  return o.option + ": " + (error.rfind(prefix, 0) == 0 ? error.substr(prefix.size()) : error);
+}
+
 std::string usage(const std::string& lab) {
   std::string text =
       "Usage: pba-" + lab + " [options]\n"
@@ -142,7 +148,7 @@ std::string usage(const std::string& lab) {
       "  --headless              no window and no OpenGL: step the scene and exit\n"
       "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
       "                          (default 300 headless, 120 for --screenshot)\n"
-      "  --seconds T             simulated seconds instead of --frames\n"
+      "  --seconds T             simulated seconds instead of --frames (at most 100000)\n"
       "  --dt H                  fixed time step in seconds (default: the scene's)\n"
       "  --substeps N            split each step into N substeps (1-64)\n"
       "  --time-scale S          slow motion or fast forward, 0.1-4\n"
@@ -157,14 +163,15 @@ std::string usage(const std::string& lab) {
     text += "\nLab options:\n";
     for (const LabFlag& f : labFlags()) {
       const std::string option = "--" + f.flag + " VALUE";
-      text += "  " + option + std::string(option.size() < 24 ? 24 - option.size() : 1, ' ') + f.help +
-              " (parameter '" + f.param + "')\n";
+      text += "  " + option + std::string(option.size() < 24 ? 24 - option.size() : 1, ' ') + f.help + " (parameter '" + f.param +
+              "'" + (f.impliesScene.empty() ? std::string() : "; selects scene '" + f.impliesScene + "'") + ")\n";
     }
   }
   text +=
       "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot\n"
-      "      L lecture mode  Tab hide UI  F frame scene.  Mouse: left drag picks, right drag orbits,\n"
-      "      middle or Shift+right drag pans, wheel zooms.\n"
+      "      L lecture mode  Tab hide UI  F frame scene.  Arrows nudge the target in the view plane,\n"
+      "      PageUp/PageDown or Shift+Up/Down away/toward the camera, Ctrl for a fine step.\n"
+      "      Mouse: left drag picks, right drag orbits, middle or Shift+right drag pans, wheel zooms.\n"
       "Exit codes: 0 success, 2 bad arguments or input file, 1 internal failure.\n";
   return text;
 }

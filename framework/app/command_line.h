@@ -15,6 +15,17 @@ namespace pba::app {
 
 inline constexpr int kDefaultHeadlessFrames = 300;    // 5 s of simulated time at 60 frames/s
 inline constexpr int kDefaultScreenshotFrames = 120;  // 2 s: scenes have started moving
+inline constexpr long kMaxFrames = 6'000'000;         // 100,000 s (over a day) of simulated time
+inline constexpr double kMaxSeconds = 100'000.0;      // [s] the same bound for --seconds
+
+/// A scene parameter set on the command line, with the option that set it ("--set" or a lab flag
+/// such as "--links"), so that an error names what the user typed.
+struct ParamOverride {
+  std::string param;   ///< parameter name
+  std::string value;   ///< text value
+  std::string option;  ///< "--set" or "--<flag>"
+  bool operator==(const ParamOverride&) const = default;
+};
 
 struct LabOptions {
   std::string scene;                 ///< scene name or path of a .json scene file; empty = first scene
@@ -30,8 +41,8 @@ struct LabOptions {
   bool lecture = false;
   bool listScenes = false;
   bool help = false;
-  /// Parameter overrides in command line order: (name, text value).
-  std::vector<std::pair<std::string, std::string>> overrides;
+  /// Parameter overrides in command line order.
+  std::vector<ParamOverride> overrides;
   /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.
   std::string impliedScene;
 
@@ -40,9 +51,15 @@ struct LabOptions {
 };
 
 /// Parses argv. Errors name the option ("--frames: expected a whole number >= 1, got 'x'").
+/// --frames is at most kMaxFrames and --seconds at most kMaxSeconds.
 Result<LabOptions> parseCommandLine(int argc, const char* const* argv);
 /// The --help text of lab `lab`.
 std::string usage(const std::string& lab);
+
+/// The error of applying an override, naming the option typed: a lab flag's message replaces the
+/// parameter name by the flag ("--links: must be in [1, 1000], got 0"); --set keeps it ("--set
+/// links: ..."). `error` is Params::setFromText's message ("links: ...").
+std::string overrideError(const ParamOverride& o, const std::string& error);
 
 /// True when `scene` names a file rather than a registered scene.
 bool looksLikeSceneFile(const std::string& scene);

@@ -38,8 +38,13 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
     if (!entry) return Error{"--scene: unknown scene '" + name + "' (see --list-scenes)"};
     scene = entry->create();
   }
-  for (const auto& [param, value] : o.overrides) {
-    if (Status s = scene->params().setFromText(param, value); !s) return Error{"--set " + s.error()};
+  for (const ParamOverride& p : o.overrides) {
+    if (Status s = scene->params().setFromText(p.param, p.value); !s) {
+      // A lab flag meant for another scene: say which scene it belongs with.
+      if (!scene->params().find(p.param) && p.option != "--set")
+        return Error{p.option + ": not a parameter of scene '" + name + "' (see --help for the scene each lab option selects)"};
+      return Error{overrideError(p, s.error())};
+    }
   }
   scene->setSeed(o.seed);
   if (Status s = scene->validate(); !s) return s;

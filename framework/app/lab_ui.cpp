@@ -30,6 +30,9 @@ const char* const kKeys[][2] = {
     {"L", "lecture mode (large fonts, high contrast)"},
     {"Tab", "hide or show the panels"},
     {"F", "frame the scene"},
+    {"Arrow keys", "nudge the target (IK goal) in the view plane"},
+    {"PageUp / PageDown, Shift + Up / Down", "nudge the target away from / toward the camera"},
+    {"Ctrl + nudge key", "fine nudge (one fifth of the step)"},
     {"Left drag", "pick and drag an object"},
     {"Right drag", "orbit the camera"},
     {"Middle drag, Shift + right drag", "pan"},
@@ -57,7 +60,7 @@ void parameterWidgets(LabSession& session) {
     const std::string label = p.unit.empty() ? p.name : p.name + " [" + p.unit + "]";
     if (p.kind == ParamKind::Text) {
       // Applied on Enter, so that a half-typed path is never loaded.
-      char buffer[512];
+      char buffer[2048];  // long enough for a list of every joint name of a character
       std::snprintf(buffer, sizeof buffer, "%s", p.getText().c_str());
       if (ImGui::InputText(label.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
         p.setText(buffer);

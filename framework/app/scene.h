@@ -79,6 +79,11 @@ class Scene {
   virtual std::optional<PickHit> pick(const Ray&) const { return std::nullopt; }
   virtual void drag(int /*handle*/, const Vec3& /*target*/) {}
   virtual void release(int /*handle*/) {}
+  /// Keyboard nudge (arrow keys, PageUp/PageDown; app/target_nudge.h): moves the scene's current
+  /// target (the goal last picked, …) by `delta` [m, world]. False when there is nothing to nudge.
+  virtual bool nudge(const Vec3& /*delta*/) { return false; }
+  /// Length [m] of one nudge; 0 lets the runner choose 2 % of the scene's drawn size.
+  virtual Real nudgeStep() const { return 0.0; }
 
   Params& params() { return params_; }
   const Params& params() const { return params_; }

@@ -5,9 +5,21 @@
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
+#include "app/scene_draw.h"
+#include "app/target_nudge.h"
+
 namespace pba::app {
 namespace {
 Ray toRay(const graphics::Ray& r) { return Ray{Vec3(r.origin), glm::normalize(Vec3(r.direction))}; }
+
+/// Diagonal [m] of what the scene draws (the nudge step's fallback scale).
+Real drawnSize(const Scene& scene) {
+  graphics::DebugRenderer probe;
+  SceneDraw draw(probe);
+  scene.draw(draw);
+  glm::vec3 lo, hi;
+  return probe.bounds(&lo, &hi) ? Real(glm::length(hi - lo)) : 1.0;
+}
 }  // namespace
 
 void WindowInput::install(GLFWwindow* window) {
@@ -17,22 +29,29 @@ void WindowInput::install(GLFWwindow* window) {
 
 void WindowInput::keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods) {
   ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
-  // Only the single-step key repeats while held; a held Space must not toggle pause repeatedly.
-  if (action == GLFW_PRESS || (action == GLFW_REPEAT && key == GLFW_KEY_O)) {
-    if (auto* self = static_cast<WindowInput*>(glfwGetWindowUserPointer(window))) self->pressed_.push_back(key);
+  // Only the single-step and nudge keys repeat while held; a held Space must not toggle pause repeatedly.
+  const bool repeats = key == GLFW_KEY_O || nudgeDirectionForKey(key, mods).has_value();
+  if (action == GLFW_PRESS || (action == GLFW_REPEAT && repeats)) {
+    if (auto* self = static_cast<WindowInput*>(glfwGetWindowUserPointer(window))) self->pressed_.push_back({key, mods});
   }
 }
 
 void WindowInput::update(LabSession& session, UiState& ui, graphics::OrbitCamera& camera, float w, float h) {
-  keys(session, ui);
+  keys(session, ui, camera);
   mouse(session, camera, w, h);
 }
 
-void WindowInput::keys(LabSession& session, UiState& ui) {
-  std::vector<int> keys;
+void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCamera& camera) {
+  std::vector<KeyPress> keys;
   keys.swap(pressed_);
   if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing in a text field
-  for (const int key : keys) {
+  for (const auto [key, mods] : keys) {
+    if (const std::optional<NudgeDirection> d = nudgeDirectionForKey(key, mods)) {
+      Scene& scene = session.runner().scene();
+      if (!nudgeScene(scene, *d, Vec3(camera.right()), Vec3(camera.up()), Vec3(camera.forward()), drawnSize(scene), nudgeIsFine(mods)))
+        session.setMessage("This scene has no target to move with the arrow keys");
+      continue;
+    }
     switch (key) {
       case GLFW_KEY_SPACE:
       case GLFW_KEY_P: session.togglePause(); break;

@@ -23,12 +23,16 @@ class WindowInput {
   bool dragging() const { return handle_.has_value(); }
 
  private:
-  void keys(LabSession& session, UiState& ui);
+  void keys(LabSession& session, UiState& ui, const graphics::OrbitCamera& camera);
   void mouse(LabSession& session, graphics::OrbitCamera& camera, float w, float h);
 
   static void keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods);
 
-  std::vector<int> pressed_;   ///< GLFW key codes pressed since the last frame
+  struct KeyPress {
+    int key = 0;   ///< GLFW key code
+    int mods = 0;  ///< GLFW modifier bits
+  };
+  std::vector<KeyPress> pressed_;  ///< keys pressed since the last frame
   std::optional<int> handle_;  ///< the scene object being dragged
   Vec3 planePoint_{0.0};       ///< the drag plane faces the camera through the picked point
   Vec3 planeNormal_{0.0, 0.0, 1.0};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -17,6 +18,13 @@ namespace {
 
 constexpr int kListedJoints = 40;  // joint names listed in an error message before "..."
 constexpr Real kTrunkWeight = 0.1;  // [1] DOF weight of joints above several effectors
+constexpr Real kTrunkLimit = 15.0 * kPi / 180.0;     // [rad] per Euler angle of those trunk joints
+constexpr Real kClavicleLimit = 30.0 * kPi / 180.0;  // [rad] per Euler angle of a clavicle
+
+/// Narrows every DOF of a ball joint to [−limit, limit] (never widens it).
+void clampRange(Joint& joint, Real limit) {
+  for (int k = 0; k < 3; ++k) joint.lo[k] = std::max(joint.lo[k], -limit), joint.hi[k] = std::min(joint.hi[k], limit);
+}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -70,7 +78,69 @@ std::vector<int> automaticEffectors(const Skeleton& s) {
   return picked;
 }
 
+/// The name without a namespace prefix ("mixamorig:LeftLeg" → "leftleg"), lower-case.
+std::string bareName(const std::string& name) {
+  const size_t colon = name.find_last_of(":|");
+  return lower(colon == std::string::npos ? name : name.substr(colon + 1));
+}
+
+bool contains(const std::string& s, const char* part) { return s.find(part) != std::string::npos; }
+
+/// Model-space vector [file units] from node i to its first child at a distinct position.
+std::optional<Vec3> firstBone(const graphics::Model& m, const std::vector<RestFrame>& rest, size_t i, Real scale) {
+  for (size_t c = i + 1; c < m.nodes.size(); ++c)
+    if (m.nodes[c].parent == static_cast<int>(i) && glm::length(rest[c].position - rest[i].position) * scale > 1e-6)
+      return rest[c].position - rest[i].position;
+  return std::nullopt;
+}
+
+/// Knees and elbows by name; when no name matches, the parents of the topmost "hand" (elbow) and
+/// "foot" (knee) nodes: in BVH, Mixamo and CMU files the joint above the wrist is the elbow.
+std::vector<LimbJoint> limbJoints(const graphics::Model& m) {
+  std::vector<LimbJoint> limbs(m.nodes.size(), LimbJoint::None);
+  bool any = false;
+  for (size_t i = 0; i < m.nodes.size(); ++i) any = (limbs[i] = limbJointFromName(m.nodes[i].name)) != LimbJoint::None || any;
+  if (any) return limbs;
+  for (size_t i = 0; i < m.nodes.size(); ++i) {
+    const int p = m.nodes[i].parent;
+    if (p < 0) continue;
+    const std::string n = bareName(m.nodes[i].name), pn = bareName(m.nodes[static_cast<size_t>(p)].name);
+    if (contains(n, "hand") && !contains(pn, "hand")) limbs[static_cast<size_t>(p)] = LimbJoint::Elbow;
+    if (contains(n, "foot") && !contains(pn, "foot")) limbs[static_cast<size_t>(p)] = LimbJoint::Knee;
+  }
+  return limbs;
+}
+
+/// The direction the character faces (model space, horizontal, unit): lateral × up, where lateral
+/// sums "left…" minus "right…" joint positions of the pairs with matching names; +z without pairs.
+Vec3 facingDirection(const graphics::Model& m, const std::vector<RestFrame>& rest) {
+  Vec3 lateral(0.0);
+  for (size_t i = 0; i < m.nodes.size(); ++i) {
+    const std::string n = bareName(m.nodes[i].name);
+    const size_t at = n.find("left");
+    if (at == std::string::npos) continue;
+    const std::string mirrored = n.substr(0, at) + "right" + n.substr(at + 4);
+    for (size_t k = 0; k < m.nodes.size(); ++k)
+      if (bareName(m.nodes[k].name) == mirrored) lateral += rest[i].position - rest[k].position;
+  }
+  lateral.y = 0.0;
+  if (glm::length(lateral) < 1e-9) return Vec3(0, 0, 1);
+  return glm::normalize(glm::cross(lateral, Vec3(0, 1, 0)));
+}
+
 }  // namespace
+
+LimbJoint limbJointFromName(const std::string& name) {
+  const std::string n = bareName(name);
+  // Elbows: "elbow", Mixamo/CMU/BVH "ForeArm", "LowerArm" (Unity/VRM humanoids).
+  if (contains(n, "elbow") || contains(n, "forearm") || contains(n, "lowerarm") || contains(n, "lower_arm")) return LimbJoint::Elbow;
+  // Knees: "knee", "shin", "calf", "LowerLeg", and the Mixamo/CMU convention "LeftLeg" (the shin;
+  // "LeftUpLeg" is the thigh). "leg" alone is a knee unless it says up/upper/thigh.
+  if (contains(n, "knee") || contains(n, "shin") || contains(n, "calf") || contains(n, "lowerleg") || contains(n, "lower_leg"))
+    return LimbJoint::Knee;
+  if (n.size() >= 3 && n.compare(n.size() - 3, 3, "leg") == 0 && !contains(n, "up") && !contains(n, "thigh")) return LimbJoint::Knee;
+  return LimbJoint::None;
+}
 
 std::string resolveModelPath(const std::string& path) {
   namespace fs = std::filesystem;
@@ -112,6 +182,8 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
   const Real scale = extent > 1e-9 ? d.height / extent : 1.0;
   const Vec3 shift(-rest[0].position.x, -lo.y, -rest[0].position.z);
 
+  const std::vector<LimbJoint> limbs = limbJoints(*model);
+  const Vec3 forward = facingDirection(*model, rest);
   Rig rig;
   for (size_t i = 0; i < model->nodes.size(); ++i) {
     const graphics::ModelNode& node = model->nodes[i];
@@ -126,11 +198,24 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
       j.offset = scale * (glm::inverse(p.rotation) * (rest[i].position - p.position));
       j.restRotation = glm::normalize(glm::inverse(p.rotation) * rest[i].rotation);
     }
-    bool hasBone = false;
-    for (size_t c = i + 1; c < model->nodes.size(); ++c)
-      if (model->nodes[c].parent == static_cast<int>(i) && glm::length(rest[c].position - rest[i].position) * scale > 1e-6) hasBone = true;
-    j.type = node.parent >= 0 && hasBone ? JointType::Ball : JointType::Fixed;
+    const std::optional<Vec3> bone = firstBone(*model, rest, i, scale);
+    j.type = node.parent >= 0 && bone ? JointType::Ball : JointType::Fixed;
     for (int k = 0; k < 3; ++k) j.lo[k] = -d.limit, j.hi[k] = d.limit;
+    // Clavicles ("LeftShoulder" in BVH, Mixamo and CMU files; "Collar", "Clavicle") barely move.
+    if (const std::string n = bareName(j.name); j.type == JointType::Ball && (contains(n, "shoulder") || contains(n, "clavicle") || contains(n, "collar")))
+      clampRange(j, kClavicleLimit);
+    if (j.type == JointType::Ball && limbs[i] != LimbJoint::None) {
+      // Flexion axis (world, at rest): elbow bone × forward, knee forward × bone; then in the
+      // joint's pre-rotation frame, which at rest is the node's global rotation.
+      const Vec3 b = glm::normalize(*bone);
+      const Vec3 axis = limbs[i] == LimbJoint::Elbow ? glm::cross(b, forward) : glm::cross(forward, b);
+      if (glm::length(axis) > 0.1) {  // a limb along the facing direction keeps its ball joint
+        j.type = JointType::Hinge;
+        j.axis = glm::normalize(glm::inverse(rest[i].rotation) * glm::normalize(axis));
+        j.lo[0] = kHingeFlexMin;
+        j.hi[0] = kHingeFlexMax;
+      }
+    }
     if (Result<int> added = rig.skeleton.add(j); !added) return Error{"skeleton: " + path + ": joint '" + j.name + "': " + added.error()};
   }
 
@@ -153,9 +238,15 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
   // Trunk joints shared by several effectors (spine, chest) get a small weight, so the limbs do the
   // reaching and the body stays upright (IK slides, "Units": weights scale the Jacobian columns).
   const std::vector<std::vector<int>> below = effectorsBelowJoints(rig.skeleton, rig.effectors);
-  for (int j = 0; j < rig.skeleton.jointCount(); ++j)
-    if (below[static_cast<size_t>(j)].size() > 1)
-      for (Real& w : rig.skeleton.joint(j).weight) w = kTrunkWeight;
+  // They also bend at most kTrunkLimit per Euler angle: without it, the small steps of a low weight
+  // still add up over the frames of a moving goal, and the spine ends up folded.
+  for (int j = 0; j < rig.skeleton.jointCount(); ++j) {
+    Joint& joint = rig.skeleton.joint(j);
+    if (below[static_cast<size_t>(j)].size() > 1) {
+      for (Real& w : joint.weight) w = kTrunkWeight;
+      if (joint.type == JointType::Ball) clampRange(joint, kTrunkLimit);
+    }
+  }
   if (skin) {
     *skin = CharacterSkin{};
     const bool hasMesh = std::any_of(model->meshes.begin(), model->meshes.end(), [](const graphics::ModelMesh& m) { return !m.placeholder; });

@@ -6,8 +6,14 @@
 // nodes' global bind transforms (scale and shear removed), so a joint's offset is its rest position
 // in the parent's rotated frame, i.e. the bone length comes from the node offsets. The root is pinned
 // (Fixed: the character stands where the file puts it), nodes with a child at a distinct position are
-// ball joints with ±limit on each Euler angle, the rest (end sites, helper nodes) are Fixed. The
-// trunk joints above several effectors get DOF weight 0.1 (the limbs reach, the body stays upright). The
+// ball joints with ±limit on each Euler angle, except knees and elbows (limbJointFromName(); when no
+// name matches, the parents of the hand and foot joints), which are hinges: flexion about the axis
+// bone × forward (elbow: the forearm swings to the front, in [−5°, 150°]) or forward × bone (knee:
+// the shin swings to the back, same range), where forward is the character's facing direction
+// estimated from its Left*/Right* joints (lateral × up; +z when it has none). The rest (end sites,
+// helper nodes) are Fixed. Clavicles ("Shoulder", "Collar", "Clavicle") turn at most ±30°. The
+// trunk joints above several effectors get DOF weight 0.1 and at most ±15° per Euler angle (the limbs
+// reach, the body stays upright). The
 // whole skeleton is scaled so that its rest pose is `height` tall (files come in m, cm or inches)
 // and placed with its lowest joint on the ground and its root above the origin.
 //
@@ -31,6 +37,14 @@ struct CharacterDesc {
   double height = 1.7;                                     ///< [m] height of the rest pose after scaling
   double limit = 100.0 * kPi / 180.0;                                    ///< [rad] every ball DOF in [−limit, limit]
 };
+
+inline constexpr double kHingeFlexMin = -5.0 * kPi / 180.0;  ///< [rad] a knee or elbow straightens slightly past rest
+inline constexpr double kHingeFlexMax = 150.0 * kPi / 180.0;  ///< [rad] and flexes this far
+
+enum class LimbJoint { None, Elbow, Knee };
+/// Knee or elbow by the naming conventions of BVH, Mixamo and CMU files: "LeftForeArm",
+/// "mixamorig:RightLeg" (the shin; "UpLeg" is the thigh), "l_knee", "LowerArm", "Calf", … .
+LimbJoint limbJointFromName(const std::string& name);
 
 /// The path as given when it exists, else relative to the repository root (PBA_RESOURCE_DIR/..).
 std::string resolveModelPath(const std::string& path);

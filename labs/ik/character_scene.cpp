@@ -10,10 +10,11 @@
 #include "character_rig.h"
 #include "ik_scene.h"
 
-// --skeleton picks the character scene over the batch-only flags (--solver, --links, …) but not
-// over --targets (priority 1 < 2): "--skeleton F --solver ccd" solves the character with CCD.
+// --skeleton and --effectors pick the character scene over the batch-only flags (--solver, --links,
+// …) but not over --targets (priority 1 < 2): "--skeleton F --solver ccd" solves the character with
+// CCD; "--effectors LeftHand" alone loads the default humanoid with that effector.
 PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "skeleton file Assimp reads (BVH, FBX, COLLADA, glTF)", "character", 1);
-PBA_REGISTER_LAB_FLAG("effectors", "effectors", "comma-separated joint names of the effectors (default: hands and feet)");
+PBA_REGISTER_LAB_FLAG("effectors", "effectors", "comma-separated joint names of the effectors (default: hands and feet)", "character", 1);
 
 namespace pba::labs::ik {
 namespace {
@@ -50,6 +51,7 @@ class CharacterScene final : public IkScene {
   }
   void ui() override {
     if (!error_.empty()) ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous skeleton kept)", error_.c_str());
+    effectorPicker();
     IkScene::ui();
   }
   void draw(DebugDraw& d) const override {
@@ -101,6 +103,46 @@ class CharacterScene final : public IkScene {
   }
 
  private:
+  /// The skeleton's joint names as checkboxes (with a filter for long lists): ticking one makes it an
+  /// effector. Edits the "effectors" text parameter, so scene files and --effectors see the same list.
+  void effectorPicker() {
+    if (!ImGui::CollapsingHeader("Effectors (joints that reach for goals)")) return;
+    static ImGuiTextFilter filter;  // one picker is shown at a time
+    filter.Draw("filter##joints");
+    std::vector<std::string> chosen;
+    for (const Effector& e : rig_.effectors) chosen.push_back(rig_.skeleton.joint(e.joint).name);
+    bool changed = false;
+    const float rows = static_cast<float>(std::min(rig_.skeleton.jointCount(), kPickerRows));
+    ImGui::BeginChild("joint names", ImVec2(0.0f, rows * ImGui::GetFrameHeightWithSpacing()), true);
+    for (int j = 1; j < rig_.skeleton.jointCount(); ++j) {  // the root is pinned: never an effector
+      const std::string& name = rig_.skeleton.joint(j).name;
+      if (!filter.PassFilter(name.c_str())) continue;
+      const auto it = std::find(chosen.begin(), chosen.end(), name);
+      bool on = it != chosen.end();
+      ImGui::PushID(j);  // names may repeat in a file
+      const bool clicked = ImGui::Checkbox(name.c_str(), &on);
+      ImGui::PopID();
+      if (clicked) {
+        if (on) chosen.push_back(name);
+        else chosen.erase(it);
+        changed = true;
+      }
+    }
+    ImGui::EndChild();
+    if (ImGui::Button("hands and feet")) {
+      chosen.clear();
+      changed = true;
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("%zu effectors", rig_.effectors.size());
+    if (!changed) return;
+    std::string list;
+    for (const std::string& n : chosen) list += (list.empty() ? "" : ",") + n;
+    desc_.effectors = list;  // empty: the automatic hands and feet
+    reset();
+  }
+
+  static constexpr int kPickerRows = 8;  // joint names shown before the list scrolls
   CharacterDesc desc_;
   mutable std::string error_;
   mutable CharacterSkin skin_;  // set by build() with the rig

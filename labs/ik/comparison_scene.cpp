@@ -34,6 +34,7 @@ constexpr Real kViewYaw = 0.6;
 
 enum class Layout { Overlay, SideBySide };
 enum class CompareJoint { Hinge, Ball };
+enum class ComparePath { Figure8, Mouse };
 
 class ComparisonScene final : public app::Scene {
  public:
@@ -49,6 +50,8 @@ class ComparisonScene final : public app::Scene {
     params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of DLS. Typical 0.05 m.");
     params_.flag("from_rest", &options_.fromRest,
                  "Start every solve from the rest pose (the plot then shows full convergence curves every frame).");
+    params_.choiceEnum("path", &path_, {"figure8", "mouse"},
+                       "How the goal moves: along a figure-8, or only where the mouse or the arrow keys put it.");
     params_.real("path_speed", &speed_, 0.0, 2.0, "Hz", "Laps per second of the goal's figure-8. Typical 0.25 Hz.");
     desc_.links = 8;
     desc_.axes = HingeAxes::Alternating;
@@ -66,12 +69,12 @@ class ComparisonScene final : public app::Scene {
     poses_.assign(kMethods.size(), rig_.skeleton.restPose());
     results_.assign(kMethods.size(), SolveResult{});
     time_ = 0.0;
+    goal_ = pathGoal(0.0);
     step(0.0);
   }
   void step(Real dt) override {
     time_ += dt;
-    const Real phase = 2.0 * kPi * speed_ * time_, L = desc_.totalLength;
-    if (!dragging_) goal_ = facing() * (L * Vec3(0.35 * std::sin(phase), 0.6 + 0.2 * std::sin(2.0 * phase), 0.25 + 0.15 * std::cos(phase)));
+    if (!dragging_ && path_ == ComparePath::Figure8) goal_ = pathGoal(2.0 * kPi * speed_ * time_);
     solveAll();
   }
   void draw(DebugDraw& d) const override {
@@ -125,6 +128,14 @@ class ComparisonScene final : public app::Scene {
     solveAll();
   }
   void release(int) override { dragging_ = false; }
+  /// The arrow keys move the one goal of every chain; it then stays put (path: mouse).
+  bool nudge(const Vec3& delta) override {
+    goal_ += delta;
+    path_ = ComparePath::Mouse;
+    solveAll();
+    return true;
+  }
+  Real nudgeStep() const override { return 0.03 * desc_.totalLength; }
 
  private:
   void solveAll() {
@@ -135,6 +146,11 @@ class ComparisonScene final : public app::Scene {
       o.solver = kMethods[m].kind;
       results_[m] = solve(rig_.skeleton, poses_[m], effectors, o);
     }
+  }
+  /// The goal on the figure-8 at `phase` [rad], relative to the chains' base.
+  Vec3 pathGoal(Real phase) const {
+    const Real L = desc_.totalLength;
+    return facing() * (L * Vec3(0.35 * std::sin(phase), 0.6 + 0.2 * std::sin(2.0 * phase), 0.25 + 0.15 * std::cos(phase)));
   }
   static Quat facing() { return glm::angleAxis(kViewYaw, Vec3(0, 1, 0)); }
   Vec3 baseOf(size_t m) const {
@@ -192,6 +208,7 @@ class ComparisonScene final : public app::Scene {
   ChainDesc desc_;
   CompareJoint joint_ = CompareJoint::Ball;
   Layout layout_ = Layout::Overlay;
+  ComparePath path_ = ComparePath::Figure8;
   SolveOptions options_;
   Real speed_ = 0.25;
   Rig rig_;

@@ -2,26 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-
-#include <imgui.h>
 
 #include "physics/collision/ray.h"
 
 namespace pba::labs::ik {
 
 namespace {
-constexpr Real kTargetRadiusFactor = 2.2;  // goal sphere radius in bone radii
-constexpr Real kJumpInterval = 1.5;        // [s] between random jumps
+constexpr Real kJumpInterval = 1.5;  // [s] between random jumps
 }  // namespace
 
 IkScene::IkScene() { options_.recordHistory = true; }
 
 void IkScene::declareSolverParams(bool withPath) {
-  params_.choiceEnum("solver", &options_.solver, solverNames(),
-                     "IK method: analytic (1-2 joints), CCD, FABRIK, Jacobian transpose, pseudo-inverse (SVD), "
-                     "damped least squares, selectively damped least squares, gradient descent (CMU asst4), "
-                     "L-BFGS quasi-Newton.");
+  // Table-driven from the library: every method it names appears in the dropdown.
+  std::string methods;
+  for (int k = 0; k < kSolverKindCount; ++k)
+    methods += std::string(k ? ", " : "") + solverName(static_cast<SolverKind>(k)) + " (" + solverLongName(static_cast<SolverKind>(k)) + ")";
+  params_.choiceEnum("solver", &options_.solver, solverNames(), "IK method: " + methods + ".");
   params_.integer("max_iterations", &options_.maxIterations, 1, 5000, "",
                   "Iteration cap per solve (CCD/FABRIK: passes; Jacobian methods: steps). Typical 100.");
   params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success when the effector is this close to its goal. Typical 1e-4 m.")
@@ -73,6 +70,7 @@ void IkScene::reset() {
   for (const Effector& e : rig_.effectors) centers_.push_back(e.targetPosition);
   time_ = 0.0;
   nextJump_ = 0.0;
+  if (selected_ >= rig_.effectors.size()) selected_ = 0;
   rng_.seed(seed());
   boneRadius_ = std::clamp(0.12 * meanBoneLength(rig_.skeleton, rig_.effectors), 0.004, 0.05);
   step(0.0);
@@ -117,54 +115,6 @@ Vec3 IkScene::pathOffset(size_t, Real phase) const {
 
 void IkScene::solveNow() { last_ = solve(rig_.skeleton, pose_, rig_.effectors, options_); }
 
-void IkScene::draw(DebugDraw& d) const {
-  const std::vector<Frame> f = forwardKinematics(rig_.skeleton, pose_);
-  const Real r = boneRadius_;
-  const bool many = rig_.skeleton.jointCount() > 200;
-  for (int j = 0; j < rig_.skeleton.jointCount(); ++j) {
-    const Joint& joint = rig_.skeleton.joint(j);
-    const Frame& fj = f[static_cast<size_t>(j)];
-    if (joint.parent >= 0) d.capsule(f[static_cast<size_t>(joint.parent)].position, fj.position, r, colors::kBlue);
-    if (!many) d.sphere(fj.position, 1.3 * r, joint.type == JointType::Fixed ? colors::kGrey : colors::kDark);
-    if (!many && joint.type == JointType::Hinge) {
-      const Vec3 a = fj.pre * joint.axis;
-      d.line(fj.position - 3.0 * r * a, fj.position + 3.0 * r * a, colors::kRed);
-      if (showLimits_ && joint.hi[0] - joint.lo[0] < 2.0 * kPi - 1e-9) {
-        // Limit arc: the allowed range of the bone direction about the hinge axis.
-        const std::vector<int>& kids = rig_.skeleton.children(j);
-        Vec3 bone = kids.empty() ? Vec3(1, 0, 0) : rig_.skeleton.joint(kids[0]).offset;
-        for (const Effector& e : rig_.effectors)
-          if (e.joint == j) bone = e.localOffset;
-        const Vec3 from = fj.pre * glm::angleAxis(joint.lo[0], joint.axis) * bone;
-        d.arc(fj.position, a, from, joint.hi[0] - joint.lo[0], 6.0 * r, colors::kOrange);
-      }
-    }
-    if (!many && showLimits_ && joint.type == JointType::Ball && joint.hi[1] < kPi - 1e-9 && joint.parent >= 0) {
-      const Vec3 restDir = fj.pre * Vec3(1, 0, 0);
-      d.cone(fj.position, restDir, joint.hi[1], 5.0 * r, colors::kOrange);
-    }
-  }
-  for (size_t k = 0; k < rig_.effectors.size(); ++k) {
-    const Effector& e = rig_.effectors[k];
-    const Vec3 p = effectorPosition(e, f);
-    d.capsule(f[static_cast<size_t>(e.joint)].position, p, r, colors::kBlue);
-    d.sphere(p, 1.5 * r, colors::kGreen);
-    d.sphere(e.targetPosition, kTargetRadiusFactor * r, dragging_ ? colors::kYellow : colors::kRed);
-    if (e.kind == EffectorKind::PositionOrientation) {
-      d.frame(p, effectorOrientation(e, f), 8.0 * r);
-      d.frame(e.targetPosition, e.targetOrientation, 10.0 * r);
-    }
-    if (showPath_ && k < last_.effectorPath.size()) {
-      const std::vector<Vec3>& path = last_.effectorPath[k];
-      for (size_t i = 1; i < path.size(); ++i) d.line(path[i - 1], path[i], colors::kPurple);
-    }
-  }
-  char label[128];
-  std::snprintf(label, sizeof label, "%s: %s, %d it, %.2e m", solverName(options_.solver), statusName(last_.status), last_.iterations,
-                last_.positionResidual);
-  if (!rig_.effectors.empty()) d.text(rig_.effectors[0].targetPosition + Vec3(0, 4.0 * r, 0), label, colors::kDark);
-}
-
 nlohmann::json IkScene::metrics() const {
   return {{"solver", solverName(options_.solver)},
           {"iterations", last_.iterations},
@@ -174,23 +124,6 @@ nlohmann::json IkScene::metrics() const {
           {"dofs", rig_.skeleton.dofCount()},
           {"limit_violation", limitViolation(rig_.skeleton, pose_)},
           {"solve_us", last_.seconds * 1e6}};
-}
-
-void IkScene::ui() {
-  ImGui::Checkbox("show limits", &showLimits_);
-  ImGui::SameLine();
-  ImGui::Checkbox("show effector path", &showPath_);
-  if (usesJacobian(options_.solver)) ImGui::Checkbox("show Jacobian", &showJacobian_);
-  if (!last_.message.empty()) ImGui::TextWrapped("%s", last_.message.c_str());
-  // Per-joint angle bars (first DOF of each joint, within its limits).
-  const int n = std::min(rig_.skeleton.dofCount(), 24);
-  for (int i = 0; i < n; ++i) {
-    const Real lo = rig_.skeleton.dofLo(i), hi = rig_.skeleton.dofHi(i), v = pose_.dofs[static_cast<size_t>(i)];
-    const float fraction = hi > lo ? static_cast<float>((v - lo) / (hi - lo)) : 0.5f;
-    char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "dof %d: %.1f deg", i, radToDeg(v));
-    ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
-  }
 }
 
 void IkScene::overlayUi(const app::ScreenRect& column) {
@@ -215,7 +148,17 @@ std::optional<app::PickHit> IkScene::pick(const app::Ray& ray) const {
 void IkScene::drag(int handle, const Vec3& target) {
   if (handle < 0 || handle >= static_cast<int>(rig_.effectors.size())) return;
   dragging_ = true;
-  rig_.effectors[static_cast<size_t>(handle)].targetPosition = target;
+  selected_ = static_cast<size_t>(handle);
+  rig_.effectors[selected_].targetPosition = target;
+}
+
+bool IkScene::nudge(const Vec3& delta) {
+  if (rig_.effectors.empty()) return false;
+  selected_ = std::min(selected_, rig_.effectors.size() - 1);
+  rig_.effectors[selected_].targetPosition += delta;
+  path_ = TargetPath::Mouse;  // the goal stays where the keys put it
+  solveNow();
+  return true;
 }
 
 }  // namespace pba::labs::ik

@@ -1,8 +1,11 @@
 #pragma once
 // Shared base of the IK lab's interactive scenes: a rig (skeleton + effectors) solved every step
 // toward goals that the user drags with the mouse or that follow a scripted path (circle, figure-8,
-// random jumps) for lectures. Draws bones as capsules, joints, hinge axes, limits, goals and the
-// effector's path over the iterations of the last solve; reports the "ik" metrics.
+// random jumps) for lectures, or nudged with the arrow keys (app/target_nudge.h: the goal last
+// picked moves). Draws bones as capsules, joints, rotation axes (hinges; ball joints on request),
+// limits as arcs and cones from the per-DOF ranges, goals and the effector's path over the
+// iterations of the last solve (ik_scene_draw.cpp); shows per-DOF angle bars with their limits
+// (ik_scene_ui.cpp); reports the "ik" metrics.
 #include <cstdint>
 #include <optional>
 #include <random>
@@ -20,6 +23,8 @@ using namespace pba::ik;
 
 enum class TargetPath { Mouse, Circle, Figure8, RandomJumps };
 
+inline constexpr Real kTargetRadiusFactor = 2.2;  // goal sphere radius in bone radii
+
 class IkScene : public app::Scene {
  public:
   IkScene();
@@ -35,6 +40,11 @@ class IkScene : public app::Scene {
   std::optional<app::PickHit> pick(const app::Ray& ray) const override;
   void drag(int handle, const Vec3& target) override;
   void release(int) override { dragging_ = false; }
+  /// Moves the selected goal (the one last picked) by delta [m] and solves at once, so a paused
+  /// scene shows the new pose; the goal then stays put (path: mouse).
+  bool nudge(const Vec3& delta) override;
+  /// A tenth of the scripted path's radius: ~20 key presses across the path.
+  Real nudgeStep() const override { return 0.1 * pathRadius(); }
 
  protected:
   /// Builds the rig from the scene's parameters (goals at rest positions).
@@ -50,6 +60,13 @@ class IkScene : public app::Scene {
   void liftAboveGround();
   void solveNow();
   Real boneRadius() const { return boneRadius_; }
+  /// Rotation axes and limits of joint j (ik_scene_draw.cpp).
+  void drawJointAxesAndLimits(DebugDraw& d, int j, const std::vector<Frame>& f) const;
+  /// The bone that leaves joint j in its own frame [m] (first child's offset, else an effector's
+  /// local offset, else +x): the direction whose range a limit cone or arc shows.
+  Vec3 boneOf(int j) const;
+  /// Per-DOF angle bars labelled "joint.axis", scrollable, with limits (ik_scene_ui.cpp).
+  void angleBars() const;
 
   Rig rig_;
   Pose pose_;
@@ -60,6 +77,8 @@ class IkScene : public app::Scene {
   bool showLimits_ = true;
   bool showPath_ = true;
   bool showJacobian_ = true;
+  bool showBallAxes_ = false;  // the three Euler axes of every ball joint (red x, green y, blue z)
+  size_t selected_ = 0;        // the goal the arrow keys move: the one last picked
   std::vector<Vec3> centers_;  // rest goals: centres of the scripted paths
   Real time_ = 0.0;
   bool dragging_ = false;

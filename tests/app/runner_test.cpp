@@ -145,11 +145,11 @@ TEST(CommandLine, ParsesTheContractOfDesignSection4) {
   EXPECT_TRUE(o.lecture);
   EXPECT_EQ(*o.substeps, 3);
   ASSERT_EQ(o.overrides.size(), 1u);
-  EXPECT_EQ(o.overrides[0], (std::pair<std::string, std::string>{"speed", "2"}));
+  EXPECT_EQ(o.overrides[0], (ParamOverride{"speed", "2", "--set"}));
   EXPECT_EQ(parse({"--seconds", "1"}).value().frameCount(), 60);
   const auto inlineSet = parse({"--set=speed=2.5"});
   ASSERT_TRUE(inlineSet.ok()) << inlineSet.error();
-  EXPECT_EQ(inlineSet.value().overrides.at(0), (std::pair<std::string, std::string>{"speed", "2.5"}));
+  EXPECT_EQ(inlineSet.value().overrides.at(0), (ParamOverride{"speed", "2.5", "--set"}));
   EXPECT_EQ(parse({}).value().frameCount(), kDefaultHeadlessFrames);
 }
 

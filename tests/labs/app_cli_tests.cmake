@@ -1,0 +1,20 @@
+# Command-line errors of the lab runner (framework/app) name what the user typed: a lab flag's bad
+# value names the flag (not "--set"), --seconds is bounded, and --effectors alone selects the IK
+# character scene. One test a line; each exits 2 with one line on stderr where it fails on purpose.
+set(app_cli_work "${CMAKE_BINARY_DIR}/smoke/app-cli")
+file(MAKE_DIRECTORY "${app_cli_work}")
+set(app_cli_tests)
+foreach(lab ${labs})
+  add_test(NAME lab.${lab}.seconds-bounded-exits-2 COMMAND bash -c "\"$0\" --headless --seconds 1e12 2>'${app_cli_work}/${lab}-seconds.err'; rc=$?; cat '${app_cli_work}/${lab}-seconds.err'; [[ $rc -eq 2 && $(wc -l <'${app_cli_work}/${lab}-seconds.err') -eq 1 ]] && grep -q -- '--seconds: expected a number in (0, 100000\\] s' '${app_cli_work}/${lab}-seconds.err'" $<TARGET_FILE:pba-${lab}>)
+  list(APPEND app_cli_tests lab.${lab}.seconds-bounded-exits-2)
+endforeach()
+if(TARGET pba-ik)
+  add_test(NAME lab.ik.lab-flag-error-names-the-flag COMMAND bash -c "\"$0\" --headless --links 0 2>'${app_cli_work}/links.err'; rc=$?; cat '${app_cli_work}/links.err'; [[ $rc -eq 2 ]] && grep -q -- '^pba-ik: --links: must be in' '${app_cli_work}/links.err' && ! grep -q -- '--set' '${app_cli_work}/links.err'" $<TARGET_FILE:pba-ik>)
+  add_test(NAME lab.ik.effectors-alone-selects-the-character COMMAND bash -c "\"$0\" --headless --effectors LeftHand --frames 5 --metrics '${app_cli_work}/effectors.json' && grep -q '\"scene\": \"character\"' '${app_cli_work}/effectors.json' && grep -q '\"effectors\": 1' '${app_cli_work}/effectors.json'" $<TARGET_FILE:pba-ik>)
+  list(APPEND app_cli_tests lab.ik.lab-flag-error-names-the-flag lab.ik.effectors-alone-selects-the-character)
+endif()
+if(TARGET pba-particles)
+  add_test(NAME lab.particles.lab-flag-error-names-the-flag COMMAND bash -c "\"$0\" --headless --scene pendulum --integrator leapfrog 2>'${app_cli_work}/integrator.err'; rc=$?; cat '${app_cli_work}/integrator.err'; [[ $rc -eq 2 ]] && grep -q -- \"^pba-particles: --integrator: unknown value 'leapfrog'\" '${app_cli_work}/integrator.err'" $<TARGET_FILE:pba-particles>)
+  list(APPEND app_cli_tests lab.particles.lab-flag-error-names-the-flag)
+endif()
+set_tests_properties(${app_cli_tests} PROPERTIES LABELS "labs" TIMEOUT 120)
