@@ -1,5 +1,6 @@
 // IK lab, scene "comparison": the same chain solved by CCD, FABRIK, Jacobian transpose,
-// pseudo-inverse, DLS and SDLS toward the same moving goal (IK slides, "Comparison"; Workbook §2.6).
+// pseudo-inverse, DLS, SDLS, gradient descent (CMU asst4, Armijo backtracking) and L-BFGS toward the
+// same moving goal (IK slides, "Comparison"; Workbook §2.6).
 // Each method has its own colour; the chains stand side by side (or overlaid as ghosts on one base),
 // and a window on the right plots each method's residual after every iteration of the last solve
 // (log scale, one line per method) — the convergence curves of the methods, live. The metrics
@@ -20,12 +21,14 @@ struct Method {
   SolverKind kind;
   Color color;
 };
-constexpr std::array<Method, 6> kMethods = {{{SolverKind::Ccd, colors::kRed},
+constexpr std::array<Method, 8> kMethods = {{{SolverKind::Ccd, colors::kRed},
                                              {SolverKind::Fabrik, colors::kGreen},
                                              {SolverKind::JacobianTranspose, colors::kOrange},
                                              {SolverKind::PseudoInverse, colors::kYellow},
                                              {SolverKind::DampedLeastSquares, colors::kBlue},
-                                             {SolverKind::SelectivelyDamped, colors::kPurple}}};
+                                             {SolverKind::SelectivelyDamped, colors::kPurple},
+                                             {SolverKind::GradientDescent, colors::kTeal},
+                                             {SolverKind::Lbfgs, colors::kPink}}};
 constexpr Real kPlotFloor = -7.0;  // [log10 m] bottom of the residual plot
 constexpr Real kSpacing = 0.8;     // [chain lengths] between neighbouring bases
 // The runner's default camera yaw (graphics/camera.h, OrbitCamera::yaw): the row of chains, their
@@ -58,7 +61,7 @@ class ComparisonScene final : public app::Scene {
     options_.fromRest = true;
   }
   std::string description() const override {
-    return "Six methods, six identical chains, one goal: watch the residual-per-iteration curves on the right (log scale) and the poses.";
+    return "Eight methods, eight identical chains, one goal: watch the residual-per-iteration curves on the right (log scale) and the poses.";
   }
   void reset() override {
     ChainDesc d = desc_;
@@ -144,6 +147,7 @@ class ComparisonScene final : public app::Scene {
       effectors[0].targetPosition = goal_;  // chains are solved at the origin and drawn at their base
       SolveOptions o = options_;
       o.solver = kMethods[m].kind;
+      o.lineSearch = LineSearch::Backtracking;  // gradient descent: golden section costs ~30 FK per step
       results_[m] = solve(rig_.skeleton, poses_[m], effectors, o);
     }
   }

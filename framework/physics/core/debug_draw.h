@@ -23,6 +23,8 @@ inline constexpr Color kBlue{0.16f, 0.42f, 0.86f, 1.0f};
 inline constexpr Color kOrange{0.95f, 0.55f, 0.12f, 1.0f};
 inline constexpr Color kPurple{0.55f, 0.30f, 0.78f, 1.0f};
 inline constexpr Color kYellow{0.96f, 0.80f, 0.15f, 1.0f};
+inline constexpr Color kTeal{0.10f, 0.62f, 0.64f, 1.0f};
+inline constexpr Color kPink{0.92f, 0.40f, 0.62f, 1.0f};
 inline constexpr Color kGrey{0.55f, 0.57f, 0.60f, 1.0f};
 inline constexpr Color kDark{0.15f, 0.16f, 0.18f, 1.0f};
 inline constexpr Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
