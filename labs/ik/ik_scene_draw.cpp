@@ -120,6 +120,16 @@ void IkScene::draw(DebugDraw& d) const {
       for (size_t i = 1; i < path.size(); ++i) d.line(path[i - 1], path[i], colors::kPurple);
     }
   }
+  // The scripted path of each goal, thin and grey: where the goal is going (and what "frame the
+  // scene" fits in view).
+  if (path_ == TargetPath::Circle || path_ == TargetPath::Figure8) {
+    constexpr int kSegments = 64;
+    for (size_t k = 0; k < centers_.size(); ++k)
+      for (int i = 0; i < kSegments; ++i) {
+        const Real a = 2.0 * kPi * i / kSegments, b = 2.0 * kPi * (i + 1) / kSegments, shift = 0.7 * Real(k);
+        d.line(centers_[k] + pathOffset(k, a + shift), centers_[k] + pathOffset(k, b + shift), colors::kGrey);
+      }
+  }
   char label[128];
   std::snprintf(label, sizeof label, "%s: %s, %d it, %.2e m", solverName(options_.solver), statusName(last_.status), last_.iterations,
                 last_.positionResidual);

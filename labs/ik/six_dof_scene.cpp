@@ -12,6 +12,7 @@ class SixDofScene final : public IkScene {
   SixDofScene() {
     options_.solver = SolverKind::DampedLeastSquares;
     options_.maxIterations = 50;
+    showLimits_ = false;  // ±150° on every Euler angle: the cones would cover the chain, not explain it
     declareSolverParams();
     params_.real("spin_speed", &spin_, 0.0, 2.0, "Hz", "How fast the goal frame turns about its own axis.");
   }
