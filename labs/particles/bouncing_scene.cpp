@@ -49,7 +49,7 @@ class BouncingScene final : public app::Scene {
     sim_.integrate(dt);
     particles::Particles& p = sim_.system.particles;
     if (ballCollisions_) particles::collideParticlePairs(p, radius_, obstacles_.material.restitution, hash_);
-    particles::collideWithObstacles(p, obstacles_, radius_);
+    particles::collideWithObstacles(p, obstacles_, radius_, sim_.contactStep(dt));
     sim_.finishStep();
   }
 
