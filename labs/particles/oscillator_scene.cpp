@@ -3,6 +3,11 @@
 // portrait (x right, v up): the exact orbit is the grey unit circle; Euler spirals outward (energy × 1 + h²
 // per step), symplectic Euler and the Verlets stay on a nearby ellipse, RK4 hugs the circle, implicit
 // Euler spirals inward. The ninth cell plots the energy of each method over time.
+//
+// Time: every method steps with the scene's own h (the parameter), not the runner's dt. The runner's dt
+// advances the scene's clock; h-steps are taken as they fall due on that clock (ode::nextDueStep), and
+// the step that would pass end_time is shortened to end there, so the error metric is taken against the
+// closed form at end_time exactly (3 periods with h = 0.1: 188 steps of 0.1 s and one of 0.0496 s).
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -30,10 +35,13 @@ class OscillatorScene final : public app::Scene {
  public:
   OscillatorScene() {
     params_.real("h", &h_, 0.001, 0.5, "s",
-                 "Integrator step h. ωh is what matters: Euler's energy grows by 1 + (ωh)² per step. Typical 0.1.")
+                 "Integrator step h of every method (the runner's dt only paces the clock on which h-steps fall "
+                 "due; set coarse steps here, --set h=0.3). ωh is what matters: Euler's energy grows by 1 + (ωh)² "
+                 "per step. Typical 0.1.")
         .logarithmic();
     params_.real("end_time", &endTime_, 1.0, 200.0, "s",
-                 "The methods stop here and the error metric is taken against the closed form. 3 periods ≈ 18.85 s.")
+                 "The methods stop here (the last step is shortened to end exactly here) and the error metric "
+                 "sqrt(dx² + dv²) is taken against the closed form. 3 periods ≈ 18.85 s.")
         .needsReset();
     lab::addIntegratorParam(params_, &selected_, " Here: which method the energy/error metrics report.");
   }
@@ -52,18 +60,20 @@ class OscillatorScene final : public app::Scene {
       methods_.push_back(std::move(m));
     }
     time_ = 0.0;
-    accumulator_ = 0.0;
+    clock_ = 0.0;
     record();
   }
 
   void step(Real dt) override {
-    accumulator_ += dt;
+    clock_ += dt;
     rate_.start();
     std::size_t updates = 0;
-    while (accumulator_ >= h_ && time_ + 0.5 * h_ < endTime_) {
-      accumulator_ -= h_;
-      for (Method& m : methods_) m.integrator.step(*m.system, h_);
-      time_ += h_;
+    while (const std::optional<ode::DueStep> due = ode::nextDueStep(time_, h_, clock_, endTime_)) {
+      for (Method& m : methods_) {
+        m.integrator.step(*m.system, due->h);
+        m.system->setTime(due->end);
+      }
+      time_ = due->end;
       updates += methods_.size();
       record();
     }
@@ -91,6 +101,11 @@ class OscillatorScene final : public app::Scene {
       std::snprintf(energy, sizeof energy, "E/E0 = %.3g", s.energy() / 0.5);
       d.text(c - (kPhaseLimit + 0.05) * kUp - kPhaseLimit * right(), energy, labelColor);
     }
+    // What the figure shows, above the grid: the step and the methods' time against end_time.
+    char header[128];
+    std::snprintf(header, sizeof header, "h = %.3g s (every method)   t = %.2f / %.2f s%s", h_, time_, endTime_,
+                  time_ >= endTime_ ? "  (end: error taken here)" : "");
+    d.text(panelCenter(0) + (kPhaseLimit + 0.75) * kUp - kPhaseLimit * right(), header, colors::kDark);
     // Energy plot in the last cell: E/E₀ over time, one polyline per method (clipped to [0, 4]).
     const Vec3 origin = panelCenter(methods_.size()) - kPhaseLimit * (right() + kUp);
     const Real width = 2.0 * kPhaseLimit, height = 2.0 * kPhaseLimit, tScale = width / endTime_;
@@ -113,6 +128,8 @@ class OscillatorScene final : public app::Scene {
     const Method& m = methods_[index(selected_)];
     nlohmann::json j = lab::baseMetrics(selected_, 1, m.system->energy(), 0.5, rate_);
     j["time_s"] = time_;
+    j["h"] = h_;
+    j["end_time"] = endTime_;
     j["error"] = errorOf(m);
     for (const Method& other : methods_) {
       const std::string name(ode::integratorName(other.integrator.kind()));
@@ -129,9 +146,9 @@ class OscillatorScene final : public app::Scene {
     return std::nullopt;
   }
   // No energy(): the runaway guard must not stop Euler's outward spiral, which is the point here.
-  // No default plot windows: the scene draws every method's energy itself (ninth cell), and a plot window
-  // would cover the lower row of the grid. Tick "plot" in the metrics panel for more.
-  std::vector<std::string> defaultPlots() const override { return {}; }
+  // The selected method's error against the closed form and its energy (the ninth cell draws every
+  // method's energy; switch "integrator" to plot another).
+  std::vector<std::string> defaultPlots() const override { return {"error", "energy"}; }
   std::vector<app::Preset> presets() const override {
     return {{"Lobb: h = 0.1", {{"h", 0.1}}}, {"coarse h = 0.3", {{"h", 0.3}}}, {"fine h = 0.01", {{"h", 0.01}}},
             {"very coarse h = 0.5", {{"h", 0.5}}}};
@@ -177,7 +194,8 @@ class OscillatorScene final : public app::Scene {
   Real endTime_ = 3.0 * 2.0 * kPi;
   ode::IntegratorKind selected_ = ode::IntegratorKind::Rk4;
   std::vector<Method> methods_;
-  Real time_ = 0.0, accumulator_ = 0.0;
+  Real time_ = 0.0;   ///< [s] time of the methods (the last h-step's end)
+  Real clock_ = 0.0;  ///< [s] the runner's time (sum of its dt)
   lab::UpdateRate rate_;
 };
 
