@@ -126,6 +126,7 @@ class FountainScene final : public app::Scene {
     // An emitter adds and removes energy all the time: there is no conserved total, so no drift (0).
     nlohmann::json j = lab::baseMetrics(kind_, system_.particles.size(), e, e, rate_);
     j["fused_kernel"] = fused_;
+    j["pool"] = maxParticles_;  // live particles at most (particles = live now; keep_full fills it in ~2 s)
     return j;
   }
   // The fused step tests finiteness on the fly; the full scan runs only to name the culprit.
