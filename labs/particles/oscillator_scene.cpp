@@ -19,9 +19,11 @@
 namespace {
 using namespace pba;
 
-// The figure is a 3 × 3 grid: eight phase portraits and, in the last cell, the energy plot. A square
-// grid keeps the bounding sphere the runner frames small, so panels and labels stay readable.
-constexpr int kColumns = 3;
+// The figure is a 4 × 3 grid facing the camera (preferredView frames it to fill the view right of the
+// control panel): eight phase portraits in two rows of four and, bottom left, the energy plot. The
+// bottom right is left empty for the plot window (error and energy of the selected method).
+constexpr int kColumns = 4;
+constexpr int kRows = 3;
 constexpr Real kPanel = 3.4;        // [m] horizontal spacing of the cells in the scene
 constexpr Real kPanelHeight = 3.7;  // [m] vertical spacing (room for the labels above and below)
 constexpr Real kPhaseLimit = 1.4;   // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
@@ -81,8 +83,8 @@ class OscillatorScene final : public app::Scene {
   }
 
   void draw(DebugDraw& d) const override {
-    // A 4 × 2 grid of phase portraits above an energy plot, all above the ground (y > 0) and in a
-    // vertical plane turned to face the lab's default camera, so the whole figure fits one screen.
+    // Two rows of four phase portraits above an energy plot, all above the ground (y > 0) and in a
+    // vertical plane turned to face the lab's default camera yaw.
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       const Vec3 c = panelCenter(i);
       const Color color = kMethodColors[i];
@@ -171,11 +173,20 @@ class OscillatorScene final : public app::Scene {
   }
   static std::size_t index(ode::IntegratorKind k) { return static_cast<std::size_t>(k); }
   bool selected(std::size_t i) const { return i == index(selected_); }
-  // Cell i of the grid, row by row from the top left; cell 8 holds the energy plot.
+  // Cell i of the grid, row by row from the top left; cell 8 (bottom left) holds the energy plot.
   static Vec3 panelCenter(std::size_t i) {
     const Real column = static_cast<Real>(i % kColumns) - 0.5 * (kColumns - 1);
-    const Real rowFromBottom = static_cast<Real>(2 - static_cast<int>(i / kColumns));
+    const Real rowFromBottom = static_cast<Real>(kRows - 1 - static_cast<int>(i / kColumns));
     return column * kPanel * right() + (kBottom + kPhaseLimit + rowFromBottom * kPanelHeight) * kUp;
+  }
+  // Head-on and nearly level, the whole figure (labels and header included) filling the view's height.
+  std::optional<app::CameraView> preferredView() const override {
+    const Real top = kBottom + 2.0 * kPhaseLimit + (kRows - 1) * kPanelHeight + 1.0;  // header line
+    const Real height = top - (kBottom - 0.5);                                        // bottom labels
+    const Real pitch = 0.08;
+    // 45° vertical field of view: the visible height at distance D is 2 D tan 22.5°; 5 % margin.
+    const Real distance = 1.05 * height / (2.0 * std::tan(0.5 * degToRad(45.0)));
+    return app::CameraView{Vec3(0.0, 0.5 * (top + kBottom - 0.5), 0.0), distance, kFacingYaw, pitch};
   }
   Real errorOf(const Method& m) const {
     return std::hypot(m.system->positions()[0] - m.system->exactPosition(time_),
