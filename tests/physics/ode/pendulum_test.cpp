@@ -1,6 +1,7 @@
 // The CMU asst4 pendulum joint (ode/pendulum.h), both steppers: asst4's symplectic Euler with the exact
 // damping factor (stepPendulum) and PendulumSystem under the non-exercise integrators. Expected values
 // are closed forms computed here: the exact large-amplitude period, exponential decay, equilibria.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -196,6 +197,43 @@ TEST(Pendulum, APivotMovedByHandGivesTheSecondDifferenceOfItsPositionsAsItsAccel
   const Vec3 c(1.0, -2.0, 0.0);
   auto parabola = [&](Real t) { return 0.5 * t * t * c; };
   EXPECT_VEC3_NEAR(pivotAccelerationFromPositions(parabola(0.9), parabola(1.0), parabola(1.1), 0.1), c, 1e-12);
+}
+
+TEST(Pendulum, Asst4StepSwingsWithTheSmallAnglePeriodTwoPiRootIOverMgL) {
+  // Amplitude 0.01 rad: the large-amplitude correction 1 + A²/16 is 6·10⁻⁶; symplectic Euler's own
+  // frequency error (ωh)²/24 is 5·10⁻⁹ at h = 10⁻⁴ s. Period from upward zero crossings (interpolated).
+  const PendulumDesc d = undamped();
+  const Real h = 1e-4, period = 2.0 * kPi * std::sqrt(pivotInertia(d) / (d.mass * d.gravity * comDistance(d)));
+  PendulumState s{0.0, 0.01 * 2.0 * kPi / period};  // through the bottom at amplitude 0.01 rad
+  std::vector<Real> crossings;
+  for (int i = 0; i < static_cast<int>(5.5 * period / h); ++i) {
+    const PendulumState next = stepPendulum(d, s, Vec3(0.0), h);
+    if (s.angle < 0.0 && next.angle >= 0.0) crossings.push_back((i + s.angle / (s.angle - next.angle)) * h);
+    s = next;
+  }
+  ASSERT_GE(crossings.size(), 5u);
+  EXPECT_NEAR((crossings.back() - crossings.front()) / static_cast<Real>(crossings.size() - 1), period, 2e-5 * period);
+}
+
+TEST(Pendulum, Asst4StepKeepsTheUndampedEnergyInABandWithoutDrift) {
+  // Symplectic Euler: the energy error oscillates within O(ω₀h) and does not grow — the same band in
+  // the first and the hundredth period (explicit Euler's would grow every step).
+  const PendulumDesc d = undamped();
+  const Real h = 1.0 / 240.0, omega0 = std::sqrt(d.mass * d.gravity * comDistance(d) / pivotInertia(d));
+  const Real period = exactPeriod(d, 1.0);
+  const PendulumState start{1.0, 0.0};
+  const Real e0 = pendulumEnergy(d, start);
+  PendulumState s = start;
+  const int perPeriod = static_cast<int>(period / h);
+  Real firstBand = 0.0, lastBand = 0.0;
+  for (int i = 0; i < 100 * perPeriod; ++i) {
+    s = stepPendulum(d, s, Vec3(0.0), h);
+    const Real error = std::abs(pendulumEnergy(d, s) - e0) / e0;
+    if (i < perPeriod) firstBand = std::max(firstBand, error);
+    if (i >= 99 * perPeriod) lastBand = std::max(lastBand, error);
+  }
+  EXPECT_LE(firstBand, omega0 * h);
+  EXPECT_NEAR(lastBand, firstBand, 0.1 * firstBand);
 }
 
 }  // namespace
