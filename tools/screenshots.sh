@@ -12,7 +12,10 @@ for exe in "$build"/bin/pba-*; do
   lab="${exe##*/pba-}"
   for scene in $("$exe" --list-scenes | awk '{print $1}'); do
     png="$root/docs/images/$lab-$scene.png"
-    "${run[@]}" "$exe" --scene "$scene" --frames "${PBA_SCREENSHOT_FRAMES:-150}" --screenshot "$png" >/dev/null
+    frames="${PBA_SCREENSHOT_FRAMES:-150}"
+    # The oscillator's figure is its state at end_time (3 periods = 18.85 s): 19 s of frames.
+    [[ "$lab-$scene" == particles-oscillator ]] && frames=1140
+    "${run[@]}" "$exe" --scene "$scene" --frames "$frames" --screenshot "$png" >/dev/null
     echo "wrote docs/images/$lab-$scene.png"
     count=$((count + 1))
   done

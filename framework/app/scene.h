@@ -33,6 +33,15 @@ struct Preset {
   nlohmann::json params;  ///< same shape as a scene file's "params"
 };
 
+/// A camera a scene asks for when fitting its drawing's bounding sphere frames it poorly (a flat figure
+/// facing the camera, a tall fountain): look at `target` from `distance` at `yaw` and `pitch` [rad].
+struct CameraView {
+  Vec3 target{0.0};    ///< [m]
+  Real distance = 10;  ///< [m]
+  Real yaw = 0.6;      ///< [rad] about +y (the framework's default camera yaw)
+  Real pitch = 0.45;   ///< [rad] above the horizon
+};
+
 /// A rectangle of the window in pixels, y down (ImGui's convention).
 struct ScreenRect {
   float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
@@ -64,6 +73,9 @@ class Scene {
   /// Draws that window inside `column` [pixels] (window mode only, while the panels are shown).
   virtual void overlayUi(const ScreenRect& /*column*/) {}
 
+  /// The view to frame this scene with (F, reset, start); empty: fit the drawn bounds. The framework
+  /// still shifts it right of the control panel, but not up for the plots (the scene leaves them room).
+  virtual std::optional<CameraView> preferredView() const { return std::nullopt; }
   /// The time step this scene is designed for [s].
   virtual Real defaultDt() const { return 1.0 / 120.0; }
   /// Empty when the state is finite; otherwise names what is not ("ball velocity is NaN").

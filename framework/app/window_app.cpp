@@ -77,6 +77,15 @@ std::string timestampedScreenshotName(const std::string& lab, const std::string&
 void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 viewport, float panelPixels,
                  float overlayPixels, bool plotsShown) {
   const float aspect = viewport.y > 0.0f ? viewport.x / viewport.y : 1.0f;
+  if (const std::optional<CameraView> view = scene.preferredView()) {
+    camera.target = glm::vec3(view->target);
+    camera.distance = static_cast<float>(view->distance);
+    camera.yaw = static_cast<float>(view->yaw);
+    camera.pitch = static_cast<float>(view->pitch);
+    camera.clampState();
+    camera.pan(0.5f * (panelPixels - overlayPixels), 0.0f, viewport);
+    return;
+  }
   graphics::DebugRenderer probe;
   SceneDraw draw(probe);
   scene.draw(draw);

@@ -49,7 +49,7 @@ class BouncingScene final : public app::Scene {
     sim_.integrate(dt);
     particles::Particles& p = sim_.system.particles;
     if (ballCollisions_) particles::collideParticlePairs(p, radius_, obstacles_.material.restitution, hash_);
-    particles::collideWithObstacles(p, obstacles_, radius_);
+    particles::collideWithObstacles(p, obstacles_, radius_, sim_.contactStep(dt));
     sim_.finishStep();
   }
 
@@ -76,6 +76,10 @@ class BouncingScene final : public app::Scene {
   std::optional<std::string> nonFiniteState() const override { return sim_.nonFiniteState(); }
   std::optional<Real> energy() const override { return sim_.system.energy(); }
   std::vector<std::string> defaultPlots() const override { return {"energy", "resting"}; }
+  // Close on the obstacles and the 6 m ground square (the balls start up to 5 m high and fall onto it).
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.4, 0.2, -0.3), 7.5, 0.6, 0.5};
+  }
   std::vector<app::Preset> presets() const override {
     return {{"superballs", {{"restitution", 0.95}, {"static_friction", 0.1}, {"kinetic_friction", 0.05}}},
             {"clay", {{"restitution", 0.1}}},

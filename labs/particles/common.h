@@ -88,13 +88,21 @@ struct IntegratedSystem {
     rate.start();
     integrator.step(system, dt);
   }
+  /// What collideWithObstacles needs of the step just taken (gravity, dt) to find the approach speed at
+  /// the contact time and tell resting contact from an impact.
+  particles::ContactStep contactStep(Real dt) const { return {system.forces.gravity, dt}; }
   /// The end of step(dt): stops the timer (every particle counts as one update).
   void finishStep() { rate.stop(system.particles.size()); }
   /// For Scene::nonFiniteState(): names the first particle whose state is not finite.
   std::optional<std::string> nonFiniteState() const { return particles::describeNonFinite(system.particles); }
-  /// baseMetrics() of this system.
+  /// baseMetrics() of this system, and momentum = |P| = |Σ mᵢ vᵢ| [kg·m/s] of the free particles
+  /// (pinned ones have no mass here). Gravity, the ground and pins change P; the springs do not.
   nlohmann::json metrics() const {
-    return baseMetrics(kind, system.particles.size(), system.energy(), initialEnergy, rate);
+    nlohmann::json j = baseMetrics(kind, system.particles.size(), system.energy(), initialEnergy, rate);
+    Vec3 momentum(0.0);
+    for (std::size_t i = 0; i < system.particles.size(); ++i) momentum += system.particles.mass(i) * system.particles.velocity[i];
+    j["momentum"] = glm::length(momentum);
+    return j;
   }
 };
 

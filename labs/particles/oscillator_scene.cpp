@@ -3,6 +3,11 @@
 // portrait (x right, v up): the exact orbit is the grey unit circle; Euler spirals outward (energy × 1 + h²
 // per step), symplectic Euler and the Verlets stay on a nearby ellipse, RK4 hugs the circle, implicit
 // Euler spirals inward. The ninth cell plots the energy of each method over time.
+//
+// Time: every method steps with the scene's own h (the parameter), not the runner's dt. The runner's dt
+// advances the scene's clock; h-steps are taken as they fall due on that clock (ode::nextDueStep), and
+// the step that would pass end_time is shortened to end there, so the error metric is taken against the
+// closed form at end_time exactly (3 periods with h = 0.1: 188 steps of 0.1 s and one of 0.0496 s).
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -14,9 +19,11 @@
 namespace {
 using namespace pba;
 
-// The figure is a 3 × 3 grid: eight phase portraits and, in the last cell, the energy plot. A square
-// grid keeps the bounding sphere the runner frames small, so panels and labels stay readable.
-constexpr int kColumns = 3;
+// The figure is a 4 × 3 grid facing the camera (preferredView frames it to fill the view right of the
+// control panel): eight phase portraits in two rows of four and, bottom left, the energy plot. The
+// bottom right is left empty for the plot window (error and energy of the selected method).
+constexpr int kColumns = 4;
+constexpr int kRows = 3;
 constexpr Real kPanel = 3.4;        // [m] horizontal spacing of the cells in the scene
 constexpr Real kPanelHeight = 3.7;  // [m] vertical spacing (room for the labels above and below)
 constexpr Real kPhaseLimit = 1.4;   // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
@@ -30,10 +37,13 @@ class OscillatorScene final : public app::Scene {
  public:
   OscillatorScene() {
     params_.real("h", &h_, 0.001, 0.5, "s",
-                 "Integrator step h. ωh is what matters: Euler's energy grows by 1 + (ωh)² per step. Typical 0.1.")
+                 "Integrator step h of every method (the runner's dt only paces the clock on which h-steps fall "
+                 "due; set coarse steps here, --set h=0.3). ωh is what matters: Euler's energy grows by 1 + (ωh)² "
+                 "per step. Typical 0.1.")
         .logarithmic();
     params_.real("end_time", &endTime_, 1.0, 200.0, "s",
-                 "The methods stop here and the error metric is taken against the closed form. 3 periods ≈ 18.85 s.")
+                 "The methods stop here (the last step is shortened to end exactly here) and the error metric "
+                 "sqrt(dx² + dv²) is taken against the closed form. 3 periods ≈ 18.85 s.")
         .needsReset();
     lab::addIntegratorParam(params_, &selected_, " Here: which method the energy/error metrics report.");
   }
@@ -52,18 +62,20 @@ class OscillatorScene final : public app::Scene {
       methods_.push_back(std::move(m));
     }
     time_ = 0.0;
-    accumulator_ = 0.0;
+    clock_ = 0.0;
     record();
   }
 
   void step(Real dt) override {
-    accumulator_ += dt;
+    clock_ += dt;
     rate_.start();
     std::size_t updates = 0;
-    while (accumulator_ >= h_ && time_ + 0.5 * h_ < endTime_) {
-      accumulator_ -= h_;
-      for (Method& m : methods_) m.integrator.step(*m.system, h_);
-      time_ += h_;
+    while (const std::optional<ode::DueStep> due = ode::nextDueStep(time_, h_, clock_, endTime_)) {
+      for (Method& m : methods_) {
+        m.integrator.step(*m.system, due->h);
+        m.system->setTime(due->end);
+      }
+      time_ = due->end;
       updates += methods_.size();
       record();
     }
@@ -71,8 +83,8 @@ class OscillatorScene final : public app::Scene {
   }
 
   void draw(DebugDraw& d) const override {
-    // A 4 × 2 grid of phase portraits above an energy plot, all above the ground (y > 0) and in a
-    // vertical plane turned to face the lab's default camera, so the whole figure fits one screen.
+    // Two rows of four phase portraits above an energy plot, all above the ground (y > 0) and in a
+    // vertical plane turned to face the lab's default camera yaw.
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       const Vec3 c = panelCenter(i);
       const Color color = kMethodColors[i];
@@ -91,6 +103,11 @@ class OscillatorScene final : public app::Scene {
       std::snprintf(energy, sizeof energy, "E/E0 = %.3g", s.energy() / 0.5);
       d.text(c - (kPhaseLimit + 0.05) * kUp - kPhaseLimit * right(), energy, labelColor);
     }
+    // What the figure shows, above the grid: the step and the methods' time against end_time.
+    char header[128];
+    std::snprintf(header, sizeof header, "h = %.3g s (every method)   t = %.2f / %.2f s%s", h_, time_, endTime_,
+                  time_ >= endTime_ ? "  (end: error taken here)" : "");
+    d.text(panelCenter(0) + (kPhaseLimit + 0.75) * kUp - kPhaseLimit * right(), header, colors::kDark);
     // Energy plot in the last cell: E/E₀ over time, one polyline per method (clipped to [0, 4]).
     const Vec3 origin = panelCenter(methods_.size()) - kPhaseLimit * (right() + kUp);
     const Real width = 2.0 * kPhaseLimit, height = 2.0 * kPhaseLimit, tScale = width / endTime_;
@@ -113,6 +130,8 @@ class OscillatorScene final : public app::Scene {
     const Method& m = methods_[index(selected_)];
     nlohmann::json j = lab::baseMetrics(selected_, 1, m.system->energy(), 0.5, rate_);
     j["time_s"] = time_;
+    j["h"] = h_;
+    j["end_time"] = endTime_;
     j["error"] = errorOf(m);
     for (const Method& other : methods_) {
       const std::string name(ode::integratorName(other.integrator.kind()));
@@ -129,9 +148,9 @@ class OscillatorScene final : public app::Scene {
     return std::nullopt;
   }
   // No energy(): the runaway guard must not stop Euler's outward spiral, which is the point here.
-  // No default plot windows: the scene draws every method's energy itself (ninth cell), and a plot window
-  // would cover the lower row of the grid. Tick "plot" in the metrics panel for more.
-  std::vector<std::string> defaultPlots() const override { return {}; }
+  // The selected method's error against the closed form and its energy (the ninth cell draws every
+  // method's energy; switch "integrator" to plot another).
+  std::vector<std::string> defaultPlots() const override { return {"error", "energy"}; }
   std::vector<app::Preset> presets() const override {
     return {{"Lobb: h = 0.1", {{"h", 0.1}}}, {"coarse h = 0.3", {{"h", 0.3}}}, {"fine h = 0.01", {{"h", 0.01}}},
             {"very coarse h = 0.5", {{"h", 0.5}}}};
@@ -154,11 +173,20 @@ class OscillatorScene final : public app::Scene {
   }
   static std::size_t index(ode::IntegratorKind k) { return static_cast<std::size_t>(k); }
   bool selected(std::size_t i) const { return i == index(selected_); }
-  // Cell i of the grid, row by row from the top left; cell 8 holds the energy plot.
+  // Cell i of the grid, row by row from the top left; cell 8 (bottom left) holds the energy plot.
   static Vec3 panelCenter(std::size_t i) {
     const Real column = static_cast<Real>(i % kColumns) - 0.5 * (kColumns - 1);
-    const Real rowFromBottom = static_cast<Real>(2 - static_cast<int>(i / kColumns));
+    const Real rowFromBottom = static_cast<Real>(kRows - 1 - static_cast<int>(i / kColumns));
     return column * kPanel * right() + (kBottom + kPhaseLimit + rowFromBottom * kPanelHeight) * kUp;
+  }
+  // Head-on and nearly level, the whole figure (labels and header included) filling the view's height.
+  std::optional<app::CameraView> preferredView() const override {
+    const Real top = kBottom + 2.0 * kPhaseLimit + (kRows - 1) * kPanelHeight + 1.0;  // header line
+    const Real height = top - (kBottom - 0.5);                                        // bottom labels
+    const Real pitch = 0.08;
+    // 45° vertical field of view: the visible height at distance D is 2 D tan 22.5°; 5 % margin.
+    const Real distance = 1.05 * height / (2.0 * std::tan(0.5 * degToRad(45.0)));
+    return app::CameraView{Vec3(0.0, 0.5 * (top + kBottom - 0.5), 0.0), distance, kFacingYaw, pitch};
   }
   Real errorOf(const Method& m) const {
     return std::hypot(m.system->positions()[0] - m.system->exactPosition(time_),
@@ -177,7 +205,8 @@ class OscillatorScene final : public app::Scene {
   Real endTime_ = 3.0 * 2.0 * kPi;
   ode::IntegratorKind selected_ = ode::IntegratorKind::Rk4;
   std::vector<Method> methods_;
-  Real time_ = 0.0, accumulator_ = 0.0;
+  Real time_ = 0.0;   ///< [s] time of the methods (the last h-step's end)
+  Real clock_ = 0.0;  ///< [s] the runner's time (sum of its dt)
   lab::UpdateRate rate_;
 };
 

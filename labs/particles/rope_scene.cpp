@@ -54,7 +54,7 @@ class RopeScene final : public app::Scene {
   void step(Real dt) override {
     sim_.system.forces.drag.linear = drag_;
     sim_.integrate(dt);
-    particles::collideWithObstacles(sim_.system.particles, ground_, kBeadRadius);
+    particles::collideWithObstacles(sim_.system.particles, ground_, kBeadRadius, sim_.contactStep(dt));
     sim_.finishStep();
   }
 

@@ -46,6 +46,17 @@ int integratorOrder(IntegratorKind kind) {
   return 1;
 }
 
+std::optional<DueStep> nextDueStep(Real t, Real h, Real until, Real stopAt) {
+  assert(h > 0.0);
+  const Real tolerance = 1e-9 * h;
+  const Real remaining = stopAt - t;
+  if (remaining <= tolerance) return std::nullopt;
+  const bool last = remaining <= h + tolerance;
+  const DueStep step{last ? remaining : h, last ? stopAt : t + h};
+  if (step.end > until + tolerance) return std::nullopt;
+  return step;
+}
+
 void Integrator::setKind(IntegratorKind kind) {
   if (kind != kind_) reset();
   kind_ = kind;

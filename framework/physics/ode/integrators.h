@@ -154,6 +154,18 @@ struct AdaptiveState {
 /// with two half steps in place of the embedded pair.
 void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, AdaptiveState& state, Workspace& w);
 
+/// A step of a fixed-step schedule: its size [s] and the time it ends at [s].
+struct DueStep {
+  Real h = 0.0;
+  Real end = 0.0;
+};
+/// Scenes that integrate with their own step h while the runner's clock advances by its dt (the
+/// oscillator and orbit scenes): the next step of size h starting at time t that has fallen due by the
+/// clock time `until` (t + h ≤ until), never passing `stopAt`: the step that would cross stopAt is
+/// shortened to end on it exactly, so a comparison at stopAt is taken at stopAt and not up to h before.
+/// nullopt when no step is due (or t has reached stopAt). Times are compared with a tolerance of 1e-9 h.
+std::optional<DueStep> nextDueStep(Real t, Real h, Real until, Real stopAt);
+
 /// One object that steps a SecondOrderSystem with the method chosen by name; owns the workspace and
 /// the per-method memory (Verlet history, adaptive step size). Scenes keep one per system.
 class Integrator {

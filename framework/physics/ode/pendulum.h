@@ -3,10 +3,15 @@
 // xy plane about a pivot that may itself move.
 //
 //   θ̈ = −[ m ⟨a_p, y⊥⟩ + m g L sin(θ + ψ) ] / I,    L = |C − c|, I = I_cm + m L² (about the pivot)
-// θ is the joint angle, ψ the angle from the downward vertical of the centre-of-mass offset y = C − c at
-// θ = 0 (atan2; the asst4 writes sin(θ − ψ) with its own sign convention), a_p the pivot's acceleration
-// and y⊥ the unit-free perpendicular (y rotated by +90°). Departure from asst4: it writes ⟨a, y⊥⟩/L² for
-// the pivot term, which is the point-mass case I = m L² of our m⟨a, y⊥⟩/I.
+// θ is the joint angle; y = C − c the centre-of-mass offset from the pivot c, given at θ = 0 as the
+// body's geometry (PendulumDesc::comOffset); ψ = atan2(y_x, −y_y) its angle from the downward vertical
+// (CMU asst4: "ψ = angle of y with the vertical (atan2)"; asst4 writes sin(θ − ψ) with its own sign
+// convention); a_p the pivot's actual acceleration and y⊥ the unit-free perpendicular (y rotated by
+// +90°). Departure from asst4: it writes ⟨a, y⊥⟩/L² for the pivot term, which is the point-mass case
+// I = m L² of our m⟨a, y⊥⟩/I.
+// The pivot's acceleration: analytic when the pivot is scripted (a spline's or a sine's second
+// derivative), or the central second difference of its positions over the steps when it is moved by
+// hand (pivotAccelerationFromPositions).
 // Damping a [1/s] adds ω̇ = −a ω, whose exact solution over a step h is the factor exp(−a h).
 //
 // Two ways to step it:
@@ -28,8 +33,7 @@ namespace pba::ode {
 
 struct PendulumDesc {
   Real mass = 1.0;            ///< [kg] > 0
-  Real comDistance = 1.0;     ///< L [m] > 0, pivot to centre of mass
-  Real comOffsetAngle = 0.0;  ///< ψ [rad], 0 = centre of mass straight below the pivot at θ = 0
+  Vec3 comOffset{0.0, -1.0, 0.0};  ///< y = C − c [m] at θ = 0 (xy; z ignored), |y| > 0: straight down by default
   Real inertiaCm = 0.02;      ///< I_cm [kg·m²] ≥ 0 about the centre of mass
   Real damping = 0.1;         ///< a [1/s] ≥ 0
   Real gravity = kStandardGravity;  ///< [m/s²]
@@ -41,6 +45,14 @@ struct PendulumState {
   Real angularVelocity = 0.0;  ///< ω [rad/s]
 };
 
+/// L = |C − c| [m], the pivot to centre of mass distance.
+Real comDistance(const PendulumDesc& d);
+/// ψ = atan2(y_x, −y_y) [rad]: the angle of y = C − c from the downward vertical (0 = straight below).
+Real comOffsetAngle(const PendulumDesc& d);
+/// The pivot's acceleration at time t from its positions at t − h, t and t + h [m/s²]: the central
+/// second difference (x₊ − 2x + x₋)/h², error A ω⁴ h²/12 for a sine of amplitude A, exact for constant
+/// acceleration. For a pivot moved by hand, whose next position is known before the step.
+Vec3 pivotAccelerationFromPositions(const Vec3& previous, const Vec3& current, const Vec3& next, Real h);
 /// Moment of inertia about the pivot, I = I_cm + m L² [kg·m²].
 Real pivotInertia(const PendulumDesc& d);
 /// θ̈ for a pivot accelerating at pivotAcceleration [m/s²] (xy components used).

@@ -60,31 +60,45 @@ Vec3 contactVelocity(const Vec3& v, [[maybe_unused]] const Vec3& normal,
 
 namespace {
 void resolve(Particles& p, std::size_t i, const SurfacePoint& s, Real radius, const ContactMaterial& m,
-             CollisionStats& stats) {
+             const ContactStep& step, CollisionStats& stats) {
   const Real phi = s.distance - radius;
   if (phi >= kContactSlop) return;
+  const Real depth = std::max(0.0, -phi);
   if (phi < 0.0) {
-    p.position[i] += -phi * s.normal;
-    stats.deepestPenetration = std::max(stats.deepestPenetration, -phi);
+    p.position[i] += depth * s.normal;
+    stats.deepestPenetration = std::max(stats.deepestPenetration, depth);
   }
   Vec3& v = p.velocity[i];
-  if (glm::dot(v, s.normal) >= 0.0) return;
+  const Real vn = glm::dot(v, s.normal);
+  if (vn >= 0.0) return;
   ++stats.contacts;
-  v = contactVelocity(v, s.normal, m);
+  // Steps 3–4 (collision.h): approach speed at the contact time, and the resting-contact test.
+  const Real inwardAcceleration = std::max(0.0, -glm::dot(step.acceleration, s.normal));
+  const Real speed = -vn;
+  const Real contactSpeed = std::sqrt(std::max(0.0, speed * speed - 2.0 * inwardAcceleration * depth));
+  if (contactSpeed <= m.restingSpeed + inwardAcceleration * step.dt) {
+    ContactMaterial resting = m;
+    resting.restitution = 0.0;
+    v = contactVelocity(v, s.normal, resting);
+  } else {
+    v += (speed - contactSpeed) * s.normal;  // the normal speed it had at the contact time
+    v = contactVelocity(v, s.normal, m);
+  }
   // Safety net (a no-op for a correct PART-5): never leave a touching particle moving inward, so that
   // the scenes stay sane while the exercise is a stub.
-  const Real vn = glm::dot(v, s.normal);
-  if (vn < 0.0) v -= vn * s.normal;
+  const Real vnAfter = glm::dot(v, s.normal);
+  if (vnAfter < 0.0) v -= vnAfter * s.normal;
 }
 }  // namespace
 
-CollisionStats collideWithObstacles(Particles& p, const Obstacles& o, Real radius) {
+CollisionStats collideWithObstacles(Particles& p, const Obstacles& o, Real radius, const ContactStep& step) {
   CollisionStats stats;
+  const ContactMaterial& m = o.material;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.inverseMass[i] <= 0.0) continue;
-    for (const PlaneObstacle& plane : o.planes) resolve(p, i, closestSurface(plane, p.position[i]), radius, o.material, stats);
-    for (const SphereObstacle& s : o.spheres) resolve(p, i, closestSurface(s, p.position[i]), radius, o.material, stats);
-    for (const BoxObstacle& b : o.boxes) resolve(p, i, closestSurface(b, p.position[i]), radius, o.material, stats);
+    for (const PlaneObstacle& plane : o.planes) resolve(p, i, closestSurface(plane, p.position[i]), radius, m, step, stats);
+    for (const SphereObstacle& s : o.spheres) resolve(p, i, closestSurface(s, p.position[i]), radius, m, step, stats);
+    for (const BoxObstacle& b : o.boxes) resolve(p, i, closestSurface(b, p.position[i]), radius, m, step, stats);
   }
   return stats;
 }

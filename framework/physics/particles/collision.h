@@ -8,10 +8,18 @@
 //   2. Position projection: if φ < 0 move the particle out by −φ along N. The notes back the step up to
 //      the contact time; projecting is the cheap, robust alternative (Jakobsen 2001; also what the
 //      Ragdoll paper's "projection" does) and it guarantees that nothing ends below a surface.
-//   3. Velocity response (PART-5) when the particle touches (φ < slop) and moves inward (v_n < 0):
-//      restitution on the normal part — zero below a resting speed, so gravity's g·h per step never
-//      turns into a micro-bounce (no jitter: the notes' resting-contact switch) — and Coulomb friction
-//      on the tangential part, as an impulse bounded by μ times the normal impulse.
+//   3. Approach speed at the contact time. A particle found a depth d below the surface fell that far
+//      past the contact under the uniform acceleration a (gravity): its normal speed then was
+//      s_c = √(s² − 2 a_n d), a_n = −N·a > 0 the inward part of a (constant-acceleration kinematics).
+//      This is the notes' "back the step up to the contact time" for the velocity; without it the
+//      projection keeps the speed gained below the surface, and the methods that are exact under
+//      gravity (velocity Verlet, RK4, ...) return each impact ≈ e·s + g·h: a micro-bounce forever.
+//   4. Resting contact (Lobb notes §2): s_c ≤ restingSpeed + a_n h — no faster than one step of the
+//      acceleration explains — is contact, not an impact: restitution 0 (no jitter).
+//   5. Velocity response (PART-5) when the particle touches (φ < slop) and moves inward (v_n < 0):
+//      restitution on the normal part (of the contact-time speed s_c for an impact) and Coulomb
+//      friction on the tangential part, as an impulse bounded by μ times the normal impulse (the full
+//      inward speed s for a resting contact, which is g·h per step under gravity).
 // Why the impulse form is Coulomb's law: over a step the normal impulse per unit mass is Δv_n; Coulomb
 // bounds the tangential impulse by μ Δv_n. Resting on a plane under gravity Δv_n = g h each step, so
 // kinetic friction decelerates by exactly μ_k g, and a particle on a slope of angle θ sticks when
@@ -78,11 +86,19 @@ SurfacePoint closestSurface(const BoxObstacle& o, const Vec3& x);
 // *****
 Vec3 contactVelocity(const Vec3& v, const Vec3& normal, const ContactMaterial& material);
 
+/// What the contact model knows of the step that brought the particles here (steps 3–4 above).
+/// The default (no acceleration, dt 0) turns both steps off: plain projection + PART-5.
+struct ContactStep {
+  Vec3 acceleration{0.0};  ///< [m/s²] uniform acceleration of the free particles (gravity)
+  Real dt = 0.0;           ///< [s] the integrator step just taken
+};
+
 struct CollisionStats {
   std::size_t contacts = 0;      ///< particle–obstacle contacts this call
   Real deepestPenetration = 0.0; ///< [m] before projection
 };
-/// Steps 1–3 of the contact model for every free particle of radius `radius` [m] against every obstacle.
-CollisionStats collideWithObstacles(Particles& p, const Obstacles& obstacles, Real radius);
+/// Steps 1–5 of the contact model for every free particle of radius `radius` [m] against every obstacle.
+CollisionStats collideWithObstacles(Particles& p, const Obstacles& obstacles, Real radius,
+                                    const ContactStep& step = {});
 
 }  // namespace pba::particles

@@ -1,6 +1,8 @@
 // Tests of the integrators that are not exercises: midpoint, velocity Verlet, implicit Euler, adaptive,
 // the name table and the finite-difference Jacobian. Expected values come from closed forms.
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -128,6 +130,43 @@ TEST(Integrator, AdvancesTheSystemTimeByTheStep) {
     for (int i = 0; i < 10; ++i) integrator.step(osc, 0.05);
     EXPECT_NEAR(osc.time(), 0.5, 1e-12) << integratorName(k);
   }
+}
+
+TEST(DueSteps, ScheduleStepsOfHOnTheRunnersClockAndShortenTheLastToEndExactlyAtTheStopTime) {
+  // The oscillator scene's schedule: clock dt = 1/60 s, step h = 0.1 s, stop at 3 periods (6π s).
+  // Reference: 188 midpoint steps of h then one of 6π − 18.8 s, each the matrix
+  // [[1 − z²/2, h], [−h, 1 − z²/2]] (ω = 1), against the closed form cos t, −sin t at 6π.
+  const Real h = 0.1, dt = 1.0 / 60.0, stopAt = 6.0 * kPi;
+  HarmonicOscillator osc;
+  Integrator integrator(IntegratorKind::Midpoint);
+  Real t = 0.0, clock = 0.0;
+  std::vector<Real> sizes;
+  for (int frame = 0; frame < 30 * 60; ++frame) {
+    clock += dt;
+    while (const std::optional<DueStep> due = nextDueStep(t, h, clock, stopAt)) {
+      EXPECT_LE(due->end, clock + 1e-9 * h) << "a step ran ahead of the clock";
+      integrator.step(osc, due->h);
+      t = due->end;
+      sizes.push_back(due->h);
+    }
+  }
+  ASSERT_EQ(sizes.size(), 189u);
+  EXPECT_EQ(t, stopAt);
+  const Real last = stopAt - 188 * h;
+  EXPECT_NEAR(sizes.back(), last, 1e-12);
+  Real x = 1.0, v = 0.0;
+  for (std::size_t i = 0; i < sizes.size(); ++i) {
+    const Real k = i + 1 < sizes.size() ? h : last, c = 1.0 - 0.5 * k * k;
+    const Real xn = c * x + k * v, vn = -k * x + c * v;
+    x = xn;
+    v = vn;
+  }
+  EXPECT_NEAR(osc.positions()[0], x, 1e-12);
+  EXPECT_NEAR(osc.velocities()[0], v, 1e-12);
+  const Real error = std::hypot(osc.positions()[0] - std::cos(stopAt), osc.velocities()[0] + std::sin(stopAt));
+  EXPECT_NEAR(error, std::hypot(x - 1.0, v), 1e-12);
+  // Nothing more falls due once the stop time is reached, however far the clock runs.
+  EXPECT_FALSE(nextDueStep(t, h, 1e6, stopAt).has_value());
 }
 
 }  // namespace
