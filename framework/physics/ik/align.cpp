@@ -17,17 +17,6 @@ namespace {
 
 Vec3 perp(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
 
-Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
-               const std::vector<Real>& w) {
-  Real S = 0.0, C = 0.0;
-  for (size_t i = 0; i < from.size(); ++i) {
-    const Vec3 u = perp(from[i] - p, a), v = perp(to[i] - p, a);
-    S += w[i] * glm::dot(a, glm::cross(u, v));
-    C += w[i] * glm::dot(u, v);
-  }
-  return std::atan2(S, C);
-}
-
 // Turns joint j by the world rotation `world` about its pivot: its local rotation becomes
 // R_pre⁻¹ · world · R_pre · oldLocal (ball: stored as XYZ Euler angles; free: directly), clamped to the
 // limits; `oldWorld` = R_pre · oldLocal is the joint's current world rotation (Frame::rotation).
@@ -62,6 +51,19 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
   return f.pre * newLocal * glm::conjugate(oldLocal) * preInverse;
 }
 
+}  // namespace
+
+Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+               const std::vector<Real>& w) {
+  Real S = 0.0, C = 0.0;
+  for (size_t i = 0; i < from.size(); ++i) {
+    const Vec3 u = perp(from[i] - p, a), v = perp(to[i] - p, a);
+    S += w[i] * glm::dot(a, glm::cross(u, v));
+    C += w[i] * glm::dot(u, v);
+  }
+  return std::atan2(S, C);
+}
+
 // The hinge optimum is an angle modulo 2π. Of the representatives ψ − 2π, ψ, ψ + 2π, pick the one
 // whose clamped value is closest to the optimum in angle (the objective is proportional to
 // cos(value − ψ)): a joint at 100° with limits ±120° that should turn +170° goes to −90°, not to 120°.
@@ -78,8 +80,6 @@ Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
   }
   return best;
 }
-
-}  // namespace
 
 bool rotationUnlimited(const Joint& joint) {
   if (joint.type == JointType::Free) return joint.maxRotation >= kPi;

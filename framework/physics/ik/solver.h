@@ -59,6 +59,14 @@ struct SolveOptions {
   bool usePole = false;            ///< analytic two-bone: bend toward polePoint (else keep the current bend plane)
   Vec3 polePoint{0.0};            ///< [m] world point the elbow should point toward (the "pole target")
   bool recordHistory = false;     ///< keep the residual and effector position of every iteration
+  /// Stall recovery (IK slides, "Stopping": when stuck, randomise the pose or switch algorithm). With
+  /// joint limits or one-sided hinges a method can stall in a local minimum short of a reachable goal.
+  /// On a stall (never on an unreachable goal, a closed-form method or the caps) the solve restarts
+  /// from a random pose inside the limits, at most `restarts` times, within the same maxIterations;
+  /// it returns the attempt with the smallest residual. The random poses come from `restartSeed`
+  /// alone, so a solve stays deterministic. 0 turns the recovery off (a stall then stops the solve).
+  int restarts = 10;
+  unsigned long long restartSeed = 0x5EEDull;  ///< seed of the restart poses
 };
 
 struct SolveResult {
@@ -66,6 +74,7 @@ struct SolveResult {
   int iterations = 0;
   Real positionResidual = 0.0;     ///< [m] largest effector distance to its goal at the end
   Real orientationResidual = 0.0;  ///< [rad] largest 6-DOF orientation error at the end
+  int restarts = 0;                ///< stall recoveries used (SolveOptions::restarts)
   Real seconds = 0.0;              ///< [s] wall time of the solve (measurement only, never used for control unless maxSeconds)
   std::string message;             ///< for InvalidInput / NotApplicable
   std::vector<Real> residualHistory;           ///< [m] position residual after each iteration (recordHistory)

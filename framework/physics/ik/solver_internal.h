@@ -97,6 +97,19 @@ std::unique_ptr<Method> makeAnalytic(const Context& c, std::string* why);
 Quat alignJoint(Context& c, int j, const Frame& frame, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
                 const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation);
 
+/// The rotation angle about the unit axis `a` through `p` that best carries the points `from` onto
+/// `to` (weights w): θ = atan2(Σ wᵢ a·(u⊥ᵢ × v⊥ᵢ), Σ wᵢ u⊥ᵢ·v⊥ᵢ) (align.cpp). 0 when undefined.
+Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+               const std::vector<Real>& w);
+/// The representative ψ − 2π, ψ or ψ + 2π of a hinge optimum ψ whose value clamped into [lo, hi] is
+/// closest to ψ in angle (ψ itself when clampLimits is false). The caller clamps.
+Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits);
+
+/// The rotation R maximising Σ wᵢ toᵢ·(R fromᵢ) (Horn's quaternion method: the least-squares
+/// rotation carrying the vectors `from` onto `to`), nearest `reference` where the vectors leave a
+/// rotation free (collinear or coincident points). fabrik.cpp.
+Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w, const Quat& reference);
+
 /// True when joint j's rotation limits admit every rotation (ball: Euler ranges cover [−π, π] ×
 /// [−π/2, π/2] × [−π, π]; free: maxRotation ≥ π), so clamping can never change it. Hinges,
 /// prismatic and fixed joints: false.
