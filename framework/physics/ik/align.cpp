@@ -33,7 +33,7 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
   if (joint.type == JointType::Ball) {
     if (clampNow) {
       Real* dofs = c.pose.dofs.data() + joint.firstDof;
-      const Vec3 e = eulerXYZFromQuat(wanted);
+      const Vec3 e = eulerWithinLimits(joint, wanted);
       for (int k = 0; k < 3; ++k) dofs[k] = e[k];
       clampJointToLimits(c.skeleton, c.pose, j);
       if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) newLocal = jointRotation(joint, c.pose, j);
@@ -79,6 +79,30 @@ Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
     }
   }
   return best;
+}
+
+namespace {
+// x, or x ± 2π, inside [lo, hi]; else the one of them nearest the interval. *violation: its distance.
+Real shiftInto(Real x, Real lo, Real hi, Real* violation) {
+  Real best = x, bestViolation = 1e300;
+  for (Real candidate : {x, x - 2.0 * kPi, x + 2.0 * kPi}) {
+    const Real v = std::max(0.0, lo - candidate) + std::max(0.0, candidate - hi);
+    if (v < bestViolation) bestViolation = v, best = candidate;
+  }
+  *violation += bestViolation;
+  return best;
+}
+}  // namespace
+
+Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
+  const Vec3 principal = eulerXYZFromQuat(q);
+  Vec3 out[2] = {principal, Vec3(principal.x + kPi, kPi - principal.y, principal.z + kPi)};
+  Real violation[2] = {0.0, 0.0};
+  for (int r = 0; r < 2; ++r)
+    for (int k = 0; k < 3; ++k) out[r][k] = shiftInto(std::remainder(out[r][k], 2.0 * kPi), joint.lo[k], joint.hi[k], &violation[r]);
+  const int pick = violation[1] < violation[0] ? 1 : 0;
+  if (inside) *inside = violation[pick] == 0.0;
+  return out[pick];
 }
 
 bool rotationUnlimited(const Joint& joint) {

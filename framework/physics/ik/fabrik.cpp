@@ -333,7 +333,7 @@ class Fabrik final : public Method {
         const Quat local = glm::normalize(glm::conjugate(*Rp * joint.restRotation) * Rk);
         Quat allowed = local;
         if (joint.type == JointType::Ball) {
-          const Vec3 e = eulerXYZFromQuat(local);
+          const Vec3 e = eulerWithinLimits(joint, local);
           Vec3 clamped;
           for (int i = 0; i < 3; ++i) clamped[i] = std::clamp(e[i], joint.lo[i], joint.hi[i]);
           if (clamped == e) return;
@@ -507,7 +507,7 @@ class Fabrik final : public Method {
     if (joint.type == JointType::Ball) {
       if (clampNow) {
         Real* dofs = c.pose.dofs.data() + joint.firstDof;
-        const Vec3 e = eulerXYZFromQuat(local);
+        const Vec3 e = eulerWithinLimits(joint, local);
         for (int k = 0; k < 3; ++k) dofs[k] = e[k];
         clampJointToLimits(c.skeleton, c.pose, j);
         if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) applied = jointRotation(joint, c.pose, j);

@@ -110,6 +110,13 @@ Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits);
 /// rotation free (collinear or coincident points). fabrik.cpp.
 Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w, const Quat& reference);
 
+/// XYZ Euler angles (a, b, c) of a ball joint's local rotation q in the representation its limits
+/// admit. Every rotation has two, the principal one (b in [−π/2, π/2], eulerXYZFromQuat) and
+/// (a + π, π − b, c + π); limits wider than ±90° on b admit rotations only in the second, and an
+/// angle may also need a shift by 2π into [lo, hi]. Returns the one inside the limits, else the one
+/// that clamping moves least (principal on ties); *inside says which case it was (may be null).
+Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside = nullptr);
+
 /// True when joint j's rotation limits admit every rotation (ball: Euler ranges cover [−π, π] ×
 /// [−π/2, π/2] × [−π, π]; free: maxRotation ≥ π), so clamping can never change it. Hinges,
 /// prismatic and fixed joints: false.
