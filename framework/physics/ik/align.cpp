@@ -68,7 +68,7 @@ Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, cons
 // whose clamped value is closest to the optimum in angle (the objective is proportional to
 // cos(value − ψ)): a joint at 100° with limits ±120° that should turn +170° goes to −90°, not to 120°.
 Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
-  if (!clampLimits) return psi;
+  if (!clampLimits || (psi >= lo && psi <= hi)) return psi;
   Real best = psi, bestScore = -2.0;
   for (Real candidate : {psi - 2.0 * kPi, psi, psi + 2.0 * kPi}) {
     const Real clamped = std::clamp(candidate, lo, hi);
@@ -96,6 +96,11 @@ Real shiftInto(Real x, Real lo, Real hi, Real* violation) {
 
 Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
   const Vec3 principal = eulerXYZFromQuat(q);
+  if (principal.x >= joint.lo[0] && principal.x <= joint.hi[0] && principal.y >= joint.lo[1] && principal.y <= joint.hi[1] &&
+      principal.z >= joint.lo[2] && principal.z <= joint.hi[2]) {  // the common case
+    if (inside) *inside = true;
+    return principal;
+  }
   Vec3 out[2] = {principal, Vec3(principal.x + kPi, kPi - principal.y, principal.z + kPi)};
   Real violation[2] = {0.0, 0.0};
   for (int r = 0; r < 2; ++r)

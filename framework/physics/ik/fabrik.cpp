@@ -102,16 +102,17 @@ namespace {
 void eigenSymmetric4(Real a[4][4], Real v[4][4]) {
   for (int p = 0; p < 4; ++p)
     for (int q = 0; q < 4; ++q) v[p][q] = p == q ? 1.0 : 0.0;
-  for (int sweep = 0; sweep < 30; ++sweep) {
+  for (int sweep = 0; sweep < 20; ++sweep) {
     Real off = 0.0, diag = 0.0;
     for (int p = 0; p < 4; ++p) {
       diag += a[p][p] * a[p][p];
       for (int q = p + 1; q < 4; ++q) off += a[p][q] * a[p][q];
     }
-    if (off <= 1e-32 * diag || off == 0.0) break;
+    if (off <= 1e-26 * diag || off == 0.0) break;  // off-diagonal below 1e-13 of the diagonal
+    const Real small = 1e-15 * std::sqrt(diag);
     for (int p = 0; p < 4; ++p)
       for (int q = p + 1; q < 4; ++q) {
-        if (a[p][q] == 0.0) continue;
+        if (std::abs(a[p][q]) <= small) continue;
         const Real theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
         const Real t = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
         const Real cs = 1.0 / std::sqrt(t * t + 1.0), sn = t * cs;
@@ -314,15 +315,21 @@ class Fabrik final : public Method {
         return;
       }
       case JointType::Hinge: {
-        // Body j = R(−θ about w) · R_k · Q⁻¹ with w = R_k a: its pivot turns about w through P_k.
-        // From the twist θ₀ of the proposal, the angle that brings the pivot nearest oldP.
-        const Quat local = glm::conjugate(*Rp * joint.restRotation) * Rk;
-        const Real theta0 = 2.0 * std::atan2(glm::dot(Vec3(local.x, local.y, local.z), joint.axis), local.w);
+        // Body j = R(−θ about w) · R_k · Q⁻¹ with w = R_k a: its pivot turns about w through P_k,
+        // from P_k − R_k Q⁻¹ t at θ = 0. The angle that brings it nearest oldP (the point rule's
+        // pivot lies on the line from P_k to oldP); where that is undefined (lever along the axis,
+        // or oldP on it), the twist of the rule's proposal.
         const Vec3 w = Rk * joint.axis;
         const Vec3 t = jointTranslation(joint, c.pose);
-        const Vec3 u = perpTo((Pk - (Rk * glm::angleAxis(-theta0, joint.axis) * restInverse) * t) - Pk, w);
-        const Vec3 v = perpTo(oldP - Pk, w);
-        Real theta = theta0 - std::atan2(glm::dot(w, glm::cross(u, v)), glm::dot(u, v));
+        const Vec3 u = perpTo(-(Rk * (restInverse * t)), w), v = perpTo(oldP - Pk, w);
+        const Real S = glm::dot(w, glm::cross(u, v)), C = glm::dot(u, v);
+        Real theta;
+        if (std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk))) {
+          theta = -std::atan2(S, C);
+        } else {
+          const Quat local = glm::conjugate(*Rp * joint.restRotation) * Rk;
+          theta = 2.0 * std::atan2(glm::dot(Vec3(local.x, local.y, local.z), joint.axis), local.w);
+        }
         if (clamp) theta = std::clamp(bestHingeValue(theta, joint.lo[0], joint.hi[0], true), joint.lo[0], joint.hi[0]);
         *Rp = glm::normalize(Rk * glm::angleAxis(-theta, joint.axis) * restInverse);
         break;
