@@ -29,7 +29,7 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
   const Quat preInverse = glm::conjugate(f.pre);
   const Quat wanted = glm::normalize(preInverse * (world * oldWorld));
   Quat newLocal = wanted;
-  const bool clampNow = clampLimits && !rotationUnlimited(joint);
+  const bool clampNow = clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
   if (joint.type == JointType::Ball) {
     if (clampNow) {
       Real* dofs = c.pose.dofs.data() + joint.firstDof;

@@ -338,6 +338,7 @@ class Fabrik final : public Method {
       case JointType::Free: {
         if (!clamp || rotationUnlimited(joint)) return;
         const Quat local = glm::normalize(glm::conjugate(*Rp * joint.restRotation) * Rk);
+        if (joint.type == JointType::Ball && c.surelyWithinLimits(k, local)) return;
         Quat allowed = local;
         if (joint.type == JointType::Ball) {
           const Vec3 e = eulerWithinLimits(joint, local);
@@ -509,7 +510,7 @@ class Fabrik final : public Method {
   // A ball or free joint's local rotation, clamped to its limits (IK-6); keeps c.local current.
   static void setRotation(Context& c, int j, const Quat& local, bool clamp) {
     const Joint& joint = c.skeleton.joint(j);
-    const bool clampNow = clamp && !rotationUnlimited(joint);
+    const bool clampNow = clamp && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, local));
     Quat applied = local;
     if (joint.type == JointType::Ball) {
       if (clampNow) {

@@ -242,6 +242,14 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
       c.belowList[static_cast<size_t>(fill[static_cast<size_t>(j)]++)] = static_cast<int>(k);
   c.active.assign(J, 0);
   for (size_t j = 0; j < J; ++j) c.active[j] = c.belowStart[j + 1] > c.belowStart[j];
+  c.insideCosHalf.assign(J, 2.0);
+  for (size_t j = 0; j < J; ++j) {
+    const Joint& joint = skeleton.joint(static_cast<int>(j));
+    if (joint.type != JointType::Ball) continue;
+    Real L = 0.5 * kPi;
+    for (int k = 0; k < 3; ++k) L = std::min({L, -joint.lo[k], joint.hi[k]});
+    if (L > 0.0) c.insideCosHalf[j] = std::cos(0.5 * L) + 1e-12;
+  }
 
   std::string why;
   std::unique_ptr<detail::Method> method = makeMethod(c, &why);
@@ -329,15 +337,16 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     const int k = o.stallIterations;
     const bool stalled = k > 0 && static_cast<int>(progress.size()) > k &&
                          !(score < (1.0 - o.stallRatio) * progress[progress.size() - 1 - static_cast<size_t>(k)]);
-    // Too slow counts as stuck when a restart is left: at the rate of the last k iterations the
-    // attempt would not meet the tolerance within the iterations that remain (CCD crawling along a
-    // limit can gain 1 % per pass for hundreds of passes).
+    // Crawling counts as stuck when a restart is left: less than 10 % progress over the last k
+    // iterations, a rate at which the tolerance would take more than twice the iterations that
+    // remain (CCD along a limit can gain 1 % per pass for hundreds of passes). Methods that speed up
+    // near the goal (DLS: linear while the error clamp acts, then quadratic) are never this slow.
     bool slow = false;
     if (!stalled && k > 0 && static_cast<int>(progress.size()) > k && result.restarts < o.restarts) {
       const Real rate = score / progress[progress.size() - 1 - static_cast<size_t>(k)];
       const Real goal = o.tolerance + c.orientationScale * o.angleTolerance;
-      if (score > goal && rate > 0.0 && rate < 1.0)
-        slow = Real(k) * std::log(goal / score) / std::log(rate) > Real(o.maxIterations - it);
+      if (score > goal && rate > 0.9 && rate < 1.0)
+        slow = Real(k) * std::log(goal / score) / std::log(rate) > 2.0 * Real(o.maxIterations - it);
     }
     // A restart needs iterations to get anywhere: at least 2k must remain (an interactive solve with
     // a cap of 30 keeps refining its warm start instead of jumping to a random pose it cannot finish).

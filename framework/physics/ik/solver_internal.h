@@ -34,6 +34,12 @@ struct Context {
   }
   /// Per joint: true when it lies on the path from the root to some effector.
   std::vector<char> active;
+  /// Per ball joint: cos(L/2) with L = min(π/2, the smallest |limit| of its three DOFs); 2 (never)
+  /// when a range excludes 0. A local rotation q with |q.w| ≥ it turns by less than L, and below
+  /// π/2 no XYZ Euler angle exceeds the rotation angle: q is within the limits, no Euler angles
+  /// needed to tell (see surelyWithinLimits).
+  std::vector<Real> insideCosHalf;
+  bool surelyWithinLimits(int j, const Quat& q) const { return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)]; }
   std::vector<Quat> local;  ///< R_dof per joint for `pose` (see above)
   /// Per joint: its Euler DOFs in `pose` lag behind `local` (alignJoint defers the quaternion → Euler
   /// conversion, two atan2 and a hypot, while no limit needs the angles); flushPose() writes them.

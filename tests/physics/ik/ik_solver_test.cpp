@@ -409,8 +409,9 @@ TEST(IK_5_FabrikSolver, UnlimitedDoubleYConvergesWithoutRestarts) {
   EXPECT_GE(s.successRate(), 0.99);
 }
 
-TEST(IK_3_SixDofEffector, JacobianMethodsAndCcdMatchPositionAndOrientation) {
-  for (SolverKind kind : {SolverKind::DampedLeastSquares, SolverKind::SelectivelyDamped, SolverKind::PseudoInverse, SolverKind::Ccd}) {
+TEST(IK_3_SixDofEffector, JacobianMethodsCcdAndFabrikMatchPositionAndOrientation) {
+  for (SolverKind kind : {SolverKind::DampedLeastSquares, SolverKind::SelectivelyDamped, SolverKind::PseudoInverse, SolverKind::Ccd,
+                          SolverKind::Fabrik}) {
     Rig rig = chain(JointType::Ball, 6, 150.0);
     rig.effectors[0].kind = EffectorKind::PositionOrientation;
     std::mt19937_64 rng(21);
