@@ -95,36 +95,45 @@ bool withinLimits(const Context& c, const Joint& joint, const Quat& local) {
 // Ry(b) Rz(c) u = w := Rx(−a) d has the closed form
 //   y:  r sin(c + ψ) = w_y, r = |(u_x, u_y)|, ψ = atan2(u_y, u_x)  →  c = asin(w_y / r) − ψ or π − asin(w_y / r) − ψ
 //   xz: b = atan2(u_z, r cos(c + ψ)) − atan2(w_z, w_x)             (Ry(b) turns the xz-plane by −b)
-// so a sweep of a over its range (1° steps) lists the members inside the limits, exactly. Returns the
-// one of least cost(q), or false when no sampled member lies within the limits.
+// so a sweep of a over its range lists the members inside the limits, exactly (10° steps, refined to
+// 1° about the best). Returns the one of least cost(q), or false when no sampled member lies within
+// the limits.
 template <typename Cost>
 bool ballDirectionWithinLimits(const Joint& joint, const Vec3& u, const Vec3& d, Cost cost, Quat* best) {
   const Real r = std::hypot(u.x, u.y), psi = std::atan2(u.y, u.x);
-  const Real lo = joint.lo[0], hi = joint.hi[0];
-  const int samples = std::max(16, static_cast<int>(std::ceil((hi - lo) / degToRad(1.0))));
-  Real bestCost = std::numeric_limits<Real>::infinity();
-  for (int i = 0; i <= samples; ++i) {
-    const Real a = lo + (hi - lo) * Real(i) / Real(samples);
-    const Vec3 w = glm::angleAxis(-a, Vec3(1, 0, 0)) * d;
-    if (std::abs(w.y) > r + 1e-12) continue;
-    const Real s = r > 1e-15 ? std::asin(std::clamp(w.y / r, -1.0, 1.0)) : 0.0;
-    for (Real c : {s - psi, kPi - s - psi}) {
-      const Real b = std::atan2(u.z, r * std::cos(c + psi)) - std::atan2(w.z, w.x);
-      Vec3 e(a, wrapAngle(b), wrapAngle(c));
-      bool inside = true;
-      for (int k = 1; k < 3; ++k) {
-        Real shifted = e[k];
-        for (Real candidate : {e[k], e[k] - 2.0 * kPi, e[k] + 2.0 * kPi})
-          if (candidate >= joint.lo[k] && candidate <= joint.hi[k]) shifted = candidate;
-        inside = inside && shifted >= joint.lo[k] && shifted <= joint.hi[k];
-        e[k] = shifted;
+  Real bestCost = std::numeric_limits<Real>::infinity(), bestA = 0.0;
+  auto scan = [&](Real lo, Real hi, Real step) {
+    const int samples = std::max(1, static_cast<int>(std::ceil((hi - lo) / step)));
+    for (int i = 0; i <= samples; ++i) {
+      const Real a = lo + (hi - lo) * Real(i) / Real(samples);
+      const Vec3 w = glm::angleAxis(-a, Vec3(1, 0, 0)) * d;
+      if (std::abs(w.y) > r + 1e-12) continue;
+      const Real s = r > 1e-15 ? std::asin(std::clamp(w.y / r, -1.0, 1.0)) : 0.0;
+      for (Real c : {s - psi, kPi - s - psi}) {
+        const Real b = std::atan2(u.z, r * std::cos(c + psi)) - std::atan2(w.z, w.x);
+        Vec3 e(a, wrapAngle(b), wrapAngle(c));
+        bool inside = true;
+        for (int k = 1; k < 3; ++k) {
+          Real shifted = e[k];
+          for (Real candidate : {e[k], e[k] - 2.0 * kPi, e[k] + 2.0 * kPi})
+            if (candidate >= joint.lo[k] && candidate <= joint.hi[k]) shifted = candidate;
+          inside = inside && shifted >= joint.lo[k] && shifted <= joint.hi[k];
+          e[k] = shifted;
+        }
+        if (!inside) continue;
+        const Quat q = quatFromEulerXYZ(e);
+        const Real value = cost(q);
+        if (value < bestCost) bestCost = value, *best = q, bestA = a;
       }
-      if (!inside) continue;
-      const Quat q = quatFromEulerXYZ(e);
-      const Real value = cost(q);
-      if (value < bestCost) bestCost = value, *best = q;
     }
-  }
+  };
+  // 10° steps, then 1° steps around the best of them (or over the whole range when none fits).
+  const Real lo = joint.lo[0], hi = joint.hi[0], coarse = degToRad(10.0), fine = degToRad(1.0);
+  scan(lo, hi, coarse);
+  if (bestCost < std::numeric_limits<Real>::infinity())
+    scan(std::max(lo, bestA - coarse), std::min(hi, bestA + coarse), fine);
+  else
+    scan(lo, hi, fine);
   return bestCost < std::numeric_limits<Real>::infinity();
 }
 

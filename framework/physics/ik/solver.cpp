@@ -313,7 +313,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   Real bestScore = std::numeric_limits<Real>::infinity();
   RestartRng rng(o.restartSeed);
   auto keepBest = [&]() {  // after method->finish(): the pose and frames of the attempt are current
-    const Real s = residual(effectors, c.frames).position + c.orientationScale * residual(effectors, c.frames).orientation;
+    const Residual now = residual(effectors, c.frames);
+    const Real s = now.position + c.orientationScale * now.orientation;
     if (s < bestScore) bestScore = s, best = pose;
   };
   auto stop = [&](SolveStatus status) {

@@ -60,11 +60,13 @@ struct SolveOptions {
   Vec3 polePoint{0.0};            ///< [m] world point the elbow should point toward (the "pole target")
   bool recordHistory = false;     ///< keep the residual and effector position of every iteration
   /// Stall recovery (IK slides, "Stopping": when stuck, randomise the pose or switch algorithm). With
-  /// joint limits or one-sided hinges a method can stall in a local minimum short of a reachable goal.
-  /// On a stall (never on an unreachable goal, a closed-form method or the caps) the solve restarts
-  /// from a random pose inside the limits, at most `restarts` times, within the same maxIterations;
-  /// it returns the attempt with the smallest residual. The random poses come from `restartSeed`
-  /// alone, so a solve stays deterministic. 0 turns the recovery off (a stall then stops the solve).
+  /// joint limits or one-sided hinges a method can stall in a local minimum short of a reachable goal,
+  /// or crawl toward it (CCD along a limit). On a stall, or a crawl too slow to finish within the cap,
+  /// the solve restarts the method from a random pose inside the limits of the joints that move the
+  /// effectors, at most `restarts` times, within the same maxIterations (and only while 2 ×
+  /// stallIterations of them remain), and returns the attempt with the smallest residual; never on
+  /// an unreachable goal or a closed-form method. The random poses come from `restartSeed` alone, so
+  /// a solve stays deterministic. SolveResult::restarts counts them. 0: a stall ends the solve.
   int restarts = 10;
   unsigned long long restartSeed = 0x5EEDull;  ///< seed of the restart poses
 };
