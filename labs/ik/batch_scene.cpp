@@ -5,8 +5,9 @@
 // since the last flag that selects a scene wins):
 //   pba-ik --headless --skeleton resources/models/humanoid.bvh --effectors LeftHand,RightFoot --targets 100 --metrics -
 // The solves run in reset(), so the metrics are ready after any number of frames and are identical
-// for identical seeds (timings excepted: their keys end in _us, so solve_median_us and solve_p95_us
-// stand for the solve_us_median and solve_us_p95).
+// for identical seeds, timings excepted (solve_us_median, solve_us_p95: the determinism check skips
+// keys with a "us" or "ms" component). Batch mode refuses what it cannot measure, with exit code 2:
+// analytic IK on more than 2 links, a skeleton without effectors or without a joint that moves them.
 #include <algorithm>
 #include <cstdio>
 #include <random>
@@ -53,9 +54,26 @@ class BatchScene final : public app::Scene {
     targets_ = 100;
   }
   Status validate() override {
-    if (character_.skeleton.empty()) return Status::success();
+    if (character_.skeleton.empty()) {
+      if (options_.solver == SolverKind::Analytic && desc_.links > 2)
+        return Error{"--solver analytic applies to 1 or 2 links, got --links " + std::to_string(desc_.links)};
+      return Status::success();
+    }
     const Result<Rig> r = loadCharacterRig(character_);
-    return r ? Status::success() : Status(Error{r.error()});
+    if (!r) return Error{r.error()};
+    const Rig& rig = r.value();
+    if (rig.effectors.empty()) return Error{"effectors: " + character_.skeleton + " has none (name its joints with --effectors)"};
+    bool moves = false;
+    for (const Effector& e : rig.effectors)
+      for (int j = e.joint; j >= 0 && !moves; j = rig.skeleton.joint(j).parent)
+        moves = dofCount(rig.skeleton.joint(j).type) > 0 || rig.skeleton.joint(j).type == JointType::Free;
+    if (!moves) return Error{"effectors: no joint of " + character_.skeleton + " above them moves"};
+    if (options_.solver == SolverKind::Analytic) {
+      Pose pose = rig.skeleton.restPose();
+      const SolveResult trial = solve(rig.skeleton, pose, rig.effectors, options_);
+      if (trial.status == SolveStatus::NotApplicable) return Error{"--solver analytic: " + trial.message + " (it applies to 1 or 2 links)"};
+    }
+    return Status::success();
   }
   std::string description() const override {
     return "Batch statistics: K solves from rest toward random reachable goals (success rate, residuals, iterations, time).";
@@ -68,7 +86,7 @@ class BatchScene final : public app::Scene {
     std::vector<Real> residuals, times;
     successes_ = 0;
     violations_ = 0;
-    long iterations = 0;
+    long iterations = 0, restarts = 0;
     for (int i = 0; i < targets_; ++i) {
       std::vector<Effector> effectors = rig_.effectors;
       setGoalsFromPose(rig_.skeleton, randomPose(rig_.skeleton, rng), effectors);
@@ -77,6 +95,7 @@ class BatchScene final : public app::Scene {
       successes_ += last_.status == SolveStatus::Success;
       violations_ += limitViolation(rig_.skeleton, pose_) > 1e-9;
       iterations += last_.iterations;
+      restarts += last_.restarts;
       residuals.push_back(last_.positionResidual);
       times.push_back(last_.seconds * 1e6);
       lastGoals_.clear();
@@ -87,6 +106,7 @@ class BatchScene final : public app::Scene {
     timeMedian_ = percentile(times, 0.5);
     timeP95_ = percentile(times, 0.95);
     iterationsMean_ = targets_ > 0 ? Real(iterations) / targets_ : 0.0;
+    restartsMean_ = targets_ > 0 ? Real(restarts) / targets_ : 0.0;
   }
   void step(Real) override {}
   void draw(DebugDraw& d) const override {
@@ -101,18 +121,19 @@ class BatchScene final : public app::Scene {
   }
   nlohmann::json metrics() const override {
     return {{"solver", solverName(options_.solver)},
-            {"links", desc_.links},
+            {"links", character_.skeleton.empty() ? desc_.links : rig_.skeleton.jointCount()},
             {"joints", rig_.skeleton.jointCount()},
             {"effectors", rig_.effectors.size()},
-            {"joint", joint_ == BatchJoint::Hinge ? "hinge" : "ball"},
+            {"joint", !character_.skeleton.empty() ? "skeleton" : joint_ == BatchJoint::Hinge ? "hinge" : "ball"},
             {"targets", targets_},
             {"success_rate", targets_ > 0 ? Real(successes_) / targets_ : 0.0},
             {"residual_max", residualMax_},
             {"residual_median", residualMedian_},
             {"iterations_mean", iterationsMean_},
             {"limit_violations", violations_},
-            {"solve_median_us", timeMedian_},
-            {"solve_p95_us", timeP95_}};
+            {"restarts_mean", restartsMean_},
+            {"solve_us_median", timeMedian_},
+            {"solve_us_p95", timeP95_}};
   }
   std::optional<std::string> nonFiniteState() const override {
     for (Real v : pose_.dofs)
@@ -131,7 +152,7 @@ class BatchScene final : public app::Scene {
   std::vector<Vec3> lastGoals_;
   CharacterDesc character_{"", "", 1.7, degToRad(100.0)};
   int successes_ = 0, violations_ = 0;
-  Real residualMax_ = 0.0, residualMedian_ = 0.0, iterationsMean_ = 0.0, timeMedian_ = 0.0, timeP95_ = 0.0;
+  Real residualMax_ = 0.0, residualMedian_ = 0.0, iterationsMean_ = 0.0, restartsMean_ = 0.0, timeMedian_ = 0.0, timeP95_ = 0.0;
 };
 
 }  // namespace

@@ -2,6 +2,7 @@
 //   pba_lab_check metrics FILE LAB [SCENE]   the metrics JSON has the shape of DESIGN.md §4
 //   pba_lab_check same A B                   two metrics files agree except for timings
 //   pba_lab_check image FILE.png             the screenshot is not blank
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -59,17 +60,27 @@ int checkMetrics(const std::string& path, const std::string& lab, const std::str
   return 0;
 }
 
+// True for a wall-clock metric. By convention (docs/architecture.md, "Metrics") a timing key has a
+// unit component "ms" or "us" anywhere among its '_'-separated words (step_ms, solve_us_median,
+// fabrik_solve_us) or ends in "_per_s".
+bool isTiming(const std::string& key) {
+  if (key == "gl_renderer") return true;
+  if (key.size() >= 6 && key.compare(key.size() - 6, 6, "_per_s") == 0) return true;
+  size_t start = 0;
+  while (start <= key.size()) {
+    const size_t end = std::min(key.find('_', start), key.size());
+    const std::string word = key.substr(start, end - start);
+    if (word == "ms" || word == "us") return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 // Removes wall-clock measurements, which legitimately differ between runs.
 void dropTimings(json& j) {
   if (!j.is_object()) return;
   for (auto it = j.begin(); it != j.end();) {
-    const std::string& key = it.key();
-    auto endsWith = [&](const char* suffix) {
-      const std::string s(suffix);
-      return key.size() >= s.size() && key.compare(key.size() - s.size(), s.size(), s) == 0;
-    };
-    // By convention timing metrics end in _ms, _us or _per_s (docs/architecture.md, "Metrics").
-    const bool timing = endsWith("_ms") || endsWith("_us") || endsWith("_per_s") || key == "gl_renderer";
+    const bool timing = isTiming(it.key());
     if (timing) {
       it = j.erase(it);
     } else {

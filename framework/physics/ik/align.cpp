@@ -17,17 +17,6 @@ namespace {
 
 Vec3 perp(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
 
-Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
-               const std::vector<Real>& w) {
-  Real S = 0.0, C = 0.0;
-  for (size_t i = 0; i < from.size(); ++i) {
-    const Vec3 u = perp(from[i] - p, a), v = perp(to[i] - p, a);
-    S += w[i] * glm::dot(a, glm::cross(u, v));
-    C += w[i] * glm::dot(u, v);
-  }
-  return std::atan2(S, C);
-}
-
 // Turns joint j by the world rotation `world` about its pivot: its local rotation becomes
 // R_pre⁻¹ · world · R_pre · oldLocal (ball: stored as XYZ Euler angles; free: directly), clamped to the
 // limits; `oldWorld` = R_pre · oldLocal is the joint's current world rotation (Frame::rotation).
@@ -40,11 +29,11 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
   const Quat preInverse = glm::conjugate(f.pre);
   const Quat wanted = glm::normalize(preInverse * (world * oldWorld));
   Quat newLocal = wanted;
-  const bool clampNow = clampLimits && !rotationUnlimited(joint);
+  const bool clampNow = clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
   if (joint.type == JointType::Ball) {
     if (clampNow) {
       Real* dofs = c.pose.dofs.data() + joint.firstDof;
-      const Vec3 e = eulerXYZFromQuat(wanted);
+      const Vec3 e = eulerWithinLimits(joint, wanted);
       for (int k = 0; k < 3; ++k) dofs[k] = e[k];
       clampJointToLimits(c.skeleton, c.pose, j);
       if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) newLocal = jointRotation(joint, c.pose, j);
@@ -62,11 +51,24 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
   return f.pre * newLocal * glm::conjugate(oldLocal) * preInverse;
 }
 
+}  // namespace
+
+Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+               const std::vector<Real>& w) {
+  Real S = 0.0, C = 0.0;
+  for (size_t i = 0; i < from.size(); ++i) {
+    const Vec3 u = perp(from[i] - p, a), v = perp(to[i] - p, a);
+    S += w[i] * glm::dot(a, glm::cross(u, v));
+    C += w[i] * glm::dot(u, v);
+  }
+  return std::atan2(S, C);
+}
+
 // The hinge optimum is an angle modulo 2π. Of the representatives ψ − 2π, ψ, ψ + 2π, pick the one
 // whose clamped value is closest to the optimum in angle (the objective is proportional to
 // cos(value − ψ)): a joint at 100° with limits ±120° that should turn +170° goes to −90°, not to 120°.
 Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
-  if (!clampLimits) return psi;
+  if (!clampLimits || (psi >= lo && psi <= hi)) return psi;
   Real best = psi, bestScore = -2.0;
   for (Real candidate : {psi - 2.0 * kPi, psi, psi + 2.0 * kPi}) {
     const Real clamped = std::clamp(candidate, lo, hi);
@@ -79,7 +81,34 @@ Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
   return best;
 }
 
+namespace {
+// x, or x ± 2π, inside [lo, hi]; else the one of them nearest the interval. *violation: its distance.
+Real shiftInto(Real x, Real lo, Real hi, Real* violation) {
+  Real best = x, bestViolation = 1e300;
+  for (Real candidate : {x, x - 2.0 * kPi, x + 2.0 * kPi}) {
+    const Real v = std::max(0.0, lo - candidate) + std::max(0.0, candidate - hi);
+    if (v < bestViolation) bestViolation = v, best = candidate;
+  }
+  *violation += bestViolation;
+  return best;
+}
 }  // namespace
+
+Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
+  const Vec3 principal = eulerXYZFromQuat(q);
+  if (principal.x >= joint.lo[0] && principal.x <= joint.hi[0] && principal.y >= joint.lo[1] && principal.y <= joint.hi[1] &&
+      principal.z >= joint.lo[2] && principal.z <= joint.hi[2]) {  // the common case
+    if (inside) *inside = true;
+    return principal;
+  }
+  Vec3 out[2] = {principal, Vec3(principal.x + kPi, kPi - principal.y, principal.z + kPi)};
+  Real violation[2] = {0.0, 0.0};
+  for (int r = 0; r < 2; ++r)
+    for (int k = 0; k < 3; ++k) out[r][k] = shiftInto(std::remainder(out[r][k], 2.0 * kPi), joint.lo[k], joint.hi[k], &violation[r]);
+  const int pick = violation[1] < violation[0] ? 1 : 0;
+  if (inside) *inside = violation[pick] == 0.0;
+  return out[pick];
+}
 
 bool rotationUnlimited(const Joint& joint) {
   if (joint.type == JointType::Free) return joint.maxRotation >= kPi;

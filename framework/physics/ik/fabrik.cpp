@@ -1,23 +1,40 @@
 // FABRIK: forward and backward reaching inverse kinematics (Aristidou & Lasenby 2011, Algorithms 1
-// and 2; CMU asst4 lists it among the extensions). It works on joint positions only:
+// and 2; CMU asst4 lists it among the extensions).
 //   backward: put the end on the goal, then walk toward the base, placing each point on the line to
 //             its successor at the bone's length;
 //   forward:  put the base back, then walk toward the end the same way.
-// Trees (Aristidou & Lasenby §4.3, "multiple end effectors"): the active part of the skeleton splits
-// into segments between sub-bases (joints with several active children). The backward pass runs on
-// the segments from the leaves; a sub-base takes the centroid of the positions its child segments
-// propose and becomes the goal of the segment above it. The forward pass runs from the root.
 //
-// Back to joint angles. Our skeleton is a tree of DOFs, so after the passes every joint, from the root
-// outward, turns so that its children (as placed by FK of the already-updated parents) move onto their
-// FABRIK positions (alignJoint, clamped to the limits), and the next iteration restarts from the FK
-// positions. For ball and free joints without limits this reproduces plain FABRIK exactly; hinges and
-// limits project each bone onto what the joint can reach. Cost: O(n) per iteration.
-// On a single chain of ball or free joints that no limit restricts (the setting of the FABRIK paper)
-// the conversion is exact and adds nothing, so that case iterates on the points alone and turns
-// them into joint angles once, when the driver stops (finish()).
-// Orientation goals of 6-DOF effectors are ignored by FABRIK (position-only method; use CCD or a
-// Jacobian method for them).
+// Plain FABRIK works on points. On a single chain of ball or free joints that no limit restricts
+// (the setting of the FABRIK paper) every placement of the points is a pose, so the solver iterates
+// on the points alone (IK-5's passes) and turns them into joint angles once, when the driver stops
+// (finish()).
+//
+// Everywhere else (trees, hinges, prismatic joints, limits) FABRIK runs on rigid bodies: joint j's
+// body is its frame (pivot P_j, world rotation R_j) with the points fixed in it: the pivots of its
+// child joints and its effector points. The passes apply the same rule to bodies instead of points,
+// which keeps what the point version loses: the twist of each bone (a ball knuckle followed by
+// hinges: the plane the finger bends in), the rigid shape of a body with several children (a palm,
+// or the coincident branch joints of Buss's double Y) and the joint constraints (Aristidou &
+// Lasenby §4.2 apply them inside the passes too, as rotational and orientational constraints).
+//   backward, tips to root: body j proposes, for each child joint c (already moved) and each
+//     effector, where it would go by the point rule: the attachment point onto the child's new pivot
+//     (or the goal), the pivot on the line back toward its old place (IK-5's fabrikBackward on the
+//     two points), the body turned by the shortest arc between the old and new bone directions. The
+//     joint between body j and child c must then be possible: a hinge leaves one angle, so body j
+//     swings about the child's hinge axis to the pivot nearest the rule's; limits clamp the relative
+//     rotation, and body j moves to match. Several proposals (a sub-base, §4.3 "multiple end
+//     effectors"): the pivot goes to their centroid (as in the paper) and the body turns to the
+//     rotation that best carries its points onto the children's new pivots and goals (weighted
+//     Horn fit; ties, e.g. coincident points, broken toward the mean of the proposed rotations).
+//   forward, root to tips: each joint's pivot is fixed by its parent; the joint turns its body from
+//     the backward pass's orientation so that its points move toward their backward-pass places
+//     (IK-5's fabrikForward for one point, the same Horn fit for several; hinges and prismatic
+//     joints by the exact one-DOF optimum), then clamps to its limits. The pose is always valid.
+// 6-DOF effectors: the backward pass puts the body on the goal frame; the forward pass aligns three
+// extra points s·(x̂, ŷ, ẑ) of the effector frame with the goal frame's, as CCD does.
+// Cost: O(n) per iteration (a Horn fit, a 4 × 4 eigenproblem, only at bodies with several points).
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "physics/exercises/not_implemented.h"
@@ -80,6 +97,91 @@ PBA_EXERCISE_PROBE(probeFabrikPasses());
 namespace detail {
 namespace {
 
+// Cyclic Jacobi on a symmetric 4 × 4 matrix: on return a's diagonal holds the eigenvalues and v's
+// columns the eigenvectors.
+void eigenSymmetric4(Real a[4][4], Real v[4][4]) {
+  for (int p = 0; p < 4; ++p)
+    for (int q = 0; q < 4; ++q) v[p][q] = p == q ? 1.0 : 0.0;
+  for (int sweep = 0; sweep < 20; ++sweep) {
+    Real off = 0.0, diag = 0.0;
+    for (int p = 0; p < 4; ++p) {
+      diag += a[p][p] * a[p][p];
+      for (int q = p + 1; q < 4; ++q) off += a[p][q] * a[p][q];
+    }
+    if (off <= 1e-26 * diag || off == 0.0) break;  // off-diagonal below 1e-13 of the diagonal
+    const Real small = 1e-15 * std::sqrt(diag);
+    for (int p = 0; p < 4; ++p)
+      for (int q = p + 1; q < 4; ++q) {
+        if (std::abs(a[p][q]) <= small) continue;
+        const Real theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+        const Real t = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
+        const Real cs = 1.0 / std::sqrt(t * t + 1.0), sn = t * cs;
+        for (int k = 0; k < 4; ++k) {  // A ← A G (columns p, q)
+          const Real akp = a[k][p], akq = a[k][q];
+          a[k][p] = cs * akp - sn * akq;
+          a[k][q] = sn * akp + cs * akq;
+        }
+        for (int k = 0; k < 4; ++k) {  // A ← Gᵀ A (rows p, q)
+          const Real apk = a[p][k], aqk = a[q][k];
+          a[p][k] = cs * apk - sn * aqk;
+          a[q][k] = sn * apk + cs * aqk;
+        }
+        for (int k = 0; k < 4; ++k) {  // V ← V G
+          const Real vkp = v[k][p], vkq = v[k][q];
+          v[k][p] = cs * vkp - sn * vkq;
+          v[k][q] = sn * vkp + cs * vkq;
+        }
+      }
+  }
+}
+
+}  // namespace
+
+Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w, const Quat& reference) {
+  // Horn 1987: Σ wᵢ toᵢ · (R fromᵢ) = qᵀ N q over unit quaternions q, with N built from
+  // S = Σ wᵢ fromᵢ toᵢᵀ; the maximum is N's top eigenvector. When the top eigenvalue is (nearly)
+  // repeated, every unit q in its eigenspace is optimal: take the one nearest the reference (its
+  // projection onto the eigenspace).
+  Real S[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+  Real scale = 0.0;
+  for (size_t i = 0; i < from.size(); ++i) {
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 3; ++k) S[r][k] += w[i] * from[i][r] * to[i][k];
+    scale += w[i] * glm::length(from[i]) * glm::length(to[i]);
+  }
+  if (!(scale > 0.0)) return reference;
+  const Real xx = S[0][0], xy = S[0][1], xz = S[0][2], yx = S[1][0], yy = S[1][1], yz = S[1][2], zx = S[2][0], zy = S[2][1],
+             zz = S[2][2];
+  Real N[4][4] = {{xx + yy + zz, yz - zy, zx - xz, xy - yx},
+                  {yz - zy, xx - yy - zz, xy + yx, zx + xz},
+                  {zx - xz, xy + yx, -xx + yy - zz, yz + zy},
+                  {xy - yx, zx + xz, yz + zy, -xx - yy + zz}};
+  Real V[4][4];
+  eigenSymmetric4(N, V);
+  Real top = N[0][0];
+  int best = 0;
+  for (int k = 1; k < 4; ++k)
+    if (N[k][k] > top) top = N[k][k], best = k;
+  const Real ref[4] = {reference.w, reference.x, reference.y, reference.z};
+  Real q[4] = {0, 0, 0, 0};
+  for (int k = 0; k < 4; ++k) {
+    if (N[k][k] < top - 1e-9 * scale) continue;
+    Real along = 0.0;
+    for (int i = 0; i < 4; ++i) along += V[i][k] * ref[i];
+    for (int i = 0; i < 4; ++i) q[i] += along * V[i][k];
+  }
+  Real length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(length > 1e-6)) {  // the reference is (nearly) orthogonal to the optimal set: any optimum
+    for (int i = 0; i < 4; ++i) q[i] = V[i][best];
+    length = 1.0;
+  }
+  return Quat(q[0] / length, q[1] / length, q[2] / length, q[3] / length);
+}
+
+namespace {
+
+Vec3 perpTo(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
+
 class Fabrik final : public Method {
  public:
   FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::Current; }
@@ -92,213 +194,354 @@ class Fabrik final : public Method {
       // Plain FABRIK (Aristidou & Lasenby 2011, Algorithm 1): on an unconstrained chain the joint
       // angles reproduce the points exactly, so they are computed once, in finish().
       if (!pointsLoaded_) {
-        syncPositions(c);
-        load(segments_[0]);
+        pts_.clear();
+        for (int j : chain_) pts_.push_back(c.frames[static_cast<size_t>(j)].position);
+        pts_.push_back(effectorPosition(c.effectors[0], c.frames));
+        lens_.resize(pts_.size() - 1);
+        for (size_t i = 0; i + 1 < pts_.size(); ++i) lens_[i] = glm::length(pts_[i + 1] - pts_[i]);
+        base_ = pts_.front();
         pointsLoaded_ = true;
       }
       fabrikBackward(pts_, lens_, c.effectors[0].targetPosition);
-      fabrikForward(pts_, lens_, q_[static_cast<size_t>(segments_[0][0])]);
+      fabrikForward(pts_, lens_, base_);
       return;
     }
-    syncPositions(c);
     backward(c);
-    forward();
-    toAngles(c);
+    forward(c);
   }
 
   void finish(Context& c) override {
     if (!posesDeferred()) return;
-    const std::vector<int>& seg = segments_[0];
-    for (size_t i = 0; i < seg.size(); ++i) q_[static_cast<size_t>(seg[i])] = pts_[i];
-    toAngles(c);
+    // The forward pass onto the points: each joint's child (or the effector) onto its point.
+    for (size_t i = 0; i < chain_.size(); ++i) {
+      const auto j = static_cast<size_t>(chain_[i]);
+      P_[j] = pts_[i];
+      R_[j] = c.frames[j].rotation;
+    }
+    target_[0] = pts_.back();
+    forward(c);
+    target_[0] = c.effectors[0].targetPosition;
     pointsLoaded_ = false;
   }
 
  private:
-  // Nodes: joints [0, J) (only active ones used), then one node per effector [J, J + E).
   void build(const Context& c) {
     built_ = true;
     const int J = c.skeleton.jointCount(), E = static_cast<int>(c.effectors.size());
-    parent_.assign(static_cast<size_t>(J + E), -1);
-    std::vector<std::vector<int>> kids(static_cast<size_t>(J + E));
-    used_.assign(static_cast<size_t>(J + E), 0);
+    kids_.assign(static_cast<size_t>(J), {});
+    effectorsOn_.assign(static_cast<size_t>(J), {});
     for (int j = 0; j < J; ++j) {
-      if (!c.active[static_cast<size_t>(j)]) continue;
-      used_[static_cast<size_t>(j)] = 1;
-      parent_[static_cast<size_t>(j)] = c.skeleton.joint(j).parent;
-      if (parent_[static_cast<size_t>(j)] >= 0) kids[static_cast<size_t>(parent_[static_cast<size_t>(j)])].push_back(j);
+      const int parent = c.skeleton.joint(j).parent;
+      if (c.active[static_cast<size_t>(j)] && parent >= 0) kids_[static_cast<size_t>(parent)].push_back(j);
     }
-    for (int e = 0; e < E; ++e) {
-      used_[static_cast<size_t>(J + e)] = 1;
-      parent_[static_cast<size_t>(J + e)] = c.effectors[static_cast<size_t>(e)].joint;
-      kids[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)].push_back(J + e);
-    }
-    kids_ = kids;
-    // Segments, parents first: depth-first from every break node (root, sub-base).
-    segments_.clear();
-    std::vector<int> stack;
-    for (int j = 0; j < J; ++j)
-      if (used_[static_cast<size_t>(j)] && parent_[static_cast<size_t>(j)] < 0) stack.push_back(j);
-    while (!stack.empty()) {
-      const int start = stack.back();
-      stack.pop_back();
-      for (int child : kids[static_cast<size_t>(start)]) {
-        std::vector<int> seg{start, child};
-        int n = child;
-        while (n < J && kids[static_cast<size_t>(n)].size() == 1) {
-          n = kids[static_cast<size_t>(n)][0];
-          seg.push_back(n);
-        }
-        if (n < J && !kids[static_cast<size_t>(n)].empty()) stack.push_back(n);
-        segments_.push_back(std::move(seg));
-      }
-    }
+    for (int e = 0; e < E; ++e) effectorsOn_[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)].push_back(e);
+    target_.resize(static_cast<size_t>(E));
+    for (int e = 0; e < E; ++e) target_[static_cast<size_t>(e)] = c.effectors[static_cast<size_t>(e)].targetPosition;
     // Points only: one chain from the root to a single position effector through ball or free joints
     // that no limit restricts. Then every point placement is reachable by the joint angles.
-    pointsOnly_ = E == 1 && segments_.size() == 1 && c.effectors[0].kind == EffectorKind::Position;
+    chain_.clear();
+    pointsOnly_ = E == 1 && c.effectors[0].kind == EffectorKind::Position;
     for (int j = 0; j < J && pointsOnly_; ++j) {
+      if (!c.active[static_cast<size_t>(j)]) continue;
+      chain_.push_back(j);
       const Joint& joint = c.skeleton.joint(j);
-      if (!used_[static_cast<size_t>(j)]) continue;
       const bool rotates = joint.type == JointType::Ball || joint.type == JointType::Free;
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
     buildLookahead(c);
-    q_.assign(static_cast<size_t>(J + E), Vec3(0.0));
-    length_.assign(static_cast<size_t>(J + E), 0.0);
-    sum_.assign(static_cast<size_t>(J + E), Vec3(0.0));
-    count_.assign(static_cast<size_t>(J + E), 0);
+    P_.assign(static_cast<size_t>(J), Vec3(0.0));
+    R_.assign(static_cast<size_t>(J), Quat(1, 0, 0, 0));
+    two_.assign(2, Vec3(0.0));
+    one_.assign(1, 0.0);
   }
 
-  void syncPositions(const Context& c) {
-    const int J = c.skeleton.jointCount();
-    for (size_t n = 0; n < q_.size(); ++n) {
-      if (!used_[n]) continue;
-      q_[n] = n < static_cast<size_t>(J) ? c.frames[n].position : effectorPosition(c.effectors[n - static_cast<size_t>(J)], c.frames);
+  // The points of joint j's body: in its frame (from_), their goals (to_, world) and weights.
+  // Effectors first (6-DOF ones add three points at s·x̂, s·ŷ, s·ẑ of their frame), then child joints.
+  void bodyPoints(const Context& c, int j, bool childGoals) {
+    from_.clear();
+    to_.clear();
+    w_.clear();
+    for (int e : effectorsOn_[static_cast<size_t>(j)]) {
+      const Effector& eff = c.effectors[static_cast<size_t>(e)];
+      from_.push_back(eff.localOffset);
+      to_.push_back(target_[static_cast<size_t>(e)]);
+      w_.push_back(eff.weight);
+      if (eff.kind == EffectorKind::PositionOrientation) {
+        for (int k = 0; k < 3; ++k) {
+          Vec3 axis(0.0);
+          axis[k] = c.orientationScale;
+          from_.push_back(eff.localOffset + axis);
+          to_.push_back(target_[static_cast<size_t>(e)] + eff.targetOrientation * axis);
+          w_.push_back(eff.weight);
+        }
+      }
     }
-    for (size_t n = 0; n < q_.size(); ++n)
-      if (used_[n] && parent_[n] >= 0) length_[n] = glm::length(q_[n] - q_[static_cast<size_t>(parent_[n])]);
+    if (!childGoals) return;
+    for (int k : kids_[static_cast<size_t>(j)]) {
+      from_.push_back(jointTranslation(c.skeleton.joint(k), c.pose));
+      to_.push_back(P_[static_cast<size_t>(k)]);
+      w_.push_back(1.0);
+    }
   }
 
-  void load(const std::vector<int>& seg) {
-    pts_.resize(seg.size());
-    lens_.resize(seg.size() - 1);
-    for (size_t i = 0; i < seg.size(); ++i) pts_[i] = q_[static_cast<size_t>(seg[i])];
-    for (size_t i = 0; i + 1 < seg.size(); ++i) lens_[i] = length_[static_cast<size_t>(seg[i + 1])];
+  // The point rule on one lever b of body (P, R): the point onto `goal`, the pivot back toward P.
+  void propose(const Vec3& P, const Quat& R, const Vec3& b, const Vec3& goal, Vec3* Pp, Quat* Rp) {
+    const Vec3 a = P + R * b;
+    two_[0] = P;
+    two_[1] = a;
+    one_[0] = glm::length(b);
+    fabrikBackward(two_, one_, goal);
+    *Pp = two_[0];
+    *Rp = glm::normalize(shortestArc(P - a, two_[0] - goal) * R);
+  }
+
+  // Joint k (child of body j) must relate body j's proposal (*Pp, *Rp) to body k's new pose: moves
+  // the proposal to the nearest one the joint allows. `oldP`: body j's pivot before the pass.
+  void constrain(const Context& c, int k, const Vec3& oldP, Vec3* Pp, Quat* Rp) const {
+    const Joint& joint = c.skeleton.joint(k);
+    const Vec3& Pk = P_[static_cast<size_t>(k)];
+    const Quat& Rk = R_[static_cast<size_t>(k)];
+    const Quat restInverse = glm::conjugate(joint.restRotation);
+    const bool clamp = c.options.enforceLimits;
+    switch (joint.type) {
+      case JointType::Fixed: *Rp = Rk * restInverse; break;
+      case JointType::Prismatic: {
+        // No rotation: body j's orientation follows; the displacement puts its pivot nearest oldP.
+        *Rp = Rk * restInverse;
+        const Vec3 u = *Rp * (joint.restRotation * joint.axis), base = Pk - *Rp * joint.offset;
+        Real d = glm::dot(base - oldP, u);
+        if (clamp) d = std::clamp(d, joint.lo[0], joint.hi[0]);
+        *Pp = base - u * d;
+        return;
+      }
+      case JointType::Hinge: {
+        // Body j = R(−θ about w) · R_k · Q⁻¹ with w = R_k a: its pivot turns about w through P_k,
+        // from P_k − R_k Q⁻¹ t at θ = 0. The angle that brings it nearest oldP (the point rule's
+        // pivot lies on the line from P_k to oldP); where that is undefined (lever along the axis,
+        // or oldP on it), the twist of the rule's proposal.
+        const Vec3 w = Rk * joint.axis;
+        const Vec3 t = jointTranslation(joint, c.pose);
+        const Vec3 u = perpTo(-(Rk * (restInverse * t)), w), v = perpTo(oldP - Pk, w);
+        const Real S = glm::dot(w, glm::cross(u, v)), C = glm::dot(u, v);
+        Real theta;
+        if (std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk))) {
+          theta = -std::atan2(S, C);
+        } else {
+          const Quat local = glm::conjugate(*Rp * joint.restRotation) * Rk;
+          theta = 2.0 * std::atan2(glm::dot(Vec3(local.x, local.y, local.z), joint.axis), local.w);
+        }
+        if (clamp) theta = std::clamp(bestHingeValue(theta, joint.lo[0], joint.hi[0], true), joint.lo[0], joint.hi[0]);
+        *Rp = glm::normalize(Rk * glm::angleAxis(-theta, joint.axis) * restInverse);
+        break;
+      }
+      case JointType::Ball:
+      case JointType::Free: {
+        if (!clamp || rotationUnlimited(joint)) return;
+        const Quat local = glm::normalize(glm::conjugate(*Rp * joint.restRotation) * Rk);
+        if (joint.type == JointType::Ball && c.surelyWithinLimits(k, local)) return;
+        Quat allowed = local;
+        if (joint.type == JointType::Ball) {
+          const Vec3 e = eulerWithinLimits(joint, local);
+          Vec3 clamped;
+          for (int i = 0; i < 3; ++i) clamped[i] = std::clamp(e[i], joint.lo[i], joint.hi[i]);
+          if (clamped == e) return;
+          allowed = quatFromEulerXYZ(clamped);
+        } else {
+          const Vec3 r = rotationVector(local);
+          const Real angle = glm::length(r);
+          if (angle <= joint.maxRotation) return;
+          allowed = quatFromRotationVector(r * (joint.maxRotation / angle));
+        }
+        *Rp = glm::normalize(Rk * glm::conjugate(allowed) * restInverse);
+        break;
+      }
+    }
+    *Pp = Pk - *Rp * jointTranslation(joint, c.pose);
   }
 
   void backward(const Context& c) {
     const int J = c.skeleton.jointCount();
-    std::fill(sum_.begin(), sum_.end(), Vec3(0.0));
-    std::fill(count_.begin(), count_.end(), 0);
-    base_ = q_;
-    for (size_t s = segments_.size(); s-- > 0;) {
-      const std::vector<int>& seg = segments_[s];
-      const auto end = static_cast<size_t>(seg.back());
-      Vec3 target = end >= static_cast<size_t>(J) ? c.effectors[end - static_cast<size_t>(J)].targetPosition
-                                                  : (count_[end] > 0 ? sum_[end] / Real(count_[end]) : q_[end]);
-      load(seg);
-      fabrikBackward(pts_, lens_, target);
-      for (size_t i = 1; i < seg.size(); ++i) q_[static_cast<size_t>(seg[i])] = pts_[i];
-      sum_[static_cast<size_t>(seg[0])] += pts_[0];
-      count_[static_cast<size_t>(seg[0])] += 1;
+    for (int j = 0; j < J; ++j) {
+      P_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].position;
+      R_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].rotation;
+    }
+    for (int j = J - 1; j >= 0; --j) {
+      if (!c.active[static_cast<size_t>(j)]) continue;
+      const Vec3 oldP = P_[static_cast<size_t>(j)];
+      const Quat oldR = R_[static_cast<size_t>(j)];
+      int proposals = 0;
+      Vec3 sumP(0.0), Pp(0.0);
+      Quat sumR(0, 0, 0, 0), Rp(1, 0, 0, 0);
+      auto add = [&](const Vec3& p, const Quat& r) {
+        ++proposals;
+        sumP += p;
+        sumR = sumR + (glm::dot(sumR, r) < 0.0 ? -r : r);
+        Pp = p;
+        Rp = r;
+      };
+      for (int e : effectorsOn_[static_cast<size_t>(j)]) {
+        const Effector& eff = c.effectors[static_cast<size_t>(e)];
+        if (eff.kind == EffectorKind::PositionOrientation) {
+          // The body onto the goal frame: exact, position and orientation.
+          add(eff.targetPosition - eff.targetOrientation * eff.localOffset, eff.targetOrientation);
+          continue;
+        }
+        propose(oldP, oldR, eff.localOffset, eff.targetPosition, &Pp, &Rp);
+        add(Pp, Rp);
+      }
+      for (int k : kids_[static_cast<size_t>(j)]) {
+        propose(oldP, oldR, jointTranslation(c.skeleton.joint(k), c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
+        constrain(c, k, oldP, &Pp, &Rp);
+        add(Pp, Rp);
+      }
+      if (proposals == 1) {
+        P_[static_cast<size_t>(j)] = Pp;
+        R_[static_cast<size_t>(j)] = Rp;
+        continue;
+      }
+      // A sub-base: the pivot at the centroid of the proposals (Aristidou & Lasenby §4.3), the body
+      // turned to carry its points best onto their new places.
+      const Vec3 P = sumP / Real(proposals);
+      bodyPoints(c, j, true);
+      for (Vec3& t : to_) t -= P;
+      P_[static_cast<size_t>(j)] = P;
+      R_[static_cast<size_t>(j)] = fitRotation(from_, to_, w_, glm::normalize(sumR));
     }
   }
 
-  void forward() {
-    for (const std::vector<int>& seg : segments_) {
-      const auto start = static_cast<size_t>(seg[0]);
-      const Vec3 base = parent_[start] < 0 ? base_[start] : q_[start];
-      load(seg);
-      fabrikForward(pts_, lens_, base);
-      for (size_t i = 0; i < seg.size(); ++i) q_[static_cast<size_t>(seg[i])] = pts_[i];
-    }
-  }
-
-  // Root outward: each joint's frame from its (already updated) parent, then the joint turns its
-  // children onto their FABRIK positions. Leaves every frame current, so the driver skips its FK.
-  //
-  // Look-ahead. A ball joint followed by hinges (a finger: ball knuckle, hinged phalanges) cannot
-  // be placed by its child alone: one point leaves the twist about the bone free, and the hinges
-  // below can then only bend in the wrong plane. Such joints also aim the deeper descendants (up to
-  // kLookahead levels) at their FABRIK positions. Their current positions are their positions at the
-  // start of the pass moved by the rigid turns of the joints above, tracked per joint as (dq, dp).
-  void toAngles(Context& c) {
+  // Root outward: each joint's pivot from its (already updated) parent, then the joint turns its
+  // body's points toward their backward-pass places. Leaves every frame current.
+  void forward(Context& c) {
     const int J = c.skeleton.jointCount();
+    const bool clamp = c.options.enforceLimits;
     for (int j = 0; j < J; ++j) {
       const Joint& joint = c.skeleton.joint(j);
-      Frame f = c.frameFromParent(j);
-      const int parent = joint.parent;
-      const Quat dqParent = parent >= 0 ? dq_[static_cast<size_t>(parent)] : Quat(1, 0, 0, 0);
-      const Vec3 dpParent = parent >= 0 ? dp_[static_cast<size_t>(parent)] : Vec3(0.0);
-      Quat turn(1, 0, 0, 0);
-      Vec3 shift(0.0);
-      if (used_[static_cast<size_t>(j)] && joint.type != JointType::Fixed && !kids_[static_cast<size_t>(j)].empty()) {
-        from_.clear();
-        to_.clear();
-        w_.clear();
-        for (int n : kids_[static_cast<size_t>(j)]) {
-          const Vec3 local = n < J ? jointTranslation(c.skeleton.joint(n), c.pose) : c.effectors[static_cast<size_t>(n - J)].localOffset;
-          from_.push_back(f.position + f.rotation * local);
-          to_.push_back(q_[static_cast<size_t>(n)]);
-          w_.push_back(1.0);
-        }
-        if (lookahead_[static_cast<size_t>(j)])
-          for (int n : deeper_[static_cast<size_t>(j)]) {
-            from_.push_back(dqParent * base_[static_cast<size_t>(n)] + dpParent);
-            to_.push_back(q_[static_cast<size_t>(n)]);
-            w_.push_back(1.0);
-          }
-        turn = alignJoint(c, j, f, from_, to_, w_, c.options.enforceLimits, false, &shift);
-        f.rotation = f.pre * c.local[static_cast<size_t>(j)];
+      const Frame* parent = joint.parent >= 0 ? &c.frames[static_cast<size_t>(joint.parent)] : nullptr;
+      Frame f = c.frameFrom(j, parent);
+      if (!c.active[static_cast<size_t>(j)] || joint.type == JointType::Fixed) {
+        c.frames[static_cast<size_t>(j)] = f;
+        continue;
       }
-      // This subtree's motion so far: x ↦ turn · (dqParent · x + dpParent − p) + p + shift.
-      dq_[static_cast<size_t>(j)] = turn * dqParent;
-      dp_[static_cast<size_t>(j)] = turn * (dpParent - f.position) + f.position + shift;
+      bodyPoints(c, j, true);
+      if (joint.type == JointType::Ball || joint.type == JointType::Free) {
+        turnBall(c, j, f, clamp);
+      } else {
+        for (size_t i = 0; i < from_.size(); ++i) from_[i] = f.position + f.rotation * from_[i];
+        alignJoint(c, j, f, from_, to_, w_, clamp, false, nullptr);
+        f = c.frameFrom(j, parent);
+      }
+      f.rotation = f.pre * c.local[static_cast<size_t>(j)];
       c.frames[static_cast<size_t>(j)] = f;
     }
   }
 
-  // The look-ahead tables of toAngles(): which joints use it, and their descendants 2..kLookahead
-  // levels down (joints and effector nodes).
+  // forward() for a ball or free joint: the point rule (IK-5's fabrikForward on the one body point,
+  // the body turned by the shortest arc from its backward-pass orientation), or the Horn fit of its
+  // points, nearest the backward-pass orientation. Then the limits (IK-6).
+  // Look-ahead: a ball joint followed by hinges (a finger: ball knuckle, hinged phalanges) cannot be
+  // turned by its child alone: one point leaves the twist about the bone free, and the hinges below
+  // can then only bend in the wrong plane. Such joints also aim their deeper descendants (joints and
+  // effectors, buildLookahead) at their backward-pass places, in the fit; the descendants keep the
+  // shape they have at the start of the pass (their places in c.frames, which forward() has not
+  // reached yet).
+  void turnBall(Context& c, int j, const Frame& f, bool clamp) {
+    const int J = c.skeleton.jointCount();
+    const Quat& reference = R_[static_cast<size_t>(j)];
+    const std::vector<int>& deeper = deeper_[static_cast<size_t>(j)];
+    if (!deeper.empty()) {
+      const Frame& old = c.frames[static_cast<size_t>(j)];
+      const Quat oldInverse = glm::conjugate(old.rotation);
+      for (int n : deeper) {
+        const bool effector = n >= J;
+        const Vec3 now = effector ? effectorPosition(c.effectors[static_cast<size_t>(n - J)], c.frames) : c.frames[static_cast<size_t>(n)].position;
+        from_.push_back(oldInverse * (now - old.position));
+        to_.push_back(effector ? target_[static_cast<size_t>(n - J)] : P_[static_cast<size_t>(n)]);
+        w_.push_back(lookaheadWeight_[static_cast<size_t>(j)]);
+      }
+    }
+    Quat world;
+    if (from_.size() == 1) {
+      two_[0] = f.position;
+      two_[1] = to_[0];
+      one_[0] = glm::length(from_[0]);
+      fabrikForward(two_, one_, f.position);
+      world = shortestArc(reference * from_[0], two_[1] - f.position) * reference;
+    } else {
+      for (Vec3& t : to_) t -= f.position;
+      world = fitRotation(from_, to_, w_, reference);
+    }
+    setRotation(c, j, glm::normalize(glm::conjugate(f.pre) * world), clamp);
+  }
+
+  // The look-ahead of forward(): a ball or free joint with hinges or prismatic joints within
+  // kLookahead levels below it also aims its deeper descendants (joints and effectors; node J + e is
+  // effector e). With weight 1 when such a joint is its child (a finger's ball knuckle: it alone
+  // sets the plane the hinges bend in), else kFarLookaheadWeight (a wrist: the points only break
+  // the tie of its twist; at full weight the fit would turn the whole hand to lay straight fingers
+  // onto bent goals).
   void buildLookahead(const Context& c) {
     const int J = c.skeleton.jointCount();
-    lookahead_.assign(static_cast<size_t>(J), 0);
     deeper_.assign(static_cast<size_t>(J), {});
-    dq_.assign(static_cast<size_t>(J), Quat(1, 0, 0, 0));
-    dp_.assign(static_cast<size_t>(J), Vec3(0.0));
+    lookaheadWeight_.assign(static_cast<size_t>(J), kFarLookaheadWeight);
     for (int j = 0; j < J; ++j) {
       const JointType type = c.skeleton.joint(j).type;
-      if (!used_[static_cast<size_t>(j)] || (type != JointType::Ball && type != JointType::Free)) continue;
-      std::vector<int> level = kids_[static_cast<size_t>(j)];
+      if (!c.active[static_cast<size_t>(j)] || (type != JointType::Ball && type != JointType::Free)) continue;
+      std::vector<int> level = kids_[static_cast<size_t>(j)], found;
       bool hinged = false;
       for (int depth = 2; depth <= kLookahead; ++depth) {
         std::vector<int> next;
         for (int n : level) {
-          if (n >= J) continue;
           const JointType t = c.skeleton.joint(n).type;
-          hinged = hinged || t == JointType::Hinge || t == JointType::Prismatic;
+          const bool oneDof = t == JointType::Hinge || t == JointType::Prismatic;
+          hinged = hinged || oneDof;
+          if (depth == 2 && oneDof) lookaheadWeight_[static_cast<size_t>(j)] = 1.0;  // a child
+          for (int e : effectorsOn_[static_cast<size_t>(n)]) found.push_back(J + e);
           for (int k : kids_[static_cast<size_t>(n)]) next.push_back(k);
         }
-        deeper_[static_cast<size_t>(j)].insert(deeper_[static_cast<size_t>(j)].end(), next.begin(), next.end());
+        found.insert(found.end(), next.begin(), next.end());
         level = std::move(next);
       }
-      lookahead_[static_cast<size_t>(j)] = hinged && !deeper_[static_cast<size_t>(j)].empty();
+      if (hinged) deeper_[static_cast<size_t>(j)] = std::move(found);
     }
   }
-
   static constexpr int kLookahead = 3;
+  static constexpr Real kFarLookaheadWeight = 0.1;
+
+  // A ball or free joint's local rotation, clamped to its limits (IK-6); keeps c.local current.
+  static void setRotation(Context& c, int j, const Quat& local, bool clamp) {
+    const Joint& joint = c.skeleton.joint(j);
+    const bool clampNow = clamp && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, local));
+    Quat applied = local;
+    if (joint.type == JointType::Ball) {
+      if (clampNow) {
+        Real* dofs = c.pose.dofs.data() + joint.firstDof;
+        const Vec3 e = eulerWithinLimits(joint, local);
+        for (int k = 0; k < 3; ++k) dofs[k] = e[k];
+        clampJointToLimits(c.skeleton, c.pose, j);
+        if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) applied = jointRotation(joint, c.pose, j);
+      }
+      c.staleEuler[static_cast<size_t>(j)] = !clampNow;  // the Euler angles are written by flushPose
+    } else {
+      c.pose.rotations[static_cast<size_t>(j)] = local;
+      if (clampNow) {
+        clampJointToLimits(c.skeleton, c.pose, j);
+        applied = c.pose.rotations[static_cast<size_t>(j)];
+      }
+    }
+    c.local[static_cast<size_t>(j)] = applied;
+  }
 
   bool built_ = false, pointsOnly_ = false, pointsLoaded_ = false;
-  std::vector<int> parent_;
-  std::vector<std::vector<int>> kids_, segments_;
-  std::vector<char> used_;
-  std::vector<Vec3> q_, base_, sum_, pts_, from_, to_;
-  std::vector<Real> length_, lens_, w_;
-  std::vector<int> count_;
-  std::vector<char> lookahead_;
-  std::vector<std::vector<int>> deeper_;
-  std::vector<Quat> dq_;
-  std::vector<Vec3> dp_;
+  std::vector<std::vector<int>> kids_, effectorsOn_;  // per joint: active child joints, effectors
+  std::vector<Real> lookaheadWeight_;                 // per joint: weight of its look-ahead points
+  std::vector<std::vector<int>> deeper_;             // per joint: look-ahead nodes (see buildLookahead)
+  std::vector<int> chain_;                            // points only: the joints from the root
+  std::vector<Vec3> P_;                               // per joint: body pivot after the backward pass
+  std::vector<Quat> R_;                               // per joint: body rotation after the backward pass
+  std::vector<Vec3> target_;                          // per effector: where the forward pass aims it
+  std::vector<Vec3> pts_, two_, from_, to_;
+  std::vector<Real> lens_, one_, w_;
+  Vec3 base_{0.0};
 };
 
 }  // namespace

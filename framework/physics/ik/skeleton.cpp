@@ -184,19 +184,19 @@ Quat quatFromRotationVector(const Vec3& v) {
 }
 
 Quat shortestArc(const Vec3& u, const Vec3& v) {
-  const Real lu = glm::length(u), lv = glm::length(v);
-  if (lu < 1e-12 || lv < 1e-12) return Quat(1, 0, 0, 0);
-  const Vec3 a = u / lu, b = v / lv;
-  const Real c = glm::dot(a, b);
-  if (c < -1.0 + 1e-12) {
-    // Opposite: a half turn about any axis perpendicular to a.
+  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
+  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
+  const Real norms = std::sqrt(uu * vv), c = glm::dot(u, v);
+  if (c < (-1.0 + 1e-12) * norms) {
+    // Opposite: a half turn about any axis perpendicular to u.
+    const Vec3 a = u / std::sqrt(uu);
     Vec3 axis = glm::cross(a, std::abs(a.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
     axis /= glm::length(axis);
     return Quat(0.0, axis.x, axis.y, axis.z);
   }
-  // q = (1 + c, a × b) normalised: the half-angle formula, no trigonometry.
-  const Vec3 x = glm::cross(a, b);
-  Quat q(1.0 + c, x.x, x.y, x.z);
+  // q = (|u||v| + u·v, u × v) normalised: the half-angle formula, no trigonometry, one division.
+  const Vec3 x = glm::cross(u, v);
+  Quat q(norms + c, x.x, x.y, x.z);
   return q * (1.0 / std::sqrt(q.w * q.w + glm::dot(x, x)));
 }
 

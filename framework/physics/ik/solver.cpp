@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "physics/ik/exercises.h"
@@ -155,12 +156,47 @@ Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Eff
   }
   if (!(o.tolerance > 0.0) || !(o.angleTolerance > 0.0)) return Error{"options.tolerance: must be > 0"};
   if (o.maxIterations < 1) return Error{"options.maxIterations: must be >= 1"};
+  if (o.restarts < 0) return Error{"options.restarts: must be >= 0"};
   if (!(o.damping >= 0.0) || !(o.singularCutoff >= 0.0) || !(o.maxJointStep > 0.0) || !(o.maxErrorStep >= 0.0) ||
       !(o.orientationScale >= 0.0) || !(o.maxSeconds >= 0.0))
     return Error{"options: damping, cut-off, step clamps, scale and time cap must be >= 0 (step clamp > 0)"};
   if (!(o.gradientStep > 0.0) || !isFinite(o.gradientStep)) return Error{"options.gradientStep: must be > 0"};
   if (o.lbfgsMemory < 1) return Error{"options.lbfgsMemory: must be >= 1"};
   return Status::success();
+}
+
+// The restart poses' generator: SplitMix64 (Steele, Lea & Flood 2014), fully specified, so that the
+// restarts are the same on every platform and library (std::uniform_real_distribution is not).
+class RestartRng {
+ public:
+  explicit RestartRng(unsigned long long seed) : state_(seed) {}
+  Real uniform() {  // [0, 1)
+    unsigned long long z = (state_ += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<Real>(z >> 11) * 0x1.0p-53;
+  }
+
+ private:
+  unsigned long long state_;
+};
+
+// A random pose inside the limits for the joints on a path to an effector (the others keep theirs):
+// scalar DOFs uniform in [lo, hi], free joints a uniform axis and an angle in [0, maxRotation].
+void randomizeActiveJoints(detail::Context& c, RestartRng& rng) {
+  const Skeleton& s = c.skeleton;
+  for (int j = 0; j < s.jointCount(); ++j) {
+    if (!c.active[static_cast<size_t>(j)]) continue;
+    const Joint& joint = s.joint(j);
+    for (int k = 0; k < dofCount(joint.type); ++k)
+      c.pose.dofs[static_cast<size_t>(joint.firstDof + k)] = joint.lo[k] + (joint.hi[k] - joint.lo[k]) * rng.uniform();
+    if (joint.type == JointType::Free) {
+      const Real z = 2.0 * rng.uniform() - 1.0, phi = 2.0 * kPi * rng.uniform();
+      const Real rxy = std::sqrt(std::max(0.0, 1.0 - z * z));
+      c.pose.rotations[static_cast<size_t>(j)] = glm::angleAxis(joint.maxRotation * rng.uniform(), Vec3(rxy * std::cos(phi), rxy * std::sin(phi), z));
+    }
+  }
 }
 
 std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string* why) {
@@ -215,6 +251,14 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
       c.belowList[static_cast<size_t>(fill[static_cast<size_t>(j)]++)] = static_cast<int>(k);
   c.active.assign(J, 0);
   for (size_t j = 0; j < J; ++j) c.active[j] = c.belowStart[j + 1] > c.belowStart[j];
+  c.insideCosHalf.assign(J, 2.0);
+  for (size_t j = 0; j < J; ++j) {
+    const Joint& joint = skeleton.joint(static_cast<int>(j));
+    if (joint.type != JointType::Ball) continue;
+    Real L = 0.5 * kPi;
+    for (int k = 0; k < 3; ++k) L = std::min({L, -joint.lo[k], joint.hi[k]});
+    if (L > 0.0) c.insideCosHalf[j] = std::cos(0.5 * L) + 1e-12;
+  }
 
   std::string why;
   std::unique_ptr<detail::Method> method = makeMethod(c, &why);
@@ -273,18 +317,70 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   auto [r, score] = measure();
   record(r.position);
   progress.push_back(score);
+  // Stall recovery: the best attempt so far (its pose and score) and the restart poses' generator.
+  Pose best;
+  Real bestScore = std::numeric_limits<Real>::infinity();
+  RestartRng rng(o.restartSeed);
+  auto keepBest = [&]() {  // after method->finish(): the pose and frames of the attempt are current
+    const Residual now = residual(effectors, c.frames);
+    const Real s = now.position + c.orientationScale * now.orientation;
+    if (s < bestScore) bestScore = s, best = pose;
+  };
+  auto stop = [&](SolveStatus status) {
+    if (result.restarts > 0) {
+      method->finish(c);
+      c.flushPose();
+      const Pose last = pose;
+      keepBest();
+      if (!(best.dofs == last.dofs && best.rotations == last.rotations)) {
+        pose = best;
+        c.refresh();
+      }
+    }
+    return finish(status);
+  };
   for (int it = 0;; ++it) {
     if (r.position <= o.tolerance && r.orientation <= o.angleTolerance) return finish(SolveStatus::Success);
     // A closed-form method that did not succeed has found the nearest reachable pose: the goal is
     // out of its workspace (too far, too near, or outside the limits).
     if (method->finished()) return finish(SolveStatus::Unreachable);
     const int k = o.stallIterations;
-    if (k > 0 && static_cast<int>(progress.size()) > k &&
-        !(score < (1.0 - o.stallRatio) * progress[progress.size() - 1 - static_cast<size_t>(k)]))
-      return finish(unreachable ? SolveStatus::Unreachable : SolveStatus::Stalled);
-    if (it >= o.maxIterations) return finish(unreachable ? SolveStatus::Unreachable : SolveStatus::IterationCap);
+    const bool stalled = k > 0 && static_cast<int>(progress.size()) > k &&
+                         !(score < (1.0 - o.stallRatio) * progress[progress.size() - 1 - static_cast<size_t>(k)]);
+    // Crawling counts as stuck when a restart is left: less than 10 % progress over the last k
+    // iterations, a rate at which the tolerance would take more than twice the iterations that
+    // remain (CCD along a limit can gain 1 % per pass for hundreds of passes). Methods that speed up
+    // near the goal (DLS: linear while the error clamp acts, then quadratic) are never this slow.
+    bool slow = false;
+    if (!stalled && k > 0 && static_cast<int>(progress.size()) > k && result.restarts < o.restarts) {
+      const Real rate = score / progress[progress.size() - 1 - static_cast<size_t>(k)];
+      const Real goal = o.tolerance + c.orientationScale * o.angleTolerance;
+      if (score > goal && rate > 0.9 && rate < 1.0)
+        slow = Real(k) * std::log(goal / score) / std::log(rate) > 2.0 * Real(o.maxIterations - it);
+    }
+    // A restart needs iterations to get anywhere: at least 2k must remain (an interactive solve with
+    // a cap of 30 keeps refining its warm start instead of jumping to a random pose it cannot finish).
+    if ((stalled || slow) && !unreachable && result.restarts < o.restarts && o.maxIterations - it >= 2 * std::max(k, 1) &&
+        !(o.maxSeconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > o.maxSeconds)) {
+      // A local minimum short of a reachable goal: keep this attempt if it is the best, then start
+      // again from a random pose of the joints that move the effectors, with a fresh method.
+      method->finish(c);
+      c.flushPose();
+      keepBest();
+      randomizeActiveJoints(c, rng);
+      c.refresh();
+      method = makeMethod(c, &why);
+      ++result.restarts;
+      progress.clear();
+      std::tie(r, score) = measure();
+      record(r.position);
+      progress.push_back(score);
+      continue;
+    }
+    if (stalled) return stop(unreachable ? SolveStatus::Unreachable : SolveStatus::Stalled);
+    if (it >= o.maxIterations) return stop(unreachable ? SolveStatus::Unreachable : SolveStatus::IterationCap);
     if (o.maxSeconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > o.maxSeconds)
-      return finish(SolveStatus::TimeCap);
+      return stop(SolveStatus::TimeCap);
     method->iterate(c);
     switch (method->framesAfterIterate()) {
       case detail::Method::FramesAfterIterate::Refresh: c.refresh(); break;

@@ -76,6 +76,16 @@ struct SolveOptions {
   Real gradientStep = 0.2;        ///< [rad²/m²] α of LineSearch::Fixed: Δθ = −α ∇f, f in m²; stable below
                                   ///< 2/λ_max(JᵀJ) (≈ 0.5 for a 1 m, 10-link chain); typical 0.05–0.5
   int lbfgsMemory = 7;            ///< pairs (s, y) L-BFGS remembers; typical 5–10
+  /// Stall recovery (IK slides, "Stopping": when stuck, randomise the pose or switch algorithm). With
+  /// joint limits or one-sided hinges a method can stall in a local minimum short of a reachable goal,
+  /// or crawl toward it (CCD along a limit). On a stall, or a crawl too slow to finish within the cap,
+  /// the solve restarts the method from a random pose inside the limits of the joints that move the
+  /// effectors, at most `restarts` times, within the same maxIterations (and only while 2 ×
+  /// stallIterations of them remain), and returns the attempt with the smallest residual; never on
+  /// an unreachable goal or a closed-form method. The random poses come from `restartSeed` alone, so
+  /// a solve stays deterministic. SolveResult::restarts counts them. 0: a stall ends the solve.
+  int restarts = 10;
+  unsigned long long restartSeed = 0x5EEDull;  ///< seed of the restart poses
 };
 
 struct SolveResult {
@@ -83,6 +93,7 @@ struct SolveResult {
   int iterations = 0;
   Real positionResidual = 0.0;     ///< [m] largest effector distance to its goal at the end
   Real orientationResidual = 0.0;  ///< [rad] largest 6-DOF orientation error at the end
+  int restarts = 0;                ///< stall recoveries used (SolveOptions::restarts)
   Real seconds = 0.0;              ///< [s] wall time of the solve (measurement only, never used for control unless maxSeconds)
   std::string message;             ///< for InvalidInput / NotApplicable
   std::vector<Real> residualHistory;           ///< [m] position residual after each iteration (recordHistory)

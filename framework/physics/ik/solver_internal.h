@@ -34,6 +34,12 @@ struct Context {
   }
   /// Per joint: true when it lies on the path from the root to some effector.
   std::vector<char> active;
+  /// Per ball joint: cos(L/2) with L = min(π/2, the smallest |limit| of its three DOFs); 2 (never)
+  /// when a range excludes 0. A local rotation q with |q.w| ≥ it turns by less than L, and below
+  /// π/2 no XYZ Euler angle exceeds the rotation angle: q is within the limits, no Euler angles
+  /// needed to tell (see surelyWithinLimits).
+  std::vector<Real> insideCosHalf;
+  bool surelyWithinLimits(int j, const Quat& q) const { return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)]; }
   std::vector<Quat> local;  ///< R_dof per joint for `pose` (see above)
   /// Per joint: its Euler DOFs in `pose` lag behind `local` (alignJoint defers the quaternion → Euler
   /// conversion, two atan2 and a hypot, while no limit needs the angles); flushPose() writes them.
@@ -98,6 +104,26 @@ std::unique_ptr<Method> makeAnalytic(const Context& c, std::string* why);
 /// Updates c.local[j] (not c.frames).
 Quat alignJoint(Context& c, int j, const Frame& frame, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
                 const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation);
+
+/// The rotation angle about the unit axis `a` through `p` that best carries the points `from` onto
+/// `to` (weights w): θ = atan2(Σ wᵢ a·(u⊥ᵢ × v⊥ᵢ), Σ wᵢ u⊥ᵢ·v⊥ᵢ) (align.cpp). 0 when undefined.
+Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+               const std::vector<Real>& w);
+/// The representative ψ − 2π, ψ or ψ + 2π of a hinge optimum ψ whose value clamped into [lo, hi] is
+/// closest to ψ in angle (ψ itself when clampLimits is false). The caller clamps.
+Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits);
+
+/// The rotation R maximising Σ wᵢ toᵢ·(R fromᵢ) (Horn's quaternion method: the least-squares
+/// rotation carrying the vectors `from` onto `to`), nearest `reference` where the vectors leave a
+/// rotation free (collinear or coincident points). fabrik.cpp.
+Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w, const Quat& reference);
+
+/// XYZ Euler angles (a, b, c) of a ball joint's local rotation q in the representation its limits
+/// admit. Every rotation has two, the principal one (b in [−π/2, π/2], eulerXYZFromQuat) and
+/// (a + π, π − b, c + π); limits wider than ±90° on b admit rotations only in the second, and an
+/// angle may also need a shift by 2π into [lo, hi]. Returns the one inside the limits, else the one
+/// that clamping moves least (principal on ties); *inside says which case it was (may be null).
+Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside = nullptr);
 
 /// True when joint j's rotation limits admit every rotation (ball: Euler ranges cover [−π, π] ×
 /// [−π/2, π/2] × [−π, π]; free: maxRotation ≥ π), so clamping can never change it. Hinges,

@@ -9,6 +9,7 @@
 #include "physics/ik/builders.h"
 #include "physics/ik/linalg.h"
 #include "physics/ik/solver.h"
+#include "physics/ik/solver_internal.h"
 #include "support/expect_helpers.h"
 
 namespace pba::ik {
@@ -176,6 +177,54 @@ TEST(IkSolve, SolverNamesRoundTrip) {
     ASSERT_TRUE(solverFromName(solverName(static_cast<SolverKind>(k)), &kind));
     EXPECT_EQ(static_cast<int>(kind), k);
   }
+}
+
+// Horn's fit (FABRIK's sub-bases): exact for a rotated point set; with the points leaving a rotation
+// free (one point, or coincident points) the member of the optimal family nearest the reference.
+TEST(IkInternals, FitRotationRecoversARotationAndOtherwisePrefersTheReference) {
+  std::mt19937_64 rng(1);
+  std::normal_distribution<Real> n;
+  for (int t = 0; t < 50; ++t) {
+    const Quat q = glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
+    std::vector<Vec3> from, to;
+    const std::vector<Real> w(4, 1.0);
+    for (int i = 0; i < 4; ++i) {
+      from.emplace_back(n(rng), n(rng), n(rng));
+      to.push_back(q * from.back());
+    }
+    const Quat fit = detail::fitRotation(from, to, w, Quat(1, 0, 0, 0));
+    for (int i = 0; i < 4; ++i) EXPECT_VEC3_NEAR(fit * from[size_t(i)], to[size_t(i)], 1e-12);
+    // One point (twice, as coincident branch joints): the shortest arc from the reference.
+    const Quat reference = glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
+    const std::vector<Vec3> one{from[0], from[0]}, target{to[0], to[0]};
+    const Quat single = detail::fitRotation(one, target, {1.0, 1.0}, reference);
+    const Quat expected = shortestArc(reference * from[0], to[0]) * reference;
+    EXPECT_VEC3_NEAR(single * from[0], to[0], 1e-12);
+    EXPECT_NEAR(std::abs(glm::dot(single, expected)), 1.0, 1e-12);
+  }
+}
+
+// A ball joint limited to ±120° admits rotations with |b| > 90° only in the second XYZ Euler
+// representation (a + π, π − b, c + π): the one to clamp is the one inside the limits.
+TEST(IkInternals, EulerWithinLimitsPicksTheRepresentationTheLimitsAdmit) {
+  Joint joint;
+  joint.type = JointType::Ball;
+  for (int k = 0; k < 3; ++k) joint.lo[k] = -degToRad(120.0), joint.hi[k] = degToRad(120.0);
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<Real> u(-degToRad(120.0), degToRad(120.0));
+  for (int t = 0; t < 1000; ++t) {
+    const Vec3 e(u(rng), u(rng), u(rng));
+    const Quat q = quatFromEulerXYZ(e);
+    bool inside = false;
+    const Vec3 got = detail::eulerWithinLimits(joint, q, &inside);
+    EXPECT_TRUE(inside) << e.x << " " << e.y << " " << e.z;
+    for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(got[k]), degToRad(120.0) + 1e-12);
+    EXPECT_NEAR(std::abs(glm::dot(quatFromEulerXYZ(got), q)), 1.0, 1e-12);
+  }
+  // Outside the limits either way: reported, and the representation that clamping moves least.
+  bool inside = true;
+  detail::eulerWithinLimits(joint, glm::angleAxis(kPi, Vec3(0, 0, 1)) * glm::angleAxis(0.9 * kPi, Vec3(1, 0, 0)), &inside);
+  EXPECT_FALSE(inside);
 }
 
 }  // namespace

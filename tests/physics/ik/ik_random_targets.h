@@ -20,13 +20,15 @@ struct BatchStats {
   Real worstResidual = 0.0;         ///< [m] recomputed from forward kinematics of the returned pose
   Real worstReportMismatch = 0.0;   ///< [m] largest |reported residual − recomputed residual|
   double meanIterations = 0.0;
+  double meanRestarts = 0.0;        ///< stall recoveries per solve (SolveOptions::restarts)
+  int maxIterations = 0;            ///< largest iteration count of a solve
   Real successRate() const { return solves > 0 ? Real(successes) / solves : 0.0; }
 };
 
 inline BatchStats runRandomTargets(const Rig& rig, const SolveOptions& options, int count, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   BatchStats stats;
-  long iterations = 0;
+  long iterations = 0, restarts = 0;
   for (int i = 0; i < count; ++i) {
     std::vector<Effector> effectors = rig.effectors;
     setGoalsFromPose(rig.skeleton, randomPose(rig.skeleton, rng), effectors);
@@ -34,6 +36,8 @@ inline BatchStats runRandomTargets(const Rig& rig, const SolveOptions& options, 
     const SolveResult r = solve(rig.skeleton, pose, effectors, options);
     ++stats.solves;
     iterations += r.iterations;
+    restarts += r.restarts;
+    stats.maxIterations = std::max(stats.maxIterations, r.iterations);
     bool finite = isFinite(r.positionResidual);
     for (Real v : pose.dofs) finite = finite && isFinite(v);
     if (!finite) ++stats.nonFinite;
@@ -45,6 +49,7 @@ inline BatchStats runRandomTargets(const Rig& rig, const SolveOptions& options, 
     stats.worstLimitViolation = std::max(stats.worstLimitViolation, limitViolation(rig.skeleton, pose));
   }
   stats.meanIterations = count > 0 ? double(iterations) / count : 0.0;
+  stats.meanRestarts = count > 0 ? double(restarts) / count : 0.0;
   return stats;
 }
 

@@ -4,8 +4,15 @@
 //
 // Random reachable targets: goals are forward kinematics of random poses inside the limits. The
 // default suite runs kTargets of them per solver and chain (10,000 in release builds; 2,000 in debug
-// builds, where 10,000 per solver would take longer than the 10 s budget of a unit test).
+// builds, where 10,000 per solver would take longer than the 10 s budget of a unit test). The
+// thresholds are issue 3's: ≥ 99 % for CCD and FABRIK, ≥ 99.5 % for DLS and SDLS (and 99 % for JT
+// and pinv), within the iteration cap, on chains whose every DOF is limited to ±120°, with the
+// default stall recovery (SolveOptions::restarts); limits never violated by more than 1e-9.
+#include <bit>
+#include <initializer_list>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -31,21 +38,57 @@ Rig chain(JointType joint, int links = 10, Real limitDegrees = 120.0) {
   return buildIkChain(d).value();
 }
 
-void expectRandomTargets(SolverKind kind, const Rig& rig, Real minimumRate, const char* label) {
+void expectRandomTargets(SolverKind kind, const Rig& rig, Real minimumRate, const char* label, int count = kTargets) {
   SolveOptions o;
   o.solver = kind;
   o.maxIterations = 1000;
-  const testing::BatchStats s = testing::runRandomTargets(rig, o, kTargets, 2024);
+  const testing::BatchStats s = testing::runRandomTargets(rig, o, count, 2024);
   SCOPED_TRACE(::testing::Message() << solverName(kind) << " on " << label << ", seed 2024");
+  std::printf("[ stats    ] %s on %s: %.2f %% of %d, %.1f iterations, %.3f restarts per solve\n", solverName(kind), label,
+              100.0 * s.successRate(), s.solves, s.meanIterations, s.meanRestarts);
   EXPECT_EQ(s.nonFinite, 0);
   EXPECT_GE(s.successRate(), minimumRate) << "mean iterations " << s.meanIterations;
+  EXPECT_LE(s.maxIterations, o.maxIterations) << "restarts share the iteration cap";
   EXPECT_LE(s.worstLimitViolation, 1e-9);
   EXPECT_LE(s.worstReportMismatch, 1e-9) << "the reported residual must be the returned pose's";
 }
 
 TEST(IK_2_CcdSolver, ReachesRandomReachableTargets) {
   expectRandomTargets(SolverKind::Ccd, chain(JointType::Ball), 0.99, "10 ball joints, limits ±120°");
-  expectRandomTargets(SolverKind::Ccd, chain(JointType::Hinge, 10, 180.0), 0.99, "10 full-range hinges");
+  expectRandomTargets(SolverKind::Ccd, chain(JointType::Hinge), 0.99, "10 hinges, limits ±120°");
+}
+
+// Stall recovery (IK slides, "Stopping": when stuck, randomise the pose). With limits CCD crawls or
+// stalls short of many goals; restarting from random poses inside the limits, within the same
+// iteration cap, recovers them. The restarts are counted, bounded, and deterministic.
+TEST(IK_2_CcdSolver, StallRecoveryRestartsFromRandomPosesWithinTheCap) {
+  const Rig rig = chain(JointType::Hinge);
+  SolveOptions o;
+  o.solver = SolverKind::Ccd;
+  o.maxIterations = 1000;
+  SolveOptions none = o;
+  none.restarts = 0;
+  const testing::BatchStats with = testing::runRandomTargets(rig, o, 500, 99);
+  const testing::BatchStats without = testing::runRandomTargets(rig, none, 500, 99);
+  std::printf("[ stats    ] ccd on 10 hinges ±120°: %.1f %% with stall recovery (%.3f restarts per solve), %.1f %% without\n",
+              100.0 * with.successRate(), with.meanRestarts, 100.0 * without.successRate());
+  EXPECT_EQ(without.meanRestarts, 0.0);
+  EXPECT_GT(with.meanRestarts, 0.0);
+  EXPECT_GT(with.successRate(), without.successRate() + 0.05);
+  EXPECT_LE(with.maxIterations, o.maxIterations);
+  EXPECT_LE(with.worstLimitViolation, 1e-9);
+  // Each restart is counted, never more than allowed.
+  Rig r = rig;
+  std::mt19937_64 rng(4);
+  for (int i = 0; i < 50; ++i) {
+    setGoalsFromPose(r.skeleton, randomPose(r.skeleton, rng), r.effectors);
+    Pose pose = r.skeleton.restPose();
+    SolveOptions few = o;
+    few.restarts = 2;
+    const SolveResult result = solve(r.skeleton, pose, r.effectors, few);
+    EXPECT_LE(result.restarts, 2);
+    EXPECT_LE(result.iterations, few.maxIterations);
+  }
 }
 
 TEST(IK_5_FabrikSolver, ReachesRandomReachableTargets) {
@@ -105,12 +148,35 @@ TEST(IK_4_DampedLeastSquaresSolver, ReachesRandomReachableTargets) {
 
 TEST(IK_4_SelectivelyDampedSolver, ReachesRandomReachableTargets) {
   expectRandomTargets(SolverKind::SelectivelyDamped, chain(JointType::Ball), 0.995, "10 ball joints, limits ±120°");
-  expectRandomTargets(SolverKind::SelectivelyDamped, chain(JointType::Hinge, 10, 180.0), 0.995, "10 full-range hinges");
+  expectRandomTargets(SolverKind::SelectivelyDamped, chain(JointType::Hinge), 0.995, "10 hinges, limits ±120°");
 }
 
 TEST(IK_3_JacobianTransposeAndPseudoInverse, ReachRandomReachableTargetsWithoutNaN) {
-  expectRandomTargets(SolverKind::JacobianTranspose, chain(JointType::Ball), 0.98, "10 ball joints");
-  expectRandomTargets(SolverKind::PseudoInverse, chain(JointType::Ball), 0.98, "10 ball joints");
+  expectRandomTargets(SolverKind::JacobianTranspose, chain(JointType::Ball), 0.99, "10 ball joints, limits ±120°");
+  expectRandomTargets(SolverKind::JacobianTranspose, chain(JointType::Hinge), 0.99, "10 hinges, limits ±120°");
+  expectRandomTargets(SolverKind::PseudoInverse, chain(JointType::Ball), 0.99, "10 ball joints, limits ±120°");
+  expectRandomTargets(SolverKind::PseudoInverse, chain(JointType::Hinge), 0.99, "10 hinges, limits ±120°");
+}
+
+// Analytic IK on every chain it applies to (1 or 2 links, hinge or ball, ±120°): every goal made by
+// forward kinematics of a pose inside the limits is reached. A ball joint limited to more than ±90°
+// on its middle Euler angle admits some rotations only in the second Euler representation, and a
+// limited one reaches some directions only with a twist other than the shortest arc's.
+TEST(IK_1_AnalyticSolver, ReachesEveryGoalInsideTheLimitsOfOneAndTwoLinkChains) {
+  for (int links : {1, 2})
+    for (JointType joint : {JointType::Hinge, JointType::Ball}) {
+      ChainDesc d;
+      d.links = links;
+      d.joint = joint;
+      SolveOptions o;
+      o.solver = SolverKind::Analytic;
+      const testing::BatchStats s = testing::runRandomTargets(buildIkChain(d).value(), o, kTargets, 1);
+      SCOPED_TRACE(::testing::Message() << links << " " << jointTypeName(joint) << " links");
+      EXPECT_EQ(s.successes, s.solves);
+      EXPECT_EQ(s.nonFinite, 0);
+      EXPECT_LE(s.worstLimitViolation, 1e-9);
+      EXPECT_LE(s.maxIterations, 1);
+    }
 }
 
 TEST(IK_3_JacobianTransposeAndPseudoInverse, JacobianTransposeNeverIncreasesTheResidual) {
@@ -280,41 +346,72 @@ TEST(IK_2_CcdSolver, Solves1000LinkChains) {
   }
 }
 
-// Trees (Workbook §2.1 task 5, §2.7): Buss & Kim's double Y (ball joints) and a hand (ball knuckles,
-// hinged phalanges with one-sided limits). Random poses of the hand put five coupled goals anywhere
-// the fingers can reach; many are only reachable from far away in joint space, so the success rates
-// below are the measured ones (printed), asserted with a margin, not the 99 % of single chains.
-TEST(IK_5_FabrikSolver, TreesWithSeveralEffectorsApproachTheirGoals) {
-  struct Case {
-    SolverKind kind;
-    int which;        // 0 hand, 1 double Y
-    int minimum;      // of 50
-  };
-  for (const Case& t : {Case{SolverKind::Fabrik, 1, 10}, Case{SolverKind::Ccd, 1, 40}, Case{SolverKind::DampedLeastSquares, 1, 45},
-                        Case{SolverKind::SelectivelyDamped, 1, 45}, Case{SolverKind::Fabrik, 0, 2}, Case{SolverKind::Ccd, 0, 30},
-                        Case{SolverKind::DampedLeastSquares, 0, 10}, Case{SolverKind::SelectivelyDamped, 0, 25}}) {
-    Rig rig = t.which == 0 ? buildHand().value() : buildDoubleY().value();
-    std::mt19937_64 rng(12);
-    int successes = 0;
-    for (int i = 0; i < 50; ++i) {
-      setGoalsFromPose(rig.skeleton, randomPose(rig.skeleton, rng), rig.effectors);
-      Pose pose = rig.skeleton.restPose();
-      const Real before = residual(rig.effectors, forwardKinematics(rig.skeleton, pose)).position;
-      SolveOptions o;
-      o.solver = t.kind;
-      o.maxIterations = 1000;
-      const SolveResult r = solve(rig.skeleton, pose, rig.effectors, o);
-      successes += r.status == SolveStatus::Success;
-      EXPECT_LE(limitViolation(rig.skeleton, pose), 1e-9);
-      EXPECT_LE(r.positionResidual, before + 1e-12) << solverName(t.kind);
-    }
-    std::printf("[ stats    ] %s on %s: %d / 50 solved\n", solverName(t.kind), t.which == 0 ? "hand" : "double Y", successes);
-    EXPECT_GE(successes, t.minimum) << solverName(t.kind) << (t.which == 0 ? " hand" : " double Y");
+// Trees (Workbook §2.1 task 5, §2.7): Buss & Kim's double Y (ball joints, ±90°) and a hand (ball
+// wrist ±80°, ball knuckles ±60°, phalanges hinged one way only, [−100°, 0]). Goals are forward
+// kinematics of random poses: reachable by construction, every effector at once. FABRIK and CCD get
+// the same goals. The hand is the hard case for FABRIK: a straight finger whose hinges bend one way
+// must first find the plane and side it bends to, and its knuckle's twist is limited; one attempt
+// succeeds on about a quarter of the goals, the stall recovery lifts that to about 85 % (CCD: 80 %
+// and 99 %). Measured rates are printed; the thresholds leave a few points of margin.
+#ifdef NDEBUG
+constexpr int kTreeTargets = 300;
+#else
+constexpr int kTreeTargets = 60;
+#endif
+
+struct TreeCase {
+  SolverKind kind;
+  Real minimumRate;
+};
+
+void expectTreeTargets(const Rig& rig, const char* tree, std::initializer_list<TreeCase> cases) {
+  for (const TreeCase& t : cases) {
+    SolveOptions o;
+    o.solver = t.kind;
+    o.maxIterations = 1000;
+    const testing::BatchStats s = testing::runRandomTargets(rig, o, kTreeTargets, 12);
+    std::printf("[ stats    ] %s on %s: %.1f %% of %d, %.1f iterations, %.2f restarts per solve\n", solverName(t.kind), tree,
+                100.0 * s.successRate(), s.solves, s.meanIterations, s.meanRestarts);
+    SCOPED_TRACE(::testing::Message() << solverName(t.kind) << " on " << tree);
+    EXPECT_GE(s.successRate(), t.minimumRate);
+    EXPECT_EQ(s.nonFinite, 0);
+    EXPECT_LE(s.worstLimitViolation, 1e-9);
+    EXPECT_LE(s.worstReportMismatch, 1e-9);
   }
 }
 
-TEST(IK_3_SixDofEffector, JacobianMethodsAndCcdMatchPositionAndOrientation) {
-  for (SolverKind kind : {SolverKind::DampedLeastSquares, SolverKind::SelectivelyDamped, SolverKind::PseudoInverse, SolverKind::Ccd}) {
+TEST(IK_5_FabrikSolver, DoubleYReachesItsFourGoals) {
+  expectTreeTargets(buildDoubleY().value(), "double Y",
+                    {{SolverKind::Fabrik, 0.95}, {SolverKind::Ccd, 0.97}, {SolverKind::DampedLeastSquares, 0.99},
+                     {SolverKind::SelectivelyDamped, 0.99}});
+}
+
+TEST(IK_5_FabrikSolver, HandReachesItsFiveGoals) {
+  expectTreeTargets(buildHand().value(), "hand",
+                    {{SolverKind::Fabrik, 0.75}, {SolverKind::Ccd, 0.95}, {SolverKind::DampedLeastSquares, 0.95},
+                     {SolverKind::SelectivelyDamped, 0.95}});
+}
+
+// The sub-base rule of FABRIK on trees (Aristidou & Lasenby 2011 §4.3): without limits, on Buss's
+// double Y, one attempt (no stall recovery) reaches every goal. Before the rigid-body passes this
+// failed: the two branch joints that share a point moved apart in the point passes, so the points
+// described no pose and the projection back to angles undid each pass.
+TEST(IK_5_FabrikSolver, UnlimitedDoubleYConvergesWithoutRestarts) {
+  Rig rig = buildDoubleY().value();
+  SolveOptions o;
+  o.solver = SolverKind::Fabrik;
+  o.maxIterations = 1000;
+  o.restarts = 0;
+  o.enforceLimits = false;
+  const testing::BatchStats s = testing::runRandomTargets(rig, o, kTreeTargets / 2, 12);
+  std::printf("[ stats    ] fabrik on the unlimited double Y, no restarts: %.1f %%, %.1f iterations\n", 100.0 * s.successRate(),
+              s.meanIterations);
+  EXPECT_GE(s.successRate(), 0.99);
+}
+
+TEST(IK_3_SixDofEffector, JacobianMethodsCcdAndFabrikMatchPositionAndOrientation) {
+  for (SolverKind kind : {SolverKind::DampedLeastSquares, SolverKind::SelectivelyDamped, SolverKind::PseudoInverse, SolverKind::Ccd,
+                          SolverKind::Fabrik}) {
     Rig rig = chain(JointType::Ball, 6, 150.0);
     rig.effectors[0].kind = EffectorKind::PositionOrientation;
     std::mt19937_64 rng(21);
@@ -330,6 +427,72 @@ TEST(IK_3_SixDofEffector, JacobianMethodsAndCcdMatchPositionAndOrientation) {
     }
     std::printf("[ stats    ] 6-DOF %s: %d / 100 solved\n", solverName(kind), successes);
     EXPECT_GE(successes, 90) << solverName(kind);
+  }
+}
+
+// Determinism (issue 3): identical inputs give bitwise-identical results for every solver, on chains
+// with limits, trees (where the stall recovery restarts often) and the analytic solver's limbs; a
+// solve in between, of other goals, changes nothing (no hidden state), and the repeatability option
+// (fromRest) makes the start pose irrelevant. Poses are compared by a hash of their bytes and
+// field by field.
+std::uint64_t poseHash(const Pose& pose) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  auto mix = [&](Real x) {
+    const auto bits = std::bit_cast<std::uint64_t>(x);
+    for (int b = 0; b < 64; b += 8) h = (h ^ ((bits >> b) & 0xFF)) * 1099511628211ull;
+  };
+  for (Real v : pose.dofs) mix(v);
+  for (const Quat& q : pose.rotations) mix(q.w), mix(q.x), mix(q.y), mix(q.z);
+  return h;
+}
+
+void expectIdentical(const SolveResult& a, const Pose& pa, const SolveResult& b, const Pose& pb) {
+  EXPECT_EQ(poseHash(pa), poseHash(pb));
+  EXPECT_EQ(pa.dofs, pb.dofs);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_EQ(a.restarts, b.restarts);
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.positionResidual), std::bit_cast<std::uint64_t>(b.positionResidual));
+  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.orientationResidual), std::bit_cast<std::uint64_t>(b.orientationResidual));
+}
+
+TEST(IkDeterminism, EverySolverGivesBitwiseIdenticalResultsForIdenticalInputs) {
+  struct Setup {
+    const char* name;
+    Rig rig;
+  };
+  std::vector<Setup> setups;
+  setups.push_back({"10 hinges ±120°", chain(JointType::Hinge)});
+  setups.push_back({"10 ball joints ±120°", chain(JointType::Ball)});
+  setups.push_back({"double Y", buildDoubleY().value()});
+  setups.push_back({"hand", buildHand().value()});
+  setups.push_back({"two-bone arm", buildTwoBoneArm(TwoBoneDesc{}).value()});
+  for (int k = 0; k < kSolverKindCount; ++k) {
+    for (Setup& setup : setups) {
+      SCOPED_TRACE(::testing::Message() << solverName(static_cast<SolverKind>(k)) << " on " << setup.name);
+      const Skeleton& sk = setup.rig.skeleton;
+      std::mt19937_64 rng(7);
+      for (int i = 0; i < 6; ++i) {
+        std::vector<Effector> goals = setup.rig.effectors, other = setup.rig.effectors;
+        setGoalsFromPose(sk, randomPose(sk, rng), goals);
+        setGoalsFromPose(sk, randomPose(sk, rng), other);
+        const Pose start = randomPose(sk, rng);
+        SolveOptions o;
+        o.solver = static_cast<SolverKind>(k);
+        o.maxIterations = 300;
+        Pose a = start, between = start, b = start;
+        const SolveResult ra = solve(sk, a, goals, o);
+        solve(sk, between, other, o);
+        const SolveResult rb = solve(sk, b, goals, o);
+        expectIdentical(ra, a, rb, b);
+        // Repeatability: from the rest pose whatever the pose passed in.
+        o.fromRest = true;
+        Pose restStart = sk.restPose(), randomStart = start;
+        const SolveResult rr = solve(sk, restStart, goals, o);
+        const SolveResult rs = solve(sk, randomStart, goals, o);
+        expectIdentical(rr, restStart, rs, randomStart);
+      }
+    }
   }
 }
 
