@@ -158,6 +158,14 @@ TEST(IK_3_JacobianTransposeAndPseudoInverse, ReachRandomReachableTargetsWithoutN
   expectRandomTargets(SolverKind::PseudoInverse, chain(JointType::Hinge), 0.99, "10 hinges, limits ±120°");
 }
 
+// L-BFGS (projected, with the driver's stall recovery) on the same chains and goals as DLS.
+// Gradient descent with its golden-section search costs ~30 FK per step, so its random-goal test
+// (ik_descent_test.cpp) uses fewer goals.
+TEST(IK_3_Lbfgs, ReachesRandomReachableTargetsOnLimitedChains) {
+  expectRandomTargets(SolverKind::Lbfgs, chain(JointType::Ball), 0.995, "10 ball joints, limits ±120°");
+  expectRandomTargets(SolverKind::Lbfgs, chain(JointType::Hinge), 0.995, "10 hinges, limits ±120°");
+}
+
 // Analytic IK on every chain it applies to (1 or 2 links, hinge or ball, ±120°): every goal made by
 // forward kinematics of a pose inside the limits is reached. A ball joint limited to more than ±90°
 // on its middle Euler angle admits some rotations only in the second Euler representation, and a
