@@ -257,7 +257,7 @@ class Fabrik final : public Method {
 
   // The points of joint j's body: in its frame (from_), their goals (to_, world) and weights.
   // Effectors first (6-DOF ones add three points at s·x̂, s·ŷ, s·ẑ of their frame), then child joints.
-  void bodyPoints(const Context& c, int j, bool childGoals) {
+  void bodyPoints(const Context& c, int j) {
     from_.clear();
     to_.clear();
     w_.clear();
@@ -276,7 +276,6 @@ class Fabrik final : public Method {
         }
       }
     }
-    if (!childGoals) return;
     for (int k : kids_[static_cast<size_t>(j)]) {
       from_.push_back(jointTranslation(c.skeleton.joint(k), c.pose));
       to_.push_back(P_[static_cast<size_t>(k)]);
@@ -402,7 +401,7 @@ class Fabrik final : public Method {
       // A sub-base: the pivot at the centroid of the proposals (Aristidou & Lasenby §4.3), the body
       // turned to carry its points best onto their new places.
       const Vec3 P = sumP / Real(proposals);
-      bodyPoints(c, j, true);
+      bodyPoints(c, j);
       for (Vec3& t : to_) t -= P;
       P_[static_cast<size_t>(j)] = P;
       R_[static_cast<size_t>(j)] = fitRotation(from_, to_, w_, glm::normalize(sumR));
@@ -422,7 +421,7 @@ class Fabrik final : public Method {
         c.frames[static_cast<size_t>(j)] = f;
         continue;
       }
-      bodyPoints(c, j, true);
+      bodyPoints(c, j);
       if (joint.type == JointType::Ball || joint.type == JointType::Free) {
         turnBall(c, j, f, clamp);
       } else {

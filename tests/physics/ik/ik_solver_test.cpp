@@ -38,10 +38,21 @@ Rig chain(JointType joint, int links = 10, Real limitDegrees = 120.0) {
   return buildIkChain(d).value();
 }
 
+// A method far below its threshold on the first goals (an exercise still a stub: every solve stalls
+// and restarts up to the cap) fails at once instead of spending minutes on all of them.
+bool farBelowOnAFewGoals(const Rig& rig, const SolveOptions& o, Real minimumRate, std::uint64_t seed, const char* label, int few = 100) {
+  const testing::BatchStats probe = testing::runRandomTargets(rig, o, few, seed);
+  if (probe.successRate() >= minimumRate - 0.1) return false;
+  ADD_FAILURE() << solverName(o.solver) << " on " << label << ": " << 100.0 * probe.successRate()
+                << " % of the first " << few << " goals, far below the required " << 100.0 * minimumRate << " %";
+  return true;
+}
+
 void expectRandomTargets(SolverKind kind, const Rig& rig, Real minimumRate, const char* label, int count = kTargets) {
   SolveOptions o;
   o.solver = kind;
   o.maxIterations = 1000;
+  if (farBelowOnAFewGoals(rig, o, minimumRate, 2024, label)) return;
   const testing::BatchStats s = testing::runRandomTargets(rig, o, count, 2024);
   SCOPED_TRACE(::testing::Message() << solverName(kind) << " on " << label << ", seed 2024");
   std::printf("[ stats    ] %s on %s: %.2f %% of %d, %.1f iterations, %.3f restarts per solve\n", solverName(kind), label,
@@ -369,6 +380,7 @@ void expectTreeTargets(const Rig& rig, const char* tree, std::initializer_list<T
     SolveOptions o;
     o.solver = t.kind;
     o.maxIterations = 1000;
+    if (farBelowOnAFewGoals(rig, o, t.minimumRate, 12, tree, 20)) continue;
     const testing::BatchStats s = testing::runRandomTargets(rig, o, kTreeTargets, 12);
     std::printf("[ stats    ] %s on %s: %.1f %% of %d, %.1f iterations, %.2f restarts per solve\n", solverName(t.kind), tree,
                 100.0 * s.successRate(), s.solves, s.meanIterations, s.meanRestarts);
