@@ -97,89 +97,6 @@ PBA_EXERCISE_PROBE(probeFabrikPasses());
 namespace detail {
 namespace {
 
-// Cyclic Jacobi on a symmetric 4 × 4 matrix: on return a's diagonal holds the eigenvalues and v's
-// columns the eigenvectors.
-void eigenSymmetric4(Real a[4][4], Real v[4][4]) {
-  for (int p = 0; p < 4; ++p)
-    for (int q = 0; q < 4; ++q) v[p][q] = p == q ? 1.0 : 0.0;
-  for (int sweep = 0; sweep < 20; ++sweep) {
-    Real off = 0.0, diag = 0.0;
-    for (int p = 0; p < 4; ++p) {
-      diag += a[p][p] * a[p][p];
-      for (int q = p + 1; q < 4; ++q) off += a[p][q] * a[p][q];
-    }
-    if (off <= 1e-26 * diag || off == 0.0) break;  // off-diagonal below 1e-13 of the diagonal
-    const Real small = 1e-15 * std::sqrt(diag);
-    for (int p = 0; p < 4; ++p)
-      for (int q = p + 1; q < 4; ++q) {
-        if (std::abs(a[p][q]) <= small) continue;
-        const Real theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-        const Real t = (theta >= 0.0 ? 1.0 : -1.0) / (std::abs(theta) + std::sqrt(theta * theta + 1.0));
-        const Real cs = 1.0 / std::sqrt(t * t + 1.0), sn = t * cs;
-        for (int k = 0; k < 4; ++k) {  // A ← A G (columns p, q)
-          const Real akp = a[k][p], akq = a[k][q];
-          a[k][p] = cs * akp - sn * akq;
-          a[k][q] = sn * akp + cs * akq;
-        }
-        for (int k = 0; k < 4; ++k) {  // A ← Gᵀ A (rows p, q)
-          const Real apk = a[p][k], aqk = a[q][k];
-          a[p][k] = cs * apk - sn * aqk;
-          a[q][k] = sn * apk + cs * aqk;
-        }
-        for (int k = 0; k < 4; ++k) {  // V ← V G
-          const Real vkp = v[k][p], vkq = v[k][q];
-          v[k][p] = cs * vkp - sn * vkq;
-          v[k][q] = sn * vkp + cs * vkq;
-        }
-      }
-  }
-}
-
-}  // namespace
-
-Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w, const Quat& reference) {
-  // Horn 1987: Σ wᵢ toᵢ · (R fromᵢ) = qᵀ N q over unit quaternions q, with N built from
-  // S = Σ wᵢ fromᵢ toᵢᵀ; the maximum is N's top eigenvector. When the top eigenvalue is (nearly)
-  // repeated, every unit q in its eigenspace is optimal: take the one nearest the reference (its
-  // projection onto the eigenspace).
-  Real S[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-  Real scale = 0.0;
-  for (size_t i = 0; i < from.size(); ++i) {
-    for (int r = 0; r < 3; ++r)
-      for (int k = 0; k < 3; ++k) S[r][k] += w[i] * from[i][r] * to[i][k];
-    scale += w[i] * glm::length(from[i]) * glm::length(to[i]);
-  }
-  if (!(scale > 0.0)) return reference;
-  const Real xx = S[0][0], xy = S[0][1], xz = S[0][2], yx = S[1][0], yy = S[1][1], yz = S[1][2], zx = S[2][0], zy = S[2][1],
-             zz = S[2][2];
-  Real N[4][4] = {{xx + yy + zz, yz - zy, zx - xz, xy - yx},
-                  {yz - zy, xx - yy - zz, xy + yx, zx + xz},
-                  {zx - xz, xy + yx, -xx + yy - zz, yz + zy},
-                  {xy - yx, zx + xz, yz + zy, -xx - yy + zz}};
-  Real V[4][4];
-  eigenSymmetric4(N, V);
-  Real top = N[0][0];
-  int best = 0;
-  for (int k = 1; k < 4; ++k)
-    if (N[k][k] > top) top = N[k][k], best = k;
-  const Real ref[4] = {reference.w, reference.x, reference.y, reference.z};
-  Real q[4] = {0, 0, 0, 0};
-  for (int k = 0; k < 4; ++k) {
-    if (N[k][k] < top - 1e-9 * scale) continue;
-    Real along = 0.0;
-    for (int i = 0; i < 4; ++i) along += V[i][k] * ref[i];
-    for (int i = 0; i < 4; ++i) q[i] += along * V[i][k];
-  }
-  Real length = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (!(length > 1e-6)) {  // the reference is (nearly) orthogonal to the optimal set: any optimum
-    for (int i = 0; i < 4; ++i) q[i] = V[i][best];
-    length = 1.0;
-  }
-  return Quat(q[0] / length, q[1] / length, q[2] / length, q[3] / length);
-}
-
-namespace {
-
 Vec3 perpTo(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
 
 class Fabrik final : public Method {
@@ -257,7 +174,7 @@ class Fabrik final : public Method {
 
   // The points of joint j's body: in its frame (from_), their goals (to_, world) and weights.
   // Effectors first (6-DOF ones add three points at s·x̂, s·ŷ, s·ẑ of their frame), then child joints.
-  void bodyPoints(const Context& c, int j, bool childGoals) {
+  void bodyPoints(const Context& c, int j) {
     from_.clear();
     to_.clear();
     w_.clear();
@@ -276,7 +193,6 @@ class Fabrik final : public Method {
         }
       }
     }
-    if (!childGoals) return;
     for (int k : kids_[static_cast<size_t>(j)]) {
       from_.push_back(jointTranslation(c.skeleton.joint(k), c.pose));
       to_.push_back(P_[static_cast<size_t>(k)]);
@@ -402,7 +318,7 @@ class Fabrik final : public Method {
       // A sub-base: the pivot at the centroid of the proposals (Aristidou & Lasenby §4.3), the body
       // turned to carry its points best onto their new places.
       const Vec3 P = sumP / Real(proposals);
-      bodyPoints(c, j, true);
+      bodyPoints(c, j);
       for (Vec3& t : to_) t -= P;
       P_[static_cast<size_t>(j)] = P;
       R_[static_cast<size_t>(j)] = fitRotation(from_, to_, w_, glm::normalize(sumR));
@@ -422,7 +338,7 @@ class Fabrik final : public Method {
         c.frames[static_cast<size_t>(j)] = f;
         continue;
       }
-      bodyPoints(c, j, true);
+      bodyPoints(c, j);
       if (joint.type == JointType::Ball || joint.type == JointType::Free) {
         turnBall(c, j, f, clamp);
       } else {

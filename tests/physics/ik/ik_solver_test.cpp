@@ -8,7 +8,6 @@
 // thresholds are issue 3's: ≥ 99 % for CCD and FABRIK, ≥ 99.5 % for DLS and SDLS (and 99 % for JT
 // and pinv), within the iteration cap, on chains whose every DOF is limited to ±120°, with the
 // default stall recovery (SolveOptions::restarts); limits never violated by more than 1e-9.
-#include <bit>
 #include <initializer_list>
 #include <cmath>
 #include <cstdint>
@@ -38,10 +37,21 @@ Rig chain(JointType joint, int links = 10, Real limitDegrees = 120.0) {
   return buildIkChain(d).value();
 }
 
+// A method far below its threshold on the first goals (an exercise still a stub: every solve stalls
+// and restarts up to the cap) fails at once instead of spending minutes on all of them.
+bool farBelowOnAFewGoals(const Rig& rig, const SolveOptions& o, Real minimumRate, std::uint64_t seed, const char* label, int few = 100) {
+  const testing::BatchStats probe = testing::runRandomTargets(rig, o, few, seed);
+  if (probe.successRate() >= minimumRate - 0.1) return false;
+  ADD_FAILURE() << solverName(o.solver) << " on " << label << ": " << 100.0 * probe.successRate()
+                << " % of the first " << few << " goals, far below the required " << 100.0 * minimumRate << " %";
+  return true;
+}
+
 void expectRandomTargets(SolverKind kind, const Rig& rig, Real minimumRate, const char* label, int count = kTargets) {
   SolveOptions o;
   o.solver = kind;
   o.maxIterations = 1000;
+  if (farBelowOnAFewGoals(rig, o, minimumRate, 2024, label)) return;
   const testing::BatchStats s = testing::runRandomTargets(rig, o, count, 2024);
   SCOPED_TRACE(::testing::Message() << solverName(kind) << " on " << label << ", seed 2024");
   std::printf("[ stats    ] %s on %s: %.2f %% of %d, %.1f iterations, %.3f restarts per solve\n", solverName(kind), label,
@@ -377,6 +387,7 @@ void expectTreeTargets(const Rig& rig, const char* tree, std::initializer_list<T
     SolveOptions o;
     o.solver = t.kind;
     o.maxIterations = 1000;
+    if (farBelowOnAFewGoals(rig, o, t.minimumRate, 12, tree, 20)) continue;
     const testing::BatchStats s = testing::runRandomTargets(rig, o, kTreeTargets, 12);
     std::printf("[ stats    ] %s on %s: %.1f %% of %d, %.1f iterations, %.2f restarts per solve\n", solverName(t.kind), tree,
                 100.0 * s.successRate(), s.solves, s.meanIterations, s.meanRestarts);
@@ -435,72 +446,6 @@ TEST(IK_3_SixDofEffector, JacobianMethodsCcdAndFabrikMatchPositionAndOrientation
     }
     std::printf("[ stats    ] 6-DOF %s: %d / 100 solved\n", solverName(kind), successes);
     EXPECT_GE(successes, 90) << solverName(kind);
-  }
-}
-
-// Determinism (issue 3): identical inputs give bitwise-identical results for every solver, on chains
-// with limits, trees (where the stall recovery restarts often) and the analytic solver's limbs; a
-// solve in between, of other goals, changes nothing (no hidden state), and the repeatability option
-// (fromRest) makes the start pose irrelevant. Poses are compared by a hash of their bytes and
-// field by field.
-std::uint64_t poseHash(const Pose& pose) {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
-  auto mix = [&](Real x) {
-    const auto bits = std::bit_cast<std::uint64_t>(x);
-    for (int b = 0; b < 64; b += 8) h = (h ^ ((bits >> b) & 0xFF)) * 1099511628211ull;
-  };
-  for (Real v : pose.dofs) mix(v);
-  for (const Quat& q : pose.rotations) mix(q.w), mix(q.x), mix(q.y), mix(q.z);
-  return h;
-}
-
-void expectIdentical(const SolveResult& a, const Pose& pa, const SolveResult& b, const Pose& pb) {
-  EXPECT_EQ(poseHash(pa), poseHash(pb));
-  EXPECT_EQ(pa.dofs, pb.dofs);
-  EXPECT_EQ(a.status, b.status);
-  EXPECT_EQ(a.iterations, b.iterations);
-  EXPECT_EQ(a.restarts, b.restarts);
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.positionResidual), std::bit_cast<std::uint64_t>(b.positionResidual));
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.orientationResidual), std::bit_cast<std::uint64_t>(b.orientationResidual));
-}
-
-TEST(IkDeterminism, EverySolverGivesBitwiseIdenticalResultsForIdenticalInputs) {
-  struct Setup {
-    const char* name;
-    Rig rig;
-  };
-  std::vector<Setup> setups;
-  setups.push_back({"10 hinges ±120°", chain(JointType::Hinge)});
-  setups.push_back({"10 ball joints ±120°", chain(JointType::Ball)});
-  setups.push_back({"double Y", buildDoubleY().value()});
-  setups.push_back({"hand", buildHand().value()});
-  setups.push_back({"two-bone arm", buildTwoBoneArm(TwoBoneDesc{}).value()});
-  for (int k = 0; k < kSolverKindCount; ++k) {
-    for (Setup& setup : setups) {
-      SCOPED_TRACE(::testing::Message() << solverName(static_cast<SolverKind>(k)) << " on " << setup.name);
-      const Skeleton& sk = setup.rig.skeleton;
-      std::mt19937_64 rng(7);
-      for (int i = 0; i < 6; ++i) {
-        std::vector<Effector> goals = setup.rig.effectors, other = setup.rig.effectors;
-        setGoalsFromPose(sk, randomPose(sk, rng), goals);
-        setGoalsFromPose(sk, randomPose(sk, rng), other);
-        const Pose start = randomPose(sk, rng);
-        SolveOptions o;
-        o.solver = static_cast<SolverKind>(k);
-        o.maxIterations = 300;
-        Pose a = start, between = start, b = start;
-        const SolveResult ra = solve(sk, a, goals, o);
-        solve(sk, between, other, o);
-        const SolveResult rb = solve(sk, b, goals, o);
-        expectIdentical(ra, a, rb, b);
-        // Repeatability: from the rest pose whatever the pose passed in.
-        o.fromRest = true;
-        Pose restStart = sk.restPose(), randomStart = start;
-        const SolveResult rr = solve(sk, restStart, goals, o);
-        const SolveResult rs = solve(sk, randomStart, goals, o);
-        expectIdentical(rr, restStart, rs, randomStart);
-      }
-    }
   }
 }
 
