@@ -42,6 +42,10 @@ void IkScene::declareSolverParams(bool withPath) {
   params_.integer("stall_iterations", &options_.stallIterations, 0, 1000, "",
                   "Stop as 'stalled' when the residual has not dropped by 0.1 % over this many iterations (a local "
                   "minimum, IK slides). 0 = never. Typical 20.");
+  params_.integer("restarts", &options_.restarts, 0, 100, "",
+                  "Stall recovery (IK slides, 'when stuck, randomise the pose'): a stalled or crawling solve restarts "
+                  "from a random pose inside the limits at most this many times, within the same iteration cap, "
+                  "and keeps its best attempt. 0 = a stall ends the solve. Typical 10.");
   params_.real("time_cap", &options_.maxSeconds, 0.0, 0.1, "s",
                "Stop a solve after this much wall time (status time_cap). 0 = no cap. Results then depend on the "
                "machine's speed.");
