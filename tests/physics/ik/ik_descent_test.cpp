@@ -10,13 +10,7 @@
 namespace pba::ik {
 namespace {
 
-Rig chain(JointType joint, int links, Real limitDegrees) {
-  ChainDesc d;
-  d.joint = joint;
-  d.links = links;
-  d.limit = degToRad(limitDegrees);
-  return buildIkChain(d).value();
-}
+using testing::chain;
 
 // f(θ) = ½ |g − e(θ)|² for one position effector, by forward kinematics.
 Real objectiveOf(const Rig& rig, const std::vector<Effector>& effectors, const std::vector<Real>& dofs) {

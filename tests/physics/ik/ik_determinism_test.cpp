@@ -7,19 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include "ik_random_targets.h"
 #include "physics/ik/builders.h"
 #include "physics/ik/solver.h"
 
 namespace pba::ik {
 namespace {
 
-Rig chain(JointType joint) {
-  ChainDesc d;
-  d.joint = joint;
-  d.links = 10;
-  d.limit = degToRad(120.0);
-  return buildIkChain(d).value();
-}
+using testing::chain;
 
 // Determinism (issue 3): identical inputs give bitwise-identical results for every solver, on chains
 // with limits, trees (where the stall recovery restarts often) and the analytic solver's limbs; a

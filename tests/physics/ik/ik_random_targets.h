@@ -12,6 +12,15 @@
 
 namespace pba::ik::testing {
 
+/// The test chain: `links` links of `joint` along +x, every rotational DOF within ±limitDegrees.
+inline Rig chain(JointType joint, int links = 10, Real limitDegrees = 120.0) {
+  ChainDesc d;
+  d.joint = joint;
+  d.links = links;
+  d.limit = degToRad(limitDegrees);
+  return buildIkChain(d).value();
+}
+
 struct BatchStats {
   int solves = 0;
   int successes = 0;

@@ -29,13 +29,7 @@ constexpr int kTargets = 10000;
 constexpr int kTargets = 2000;
 #endif
 
-Rig chain(JointType joint, int links = 10, Real limitDegrees = 120.0) {
-  ChainDesc d;
-  d.joint = joint;
-  d.links = links;
-  d.limit = degToRad(limitDegrees);
-  return buildIkChain(d).value();
-}
+using testing::chain;
 
 // A method far below its threshold on the first goals (an exercise still a stub: every solve stalls
 // and restarts up to the cap) fails at once instead of spending minutes on all of them.
