@@ -17,6 +17,34 @@ namespace {
 
 Vec3 perp(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
 
+}  // namespace
+
+Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits) {
+  const Joint& joint = c.skeleton.joint(j);
+  const bool clampNow = clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
+  Quat applied = wanted;
+  if (joint.type == JointType::Ball) {
+    if (clampNow) {
+      Real* dofs = c.pose.dofs.data() + joint.firstDof;
+      const Vec3 e = eulerWithinLimits(joint, wanted);
+      for (int k = 0; k < 3; ++k) dofs[k] = e[k];
+      clampJointToLimits(c.skeleton, c.pose, j);
+      if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) applied = jointRotation(joint, c.pose, j);
+    }
+    c.staleEuler[static_cast<size_t>(j)] = !clampNow;  // unclamped: flushPose() writes the Euler angles
+  } else {
+    c.pose.rotations[static_cast<size_t>(j)] = wanted;
+    if (clampNow) {
+      clampJointToLimits(c.skeleton, c.pose, j);
+      applied = c.pose.rotations[static_cast<size_t>(j)];
+    }
+  }
+  c.local[static_cast<size_t>(j)] = applied;
+  return applied;
+}
+
+namespace {
+
 // Turns joint j by the world rotation `world` about its pivot: its local rotation becomes
 // R_pre⁻¹ · world · R_pre · oldLocal (ball: stored as XYZ Euler angles; free: directly), clamped to the
 // limits; `oldWorld` = R_pre · oldLocal is the joint's current world rotation (Frame::rotation).
@@ -25,28 +53,9 @@ Vec3 perp(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
 // same rotation), and when no limit can act the Euler angles are written later (flushPose).
 Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Quat& oldWorld, const Quat& world,
                bool clampLimits) {
-  const Joint& joint = c.skeleton.joint(j);
   const Quat preInverse = glm::conjugate(f.pre);
   const Quat wanted = glm::normalize(preInverse * (world * oldWorld));
-  Quat newLocal = wanted;
-  const bool clampNow = clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
-  if (joint.type == JointType::Ball) {
-    if (clampNow) {
-      Real* dofs = c.pose.dofs.data() + joint.firstDof;
-      const Vec3 e = eulerWithinLimits(joint, wanted);
-      for (int k = 0; k < 3; ++k) dofs[k] = e[k];
-      clampJointToLimits(c.skeleton, c.pose, j);
-      if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) newLocal = jointRotation(joint, c.pose, j);
-    }
-    c.staleEuler[static_cast<size_t>(j)] = !clampNow;
-  } else {
-    c.pose.rotations[static_cast<size_t>(j)] = wanted;
-    if (clampNow) {
-      clampJointToLimits(c.skeleton, c.pose, j);
-      newLocal = c.pose.rotations[static_cast<size_t>(j)];
-    }
-  }
-  c.local[static_cast<size_t>(j)] = newLocal;
+  const Quat newLocal = setJointRotation(c, j, wanted, clampLimits);
   if (newLocal == wanted) return world;
   return f.pre * newLocal * glm::conjugate(oldLocal) * preInverse;
 }

@@ -386,7 +386,7 @@ class Fabrik final : public Method {
       for (Vec3& t : to_) t -= f.position;
       world = fitRotation(from_, to_, w_, reference);
     }
-    setRotation(c, j, glm::normalize(glm::conjugate(f.pre) * world), clamp);
+    setJointRotation(c, j, glm::normalize(glm::conjugate(f.pre) * world), clamp);
   }
 
   // The look-ahead of forward(): a ball or free joint with hinges or prismatic joints within
@@ -422,30 +422,6 @@ class Fabrik final : public Method {
   }
   static constexpr int kLookahead = 3;
   static constexpr Real kFarLookaheadWeight = 0.1;
-
-  // A ball or free joint's local rotation, clamped to its limits (IK-6); keeps c.local current.
-  static void setRotation(Context& c, int j, const Quat& local, bool clamp) {
-    const Joint& joint = c.skeleton.joint(j);
-    const bool clampNow = clamp && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, local));
-    Quat applied = local;
-    if (joint.type == JointType::Ball) {
-      if (clampNow) {
-        Real* dofs = c.pose.dofs.data() + joint.firstDof;
-        const Vec3 e = eulerWithinLimits(joint, local);
-        for (int k = 0; k < 3; ++k) dofs[k] = e[k];
-        clampJointToLimits(c.skeleton, c.pose, j);
-        if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) applied = jointRotation(joint, c.pose, j);
-      }
-      c.staleEuler[static_cast<size_t>(j)] = !clampNow;  // the Euler angles are written by flushPose
-    } else {
-      c.pose.rotations[static_cast<size_t>(j)] = local;
-      if (clampNow) {
-        clampJointToLimits(c.skeleton, c.pose, j);
-        applied = c.pose.rotations[static_cast<size_t>(j)];
-      }
-    }
-    c.local[static_cast<size_t>(j)] = applied;
-  }
 
   bool built_ = false, pointsOnly_ = false, pointsLoaded_ = false;
   std::vector<std::vector<int>> kids_, effectorsOn_;  // per joint: active child joints, effectors

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 #include "physics/exercises/not_implemented.h"
 #include "physics/ik/exercises.h"
@@ -62,8 +63,8 @@ class JacobianMethod final : public Method {
 
   void iterate(Context& c) override {
     LeastSquaresSystem sys = leastSquaresSystem(c);
-    layout_ = sys.layout;
-    weights_ = sys.dofWeights;
+    layout_ = std::move(sys.layout);
+    weights_ = std::move(sys.dofWeights);
     Matrix& J = sys.J;
     const std::vector<Real>& full = sys.residual;
     const std::vector<Real>& clamped = sys.clamped;
@@ -109,8 +110,7 @@ class JacobianMethod final : public Method {
   }
 
   static void clampMaxAbs(std::vector<Real>& v, Real limit) {
-    Real largest = 0.0;
-    for (Real x : v) largest = std::max(largest, std::abs(x));
+    const Real largest = maxAbs(v);
     if (largest > limit) for (Real& x : v) x *= limit / largest;
   }
 
@@ -162,8 +162,7 @@ class JacobianMethod final : public Method {
     const std::vector<Real> jjr = multiply(J, g);
     const Real denom = dot(jjr, jjr);
     Real alpha = denom > 0.0 ? dot(full, jjr) / denom : 1.0;
-    Real largest = 0.0;
-    for (Real x : direction) largest = std::max(largest, std::abs(x));
+    const Real largest = maxAbs(direction);
     if (largest * alpha > c.options.maxJointStep) alpha = c.options.maxJointStep / largest;
     backtrack(c, direction, alpha, kArmijo * slope);
   }

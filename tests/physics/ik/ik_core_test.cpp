@@ -171,13 +171,7 @@ TEST(IkSolve, AnalyticSolverRefusesLongChainsWithNotApplicable) {
   EXPECT_FALSE(r.message.empty());
 }
 
-TEST(IkSolve, SolverNamesRoundTrip) {
-  for (int k = 0; k < kSolverKindCount; ++k) {
-    SolverKind kind;
-    ASSERT_TRUE(solverFromName(solverName(static_cast<SolverKind>(k)), &kind));
-    EXPECT_EQ(static_cast<int>(kind), k);
-  }
-}
+// Solver names: IkSolverNames.RoundTripEverySolverAndListThemInOrder (ik_descent_test.cpp).
 
 // Horn's fit (FABRIK's sub-bases): exact for a rotated point set; with the points leaving a rotation
 // free (one point, or coincident points) the member of the optimal family nearest the reference.
