@@ -48,6 +48,12 @@ bool DynamicTree::moveProxy(int proxy, const Aabb& aabb) {
   return true;
 }
 
+void DynamicTree::resetProxy(int proxy, const Aabb& aabb) {
+  removeLeaf(proxy);
+  nodes_[proxy].box = aabb.fattened(margin_);
+  insertLeaf(proxy);
+}
+
 // Insertion (Box2D v2.4 b2DynamicTree::InsertLeaf): descend toward the child whose enlargement costs
 // least, where a node's cost is its area and every ancestor pays the growth it must absorb; stop where
 // making a new sibling here is cheaper than descending.

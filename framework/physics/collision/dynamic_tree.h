@@ -24,6 +24,8 @@ class DynamicTree {
   void destroyProxy(int proxy);
   /// Updates a proxy's tight AABB; re-inserts it (and returns true) only when it left its fat AABB.
   bool moveProxy(int proxy, const Aabb& aabb);
+  /// Re-inserts a proxy with exactly this AABB (fattened by the margin), whatever its old one was.
+  void resetProxy(int proxy, const Aabb& aabb);
 
   const Aabb& fatAabb(int proxy) const { return nodes_[proxy].box; }
   int userData(int proxy) const { return nodes_[proxy].userData; }
@@ -54,6 +56,13 @@ class DynamicTree {
         stack_.push_back(n.child2);
       }
     }
+  }
+
+  /// Calls visit(box, height, isLeaf) for every node (debug drawing).
+  template <typename Visit>
+  void forEachNode(Visit&& visit) const {
+    for (const Node& n : nodes_)
+      if (n.height >= 0) visit(n.box, n.height, n.isLeaf());
   }
 
   /// Ray cast origin + t·direction, t ∈ [0, maxT]: calls hit(proxy, maxT) for every leaf whose fat AABB

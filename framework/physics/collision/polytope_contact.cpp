@@ -7,6 +7,10 @@
 
 namespace pba::collision::detail {
 
+namespace {
+constexpr Real kClipTolerance = 5e-4;  // [m]
+}  // namespace
+
 int incidentFace(const ConvexHull& hull, const Transform& pose, const Vec3& direction) {
   const Vec3 local = pose.rotateInverse(direction);
   int best = 0;
@@ -56,7 +60,10 @@ Manifold clipAgainstPolygon(const ClipPolygon& ref, const Vec3& n, const ClipPol
     const Vec3 side = glm::cross(v1 - v0, n);
     const Real len = glm::length(side);
     if (len <= 0.0) continue;
-    clipPolygon(a, side / len, glm::dot(side / len, v0), static_cast<std::uint32_t>(k), b);
+    // The side planes are moved out by kClipTolerance, so that an incident vertex lying on the reference
+    // face's edge (equal boxes stacked exactly) stays a vertex instead of flickering between a vertex and
+    // a clipped point from step to step, which would defeat warm starting.
+    clipPolygon(a, side / len, glm::dot(side / len, v0) + kClipTolerance, static_cast<std::uint32_t>(k), b);
     std::swap(a, b);
   }
   const Real offset = glm::dot(n, ref.p[0]);
