@@ -22,7 +22,7 @@ int BroadPhase::add(const Aabb& aabb, int userData, bool isStatic) {
   p.userData = userData;
   p.isStatic = isStatic;
   p.alive = true;
-  p.leaf = tree_.createProxy(p.fat, id);
+  p.leaf = trees_[isStatic ? 1 : 0].createProxy(p.fat, id);
   sorted_.push_back(id);
   ++live_;
   return id;
@@ -30,7 +30,7 @@ int BroadPhase::add(const Aabb& aabb, int userData, bool isStatic) {
 
 void BroadPhase::remove(int proxy) {
   Proxy& p = proxies_[proxy];
-  tree_.destroyProxy(p.leaf);
+  trees_[p.isStatic ? 1 : 0].destroyProxy(p.leaf);
   p.alive = false;
   sorted_.erase(std::find(sorted_.begin(), sorted_.end(), proxy));
   freeProxies_.push_back(proxy);
@@ -41,7 +41,7 @@ void BroadPhase::move(int proxy, const Aabb& aabb) {
   Proxy& p = proxies_[proxy];
   if (p.fat.contains(aabb)) return;
   p.fat = aabb.fattened(margin_);
-  tree_.resetProxy(p.leaf, p.fat);
+  trees_[p.isStatic ? 1 : 0].resetProxy(p.leaf, p.fat);
 }
 
 void BroadPhase::findPairs(std::vector<std::pair<int, int>>& pairs) {
@@ -57,15 +57,19 @@ void BroadPhase::findPairs(std::vector<std::pair<int, int>>& pairs) {
 }
 
 void BroadPhase::pairsFromTree(std::vector<std::pair<int, int>>& pairs) const {
-  // Each moving proxy queries the tree; a pair of two moving proxies is found twice and kept once (by
-  // proxy id order).
+  // Each moving proxy queries the moving tree (keeping a pair found from both sides once, by proxy id)
+  // and the static tree.
   for (std::size_t i = 0; i < proxies_.size(); ++i) {
     const Proxy& p = proxies_[i];
     if (!p.alive || p.isStatic) continue;
-    tree_.query(p.fat, [&](int leaf) {
-      const int j = tree_.userData(leaf);
-      const Proxy& q = proxies_[j];
-      if (j != static_cast<int>(i) && (q.isStatic || j > static_cast<int>(i))) pairs.emplace_back(p.userData, q.userData);
+    const int self = static_cast<int>(i);
+    trees_[0].query(p.fat, [&](int leaf) {
+      const int j = trees_[0].userData(leaf);
+      if (j > self) pairs.emplace_back(p.userData, proxies_[j].userData);
+      return true;
+    });
+    trees_[1].query(p.fat, [&](int leaf) {
+      pairs.emplace_back(p.userData, proxies_[trees_[1].userData(leaf)].userData);
       return true;
     });
   }

@@ -6,6 +6,8 @@
 //
 // Proxies keep a fat AABB, the tight one grown by `margin`, replaced only when the tight box leaves it;
 // every method reports pairs of fat AABBs, so they agree exactly. Two static proxies never pair.
+// Static proxies live in a tree of their own (as in Box2D v3): a huge static box such as a ground
+// plane would otherwise be rotated into the moving bodies' subtrees and make every query visit them.
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,17 +39,25 @@ class BroadPhase {
   /// Calls visit(userData) for every proxy whose fat AABB overlaps `box`.
   template <typename Visit>
   void query(const Aabb& box, Visit&& visit) const {
-    tree_.query(box, [&](int leaf) {
-      visit(tree_.userData(leaf));
-      return true;
-    });
+    for (const DynamicTree& t : trees_)
+      t.query(box, [&](int leaf) {
+        visit(proxies_[t.userData(leaf)].userData);
+        return true;
+      });
   }
   /// Ray cast through the tree: hit(userData, maxT) returns the new maxT (see DynamicTree::rayCast).
   template <typename Hit>
   void rayCast(const Vec3& origin, const Vec3& direction, Real maxT, Hit&& hit) const {
-    tree_.rayCast(origin, direction, maxT, [&](int leaf, Real t) { return hit(tree_.userData(leaf), t); });
+    for (const DynamicTree& t : trees_) {
+      t.rayCast(origin, direction, maxT, [&](int leaf, Real tHit) {
+        maxT = hit(proxies_[t.userData(leaf)].userData, tHit);
+        return maxT;
+      });
+      if (maxT <= 0.0) return;
+    }
   }
-  const DynamicTree& tree() const { return tree_; }
+  /// The tree of moving proxies (0) or of static ones (1).
+  const DynamicTree& tree(int which = 0) const { return trees_[which]; }
 
  private:
   struct Proxy {
@@ -66,7 +76,7 @@ class BroadPhase {
   std::vector<Proxy> proxies_;
   std::vector<int> freeProxies_;
   int live_ = 0;
-  DynamicTree tree_{0.0};  // holds the fat boxes as they are (the tree's own margin is 0)
+  DynamicTree trees_[2]{DynamicTree(0.0), DynamicTree(0.0)};  // moving, static; fat boxes as they are
   std::vector<int> sorted_;  // sweep and prune: live proxies by min along axis_
   int axis_ = 0;
 };

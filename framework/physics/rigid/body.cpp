@@ -85,6 +85,11 @@ Result<Body> makeBody(const BodyDesc& d, const std::string& field) {
     m.inertia *= scale;
   }
   if (!(m.mass > 0.0) || !std::isfinite(m.mass)) return fail("shape: has no volume");
+  if (d.inertia != Mat3(0.0)) {
+    if (!(glm::determinant(d.inertia) > 0.0) || d.inertia[0][0] <= 0.0 || d.inertia[1][1] <= 0.0 || d.inertia[2][2] <= 0.0)
+      return fail("inertia: must be symmetric positive definite");
+    m.inertia = d.inertia;
+  }
   b.mass = m.mass;
   b.inverseMass = 1.0 / m.mass;
   b.inertiaBody = m.inertia;

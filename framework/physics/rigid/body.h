@@ -29,6 +29,9 @@ struct BodyDesc {
   Real density = 1000.0;           ///< [kg/m³] water 1000, wood ~600, steel ~7850
   /// [kg] when > 0, the mass to use instead of density × volume (the inertia scales with it).
   Real mass = 0.0;
+  /// [kg·m²] when not zero, the body-frame inertia about the centre of mass to use instead of the
+  /// shape's (a body whose shape is only its collision proxy, e.g. the T-handle of `spinning`).
+  Mat3 inertia{0.0};
   Real friction = 0.6;             ///< Coulomb coefficient μ (combined with the other body's by √(μ₁μ₂))
   Real restitution = 0.0;          ///< coefficient e ∈ [0, 1] (combined by max)
   Real linearDamping = 0.0;        ///< [1/s] v ← v / (1 + h c)

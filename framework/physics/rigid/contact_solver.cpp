@@ -12,54 +12,72 @@ void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
   t2 = glm::cross(n, t1);
 }
 
+// Separation during the substeps (Box2D v3 contact_solver.c): the normal is held fixed and the anchors
+// move with their bodies, s = s₀ + n·(Δc_B + Δθ_B × r_B − Δc_A − Δθ_A × r_A)
+//                          = s₀ + n·(Δc_B − Δc_A) + Δθ_B·(r_B × n) − Δθ_A·(r_A × n),
+// with Δc and Δθ the displacement and the rotation vector (Σ ω h) of each body since the step began.
+
 void prepareContact(ContactConstraint& c, const std::vector<SolverBody>& bodies) {
   const SolverBody& a = bodies[c.bodyA];
   const SolverBody& b = bodies[c.bodyB];
   c.againstStatic = a.invMass == 0.0 || b.invMass == 0.0;
   c.normal = c.manifold.normal;
+  c.invMassA = a.invMass;
+  c.invMassB = b.invMass;
   tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
   c.count = c.manifold.count;
+  const Vec3 directions[3] = {c.normal, c.tangent[0], c.tangent[1]};
   for (int i = 0; i < c.count; ++i) {
     ContactPoint& p = c.points[i];
     const collision::ManifoldPoint& mp = c.manifold.points[i];
     p.rA = mp.point - a.c;
     p.rB = mp.point - b.c;
-    p.localA = glm::conjugate(a.q) * p.rA;
-    p.localB = glm::conjugate(b.q) * p.rB;
     p.separation = mp.separation;
     p.id = mp.id;
-    p.normalMass = rowMass(a, b, p.rA, p.rB, c.normal);
-    // Tangent K = J_t M⁻¹ J_tᵀ (2 × 2); the pyramid uses its diagonal, the cone its inverse.
-    Real k[2][2];
-    for (int r = 0; r < 2; ++r)
-      for (int s = 0; s < 2; ++s) {
-        const Vec3 ar = glm::cross(p.rA, c.tangent[r]), as = glm::cross(p.rA, c.tangent[s]);
-        const Vec3 br = glm::cross(p.rB, c.tangent[r]), bs = glm::cross(p.rB, c.tangent[s]);
-        k[r][s] = (r == s ? a.invMass + b.invMass : 0.0) + glm::dot(ar, a.invI * as) + glm::dot(br, b.invI * bs);
-      }
-    p.tangentMass[0] = k[0][0] > 0.0 ? 1.0 / k[0][0] : 0.0;
-    p.tangentMass[1] = k[1][1] > 0.0 ? 1.0 / k[1][1] : 0.0;
-    const Real det = k[0][0] * k[1][1] - k[0][1] * k[1][0];
-    if (det > 0.0) {
-      p.tangentK[0] = k[1][1] / det, p.tangentK[1] = -k[0][1] / det, p.tangentK[2] = k[0][0] / det;
-    } else {
-      p.tangentK[0] = p.tangentK[1] = p.tangentK[2] = 0.0;
+    Real k[3];
+    for (int d = 0; d < 3; ++d) {
+      p.rAxD[d] = glm::cross(p.rA, directions[d]);
+      p.rBxD[d] = glm::cross(p.rB, directions[d]);
+      p.iArAxD[d] = a.invI * p.rAxD[d];
+      p.iBrBxD[d] = b.invI * p.rBxD[d];
+      // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d).
+      k[d] = a.invMass + b.invMass + glm::dot(p.rAxD[d], p.iArAxD[d]) + glm::dot(p.rBxD[d], p.iBrBxD[d]);
     }
-    const Vec3 dv = b.v + glm::cross(b.w, p.rB) - a.v - glm::cross(a.w, p.rA);
-    p.relativeVelocity = glm::dot(c.normal, dv);
+    p.normalMass = k[0] > 0.0 ? 1.0 / k[0] : 0.0;
+    p.tangentMass[0] = k[1] > 0.0 ? 1.0 / k[1] : 0.0;
+    p.tangentMass[1] = k[2] > 0.0 ? 1.0 / k[2] : 0.0;
+    p.relativeVelocity = glm::dot(c.normal, b.v - a.v) + glm::dot(b.w, p.rBxD[0]) - glm::dot(a.w, p.rAxD[0]);
     p.maxNormalImpulse = 0.0;
   }
 }
 
+namespace {
+// Relative velocity along direction d (index into the point's Jacobian pieces): J v.
+inline Real rowVelocity(const ContactPoint& p, int d, const Vec3& dir, const Vec3& vA, const Vec3& wA, const Vec3& vB,
+                        const Vec3& wB) {
+  return glm::dot(dir, vB - vA) + glm::dot(wB, p.rBxD[d]) - glm::dot(wA, p.rAxD[d]);
+}
+// Applies impulse λ along direction d.
+inline void applyRow(const ContactConstraint& c, const ContactPoint& p, int d, const Vec3& dir, Real lambda, Vec3& vA,
+                     Vec3& wA, Vec3& vB, Vec3& wB) {
+  vA -= (c.invMassA * lambda) * dir;
+  wA -= lambda * p.iArAxD[d];
+  vB += (c.invMassB * lambda) * dir;
+  wB += lambda * p.iBrBxD[d];
+}
+}  // namespace
+
 void warmStartContact(const ContactConstraint& c, std::vector<SolverBody>& bodies) {
   SolverBody& a = bodies[c.bodyA];
   SolverBody& b = bodies[c.bodyB];
+  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
   for (int i = 0; i < c.count; ++i) {
     const ContactPoint& p = c.points[i];
-    const Vec3 P = p.normalImpulse * c.normal + p.tangentImpulse[0] * c.tangent[0] + p.tangentImpulse[1] * c.tangent[1];
-    applyImpulse(a, p.rA, P, -1.0);
-    applyImpulse(b, p.rB, P, 1.0);
+    applyRow(c, p, 0, c.normal, p.normalImpulse, vA, wA, vB, wB);
+    applyRow(c, p, 1, c.tangent[0], p.tangentImpulse[0], vA, wA, vB, wB);
+    applyRow(c, p, 2, c.tangent[1], p.tangentImpulse[1], vA, wA, vB, wB);
   }
+  a.v = vA, a.w = wA, b.v = vB, b.w = wB;
 }
 
 void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias) {
@@ -68,11 +86,11 @@ void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const C
   const WorldSettings& s = *step.settings;
   const Real inv_h = 1.0 / step.h;
   const Softness& soft = c.againstStatic ? step.staticSoft : step.soft;
+  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
+  const Real dc = glm::dot(c.normal, b.dp - a.dp);
   for (int i = 0; i < c.count; ++i) {
     ContactPoint& p = c.points[i];
-    // Current separation from the bodies' motion since the start of the step (anchors fixed in the bodies).
-    const Vec3 d = (b.c + b.q * p.localB) - (a.c + a.q * p.localA);
-    const Real sep = p.separation + glm::dot(c.normal, d);
+    const Real sep = p.separation + dc + glm::dot(b.dtheta, p.rBxD[0]) - glm::dot(a.dtheta, p.rAxD[0]);
     Real bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (sep > 0.0) {
       bias = sep * inv_h;  // speculative: close the gap exactly, no more
@@ -89,57 +107,58 @@ void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const C
         case PositionCorrection::None: break;
       }
     }
-    const Vec3 dv = b.v + glm::cross(b.w, p.rB) - a.v - glm::cross(a.w, p.rA);
-    const Real vn = glm::dot(c.normal, dv);
+    const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);
     const Real impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
     const Real total = std::max(p.normalImpulse + impulse, 0.0);
     const Real applied = total - p.normalImpulse;
     p.normalImpulse = total;
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
-    const Vec3 P = applied * c.normal;
-    applyImpulse(a, p.rA, P, -1.0);
-    applyImpulse(b, p.rB, P, 1.0);
+    applyRow(c, p, 0, c.normal, applied, vA, wA, vB, wB);
   }
-  // Friction, bounded by μ times this point's normal impulse.
+  // Friction, bounded by μ times this point's normal impulse: each tangent row with its own mass, then the
+  // pair clamped to the disk |λ_t| ≤ μλ_n (cone; Jolt does the same) or each row to ±μλ_n (pyramid).
   for (int i = 0; i < c.count; ++i) {
     ContactPoint& p = c.points[i];
-    const Vec3 dv = b.v + glm::cross(b.w, p.rB) - a.v - glm::cross(a.w, p.rA);
-    const Real vt[2] = {glm::dot(c.tangent[0], dv), glm::dot(c.tangent[1], dv)};
     const Real limit = c.friction * p.normalImpulse;
     Real next[2];
+    for (int k = 0; k < 2; ++k)
+      next[k] = p.tangentImpulse[k] - p.tangentMass[k] * rowVelocity(p, k + 1, c.tangent[k], vA, wA, vB, wB);
     if (s.friction == FrictionModel::Cone) {
-      next[0] = p.tangentImpulse[0] - p.tangentMass[0] * vt[0];
-      next[1] = p.tangentImpulse[1] - p.tangentMass[1] * vt[1];
-      const Real len = std::sqrt(next[0] * next[0] + next[1] * next[1]);
-      if (len > limit && len > 0.0) next[0] *= limit / len, next[1] *= limit / len;
+      const Real len2 = next[0] * next[0] + next[1] * next[1];
+      if (len2 > limit * limit) {
+        const Real scale = limit / std::sqrt(len2);
+        next[0] *= scale, next[1] *= scale;
+      }
     } else {
-      for (int k = 0; k < 2; ++k) next[k] = std::clamp(p.tangentImpulse[k] - p.tangentMass[k] * vt[k], -limit, limit);
+      for (Real& x : next) x = std::clamp(x, -limit, limit);
     }
-    const Vec3 P = (next[0] - p.tangentImpulse[0]) * c.tangent[0] + (next[1] - p.tangentImpulse[1]) * c.tangent[1];
-    p.tangentImpulse[0] = next[0];
-    p.tangentImpulse[1] = next[1];
-    applyImpulse(a, p.rA, P, -1.0);
-    applyImpulse(b, p.rB, P, 1.0);
+    for (int k = 0; k < 2; ++k) {
+      applyRow(c, p, k + 1, c.tangent[k], next[k] - p.tangentImpulse[k], vA, wA, vB, wB);
+      p.tangentImpulse[k] = next[k];
+    }
   }
+  if (a.invMass > 0.0) a.v = vA, a.w = wA;
+  if (b.invMass > 0.0) b.v = vB, b.w = wB;
 }
 
 void applyRestitution(ContactConstraint& c, std::vector<SolverBody>& bodies, const WorldSettings& settings) {
   if (c.restitution == 0.0) return;
   SolverBody& a = bodies[c.bodyA];
   SolverBody& b = bodies[c.bodyB];
+  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
   for (int i = 0; i < c.count; ++i) {
     ContactPoint& p = c.points[i];
     if (p.relativeVelocity > -settings.restitutionThreshold || p.maxNormalImpulse == 0.0) continue;
-    const Vec3 dv = b.v + glm::cross(b.w, p.rB) - a.v - glm::cross(a.w, p.rA);
-    const Real vn = glm::dot(c.normal, dv);
+    const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);
     const Real impulse = -p.normalMass * (vn + c.restitution * p.relativeVelocity);
     const Real total = std::max(p.normalImpulse + impulse, 0.0);
     const Real applied = total - p.normalImpulse;
     p.normalImpulse = total;
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
-    applyImpulse(a, p.rA, applied * c.normal, -1.0);
-    applyImpulse(b, p.rB, applied * c.normal, 1.0);
+    applyRow(c, p, 0, c.normal, applied, vA, wA, vB, wB);
   }
+  if (a.invMass > 0.0) a.v = vA, a.w = wA;
+  if (b.invMass > 0.0) b.v = vB, b.w = wB;
 }
 
 }  // namespace pba::rigid

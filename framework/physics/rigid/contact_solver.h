@@ -22,12 +22,13 @@
 namespace pba::rigid {
 
 struct ContactPoint {
-  Vec3 localA{0.0}, localB{0.0};  ///< anchors relative to the centres of mass, body frames
-  Vec3 rA{0.0}, rB{0.0};          ///< the same in world axes at the start of the step
+  Vec3 rA{0.0}, rB{0.0};          ///< anchors relative to the centres of mass, world axes, fixed for the step
+  // Jacobian pieces fixed for the step: r × d and I⁻¹(r × d) for d = n, t₁, t₂ (index 0, 1, 2).
+  Vec3 rAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, rBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+  Vec3 iArAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, iBrBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
   Real separation = 0.0;          ///< [m] at the start of the step
   Real normalMass = 0.0;
-  Real tangentMass[2] = {0.0, 0.0};  ///< pyramid: 1/K_ii
-  Real tangentK[3] = {0.0, 0.0, 0.0};  ///< cone: the inverse of the 2 × 2 tangent K (a, b, d of [[a, b], [b, d]])
+  Real tangentMass[2] = {0.0, 0.0};  ///< 1/K of each tangent row
   Real normalImpulse = 0.0;       ///< [N·s] accumulated
   Real tangentImpulse[2] = {0.0, 0.0};
   Real maxNormalImpulse = 0.0;    ///< largest normal impulse of the step (restitution needs > 0)
@@ -42,6 +43,7 @@ struct ContactConstraint {
   Vec3 normal{0.0};
   Vec3 tangent[2]{Vec3(0.0), Vec3(0.0)};
   Real friction = 0.0, restitution = 0.0;
+  Real invMassA = 0.0, invMassB = 0.0;
   int count = 0;
   ContactPoint points[4];
   collision::Manifold manifold;  ///< as the narrow phase made it (debug draw)

@@ -177,6 +177,11 @@ void solveJoint(Joint& j, std::vector<SolverBody>& bodies, const JointStep& step
   SolverBody& A = bodies[j.a];
   SolverBody& B = bodies[j.b];
   const JointDesc& d = j.desc;
+  // Current anchors: the arms turn with the bodies during the substeps, and the point rows' effective
+  // mass with them (Box2D v3 revolute_joint.c does the same; contacts keep fixed anchors instead).
+  j.rA = A.q * j.localA;
+  j.rB = B.q * j.localB;
+  if (d.kind != JointKind::Slider && d.kind != JointKind::Distance) j.pointMass = detail::pointMass(A, B, j.rA, j.rB);
   switch (d.kind) {
     case JointKind::Ball: solvePoint(j, A, B, step.soft, useBias); break;
     case JointKind::Hinge:

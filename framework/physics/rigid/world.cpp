@@ -170,6 +170,8 @@ void World::solve(Real dt) {
       const Real speed = glm::length(sb.v);
       if (speed > s.maxLinearSpeed) sb.v *= s.maxLinearSpeed / speed;
       sb.c += h * sb.v;
+      sb.dp += h * sb.v;
+      sb.dtheta += h * sb.w;
       if (s.gyroscopic == GyroscopicMode::Midpoint && !kinematic) {
         midpointFreeRotation(sb.q, sb.w, bodies_[i].inertiaBody, bodies_[i].inverseInertiaBody, h);
       } else {

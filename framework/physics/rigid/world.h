@@ -75,6 +75,8 @@ class World {
   const Body& body(int i) const { return bodies_[i]; }
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<Joint>& joints() const { return joints_; }
+  /// A joint's settings, editable between steps (motor speed and torque, limits, spring).
+  JointDesc& jointDesc(int joint) { return joints_[joint].desc; }
   const std::vector<ContactConstraint>& contacts() const { return contacts_; }
   /// Teleports or sets velocities (wakes the body and its island).
   void setPose(int body, const Vec3& position, const Quat& orientation);
@@ -94,6 +96,7 @@ class World {
   void endDrag();
   int draggedBody() const { return drag_; }
 
+  const collision::BroadPhase& broadPhase() const { return broadPhase_; }
   WorldStats stats() const;
   /// Names the first body or joint whose state is not finite ("body 'box 12' position is NaN").
   std::optional<std::string> nonFiniteState() const;
