@@ -52,6 +52,7 @@ class BulletScene final : public lab::WorldScene {
         shot.linearVelocity = Vec3(speed_, 0.0, 0.0);
         shot.density = 7800.0;
         shot.bullet = lane == 0;
+        shot.continuous = lane == 0;
         shot.restitution = 0.3;
         shot.gravityScale = 0.0;
         shot.color = lane == 0 ? colors::kGreen : colors::kRed;

@@ -10,7 +10,6 @@ namespace {
 using namespace pba;
 
 constexpr Real kBoxHalf = 0.25;     // [m] the sliding cube
-constexpr Real kRampHalfLength = 12.0;
 
 class InclineScene final : public lab::WorldScene {
  public:
@@ -26,28 +25,7 @@ class InclineScene final : public lab::WorldScene {
 
  protected:
   void build(rigid::World& w) override {
-    rampRotation_ = glm::angleAxis(angle_, Vec3(0.0, 0.0, 1.0));  // downhill is −x along the ramp
-    const Vec3 rampHalf(kRampHalfLength, 0.25, 1.5);
-    rampCenter_ = Vec3(0.0, 4.0, 0.0);
-    rigid::BodyDesc ramp;
-    ramp.type = rigid::BodyType::Static;
-    ramp.shape = collision::makeBox(rampHalf).value();
-    ramp.position = rampCenter_;
-    ramp.orientation = rampRotation_;
-    ramp.friction = friction_;
-    ramp.color = colors::kGrey;
-    w.addBody(ramp);
-    normal_ = rampRotation_ * kUp;
-    downhill_ = rampRotation_ * Vec3(-1.0, 0.0, 0.0);
-    start_ = rampCenter_ + (rampHalf.y + kBoxHalf) * normal_ - 0.6 * kRampHalfLength * downhill_;
-    rigid::BodyDesc box;
-    box.shape = collision::makeBox(Vec3(kBoxHalf)).value();
-    box.position = start_;
-    box.orientation = rampRotation_;
-    box.friction = friction_;
-    box.color = colors::kOrange;
-    box.name = "slider";
-    box_ = w.addBody(box).value();
+    incline_ = rigid::buildIncline(w, angle_, friction_, kBoxHalf);
     time_ = 0.0;
   }
   void afterStep(Real dt) override { time_ += dt; }
@@ -56,7 +34,7 @@ class InclineScene final : public lab::WorldScene {
     const Real a = gravity_ * (std::sin(angle_) - friction_ * std::cos(angle_));
     return a > 0.0 ? 0.5 * a * time_ * time_ : 0.0;
   }
-  Real slide() const { return glm::dot(world_.body(box_).position - start_, downhill_); }
+  Real slide() const { return glm::dot(world_.body(incline_.box).position - incline_.start, incline_.downhill); }
 
   void extraMetrics(nlohmann::json& j) const override {
     j["slide_distance_m"] = slide();
@@ -65,10 +43,11 @@ class InclineScene final : public lab::WorldScene {
   }
   void drawExtra(DebugDraw& d) const override {
     // The closed form, a ghost box one metre to the side.
-    const Real s = std::min(expected(), 1.6 * kRampHalfLength);
+    const Real s = std::min(expected(), 20.0);
     const Vec3 side(0.0, 0.0, 0.9);
-    d.box(start_ + s * downhill_ + side, Vec3(kBoxHalf), rampRotation_, Color{0.2f, 0.66f, 0.29f, 0.5f});
-    d.text(start_ + s * downhill_ + side + Vec3(0.0, 0.6, 0.0), "closed form", colors::kGreen);
+    const Vec3 at = incline_.start + s * incline_.downhill + side;
+    d.box(at, Vec3(kBoxHalf), incline_.rotation, Color{0.2f, 0.66f, 0.29f, 0.5f});
+    d.text(at + Vec3(0.0, 0.6, 0.0), "closed form", colors::kGreen);
   }
   std::vector<app::Preset> presets() const override {
     return {{"slides", {{"angle", 30.0}, {"friction", 0.3}}}, {"sticks", {{"angle", 20.0}, {"friction", 0.5}}},
@@ -79,9 +58,7 @@ class InclineScene final : public lab::WorldScene {
 
  private:
   Real angle_ = degToRad(30.0), friction_ = 0.3, time_ = 0.0;
-  Quat rampRotation_{1, 0, 0, 0};
-  Vec3 rampCenter_{0.0}, normal_{0.0}, downhill_{0.0}, start_{0.0};
-  int box_ = -1;
+  rigid::Incline incline_;
 };
 
 }  // namespace

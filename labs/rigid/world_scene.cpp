@@ -24,7 +24,7 @@ WorldScene::WorldScene(bool withShooting) : shooting_(withShooting) {
   params_.choiceEnum("broad_phase", &s.broadPhase, collision::broadPhaseNames(),
                      "Pair finding: dynamic AABB tree, sweep and prune, or brute force (all pairs; the reference).");
   params_.flag("sleeping", &s.sleeping, "Islands of bodies at rest for 0.5 s sleep (grey) until touched.");
-  params_.flag("continuous", &s.continuous, "Time of impact for bullet bodies against static ones (no tunnelling).");
+  params_.flag("continuous", &s.continuous, "Time of impact against static bodies for fast bodies (no tunnelling).");
   params_.flag("show_contacts", &drawOptions_.contacts, "Draw contact points (red: touching, grey: speculative) and normals (yellow).");
   params_.flag("show_impulses", &drawOptions_.impulses, "Draw normal impulses as orange arrows.");
   params_.flag("show_aabb_tree", &drawOptions_.aabbTree, "Draw the broad phase's AABB tree.");

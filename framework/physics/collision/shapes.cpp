@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "physics/collision/dynamic_tree.h"
 #include "physics/core/validate.h"
@@ -166,6 +167,22 @@ Aabb computeAabb(const Shape& shape, const Transform& pose) {
       return box;
   }
   return box;
+}
+
+Real minimumExtent(const Shape& shape) {
+  switch (shape.kind) {
+    case ShapeKind::Sphere:
+    case ShapeKind::Capsule: return shape.radius;
+    case ShapeKind::Box: return std::min({shape.halfExtents.x, shape.halfExtents.y, shape.halfExtents.z});
+    case ShapeKind::Hull: {
+      Real r = std::numeric_limits<Real>::max();
+      for (const HullFace& f : shape.hull->faces) r = std::min(r, f.offset);
+      return std::max(r, 0.0);
+    }
+    case ShapeKind::Plane:
+    case ShapeKind::Mesh: return 0.0;
+  }
+  return 0.0;
 }
 
 Real boundingRadius(const Shape& shape) {

@@ -95,6 +95,11 @@ Aabb computeAabb(const Shape& shape, const Transform& pose);
 /// bounds the speed of a surface point, |v| + |ω| r, in conservative advancement.
 Real boundingRadius(const Shape& shape);
 
+/// Smallest distance from the origin to the surface of a convex shape [m] (sphere and capsule: the
+/// radius; box: the smallest half extent; hull: the nearest face plane): how far it may move in a step
+/// before it could pass through something thin.
+Real minimumExtent(const Shape& shape);
+
 /// Support point of the core in local coordinates: argmax over the core of d·x (d need not be unit).
 Vec3 coreSupport(const Shape& shape, const Vec3& direction);
 /// The radius added to the core: the sphere's and capsule's radius, 0 for polytopes.

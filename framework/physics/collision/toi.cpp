@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "physics/collision/gjk.h"
 
@@ -21,8 +23,23 @@ Real rotationAngle(const Quat& q0, const Quat& q1) {
 }
 }  // namespace
 
+namespace {
+// Signed distance of convex `a` to the plane shape at `plane` (normal from a toward the plane).
+SignedDistance toPlane(const Shape& a, const Transform& xa, const Transform& plane) {
+  thread_local std::vector<Vec3> vertices;
+  coreVertices(a, vertices);
+  const Vec3 n = plane.rotate(kUp);
+  SignedDistance d;
+  d.separation = std::numeric_limits<Real>::max();
+  for (const Vec3& v : vertices) d.separation = std::min(d.separation, glm::dot(n, xa.apply(v) - plane.position) - a.radius);
+  d.normal = -n;
+  return d;
+}
+}  // namespace
+
 ToiResult timeOfImpact(const Shape& a, const Sweep& sa, const Shape& b, const Sweep& sb, Real target, Real tolerance) {
-  const ConvexProxy pa = makeProxy(a), pb = makeProxy(b);
+  const bool plane = b.kind == ShapeKind::Plane;
+  const ConvexProxy pa = makeProxy(a), pb = plane ? ConvexProxy{} : makeProxy(b);
   // Over the whole step, no point of A moves more than |Δc_A| + θ_A r_A (nlerp sweeps the angle
   // monotonically), so along the normal n the gap closes by at most
   //   μ = n·(Δc_A − Δc_B) + θ_A r_A + θ_B r_B   per unit of t.
@@ -33,7 +50,7 @@ ToiResult timeOfImpact(const Shape& a, const Sweep& sa, const Shape& b, const Sw
   constexpr int kMaxIterations = 64;
   for (out.iterations = 0; out.iterations < kMaxIterations; ++out.iterations) {
     const Transform xa = sa.at(t), xb = sb.at(t);
-    const SignedDistance d = signedDistance(pa, xa, pb, xb);
+    const SignedDistance d = plane ? toPlane(a, xa, xb) : signedDistance(pa, xa, pb, xb);
     if (!d.valid) {
       out.state = ToiResult::State::Failed;
       out.t = t;

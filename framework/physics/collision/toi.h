@@ -21,7 +21,7 @@ struct ToiResult {
   int iterations = 0;
 };
 
-/// First t ∈ [0, 1] at which the surfaces of a and b come within `target` [m] (with tolerance
+/// b may be a plane (a must be convex). First t ∈ [0, 1] at which the surfaces of a and b come within `target` [m] (with tolerance
 /// `tolerance` [m]). Overlapping: already within target at t = 0.
 ToiResult timeOfImpact(const Shape& a, const Sweep& sa, const Shape& b, const Sweep& sb, Real target, Real tolerance);
 

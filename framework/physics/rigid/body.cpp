@@ -60,6 +60,7 @@ Result<Body> makeBody(const BodyDesc& d, const std::string& field) {
   b.angularDamping = d.angularDamping;
   b.gravityScale = d.gravityScale;
   b.bullet = d.bullet;
+  b.continuous = d.continuous;
   b.allowSleep = d.allowSleep;
   b.color = d.color;
   b.name = d.name;

@@ -37,7 +37,11 @@ struct BodyDesc {
   Real linearDamping = 0.0;        ///< [1/s] v ← v / (1 + h c)
   Real angularDamping = 0.0;       ///< [1/s]
   Real gravityScale = 1.0;
-  bool bullet = false;             ///< continuous collision (time of impact) against static bodies
+  /// Continuous collision (time of impact) against static bodies when the body moves more than half its
+  /// smallest extent in a step (Box2D v3's rule for fast bodies). Off: discrete, it may tunnel.
+  bool continuous = true;
+  /// Continuous collision in every step, however slow (small fast things: shots).
+  bool bullet = false;
   bool allowSleep = true;
   Color color{0.55f, 0.57f, 0.60f, 1.0f};
   std::string name;                ///< for messages ("body 'bullet-ccd' position is NaN")
@@ -56,7 +60,7 @@ struct Body {
   Mat3 inverseInertiaWorld{0.0}; ///< R I_body⁻¹ Rᵀ, refreshed by the world each step
   Real friction = 0.6, restitution = 0.0;
   Real linearDamping = 0.0, angularDamping = 0.0, gravityScale = 1.0;
-  bool bullet = false, allowSleep = true;
+  bool continuous = true, bullet = false, allowSleep = true;
   bool sleeping = false;
   Real sleepTime = 0.0;          ///< [s] how long the body has been slow enough to sleep
   int proxy = -1;                ///< broad-phase proxy

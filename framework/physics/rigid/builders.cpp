@@ -62,6 +62,33 @@ StackBodies buildStack(World& world, const StackDesc& s) {
   return out;
 }
 
+Incline buildIncline(World& world, Real angle, Real friction, Real halfExtent) {
+  Incline out;
+  out.rotation = glm::angleAxis(angle, Vec3(0.0, 0.0, 1.0));
+  const Vec3 rampHalf(12.0, 0.25, 1.5);
+  const Vec3 rampCenter(0.0, 4.0, 0.0);
+  BodyDesc ramp;
+  ramp.type = BodyType::Static;
+  ramp.shape = collision::makeBox(rampHalf).value();
+  ramp.position = rampCenter;
+  ramp.orientation = out.rotation;
+  ramp.friction = friction;
+  ramp.color = colors::kGrey;
+  out.ramp = add(world, ramp);
+  const Vec3 normal = out.rotation * kUp;
+  out.downhill = out.rotation * Vec3(-1.0, 0.0, 0.0);
+  out.start = rampCenter + (rampHalf.y + halfExtent) * normal - 0.6 * rampHalf.x * out.downhill;
+  BodyDesc box;
+  box.shape = collision::makeBox(Vec3(halfExtent)).value();
+  box.position = out.start;
+  box.orientation = out.rotation;
+  box.friction = friction;
+  box.color = colors::kOrange;
+  box.name = "slider";
+  out.box = add(world, box);
+  return out;
+}
+
 namespace {
 BodyDesc unitBox(const Vec3& position, const Quat& orientation, Real halfExtent, Real mass, std::size_t colorIndex) {
   BodyDesc d;
@@ -189,11 +216,11 @@ THandle buildTHandle(World& world, Real spin, Real perturbation) {
   return t;
 }
 
-std::vector<int> buildCradle(World& world, int count, Real r, Real length, Real restitution, Real liftAngle) {
+std::vector<int> buildCradle(World& world, int count, Real r, Real length, Real restitution, Real liftAngle, Real gap) {
   std::vector<int> balls;
   const Real top = length + r + 0.5;
   for (int i = 0; i < count; ++i) {
-    const Real x = (i - 0.5 * (count - 1)) * 2.0 * r;
+    const Real x = (i - 0.5 * (count - 1)) * (2.0 * r + gap);
     Vec3 anchor(x, top, 0.0);
     Vec3 p = anchor - Vec3(0.0, length, 0.0);
     if (i == 0) p = anchor + length * Vec3(-std::sin(liftAngle), -std::cos(liftAngle), 0.0);

@@ -51,9 +51,12 @@ struct WorldSettings {
   Real linearSlop = 0.005;         ///< [m] penetration allowed without correction
   Real speculativeDistance = 0.02; ///< [m] contact points are made this far before touching
   Real restitutionThreshold = 1.0; ///< [m/s] slower impacts do not bounce
+  /// Passes of the restitution stage (Box2D: 1). More let a bounce travel along a row of touching bodies
+  /// (Newton's cradle) instead of being shared out.
+  int restitutionIterations = 1;
   Real aabbMargin = 0.1;           ///< [m] broad-phase fattening
   collision::BroadPhaseKind broadPhase = collision::BroadPhaseKind::Tree;
-  bool continuous = true;          ///< time of impact for bodies flagged `bullet`
+  bool continuous = true;          ///< time of impact against static bodies for fast bodies (and bullets)
   bool sleeping = true;
   Real sleepLinearSpeed = 0.05;    ///< [m/s] below this (and the angular bound) a body may sleep
   Real sleepAngularSpeed = 0.05;   ///< [rad/s]

@@ -115,7 +115,12 @@ void World::solve(Real dt) {
   if (s.jointHertz > 0.0) jstep.soft = makeSoft(std::min(s.jointHertz, 0.5 / h), s.jointDampingRatio, h);
 
   sweeps_.resize(n);
-  for (int i = 0; i < n; ++i) sweeps_[i].c0 = bodies_[i].position, sweeps_[i].q0 = bodies_[i].orientation;
+  startVelocity_.resize(n);
+  startAngularVelocity_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    sweeps_[i].c0 = bodies_[i].position, sweeps_[i].q0 = bodies_[i].orientation;
+    startVelocity_[i] = bodies_[i].linearVelocity, startAngularVelocity_[i] = bodies_[i].angularVelocity;
+  }
 
   std::vector<ContactConstraint*> active;
   active.reserve(contacts_.size());
@@ -183,7 +188,8 @@ void World::solve(Real dt) {
       for (ContactConstraint* c : active) solveContact(*c, solverBodies_, cstep, false);
     }
   }
-  for (ContactConstraint* c : active) applyRestitution(*c, solverBodies_, s);
+  for (int it = 0; it < std::max(1, s.restitutionIterations); ++it)
+    for (ContactConstraint* c : active) applyRestitution(*c, solverBodies_, s);
 
   maxJointError_ = 0.0;
   for (const Joint& j : joints_) maxJointError_ = std::max(maxJointError_, jointPositionError(j, solverBodies_));

@@ -9,8 +9,9 @@
 //   3. prepare contacts and joints once, then per substep h = dt/substeps: integrate velocities
 //      (gravity, damping, gyroscopic term), warm start, solve with bias, integrate positions, relax
 //      without bias; then restitution;
-//   4. continuous collision for `bullet` bodies: time of impact against static bodies by conservative
-//      advancement; a body that would pass through is moved back to its first contact.
+//   4. continuous collision for fast bodies (moved more than half their smallest extent; every step for
+//      `bullet` bodies): time of impact against static bodies by conservative advancement; a body that
+//      would pass through is moved back to its first contact (Box2D v3's b2SolveContinuous).
 #include <memory>
 #include <optional>
 #include <string>
@@ -123,6 +124,7 @@ class World {
   collision::BroadPhase broadPhase_;
   std::vector<std::pair<int, int>> pairs_;
   std::vector<collision::Sweep> sweeps_;     // per body, this step (continuous collision)
+  std::vector<Vec3> startVelocity_, startAngularVelocity_;  // per body, at the start of the step
   std::vector<int> islandOf_;                // per body: union-find root this step (−1: not dynamic)
   std::optional<Joint> mouse_;               // the drag constraint
   int drag_ = -1;

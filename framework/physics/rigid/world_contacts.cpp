@@ -156,17 +156,18 @@ void World::solveContinuous(Real /*dt*/) {
   const Real target = settings_.linearSlop;
   for (int i = 0; i < bodyCount(); ++i) {
     Body& b = bodies_[i];
-    if (!b.bullet || !b.isDynamic() || b.sleeping) continue;
+    if (!b.isDynamic() || b.sleeping || !(b.continuous || b.bullet)) continue;
     const collision::Sweep& sweep = sweeps_[i];
-    // Slow enough that the speculative margin catches every contact: nothing to do.
+    // Slow bodies: the speculative margin catches every contact. Fast ones moved more than half their
+    // smallest extent (Box2D v3's safety factor); bullets always.
     const Real travel = glm::length(sweep.c1 - sweep.c0);
-    if (travel < 0.5 * collision::boundingRadius(b.shape) + settings_.speculativeDistance) continue;
+    if (!b.bullet && travel < 0.5 * collision::minimumExtent(b.shape)) continue;
     collision::Aabb box = collision::computeAabb(b.shape, {sweep.c0, sweep.q0});
     box = collision::merge(box, collision::computeAabb(b.shape, {sweep.c1, sweep.q1}));
     Real tMin = 1.0;
     broadPhase_.query(box, [&](int other) {
       const Body& o = bodies_[other];
-      if (other == i || o.type != BodyType::Static || !o.shape.isConvex()) return;
+      if (other == i || o.type != BodyType::Static || o.shape.kind == collision::ShapeKind::Mesh) return;
       const collision::Sweep still{o.position, o.position, o.orientation, o.orientation};
       const collision::ToiResult r = collision::timeOfImpact(b.shape, sweep, o.shape, still, target, 0.25 * target);
       if (r.state == collision::ToiResult::State::Hit && r.t < tMin) tMin = r.t;
@@ -175,6 +176,10 @@ void World::solveContinuous(Real /*dt*/) {
       const collision::Transform at = sweep.at(tMin);
       b.position = at.position;
       b.orientation = at.rotation;
+      // The velocity it had at that moment (exact under constant gravity); Box2D keeps the end-of-step
+      // velocity, which makes a bounce start a little too fast.
+      b.linearVelocity = startVelocity_[i] + tMin * (b.linearVelocity - startVelocity_[i]);
+      b.angularVelocity = startAngularVelocity_[i] + tMin * (b.angularVelocity - startAngularVelocity_[i]);
       ++ccdHits_;
     }
   }
