@@ -12,6 +12,7 @@ using namespace pba;
 class JointsScene final : public lab::WorldScene {
  public:
   JointsScene() {
+    settings_.iterations = 2;  // a 10-link chain within 1 mm (tests/physics/rigid/joints_test.cpp)
     params_.real("motor_speed", &motorSpeed_, -10.0, 10.0, "rad/s", "Target speed of the paddle's hinge motor. Typical 2 rad/s.");
     params_.real("motor_torque", &motorTorque_, 0.0, 5000.0, "N·m", "Largest torque the motor may apply. Typical 500 N·m.");
     params_.angle("hinge_limit", &limit_, 0.0, 170.0, "Half range of the limited hinge: ±limit. Typical 30°.").needsReset();

@@ -240,9 +240,12 @@ void solveJoint(Joint& j, std::vector<SolverBody>& bodies, const JointStep& step
       break;
     }
     case JointKind::Distance: {
+      // The rope's direction turns with the bodies: axis and mass from the current anchors.
       const Vec3 dvec = anchorB(j, B) - anchorA(j, A);
       const Real l = glm::length(dvec);
+      if (l > 1e-12) j.axisWorld = dvec / l;
       const Vec3& u = j.axisWorld;
+      j.axialMass = rowMass(A, B, j.rA, j.rB, u);
       if (d.hertz > 0.0) {
         // A spring always acts, with its own softness (and no relax: it is a force, not an error).
         const Softness spring = makeSoft(d.hertz, d.dampingRatio, step.h);
