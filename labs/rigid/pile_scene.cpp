@@ -9,7 +9,7 @@ using namespace pba;
 class PileScene final : public lab::WorldScene {
  public:
   PileScene() {
-    params_.integer("bodies", &count_, 10, 4000, "", "Number of bodies (a quarter of each kind). Typical 1000.").needsReset();
+    params_.integer("bodies", &count_, 10, 4000, "", "Number of bodies (per eight: a sphere, a capsule, three boxes, three hulls). Typical 1000.").needsReset();
   }
   std::string description() const override {
     return "A thousand mixed shapes (spheres, capsules, boxes, hulls) fall and pile up; resting islands sleep (grey).";

@@ -302,10 +302,14 @@ std::vector<int> buildPile(World& world, int count, unsigned seed) {
     d.orientation = glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
     d.density = 800.0;
     d.color = paletteColor(static_cast<std::size_t>(i));
-    switch (i % 4) {
+    // One in eight a sphere, one a capsule, three boxes, three hulls (round shapes are the costly ones to
+    // draw under software rendering).
+    switch (i % 8) {
       case 0: d.shape = collision::makeSphere(0.15 + 0.08 * std::abs(u(rng))).value(); break;
       case 1: d.shape = collision::makeCapsule(0.12 + 0.05 * std::abs(u(rng)), 0.1).value(); break;
-      case 2: d.shape = collision::makeBox(Vec3(0.12 + 0.08 * std::abs(u(rng)), 0.12 + 0.05 * std::abs(u(rng)), 0.15)).value(); break;
+      case 2:
+      case 3:
+      case 4: d.shape = collision::makeBox(Vec3(0.12 + 0.08 * std::abs(u(rng)), 0.12 + 0.05 * std::abs(u(rng)), 0.15)).value(); break;
       default: {
         std::vector<Vec3> pts;
         for (int k = 0; k < 10; ++k) pts.push_back(0.22 * glm::normalize(Vec3(n(rng), n(rng), n(rng))));

@@ -74,8 +74,8 @@ std::vector<int> buildDominoes(World& world, int count, Real spacing, Real frict
 std::vector<int> buildChain(World& world, const Vec3& top, int links, Real linkLength, bool ball, Real density = 500.0,
                             const Vec3& direction = Vec3(1.0, 0.0, 0.0));
 
-/// About `count` mixed spheres, capsules, boxes and convex hulls in a loose cloud above the ground
-/// (fixed seed); returns them.
+/// `count` mixed bodies in a loose cloud above the ground (seeded): per eight, a sphere, a capsule, three
+/// boxes and three convex hulls of 10 random points; returns them.
 std::vector<int> buildPile(World& world, int count, unsigned seed);
 
 }  // namespace pba::rigid

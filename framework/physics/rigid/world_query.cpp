@@ -106,10 +106,20 @@ namespace {
 
 Color greyed(const Color& c) { return {0.5f * c.r + 0.35f, 0.5f * c.g + 0.35f, 0.5f * c.b + 0.35f, c.a}; }
 
-void drawHull(DebugDraw& d, const collision::ConvexHull& h, const collision::Transform& pose, const Color& color) {
-  thread_local std::vector<Vec3> positions, normals;
-  thread_local std::vector<std::uint32_t> indices;
-  positions.clear(), normals.clear(), indices.clear();
+// Hull triangles gathered per colour, so that a pile of hundreds of hulls is a handful of draw calls.
+struct HullBatch {
+  Color color;
+  std::vector<Vec3> positions, normals;
+  std::vector<std::uint32_t> indices;
+};
+
+void addHull(std::vector<HullBatch>& batches, const collision::ConvexHull& h, const collision::Transform& pose, const Color& color) {
+  auto same = [&](const HullBatch& b) { return b.color.r == color.r && b.color.g == color.g && b.color.b == color.b && b.color.a == color.a; };
+  auto it = std::find_if(batches.begin(), batches.end(), same);
+  if (it == batches.end()) it = batches.insert(batches.end(), HullBatch{color, {}, {}, {}});
+  std::vector<Vec3>& positions = it->positions;
+  std::vector<Vec3>& normals = it->normals;
+  std::vector<std::uint32_t>& indices = it->indices;
   for (const collision::HullFace& f : h.faces) {
     const auto base = static_cast<std::uint32_t>(positions.size());
     const Vec3 n = pose.rotate(f.normal);
@@ -117,7 +127,6 @@ void drawHull(DebugDraw& d, const collision::ConvexHull& h, const collision::Tra
     for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k)
       indices.insert(indices.end(), {base, base + static_cast<std::uint32_t>(k), base + static_cast<std::uint32_t>(k + 1)});
   }
-  d.triangles(positions, normals, indices, color);
 }
 
 void drawMesh(DebugDraw& d, const collision::TriangleMesh& m, const collision::Transform& pose, const Color& color) {
@@ -149,6 +158,7 @@ void drawAabb(DebugDraw& d, const collision::Aabb& b, const Color& c) {
 
 void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
   if (o.shapes) {
+    std::vector<HullBatch> hulls;
     for (const Body& b : bodies_) {
       const Color color = o.greySleeping && b.sleeping ? greyed(b.color) : b.color;
       const collision::Transform pose = b.pose();
@@ -160,7 +170,7 @@ void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
           break;
         }
         case collision::ShapeKind::Box: d.box(b.position, b.shape.halfExtents, b.orientation, color); break;
-        case collision::ShapeKind::Hull: drawHull(d, *b.shape.hull, pose, color); break;
+        case collision::ShapeKind::Hull: addHull(hulls, *b.shape.hull, pose, color); break;
         case collision::ShapeKind::Mesh: drawMesh(d, *b.shape.mesh, pose, color); break;
         case collision::ShapeKind::Plane: {
           // The renderer's ground grid shows y = 0; a plane elsewhere gets a square outline.
@@ -173,18 +183,20 @@ void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
       }
       if (o.frames && b.isDynamic()) d.frame(b.position, b.orientation, 0.5 * std::max(collision::boundingRadius(b.shape), 0.1));
     }
+    for (const HullBatch& h : hulls) d.triangles(h.positions, h.normals, h.indices, h.color);
   }
   if (o.contacts || o.impulses) {
     for (const ContactConstraint& c : contacts_) {
       for (int i = 0; i < c.manifold.count; ++i) {
         const collision::ManifoldPoint& p = c.manifold.points[i];
         const bool touching = p.separation < settings_.linearSlop;
+        // Normals and impulses as lines: a pile has thousands of contacts, and arrows are meshes.
         if (o.contacts) {
           d.point(p.point, touching ? 7.0f : 4.0f, touching ? colors::kRed : colors::kGrey);
-          if (touching) d.arrow(p.point, p.point + o.normalLength * c.manifold.normal, colors::kYellow);
+          if (touching) d.line(p.point, p.point + o.normalLength * c.manifold.normal, colors::kYellow);
         }
         if (o.impulses && i < c.count && c.points[i].normalImpulse > 0.0)
-          d.arrow(p.point, p.point + o.impulseScale * c.points[i].normalImpulse * c.manifold.normal, colors::kOrange);
+          d.line(p.point, p.point + o.impulseScale * c.points[i].normalImpulse * c.manifold.normal, colors::kOrange);
       }
     }
   }
