@@ -25,14 +25,16 @@ class StackScene final : public lab::WorldScene {
     columnStart_ = w.body(bodies_.columnTop).position;
     pyramidStart_ = w.body(bodies_.pyramidTop).position;
   }
+  // Sideways: the soft contacts' settling under load (about 0.55 mm per box above) is not drift.
   Real topDrift() const {
-    return std::max(glm::length(world_.body(bodies_.columnTop).position - columnStart_),
-                    glm::length(world_.body(bodies_.pyramidTop).position - pyramidStart_));
+    const Vec3 horizontal(1.0, 0.0, 1.0);
+    return std::max(glm::length(horizontal * (world_.body(bodies_.columnTop).position - columnStart_)),
+                    glm::length(horizontal * (world_.body(bodies_.pyramidTop).position - pyramidStart_)));
   }
   void extraMetrics(nlohmann::json& j) const override { j["top_drift_m"] = topDrift(); }
   std::vector<app::Preset> presets() const override {
     return {{"no warm start", {{"warm_starting", false}}},
-            {"baumgarte", {{"correction", "baumgarte"}, {"substeps", 1}, {"iterations", 10}, {"relax_iterations", 0}}},
+            {"baumgarte", {{"correction", "baumgarte"}, {"solver_substeps", 1}, {"iterations", 10}, {"relax_iterations", 0}}},
             {"tall column", {{"column", 25}, {"pyramid_base", 5}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"top_drift_m", "kinetic_energy_J"}; }

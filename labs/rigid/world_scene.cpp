@@ -7,7 +7,7 @@ namespace pba::lab {
 WorldScene::WorldScene(bool withShooting) : shooting_(withShooting) {
   rigid::WorldSettings& s = settings_;
   params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration (downwards). Earth 9.81.");
-  params_.integer("substeps", &s.substeps, 1, 16, "", "Substeps per step (Box2D v3 soft step): each integrates, solves and relaxes. Typical 4.");
+  params_.integer("solver_substeps", &s.substeps, 1, 16, "", "Substeps per step (Box2D v3 soft step): each integrates, solves and relaxes. Typical 4.");
   params_.integer("iterations", &s.iterations, 1, 50, "", "Velocity iterations per substep, with bias. Typical 1 (soft step) or 10 (Baumgarte, one substep).");
   params_.integer("relax_iterations", &s.relaxIterations, 0, 10, "", "Iterations per substep without bias after the position update (removes the push-out velocity). Typical 1.");
   params_.flag("warm_starting", &s.warmStarting, "Start each step from last step's impulses (matched by feature id). Off: stacks sag and jitter.");
