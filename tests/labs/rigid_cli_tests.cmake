@@ -14,3 +14,4 @@ add_test(NAME lab.rigid.spinning-flips-and-keeps-its-angular-momentum COMMAND ba
 add_test(NAME lab.rigid.metric-keys-of-the-issue COMMAND bash -c "for s in $(\"$0\" --list-scenes | awk '{print $1}'); do \"$0\" --headless --scene $s --frames 5 --metrics '${rg_work}/keys.json' || exit 1; for key in bodies contacts kinetic_energy_J momentum angular_momentum max_penetration_m max_joint_error_m sleeping solver_iterations; do grep -q \"^    \\\"$key\\\": \" '${rg_work}/keys.json' || { echo \"$s: no $key\"; exit 1; }; done; done" ${rg_exe})
 set_tests_properties(lab.rigid.bullet-tunnels-only-without-continuous-collision lab.rigid.incline-slide-matches-the-closed-form
                      lab.rigid.spinning-flips-and-keeps-its-angular-momentum lab.rigid.metric-keys-of-the-issue
+                     PROPERTIES LABELS "labs" TIMEOUT 300)
