@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "physics/collision/manifold.h"
+#include "physics/collision/transform.h"
 #include "physics/rigid/settings.h"
 #include "physics/rigid/softness.h"
 #include "physics/rigid/solver_body.h"
@@ -47,6 +48,13 @@ struct ContactConstraint {
   int count = 0;
   ContactPoint points[4];
   collision::Manifold manifold;  ///< as the narrow phase made it (debug draw)
+  // For the contact cache: B's pose relative to A when the manifold was made, the normal in A's frame and
+  // each point's two surface points, on A in A's frame and on B in B's frame (Bullet's persistent
+  // manifold keeps the same pair to refresh its points).
+  collision::Transform relativePose;
+  Vec3 localNormal{0.0};
+  Vec3 surfaceA[4]{Vec3(0.0), Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+  Vec3 surfaceB[4]{Vec3(0.0), Vec3(0.0), Vec3(0.0), Vec3(0.0)};
 };
 
 /// Per-substep solver inputs.

@@ -55,6 +55,11 @@ struct WorldSettings {
   /// (Newton's cradle) instead of being shared out.
   int restitutionIterations = 1;
   Real aabbMargin = 0.1;           ///< [m] broad-phase fattening
+  /// Contact cache (Jolt's body-pair cache): a pair whose relative pose moved less than these since its
+  /// manifold was made keeps that manifold (moved with the bodies) instead of running the narrow phase.
+  /// 0 turns the cache off.
+  Real contactCacheDistance = 1e-3;  ///< [m]
+  Real contactCacheAngle = 0.035;    ///< [rad] (2°)
   collision::BroadPhaseKind broadPhase = collision::BroadPhaseKind::Tree;
   bool continuous = true;          ///< time of impact against static bodies for fast bodies (and bullets)
   bool sleeping = true;

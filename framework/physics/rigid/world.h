@@ -113,6 +113,8 @@ class World {
   void loadSolverBodies();
   void rebuildBroadPhase();
   bool jointConnected(int a, int b) const;
+  bool reuseContacts(int a, int b, std::size_t cursor, const collision::Transform& relative,
+                     std::vector<ContactConstraint>& next) const;
   int bodyOfJointSide(int i) const { return i < 0 ? static_cast<int>(bodies_.size()) : i; }
 
   WorldSettings settings_;

@@ -51,6 +51,42 @@ bool keyLess(const ContactConstraint& c, int a, int b, std::uint32_t key) {
 
 }  // namespace
 
+// The contact cache: when B has moved relative to A by less than the cache tolerances since the pair's
+// manifolds were made, the manifolds are reused: the normal turns with A, each point's surface points move
+// with their bodies, and the separation is measured between them along the normal (Bullet refreshes its
+// persistent manifolds the same way; Jolt caches body pairs under the same kind of tolerance).
+bool World::reuseContacts(int a, int b, std::size_t cursor, const collision::Transform& relative,
+                          std::vector<ContactConstraint>& next) const {
+  if (settings_.contactCacheDistance <= 0.0) return false;
+  if (cursor >= contacts_.size() || contacts_[cursor].bodyA != a || contacts_[cursor].bodyB != b) return false;
+  const ContactConstraint& first = contacts_[cursor];
+  if (glm::length(relative.position - first.relativePose.position) > settings_.contactCacheDistance) return false;
+  const Real cosHalf = std::abs(glm::dot(relative.rotation, first.relativePose.rotation));
+  if (cosHalf < std::cos(0.5 * settings_.contactCacheAngle)) return false;
+  const collision::Transform poseA = bodies_[a].pose(), poseB = bodies_[b].pose();
+  for (std::size_t k = cursor; k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b; ++k) {
+    ContactConstraint c = contacts_[k];
+    c.manifold.normal = c.normal = poseA.rotate(c.localNormal);
+    // The tangent basis may turn (even swap axes) with the normal: friction goes through its world vector.
+    tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
+    for (int i = 0; i < c.count; ++i) {
+      ContactPoint& p = c.points[i];
+      const Vec3 friction = p.tangentImpulse[0] * contacts_[k].tangent[0] + p.tangentImpulse[1] * contacts_[k].tangent[1];
+      p.tangentImpulse[0] = glm::dot(friction, c.tangent[0]);
+      p.tangentImpulse[1] = glm::dot(friction, c.tangent[1]);
+    }
+    for (int i = 0; i < c.manifold.count; ++i) {
+      const Vec3 sa = poseA.apply(c.surfaceA[i]), sb = poseB.apply(c.surfaceB[i]);
+      c.manifold.points[i].point = 0.5 * (sa + sb);
+      c.manifold.points[i].separation = glm::dot(c.normal, sb - sa);
+    }
+    if (!settings_.warmStarting)
+      for (int i = 0; i < c.count; ++i) c.points[i].normalImpulse = c.points[i].tangentImpulse[0] = c.points[i].tangentImpulse[1] = 0.0;
+    next.push_back(c);
+  }
+  return true;
+}
+
 void World::collide() {
   broadPhase_.findPairs(pairs_);
   std::vector<ContactConstraint> next;
@@ -70,6 +106,8 @@ void World::collide() {
         next.push_back(contacts_[k]);
       continue;
     }
+    const collision::Transform relative = collision::relative(A.pose(), B.pose());
+    if (reuseContacts(a, b, cursor, relative, next)) continue;
     manifolds.clear();
     collision::collide(A.shape, A.pose(), B.shape, B.pose(), settings_.speculativeDistance, manifolds);
     std::sort(manifolds.begin(), manifolds.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
@@ -84,6 +122,14 @@ void World::collide() {
       tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
       c.friction = std::sqrt(A.friction * B.friction);
       c.restitution = std::max(A.restitution, B.restitution);
+      c.relativePose = relative;
+      c.localNormal = A.pose().rotateInverse(m.normal);
+      for (int i = 0; i < m.count; ++i) {
+        // The point is midway: the surfaces are half the separation either side along the normal.
+        const Vec3 half = 0.5 * m.points[i].separation * m.normal;
+        c.surfaceA[i] = A.pose().applyInverse(m.points[i].point - half);
+        c.surfaceB[i] = B.pose().applyInverse(m.points[i].point + half);
+      }
       std::size_t k = cursor;
       while (k < contacts_.size() && keyLess(contacts_[k], a, b, m.key)) ++k;
       if (k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b && contacts_[k].key == m.key && settings_.warmStarting) {
