@@ -129,7 +129,12 @@ def main():
     problems = []
 
     print(f"== trace run: {len(tests)} tests, every solution in place", flush=True)
+    started = time.monotonic()
     traced = run_all(tests, work, "trace", {}, args.jobs)
+    with open(os.path.join(work, "trace.json"), "w", encoding="utf-8") as f:
+        json.dump({n: {"passed": r["passed"], "seconds": round(r["seconds"], 3), "ran": sorted(r["ran"])}
+                   for n, r in sorted(traced.items())}, f, indent=1)
+    print(f"   {time.monotonic() - started:.0f} s; traces in {work}/trace.json", flush=True)
     for name, r in sorted(traced.items()):
         if not r["passed"]:
             problems.append(f"{name} fails with every solution in place (log {r['log']}):\n{tail(r['log'])}")
@@ -148,6 +153,7 @@ def main():
     for tag, _ in tags:
         own = [t for t in tests if tag_of(t["name"], tags) == tag]
         touching = [t for t in tests if t not in own and tag in traced[t["name"]]["ran"]]
+        tag_start = time.monotonic()
         results = run_all(own + touching, work, f"stub-{tag}", {"PBA_STUB_EXERCISES": tag}, args.jobs)
         still_pass = sorted(n for n in (t["name"] for t in own) if results[n]["passed"])
         broken = sorted(n for n in (t["name"] for t in touching) if not results[n]["passed"])
@@ -158,7 +164,8 @@ def main():
                             f"{tail(results[n]['log'])}")
         state = "ok" if not still_pass and not broken else "FAIL"
         print(f"{tag:8s} {state:4s}  {len(own) - len(still_pass)}/{len(own)} own tests fail, "
-              f"{len(touching) - len(broken)}/{len(touching)} other tests that run {tag} pass", flush=True)
+              f"{len(touching) - len(broken)}/{len(touching)} other tests that run {tag} pass "
+              f"({time.monotonic() - tag_start:.0f} s)", flush=True)
 
     total = sum(r["seconds"] for r in traced.values())
     print(f"trace run: {len(traced)} tests, {total:.0f} s of test time")
