@@ -48,11 +48,14 @@ inline std::string readBytes(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-/// A per-test scratch directory (the process id keeps parallel runs of the release and sanitizer
-/// builds apart), removed with everything in it when the test ends.
+/// A scratch directory of its own (the process id keeps parallel runs of the release and sanitizer
+/// builds apart, the counter two directories of one test), removed with its files at scope end.
 class ScratchDir {
  public:
-  ScratchDir() : path_(std::filesystem::temp_directory_path() / ("pba-model-test-" + std::to_string(::getpid()))) {
+  ScratchDir() {
+    static int created = 0;
+    path_ = std::filesystem::temp_directory_path() /
+            ("pba-model-test-" + std::to_string(::getpid()) + "-" + std::to_string(created++));
     std::filesystem::create_directories(path_);
   }
   ~ScratchDir() {
