@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""One exercise, one grade (DESIGN.md §5, docs/architecture.md "Exercises"), checked on one build.
+"""One exercise, one grade (docs/architecture.md §5, docs/architecture.md "Exercises"), checked on one build.
 
 Usage: check_exercise_isolation.py BUILD_DIR CATALOG.tsv [--jobs N] [--work DIR]
 

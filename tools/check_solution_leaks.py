@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The hand-out gives nothing away (DESIGN.md §5): no solution's distinctive lines anywhere in the release.
+"""The hand-out gives nothing away (docs/architecture.md §5): no solution's distinctive lines anywhere in the release.
 
 Usage: check_solution_leaks.py SOURCE_ROOT RELEASE_ROOT [--window N]
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The exercise checks of DESIGN.md §5 (ctest exercises.student-release), on two generated trees:
+# The exercise checks of docs/architecture.md §5 (ctest exercises.student-release), on two generated trees:
 #  1. the student release: it builds with -Werror, every exercise test fails, every other test passes,
 #     ./pba grade reports failures, and no solution's lines appear anywhere in it (check_solution_leaks.py);
 #  2. the switchable tree (one build, each exercise switched to its stub at run time): every tag alone
