@@ -74,6 +74,13 @@ class FbxBinaryReader {
     std::memcpy(&v, d_.data() + at, sizeof(T));  // the format is little-endian, as is the test machine
     return v;
   }
+  /// Reads a T at p and moves p past it.
+  template <typename T>
+  T take(std::size_t& p) const {
+    const T v = read<T>(p);
+    p += sizeof(T);
+    return v;
+  }
   std::uint64_t readWord(std::size_t at) const {
     return version_ >= 7500 ? read<std::uint64_t>(at) : read<std::uint32_t>(at);
   }
@@ -104,14 +111,26 @@ class FbxBinaryReader {
 
   FbxProperty property(std::size_t& p) const {
     FbxProperty prop;
-    prop.type = read<char>(p++);
+    prop.type = take<char>(p);
     switch (prop.type) {
-      case 'Y': prop.integer = read<std::int16_t>(p), p += 2; break;
-      case 'C': prop.integer = read<std::uint8_t>(p), p += 1; break;
-      case 'I': prop.integer = read<std::int32_t>(p), p += 4; break;
-      case 'L': prop.integer = read<std::int64_t>(p), p += 8; break;
-      case 'F': prop.real = read<float>(p), p += 4; break;
-      case 'D': prop.real = read<double>(p), p += 8; break;
+      case 'Y':
+        prop.integer = take<std::int16_t>(p);
+        break;
+      case 'C':
+        prop.integer = take<std::uint8_t>(p);
+        break;
+      case 'I':
+        prop.integer = take<std::int32_t>(p);
+        break;
+      case 'L':
+        prop.integer = take<std::int64_t>(p);
+        break;
+      case 'F':
+        prop.real = take<float>(p);
+        break;
+      case 'D':
+        prop.real = take<double>(p);
+        break;
       case 'S':
       case 'R': {
         const std::uint32_t length = read<std::uint32_t>(p);
@@ -120,10 +139,15 @@ class FbxBinaryReader {
         p += 4 + length;
         break;
       }
-      case 'f': case 'd': case 'l': case 'i': case 'b':
+      case 'f':
+      case 'd':
+      case 'l':
+      case 'i':
+      case 'b':
         p += 12 + read<std::uint32_t>(p + 8);  // count, encoding, byte length; the data is skipped
         break;
-      default: throw std::runtime_error(std::string("unknown FBX property type '") + prop.type + "'");
+      default:
+        throw std::runtime_error(std::string("unknown FBX property type '") + prop.type + "'");
     }
     return prop;
   }
@@ -181,7 +205,7 @@ const FbxNode* modelPropertyTemplate(const std::vector<FbxNode>& top) {
 }
 
 struct FbxSkeleton {
-  std::vector<FileJoint> joints;  ///< LimbNode models, in file order
+  std::vector<FileJoint> joints;         ///< LimbNode models, in file order
   std::vector<std::string> unsupported;  ///< joints whose transform needs pivots, offsets or pre/post rotations
 };
 

@@ -83,8 +83,8 @@ inline void expectTruncatedCopyFails(const std::string& path) {
   const std::string bytes = readBytes(path);
   ASSERT_GT(bytes.size(), 100u) << path;
   const ScratchDir dir;
-  const std::string copy = dir.write("truncated-" + std::filesystem::path(path).filename().string(),
-                                     bytes.substr(0, bytes.size() / 2));
+  const std::string copy =
+      dir.write("truncated-" + std::filesystem::path(path).filename().string(), bytes.substr(0, bytes.size() / 2));
   std::string error;
   EXPECT_FALSE(gfx::loadModel(copy, &error).has_value()) << copy << " was accepted";
   EXPECT_NE(error.find(copy), std::string::npos) << error;
@@ -93,8 +93,8 @@ inline void expectTruncatedCopyFails(const std::string& path) {
 
 /// One node of a file's hierarchy as the test's own reader found it.
 struct FileJoint {
-  std::string name;    ///< the name Assimp gives the node (each reader states the format's rule)
-  std::string parent;  ///< the file parent's name (any node type); empty at the top of the file
+  std::string name;       ///< the name Assimp gives the node (each reader states the format's rule)
+  std::string parent;     ///< the file parent's name (any node type); empty at the top of the file
   glm::dmat4 local{1.0};  ///< rest transform relative to the parent, in the file's units
 };
 

@@ -17,9 +17,9 @@ namespace gfx = pba::graphics;
 using namespace pba::testing::models;
 
 struct XSkeleton {
-  std::vector<FileJoint> frames;     ///< Frame blocks, parents first
-  int topLevelFrames = 0;            ///< frames not nested in another frame
-  std::set<std::string> skinBones;   ///< transformNodeName of every SkinWeights block
+  std::vector<FileJoint> frames;    ///< Frame blocks, parents first
+  int topLevelFrames = 0;           ///< frames not nested in another frame
+  std::set<std::string> skinBones;  ///< transformNodeName of every SkinWeights block
 };
 
 /// Tokens of a text .X file: '{', '}', quoted strings (quotes kept), and words; ',' and ';' end a
@@ -80,7 +80,10 @@ XSkeleton readXSkeleton(const std::string& path) {
         FileJoint f;
         f.name = header[1];
         const int parent = enclosingFrame();
-        if (parent >= 0) f.parent = x.frames[static_cast<std::size_t>(parent)].name; else ++x.topLevelFrames;
+        if (parent >= 0)
+          f.parent = x.frames[static_cast<std::size_t>(parent)].name;
+        else
+          ++x.topLevelFrames;
         b.frame = static_cast<int>(x.frames.size());
         x.frames.push_back(f);
       }
