@@ -1,5 +1,5 @@
 #pragma once
-// The collision-detection exercises (DESIGN.md §5, workbook chapter 4). The narrow phase
+// The collision-detection exercises (docs/architecture.md, "Exercises"; workbook chapter 4). The narrow phase
 // (narrow_phase.h) does not call these: it reaches the same answers by its own routes (closest points of
 // cores, support points), so that each exercise is graded alone.
 #include <optional>

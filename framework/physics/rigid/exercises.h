@@ -1,5 +1,5 @@
 #pragma once
-// The rigid-body exercises (DESIGN.md §5) and the course's single-impulse collision response built from
+// The rigid-body exercises (docs/architecture.md, "Exercises") and the course's single-impulse collision response built from
 // them (the `tumble` scene). The world's solver (world.h) does not use these: it reaches the same
 // physics by its own routes (Mirtich's integrals, the exponential map, sequential impulses), so that each
 // exercise is graded alone.

@@ -1,5 +1,5 @@
 #pragma once
-// Every knob of the rigid-body world in one place (DESIGN.md §2: a description apart from the runtime
+// Every knob of the rigid-body world in one place (docs/architecture.md: a description apart from the runtime
 // object; the lab's panel edits these). Defaults follow Box2D v3 (b2DefaultWorldDef) where it has the
 // same setting.
 #include <string>
