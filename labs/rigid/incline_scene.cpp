@@ -54,7 +54,7 @@ class InclineScene final : public lab::WorldScene {
             {"ice", {{"angle", 15.0}, {"friction", 0.02}}}, {"on the edge", {{"angle", 26.0}, {"friction", 0.5}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"slide_distance_m", "expected_slide_distance_m"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 4.0, 0.0), 16.0, 0.15, 0.25}; }
+  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 4.5, 0.0), 13.0, 0.35, 0.12}; }
 
  private:
   Real angle_ = degToRad(30.0), friction_ = 0.3, time_ = 0.0;

@@ -27,8 +27,9 @@ class JointsScene final : public lab::WorldScene {
  protected:
   void build(rigid::World& w) override {
     rigid::addGround(w);
-    rigid::buildChain(w, Vec3(-9.0, 6.0, 0.0), 10, 0.4, false);
-    rigid::buildChain(w, Vec3(-4.5, 6.0, 0.0), 8, 0.4, true);
+    // The chains start 39° off vertical (a horizontal release whips the last link to ~10 m/s).
+    rigid::buildChain(w, Vec3(-6.5, 6.0, 0.0), 10, 0.4, false, 500.0, glm::normalize(Vec3(0.8, -1.0, 0.0)));
+    rigid::buildChain(w, Vec3(-3.5, 6.0, 0.0), 8, 0.4, true, 500.0, glm::normalize(Vec3(0.8, -1.0, 0.3)));
     // Motorised paddle.
     paddle_ = rigid::addBox(w, Vec3(0.8, 0.08, 0.3), Vec3(0.5, 3.0, 0.0), Quat(1, 0, 0, 0), 500.0, 0.6, colors::kTeal);
     rigid::JointDesc motor;
@@ -79,7 +80,7 @@ class JointsScene final : public lab::WorldScene {
     slider.lower = -0.8;
     slider.upper = 0.8;
     sliderJoint_ = w.addJoint(slider).value();
-    buildBridge(w, Vec3(10.0, 2.0, 0.0), 12);
+    buildBridge(w, Vec3(9.0, 2.0, 0.0), 12);
   }
 
   // Planks on springs: seam k joins plank k − 1 (or the left post) to plank k (or the right post) at both
@@ -130,7 +131,7 @@ class JointsScene final : public lab::WorldScene {
             {"stiff bridge", {{"bridge_hertz", 40.0}}}, {"wide cone", {{"cone", 90.0}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"max_joint_error_m", "motor_speed_rad_s"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(1.5, 3.0, 0.0), 22.0, 0.0, 0.15}; }
+  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(3.0, 3.2, 0.0), 15.0, 0.0, 0.12}; }
 
  private:
   Real motorSpeed_ = 2.0, motorTorque_ = 500.0, limit_ = degToRad(30.0), cone_ = degToRad(30.0), bridgeHertz_ = 10.0;

@@ -90,7 +90,7 @@ class TumbleScene final : public app::Scene {
             {"ice", {{"restitution", 0.3}, {"friction", 0.02}}},
             {"spinning drop", {{"spin", 8.0}, {"height", 3.0}}}};
   }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 0.5, 0.0), 3.2, 0.6, 0.35}; }
+  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 0.1, 0.0), 3.6, 0.6, 0.4}; }
 
  private:
   rigid::TumbleBox box_;

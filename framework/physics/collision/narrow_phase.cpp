@@ -10,8 +10,11 @@ Manifold collideConvexPlane(const Shape& convex, const Transform& pc, const Tran
   // deepest points of a polytope on a plane are its vertices); at most 4 are kept.
   const Vec3 n = planePose.rotate(kUp);
   const Vec3& p0 = planePose.position;
-  thread_local std::vector<Vec3> vertices;
-  coreVertices(convex, vertices);
+  thread_local std::vector<Vec3> roundCore;
+  const std::vector<Vec3>* corePoints = &roundCore;
+  if (convex.hull) corePoints = &convex.hull->vertices;  // boxes and hulls: no copy
+  else coreVertices(convex, roundCore);
+  const std::vector<Vec3>& vertices = *corePoints;
   thread_local std::vector<ManifoldPoint> candidates;
   candidates.clear();
   const Real r = convex.radius;

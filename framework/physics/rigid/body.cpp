@@ -94,6 +94,12 @@ Result<Body> makeBody(const BodyDesc& d, const std::string& field) {
   b.mass = m.mass;
   b.inverseMass = 1.0 / m.mass;
   b.inertiaBody = m.inertia;
+  {
+    const Mat3& I = m.inertia;
+    const Real scale = I[0][0] + I[1][1] + I[2][2];
+    const Real off = std::abs(I[0][1]) + std::abs(I[0][2]) + std::abs(I[1][2]);
+    b.isotropic = off <= 1e-12 * scale && std::abs(I[0][0] - I[1][1]) <= 1e-12 * scale && std::abs(I[1][1] - I[2][2]) <= 1e-12 * scale;
+  }
   b.inverseInertiaBody = glm::inverse(m.inertia);
   b.inverseInertiaWorld = worldInverseInertia(b.orientation, b.inverseInertiaBody);
   b.linearVelocity = d.linearVelocity;

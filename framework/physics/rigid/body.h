@@ -61,6 +61,7 @@ struct Body {
   Real friction = 0.6, restitution = 0.0;
   Real linearDamping = 0.0, angularDamping = 0.0, gravityScale = 1.0;
   bool continuous = true, bullet = false, allowSleep = true;
+  bool isotropic = false;        ///< I_body is a multiple of 1 (a sphere, a cube): no gyroscopic term
   bool sleeping = false;
   Real sleepTime = 0.0;          ///< [s] how long the body has been slow enough to sleep
   int proxy = -1;                ///< broad-phase proxy

@@ -301,7 +301,7 @@ std::vector<int> buildPile(World& world, int count, unsigned seed) {
     d.position = Vec3((ix - 0.5 * side) * pitch + 0.05 * u(rng), 0.6 + iy * pitch, (iz - 0.5 * side) * pitch + 0.05 * u(rng));
     d.orientation = glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
     d.density = 800.0;
-    d.color = paletteColor(static_cast<std::size_t>(i));
+    d.color = paletteColor(static_cast<std::size_t>(i + i / 8));  // every kind in every colour
     // One in eight a sphere, one a capsule, three boxes, three hulls (round shapes are the costly ones to
     // draw under software rendering).
     switch (i % 8) {

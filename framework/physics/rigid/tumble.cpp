@@ -22,7 +22,9 @@ void tumbleStep(TumbleBox& box, const TumbleSettings& s, Real h, std::vector<Tum
   for (int i = 0; i < 8; ++i) {
     const Vec3& e = box.halfExtents;
     const Vec3 corner = box.position + box.orientation * Vec3(i & 1 ? e.x : -e.x, i & 2 ? e.y : -e.y, i & 4 ? e.z : -e.z);
-    if (corner.y < 0.0) contacts.push_back({corner, -corner.y, 0.0, Vec3(0.0)});
+    // Corners within a millimetre count as touching, so a box at rest keeps its contacts from step to step.
+    constexpr Real kTouching = 1e-3;  // [m]
+    if (corner.y < kTouching) contacts.push_back({corner, std::max(0.0, -corner.y), 0.0, Vec3(0.0)});
   }
   for (int sweep = 0; sweep < s.sweeps; ++sweep) {
     for (TumbleContact& c : contacts) {

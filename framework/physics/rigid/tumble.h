@@ -7,7 +7,7 @@
 //
 // One step of length h:
 //   1. v += h g;  I_world = R I_body Rᵀ (RIGID-1), inverted;
-//   2. each corner below the ground (y < 0) is a contact with normal +y (from the ground toward the box);
+//   2. each corner below the ground (y < 1 mm) is a contact with normal +y (from the ground toward the box);
 //   3. a few sweeps over the contacts: the collision impulse j (RIGID-3, restitution 0 below a resting
 //      speed so that a box at rest does not jitter), then the friction impulse (RIGID-4) bounded by μ j;
 //   4. the box is lifted out of the ground by the deepest penetration (projection);

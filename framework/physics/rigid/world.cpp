@@ -157,7 +157,8 @@ void World::solve(Real dt) {
       SolverBody& sb = solverBodies_[i];
       sb.v = (sb.v + h * b.gravityScale * s.gravity) / (1.0 + h * b.linearDamping);
       sb.w /= (1.0 + h * b.angularDamping);
-      if (s.gyroscopic == GyroscopicMode::Implicit) sb.w = gyroscopicImplicitStep(sb.q, b.inertiaBody, sb.w, h);
+      // ω × Iω vanishes when I is a multiple of 1 (spheres, cubes): skip the Newton step there.
+      if (s.gyroscopic == GyroscopicMode::Implicit && !b.isotropic) sb.w = gyroscopicImplicitStep(sb.q, b.inertiaBody, sb.w, h);
     }
     if (s.warmStarting) {
       for (Joint* j : joints) warmStartJoint(*j, solverBodies_);
@@ -177,7 +178,7 @@ void World::solve(Real dt) {
       sb.c += h * sb.v;
       sb.dp += h * sb.v;
       sb.dtheta += h * sb.w;
-      if (s.gyroscopic == GyroscopicMode::Midpoint && !kinematic) {
+      if (s.gyroscopic == GyroscopicMode::Midpoint && !kinematic && !bodies_[i].isotropic) {
         midpointFreeRotation(sb.q, sb.w, bodies_[i].inertiaBody, bodies_[i].inverseInertiaBody, h);
       } else {
         sb.q = rotateByAngularVelocity(sb.q, sb.w, h);

@@ -121,6 +121,7 @@ class World {
   std::vector<Body> bodies_;
   std::vector<Joint> joints_;
   std::vector<ContactConstraint> contacts_;  // sorted by (bodyA, bodyB, key)
+  std::vector<ContactConstraint> nextContacts_;  // the next step's, built by collide() and swapped in
   std::vector<SolverBody> solverBodies_;     // bodies_ + the world (last)
   std::vector<char> awake_;                  // per body: dynamic and not sleeping this step
   collision::BroadPhase broadPhase_;

@@ -89,8 +89,9 @@ bool World::reuseContacts(int a, int b, std::size_t cursor, const collision::Tra
 
 void World::collide() {
   broadPhase_.findPairs(pairs_);
-  std::vector<ContactConstraint> next;
-  next.reserve(contacts_.size() + 16);
+  std::vector<ContactConstraint>& next = nextContacts_;  // kept between steps: no allocation once warm
+  next.clear();
+  next.reserve(std::max(contacts_.size(), pairs_.size()) + 16);
   thread_local std::vector<collision::Manifold> manifolds;
   std::size_t cursor = 0;  // into the old, sorted contacts
   for (const auto& [a, b] : pairs_) {
