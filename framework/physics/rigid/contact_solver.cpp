@@ -30,14 +30,13 @@ void prepareContact(ContactConstraint& c, const std::vector<SolverBody>& bodies)
   for (int i = 0; i < c.count; ++i) {
     ContactPoint& p = c.points[i];
     const collision::ManifoldPoint& mp = c.manifold.points[i];
-    p.rA = mp.point - a.c;
-    p.rB = mp.point - b.c;
+    const Vec3 rA = mp.point - a.c, rB = mp.point - b.c;
     p.separation = mp.separation;
     p.id = mp.id;
     Real k[3];
     for (int d = 0; d < 3; ++d) {
-      p.rAxD[d] = glm::cross(p.rA, directions[d]);
-      p.rBxD[d] = glm::cross(p.rB, directions[d]);
+      p.rAxD[d] = glm::cross(rA, directions[d]);
+      p.rBxD[d] = glm::cross(rB, directions[d]);
       p.iArAxD[d] = a.invI * p.rAxD[d];
       p.iBrBxD[d] = b.invI * p.rBxD[d];
       // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d).

@@ -23,8 +23,8 @@
 namespace pba::rigid {
 
 struct ContactPoint {
-  Vec3 rA{0.0}, rB{0.0};          ///< anchors relative to the centres of mass, world axes, fixed for the step
-  // Jacobian pieces fixed for the step: r × d and I⁻¹(r × d) for d = n, t₁, t₂ (index 0, 1, 2).
+  // Jacobian pieces fixed for the step, with r the arm from a centre of mass to the point (world axes):
+  // r × d and I⁻¹(r × d) for d = n, t₁, t₂ (index 0, 1, 2).
   Vec3 rAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, rBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
   Vec3 iArAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, iBrBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
   Real separation = 0.0;          ///< [m] at the start of the step
