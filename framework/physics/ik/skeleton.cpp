@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "physics/core/validate.h"
 
 namespace pba::ik {
@@ -184,20 +186,16 @@ Quat quatFromRotationVector(const Vec3& v) {
 }
 
 Quat shortestArc(const Vec3& u, const Vec3& v) {
-  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
-  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
-  const Real norms = std::sqrt(uu * vv), c = glm::dot(u, v);
-  if (c < (-1.0 + 1e-12) * norms) {
-    // Opposite: a half turn about any axis perpendicular to u.
-    const Vec3 a = u / std::sqrt(uu);
-    Vec3 axis = glm::cross(a, std::abs(a.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-    axis /= glm::length(axis);
-    return Quat(0.0, axis.x, axis.y, axis.z);
-  }
-  // q = (|u||v| + u·v, u × v) normalised: the half-angle formula, no trigonometry, one division.
-  const Vec3 x = glm::cross(u, v);
-  Quat q(norms + c, x.x, x.y, x.z);
-  return q * (1.0 / std::sqrt(q.w * q.w + glm::dot(x, x)));
+  if (glm::dot(u, u) < 1e-24 || glm::dot(v, v) < 1e-24) return Quat(1, 0, 0, 0);
+  // Eigen handles the opposite case (a half turn about a perpendicular axis found by its SVD);
+  // renormalised, since near-opposite vectors leave Eigen's half-angle form a little off unit length.
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(u.x, u.y, u.z), Eigen::Vector3d(v.x, v.y, v.z));
+  return glm::normalize(Quat(q.w(), q.x(), q.y(), q.z()));
+}
+
+Vec3 anyPerpendicular(const Vec3& v) {
+  const Vec3 n = glm::cross(v, std::abs(v.x) < 0.9 * glm::length(v) ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+  return n / glm::length(n);
 }
 
 Real limitViolation(const Skeleton& s, const Pose& p) {

@@ -21,6 +21,19 @@ inline Rig chain(JointType joint, int links = 10, Real limitDegrees = 120.0) {
   return buildIkChain(d).value();
 }
 
+/// Options of a solver test: the method as published (SolveOptions' defaults: no restarts, no step
+/// clamp, no line search of the Jacobian methods), iteration cap 1,000, joint limits off. An exercise
+/// test of IK-n must not depend on IK-6's clamp (one exercise, one grade): limits are IK-6's tests'
+/// business (ik_limits_test.cpp). `jacobian`: CentralDifferences keeps IK-3 out of a method's test.
+inline SolveOptions unlimited(SolverKind kind, JacobianSource jacobian = JacobianSource::Analytic) {
+  SolveOptions o;
+  o.solver = kind;
+  o.maxIterations = 1000;
+  o.enforceLimits = false;
+  o.jacobian = jacobian;
+  return o;
+}
+
 struct BatchStats {
   int solves = 0;
   int successes = 0;
