@@ -29,7 +29,7 @@ enum class SolverKind {
 /// keys and tests all read it, so a new method is one row here (and one case in makeMethod).
 struct SolverInfo {
   SolverKind kind;
-  const char* name;      ///< short name: "analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls", "gradient", "lbfgs"
+  const char* name;      ///< short name ("ccd", "dls", …): menus, --solver, metrics keys
   const char* longName;  ///< "Cyclic coordinate descent", …
 };
 std::span<const SolverInfo> solverTable();

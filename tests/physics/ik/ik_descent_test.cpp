@@ -10,7 +10,6 @@
 #include <Eigen/SVD>
 
 #include "ik_random_targets.h"
-#include "physics/ik/jacobian.h"
 
 namespace pba::ik {
 namespace {
@@ -122,13 +121,7 @@ TEST(IK_3_GradientDescent, FixedStepConvergesBelowTheStabilityLimitAndNotAboveIt
   optimum.dofs = {0.3, 1.5, 1.5};  // well conditioned: λ₂/λ₁ ≈ 0.31, so α = 1/λ₁ converges in ~50 steps
   std::vector<Effector> effectors = rig.effectors;
   setGoalsFromPose(rig.skeleton, optimum, effectors);
-  const std::vector<Frame> frames = forwardKinematics(rig.skeleton, optimum);
-  const JacobianLayout layout = planJacobian(rig.skeleton, optimum, effectors, frames, 1.0);
-  const Matrix J = numericalJacobian(rig.skeleton, optimum, effectors, layout, 1.0, 1e-6);
-  Eigen::MatrixXd Je(J.rows, J.cols);
-  for (int r = 0; r < J.rows; ++r)
-    for (int c = 0; c < J.cols; ++c) Je(r, c) = J(r, c);
-  const Real sigmaMax = Eigen::JacobiSVD<Eigen::MatrixXd>(Je).singularValues()(0);
+  const Real sigmaMax = Eigen::JacobiSVD<Eigen::MatrixXd>(testing::centralDifferenceJacobian(rig.skeleton, optimum, effectors)).singularValues()(0);
   const Real limit = 2.0 / (sigmaMax * sigmaMax);  // [rad²/m²] 2 / λ_max(JᵀJ)
   auto run = [&](Real alpha) {
     SolveOptions o = testing::unlimited(SolverKind::GradientDescent);

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include "ik_random_targets.h"
-#include "physics/ik/jacobian.h"
 
 namespace pba::ik {
 namespace {
@@ -45,13 +44,8 @@ TEST(IkMethods, PseudoInverseTakesTheFullGaussNewtonStepByDefault) {
   const Vec3 tip = effectorPosition(effectors[0], forwardKinematics(rig.skeleton, pose));
   effectors[0].targetPosition = tip + Vec3(-0.3, 0.2, 0.0);  // 0.36 m < the 0.5 m error clamp
   const Pose after = oneStep(rig, effectors, pose, reference(SolverKind::PseudoInverse));
-  const std::vector<Frame> frames = forwardKinematics(rig.skeleton, pose);
-  const JacobianLayout layout = planJacobian(rig.skeleton, pose, effectors, frames, 1.0);
-  const Matrix J = numericalJacobian(rig.skeleton, pose, effectors, layout, 1.0, 1e-6);
-  Eigen::MatrixXd Je(J.rows, J.cols);
-  for (int r = 0; r < J.rows; ++r)
-    for (int c = 0; c < J.cols; ++c) Je(r, c) = J(r, c);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(Je, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(testing::centralDifferenceJacobian(rig.skeleton, pose, effectors),
+                                         Eigen::ComputeThinU | Eigen::ComputeThinV);
   svd.setThreshold(1e-3);  // SolveOptions::singularCutoff, relative to σ_max as in the solver
   const Vec3 de = effectors[0].targetPosition - tip;
   const Eigen::VectorXd step = svd.solve(Eigen::Vector3d(de.x, de.y, de.z));

@@ -7,7 +7,10 @@
 #include <random>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "physics/ik/builders.h"
+#include "physics/ik/jacobian.h"
 #include "physics/ik/solver.h"
 
 namespace pba::ik::testing {
@@ -32,6 +35,17 @@ inline SolveOptions unlimited(SolverKind kind, JacobianSource jacobian = Jacobia
   o.enforceLimits = false;
   o.jacobian = jacobian;
   return o;
+}
+
+/// J at `pose` by central differences of forward kinematics (orientation scale 1 m/rad), as an Eigen
+/// matrix for reference computations (Eigen's SVD) independent of IK-3 and of linalg.cpp.
+inline Eigen::MatrixXd centralDifferenceJacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors) {
+  const JacobianLayout layout = planJacobian(s, pose, effectors, forwardKinematics(s, pose), 1.0);
+  const Matrix J = numericalJacobian(s, pose, effectors, layout, 1.0, kJacobianStep);
+  Eigen::MatrixXd out(J.rows, J.cols);
+  for (int r = 0; r < J.rows; ++r)
+    for (int c = 0; c < J.cols; ++c) out(r, c) = J(r, c);
+  return out;
 }
 
 struct BatchStats {
