@@ -87,10 +87,8 @@ class Ccd final : public Method {
 
  private:
   bool goalsMet(Real tolerance) const {
-    for (size_t k = 0; k < points_.size(); ++k) {
-      const Vec3 d = points_[k] - goals_[k];
-      if (glm::dot(d, d) > tolerance * tolerance) return false;
-    }
+    for (size_t k = 0; k < points_.size(); ++k)
+      if (glm::distance(points_[k], goals_[k]) > tolerance) return false;
     return true;
   }
 

@@ -156,12 +156,11 @@ class RestartRng {
 // scalar DOFs uniform in [lo, hi], free joints a uniform axis and an angle in [0, maxRotation].
 void randomizeActiveJoints(detail::Context& c, RestartRng& rng) {
   const Skeleton& s = c.skeleton;
+  for (int i = 0; i < s.dofCount(); ++i)
+    if (c.active[static_cast<size_t>(s.dofJoint(i))]) c.pose.dofs[static_cast<size_t>(i)] = s.dofLo(i) + (s.dofHi(i) - s.dofLo(i)) * rng.uniform();
   for (int j = 0; j < s.jointCount(); ++j) {
-    if (!c.active[static_cast<size_t>(j)]) continue;
     const Joint& joint = s.joint(j);
-    for (int k = 0; k < dofCount(joint.type); ++k)
-      c.pose.dofs[static_cast<size_t>(joint.firstDof + k)] = joint.lo[k] + (joint.hi[k] - joint.lo[k]) * rng.uniform();
-    if (joint.type == JointType::Free) {
+    if (c.active[static_cast<size_t>(j)] && joint.type == JointType::Free) {
       const Real z = 2.0 * rng.uniform() - 1.0, phi = 2.0 * kPi * rng.uniform();
       const Real rxy = std::sqrt(std::max(0.0, 1.0 - z * z));
       c.pose.rotations[static_cast<size_t>(j)] = glm::angleAxis(joint.maxRotation * rng.uniform(), Vec3(rxy * std::cos(phi), rxy * std::sin(phi), z));
