@@ -127,10 +127,11 @@ Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Eff
     if (e.joint < 0 || e.joint >= s.jointCount()) return Error{f + ".joint: no joint " + std::to_string(e.joint)};
     if (Status st = checkFinite(f + ".localOffset", e.localOffset); !st) return st;
     if (Status st = checkFinite(f + ".targetPosition", e.targetPosition); !st) return st;
-    if (!(e.weight > 0.0) || !isFinite(e.weight)) return Error{f + ".weight: must be > 0"};
+    if (Status st = checkPositive(f + ".weight", e.weight); !st) return st;
     const Quat& q = e.targetOrientation;
-    if (e.kind == EffectorKind::PositionOrientation && !(std::abs(glm::dot(q, q) - 1.0) < 1e-6))
-      return Error{f + ".targetOrientation: must be a unit quaternion"};
+    // isFinite first: an ordered comparison with NaN would raise the invalid-operation trap.
+    const bool unit = isFinite(q.w) && isFinite(Vec3(q.x, q.y, q.z)) && std::abs(glm::dot(q, q) - 1.0) < 1e-6;
+    if (e.kind == EffectorKind::PositionOrientation && !unit) return Error{f + ".targetOrientation: must be a unit quaternion"};
   }
   return validate(o);
 }

@@ -73,6 +73,37 @@ TEST(IkSkeleton, AddRejectsBadParentsAxesAndLimitsNamingTheField) {
   EXPECT_NE(s.add(j).error().find("limits"), std::string::npos);
 }
 
+// Non-finite values never reach a comparison (the test main traps invalid operations): each is
+// reported with the field that holds it.
+TEST(IkSkeleton, AddRejectsNonFiniteValuesNamingTheField) {
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const std::vector<std::pair<const char*, std::function<void(Joint&)>>> cases = {
+      {"offset", [nan](Joint& j) { j.offset.y = nan; }},       {"axis", [nan](Joint& j) { j.axis.x = nan; }},
+      {"restRotation", [nan](Joint& j) { j.restRotation.w = nan; }}, {"limits[0]", [nan](Joint& j) { j.lo[0] = nan; }},
+      {"weight[0]", [nan](Joint& j) { j.weight[0] = nan; }},   {"maxRotation", [nan](Joint& j) { j.type = JointType::Free, j.maxRotation = nan; }},
+  };
+  for (const auto& [field, spoil] : cases) {
+    Skeleton s;
+    Joint j;
+    spoil(j);
+    const Result<int> r = s.add(j);
+    ASSERT_FALSE(r.ok()) << field;
+    EXPECT_NE(r.error().find(std::string(".") + field + ":"), std::string::npos) << r.error();
+  }
+  Rig rig = buildIkChain(ChainDesc{}).value();
+  for (int k = 0; k < 3; ++k) {
+    std::vector<Effector> effectors = rig.effectors;
+    const char* field = k == 0 ? "effectors[0].weight" : k == 1 ? "effectors[0].targetPosition" : "effectors[0].targetOrientation";
+    if (k == 0) effectors[0].weight = nan;
+    if (k == 1) effectors[0].targetPosition.z = nan;
+    if (k == 2) effectors[0].kind = EffectorKind::PositionOrientation, effectors[0].targetOrientation.x = nan;
+    Pose pose = rig.skeleton.restPose();
+    const SolveResult r = solve(rig.skeleton, pose, effectors, SolveOptions{});
+    EXPECT_EQ(r.status, SolveStatus::InvalidInput) << field;
+    EXPECT_EQ(r.message.rfind(field, 0), 0u) << r.message;
+  }
+}
+
 TEST(IkLinalg, SvdReconstructsAWideMatrixWithOrthonormalFactors) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<Real> u(-1.0, 1.0);
