@@ -18,6 +18,11 @@ if(NOT TARGET glm::glm)
   add_library(glm::glm INTERFACE IMPORTED)
 endif()
 
+find_package(Eigen3 3.3 QUIET NO_MODULE)
+if(NOT Eigen3_FOUND OR NOT TARGET Eigen3::Eigen)
+  pba_missing("Eigen 3 (Eigen3Config.cmake)" "libeigen3-dev")
+endif()
+
 find_package(nlohmann_json 3.10 CONFIG QUIET)
 if(NOT nlohmann_json_FOUND)
   pba_missing("nlohmann-json" "nlohmann-json3-dev")

@@ -1,10 +1,12 @@
 // Hello lab, scene "spring": a ball hanging from a damped spring (Lobb notes, damped spring force).
-// Drag the ball with the left mouse button, let go and watch the oscillation decay.
+// Drag the ball with the left mouse button, let go and watch the oscillation decay. A preview of the
+// particles lab: the force is PART-4's damped spring, the step PART-2's symplectic Euler.
 #include <cmath>
 #include <cstdio>
 
 #include "app/scene_registry.h"
 #include "physics/hello/ball.h"
+#include "physics/ode/integrators.h"
 
 namespace {
 using namespace pba;
@@ -37,7 +39,10 @@ class SpringScene final : public app::Scene {
   }
   void step(Real dt) override {
     if (dragging_) return;
-    state_ = hello::symplecticEulerStep(desc_, state_, dt);
+    ball_.setDesc(desc_);
+    ball_.setBall(state_);
+    ode::symplecticEulerStep(ball_, dt, work_);
+    state_ = ball_.ball();
   }
   void draw(DebugDraw& d) const override {
     d.box(desc_.anchor + Vec3(0, 0.06, 0), Vec3(0.3, 0.06, 0.3), Quat(1, 0, 0, 0), colors::kGrey);
@@ -99,6 +104,8 @@ class SpringScene final : public app::Scene {
 
   hello::SpringDesc desc_;
   hello::BallState state_;
+  hello::SpringBallSystem ball_;  // state_ as an ODE system, for the step
+  ode::Workspace work_;
   bool dragging_ = false;
 };
 

@@ -82,7 +82,7 @@ class PendulumScene final : public app::Scene {
       integrator_.step(system_, dt);
       state_ = system_.pendulumState();
     }
-    time_ += dt;
+    time_ += dt - integrator_.lastShortfall();  // the state's time (adaptive may fall short of dt)
     previousPivot_ = pivot_;
     pivot_ = next;
     rate_.stop(1);

@@ -18,7 +18,7 @@ void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w)
   system.setState(w.s);
   system.setTime(t + h);
   // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-1");  // the state stays where it is
+  // STUB: exercises::markNotImplemented("PART-1");  // the state and the time stay where they are
 }
 
 void midpointStep(OdeSystem& system, Real h, Workspace& w) {
@@ -51,7 +51,7 @@ void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   system.setState(w.s);
   system.setTime(t + h);
   // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-3");  // the state stays where it is
+  // STUB: exercises::markNotImplemented("PART-3");  // the state and the time stay where they are
 }
 
 // Start-up probes: tell the lab whether PART-1 and PART-3 are still stubs.

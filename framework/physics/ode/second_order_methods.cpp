@@ -29,6 +29,13 @@ void finishInPlace(SecondOrderSystem& system, const InPlaceStep& s, Real h) {
   system.stateChanged();
   system.setTime(s.t + h);
 }
+// Position Verlet's memory of the state it produced, so that its next step notices a change from outside.
+[[maybe_unused]] void rememberProduced(VerletHistory& history, const InPlaceStep& s, Real h) {
+  history.lastQ.assign(s.q.begin(), s.q.end());
+  history.lastV.assign(s.v.begin(), s.v.end());
+  history.lastH = h;
+  history.valid = true;
+}
 }  // namespace
 
 void symplecticEulerStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unused]] Real h,
@@ -41,7 +48,7 @@ void symplecticEulerStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unu
   }
   finishInPlace(system, s, h);
   // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-2");  // the state stays where it is
+  // STUB: exercises::markNotImplemented("PART-2");  // the state and the time stay where they are
 }
 
 void velocityVerletStep(SecondOrderSystem& system, Real h, Workspace& w) {
@@ -75,13 +82,10 @@ void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistor
     history.previous[i] = q[i];
     q[i] = next;
   }
-  // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-6");  // the state stays where it is
-  history.lastQ.assign(q.begin(), q.end());
-  history.lastV.assign(v.begin(), v.end());
-  history.lastH = h;
-  history.valid = true;
+  rememberProduced(history, s, h);
   finishInPlace(system, s, h);
+  // END SOLUTION
+  // STUB: exercises::markNotImplemented("PART-6");  // the state and the time stay where they are
 }
 
 // Start-up probes: tell the lab whether PART-2 and PART-6 are still stubs.

@@ -21,7 +21,7 @@ TEST(ParticleForces, LinearDragApproachesTerminalVelocityExponentially) {
   sys.particles.add(Vec3(0.0, 100.0, 0.0), Vec3(3.0, 0.0, 0.0), m);
   sys.syncMasses();
   ode::Integrator integrator(ode::IntegratorKind::Adaptive);  // not an exercise
-  integrator.adaptiveSettings.tolerance = 1e-12;
+  ASSERT_TRUE(integrator.setAdaptiveSettings({.tolerance = 1e-12}).ok());
   const Real T = 1.0;
   for (int i = 0; i < 1000; ++i) integrator.step(sys, 1e-3);
   const Vec3 terminal = m * sys.forces.gravity / 0.5;
@@ -37,7 +37,7 @@ TEST(ParticleForces, QuadraticDragReachesItsTerminalSpeed) {
   sys.particles.add(Vec3(0.0), Vec3(0.0), m);
   sys.syncMasses();
   ode::Integrator integrator(ode::IntegratorKind::Adaptive);
-  integrator.adaptiveSettings.tolerance = 1e-12;
+  ASSERT_TRUE(integrator.setAdaptiveSettings({.tolerance = 1e-12}).ok());
   for (int i = 0; i < 100; ++i) integrator.step(sys, 0.1);
   EXPECT_NEAR(-sys.particles.velocity[0].y, std::sqrt(m * kStandardGravity / 0.02), 1e-6);
 }
