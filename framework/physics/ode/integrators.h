@@ -97,7 +97,7 @@ void rk4Step(OdeSystem& system, Real h, Workspace& w);
 // (3) Update the position with the NEW velocity: q ← q + h v.
 //     (Using the old velocity here would be explicit Euler, whose energy grows every step.)
 // (4) Tell the system (stateChanged) and advance the time to t + h.
-// (second_order_methods.cpp has two helpers the other in-place methods use: startInPlace() does the
+// (ode/in_place_step.h has two helpers the other in-place methods use: startInPlace() does the
 // bookkeeping and step (1), finishInPlace() step (4).)
 // *****
 void symplecticEulerStep(SecondOrderSystem& system, Real h, Workspace& w);
@@ -121,9 +121,9 @@ struct VerletHistory {
 // (2) The velocity is implicit in the positions. Estimate it for the state (second order, exact under
 //     constant acceleration): v(t + h) = (q(t + h) − q(t)) / h + (h/2) a.
 // (3) Shift the history: the old q(t) becomes history.previous; q(t + h) becomes the current position.
-// (4) Finish like every in-place method (the helpers in second_order_methods.cpp): remember the state you
-//     produced (rememberProduced, so that the next step can tell whether someone else changed it), tell
-//     the system and advance its time to t + h (finishInPlace).
+// (4) Finish like every in-place method: remember the state you produced (rememberProduced in
+//     position_verlet.cpp, so that the next step can tell whether someone else changed it), then tell the
+//     system and advance its time to t + h (finishInPlace, ode/in_place_step.h).
 // *****
 void verletStep(SecondOrderSystem& system, Real h, VerletHistory& history, Workspace& w);
 

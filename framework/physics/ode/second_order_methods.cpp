@@ -1,42 +1,16 @@
-// Methods that use the split s = (q, v): symplectic Euler, velocity Verlet, position Verlet.
-// They update the system's own arrays in place (no state copies).
-#include <algorithm>
+// Methods that use the split s = (q, v): symplectic Euler and velocity Verlet (position Verlet, which also
+// does, is in position_verlet.cpp). They update the system's own arrays in place (no state copies).
 #include <cstddef>
 
-#include "physics/ode/oscillator.h"
 #include "physics/exercises/not_implemented.h"
+#include "physics/ode/in_place_step.h"
 #include "physics/ode/integrators.h"
+#include "physics/ode/oscillator.h"
 
 namespace pba::ode {
-namespace {
-// What every in-place method starts from: the coordinates q and velocities v of the system (its own
-// storage), the time t, and the acceleration a = M⁻¹ f(t, q, v) at the start of the step in w.k1.
-struct InPlaceStep {
-  std::size_t n;
-  Real t;
-  std::span<Real> q, v;
-  std::span<const Real> a;
-};
-InPlaceStep startInPlace(SecondOrderSystem& system, Workspace& w) {
-  const std::size_t n = system.dofCount();
-  Workspace::fit(n, {&w.k1});
-  const InPlaceStep s{n, system.time(), system.positions(), system.velocities(), w.k1};
-  system.acceleration(s.t, s.q, s.v, w.k1);
-  return s;
-}
-// And what every one ends with: tell the system its state changed and advance its time to t + h.
-void finishInPlace(SecondOrderSystem& system, const InPlaceStep& s, Real h) {
-  system.stateChanged();
-  system.setTime(s.t + h);
-}
-// Position Verlet's memory of the state it produced, so that its next step notices a change from outside.
-[[maybe_unused]] void rememberProduced(VerletHistory& history, const InPlaceStep& s, Real h) {
-  history.lastQ.assign(s.q.begin(), s.q.end());
-  history.lastV.assign(s.v.begin(), s.v.end());
-  history.lastH = h;
-  history.valid = true;
-}
-}  // namespace
+using detail::finishInPlace;
+using detail::InPlaceStep;
+using detail::startInPlace;
 
 void symplecticEulerStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unused]] Real h,
                          [[maybe_unused]] Workspace& w) {
@@ -62,42 +36,14 @@ void velocityVerletStep(SecondOrderSystem& system, Real h, Workspace& w) {
   finishInPlace(system, s, h);
 }
 
-void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistory& history, Workspace& w) {
-  const InPlaceStep s = startInPlace(system, w);
-  const std::size_t n = s.n;
-  const std::span<Real> q = s.q, v = s.v;
-  const std::span<const Real> a = s.a;
-  // Start (or restart) the two-step recurrence when the state is not the one this method produced:
-  // q(t − h) from the Taylor expansion q − h v + h²a/2, exact under constant acceleration.
-  const bool same = history.valid && history.lastH == h && history.previous.size() == n &&
-                    std::ranges::equal(history.lastQ, q) && std::ranges::equal(history.lastV, v);
-  if (!same) {
-    history.previous.resize(n);
-    for (std::size_t i = 0; i < n; ++i) history.previous[i] = q[i] - h * v[i] + 0.5 * h * h * a[i];
-  }
-  // BEGIN SOLUTION
-  for (std::size_t i = 0; i < n; ++i) {
-    const Real next = 2.0 * q[i] - history.previous[i] + h * h * a[i];
-    v[i] = (next - q[i]) / h + 0.5 * h * a[i];
-    history.previous[i] = q[i];
-    q[i] = next;
-  }
-  rememberProduced(history, s, h);
-  finishInPlace(system, s, h);
-  // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-6");  // the state and the time stay where they are
-}
-
-// Start-up probes: tell the lab whether PART-2 and PART-6 are still stubs.
+// Start-up probe: tells the lab whether PART-2 is still a stub.
 namespace {
-void probeSecondOrderMethods() {
+void probeSymplecticEuler() {
   HarmonicOscillator oscillator;
   Workspace w;
-  VerletHistory history;
   symplecticEulerStep(oscillator, 0.01, w);
-  verletStep(oscillator, 0.01, history, w);
 }
 }  // namespace
-PBA_EXERCISE_PROBE(probeSecondOrderMethods());
+PBA_EXERCISE_PROBE(probeSymplecticEuler());
 
 }  // namespace pba::ode
