@@ -173,7 +173,7 @@ struct CollisionStats {
   std::size_t heldBySafetyNet = 0;  ///< contacts that step 6 had to correct (0 for a correct PART-5)
   Real deepestPenetration = 0.0;    ///< [m] before projection
 };
-/// Steps 1–5 of the contact model for every free particle of radius `radius` [m] against every obstacle.
+/// Steps 1–6 of the contact model for every free particle of radius `radius` [m] against every obstacle.
 CollisionStats collideWithObstacles(Particles& p, const Obstacles& obstacles, Real radius,
                                     const ContactStep& step = {});
 
