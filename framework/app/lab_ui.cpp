@@ -18,7 +18,7 @@ constexpr float kWidgetWidthInFonts = 11.5f;  // slider width in font heights: l
 const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
 const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
 
-// Key, action: the help overlay's table (the same bindings in every lab, DESIGN.md §3).
+// Key, action: the help overlay's table (the same bindings in every lab, docs/architecture.md §3).
 const char* const kKeys[][2] = {
     {"Space / P", "pause or resume"},
     {"O", "single step (hold to repeat)"},

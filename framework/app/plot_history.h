@@ -1,5 +1,5 @@
 #pragma once
-// Live plots over time of any numeric scene metric (DESIGN.md §3): a ring buffer per metric,
+// Live plots over time of any numeric scene metric (docs/architecture.md §3): a ring buffer per metric,
 // filled once per displayed frame from Scene::metrics(). No GL, no ImGui: tested headless.
 #include <cstddef>
 #include <map>

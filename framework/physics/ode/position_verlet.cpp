@@ -1,6 +1,8 @@
 // Position Verlet (PART-6): a two-step recurrence on the positions, in place on the system's arrays.
 #include <algorithm>
 #include <cstddef>
+#include <span>
+#include <vector>
 
 #include "physics/exercises/not_implemented.h"
 #include "physics/ode/in_place_step.h"
@@ -13,12 +15,20 @@ using detail::InPlaceStep;
 using detail::startInPlace;
 
 namespace {
-// Position Verlet's memory of the state it produced, so that its next step notices a change from outside.
-[[maybe_unused]] void rememberProduced(VerletHistory& history, const InPlaceStep& s, Real h) {
-  history.lastQ.assign(s.q.begin(), s.q.end());
-  history.lastV.assign(s.v.begin(), s.v.end());
-  history.lastH = h;
-  history.valid = true;
+// PART-6's update of every coordinate (q, v and the remembered q(t − h)); true when it stepped.
+bool verletRecurrence([[maybe_unused]] std::span<Real> q, [[maybe_unused]] std::span<Real> v,
+                      [[maybe_unused]] std::span<const Real> a, [[maybe_unused]] std::vector<Real>& previous,
+                      [[maybe_unused]] Real h) {
+  // BEGIN SOLUTION
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const Real next = 2.0 * q[i] - previous[i] + h * h * a[i];
+    v[i] = (next - q[i]) / h + 0.5 * h * a[i];
+    previous[i] = q[i];
+    q[i] = next;
+  }
+  return true;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("PART-6", false, q, v, a, previous, h);  // the state stays
 }
 }  // namespace
 
@@ -35,17 +45,12 @@ void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistor
     history.previous.resize(n);
     for (std::size_t i = 0; i < n; ++i) history.previous[i] = q[i] - h * v[i] + 0.5 * h * h * a[i];
   }
-  // BEGIN SOLUTION
-  for (std::size_t i = 0; i < n; ++i) {
-    const Real next = 2.0 * q[i] - history.previous[i] + h * h * a[i];
-    v[i] = (next - q[i]) / h + 0.5 * h * a[i];
-    history.previous[i] = q[i];
-    q[i] = next;
-  }
-  rememberProduced(history, s, h);
+  if (!verletRecurrence(q, v, a, history.previous, h)) return;  // a stub: the state and clock stay
+  history.lastQ.assign(q.begin(), q.end());
+  history.lastV.assign(v.begin(), v.end());
+  history.lastH = h;
+  history.valid = true;
   finishInPlace(system, s, h);
-  // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-6");  // the state and the time stay where they are
 }
 
 // Start-up probe: tells the lab whether PART-6 is still a stub.
