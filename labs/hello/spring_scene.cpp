@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "app/scene_registry.h"
+#include "physics/core/basis.h"
 #include "physics/hello/ball.h"
 #include "physics/ode/integrators.h"
 
@@ -87,8 +88,8 @@ class SpringScene final : public app::Scene {
     const Real length = glm::length(axis);
     if (length < 1e-9) return;
     const Vec3 n = axis / length;
-    const Vec3 u = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1)));
-    const Vec3 v = glm::cross(n, u);
+    const Basis around = orthonormalBasis(n);
+    const Vec3 u = around.tangent, v = around.bitangent;
     constexpr int kSegments = kCoilTurns * 16;
     Vec3 previous = desc_.anchor;
     for (int i = 1; i <= kSegments; ++i) {

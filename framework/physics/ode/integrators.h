@@ -74,6 +74,8 @@ struct Workspace {
 // (2) Evaluate the derivative at the START of the step: k = f(s, t).
 // (3) Move along it: s(t + h) = s(t) + h k, component by component.
 // (4) Write the state back (setState) and advance the system's time to t + h.
+// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() does steps (1)–(2)
+// into w.s and w.k1, endGenericStep() step (4).)
 // *****
 void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
 
@@ -85,7 +87,7 @@ void midpointStep(OdeSystem& system, Real h, Workspace& w);
 //     k1 = f(s, t);  k2 = f(s + (h/2) k1, t + h/2);  k3 = f(s + (h/2) k2, t + h/2);  k4 = f(s + h k3, t + h).
 //     (The notes scale each k by h; here k is the slope itself, so h multiplies at the end.)
 // (2) Combine with Simpson-like weights: s(t + h) = s + h (k1 + 2 k2 + 2 k3 + k4) / 6.
-// (3) Write the state back and advance the time to t + h.
+// (3) Write the state back and advance the time to t + h (beginGenericStep/endGenericStep as in PART-1).
 // *****
 void rk4Step(OdeSystem& system, Real h, Workspace& w);
 
@@ -97,7 +99,7 @@ void rk4Step(OdeSystem& system, Real h, Workspace& w);
 // (3) Update the position with the NEW velocity: q ← q + h v.
 //     (Using the old velocity here would be explicit Euler, whose energy grows every step.)
 // (4) Tell the system (stateChanged) and advance the time to t + h.
-// (ode/in_place_step.h has two helpers the other in-place methods use: startInPlace() does the
+// (ode/step_helpers.h has two helpers the other in-place methods use: startInPlace() does the
 // bookkeeping and step (1), finishInPlace() step (4).)
 // *****
 void symplecticEulerStep(SecondOrderSystem& system, Real h, Workspace& w);

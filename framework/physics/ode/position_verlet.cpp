@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "physics/exercises/not_implemented.h"
-#include "physics/ode/in_place_step.h"
+#include "physics/ode/step_helpers.h"
 #include "physics/ode/integrators.h"
 #include "physics/ode/oscillator.h"
 
