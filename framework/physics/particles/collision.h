@@ -113,17 +113,18 @@ enum class ContactKind {
 };
 struct ContactApproach {
   ContactKind kind = ContactKind::None;
-  Real contactSpeed = 0.0;  ///< [m/s] ≥ 0, the inward normal speed at the contact time s_c
+  Real contactSpeed = 0.0;  ///< [m/s] > 0 for an impact: the inward normal speed at the contact time s_c
 };
 /// Steps 3–4 for a particle found `depth` ≥ 0 [m] below the surface, moving inward at `inwardSpeed` > 0
 /// [m/s] at the end of a step of `dt` [s] under the inward acceleration `inwardAcceleration` = max(0, −N·a)
-/// [m/s²]: s_c = √(s² − 2 a_n d); resting when s_c ≤ restingSpeed + a_n dt, else an impact at s_c.
+/// [m/s²]: s_c = √(s² − 2 a_n d); resting when s_c ≤ restingSpeed + a_n dt, else an impact at s_c. (The
+/// test compares squares, so that resting contact, a third of a settled fountain, needs no square root.)
 inline ContactApproach classifyApproach(Real depth, Real inwardSpeed, Real inwardAcceleration, Real restingSpeed,
                                         Real dt) {
-  const Real contactSpeed =
-      std::sqrt(std::max(0.0, inwardSpeed * inwardSpeed - 2.0 * inwardAcceleration * depth));
-  const bool resting = contactSpeed <= restingSpeed + inwardAcceleration * dt;
-  return {resting ? ContactKind::Resting : ContactKind::Impact, contactSpeed};
+  const Real contactSpeed2 = std::max(0.0, inwardSpeed * inwardSpeed - 2.0 * inwardAcceleration * depth);
+  const Real threshold = restingSpeed + inwardAcceleration * dt;
+  if (contactSpeed2 <= threshold * threshold) return {ContactKind::Resting, 0.0};
+  return {ContactKind::Impact, std::sqrt(contactSpeed2)};
 }
 
 /// What resolveContact did to one particle.
