@@ -1,6 +1,8 @@
-// IK lab, scene "comparison": the same chain solved by CCD, FABRIK, Jacobian transpose,
-// pseudo-inverse, DLS, SDLS, gradient descent (CMU asst4, Armijo backtracking) and L-BFGS toward the
-// same moving goal (IK slides, "Comparison"; Workbook §2.6).
+// IK lab, scene "comparison": the same chain solved by every iterative method of the library's
+// solver table (CCD, FABRIK, Jacobian transpose, pseudo-inverse, DLS, SDLS, gradient descent with
+// Armijo backtracking, L-BFGS) toward the same moving goal (IK slides, "Comparison"; Workbook §2.6).
+// Every method runs as published by default: no step clamp, no line search of the Jacobian methods,
+// no restarts (the panel's max_joint_step, jacobian_line_search and restarts turn them on).
 // Each method has its own colour; the chains stand side by side (or overlaid as ghosts on one base),
 // and a window on the right plots each method's residual after every iteration of the last solve
 // (log scale, one line per method) — the convergence curves of the methods, live. The metrics
@@ -21,14 +23,29 @@ struct Method {
   SolverKind kind;
   Color color;
 };
-constexpr std::array<Method, 8> kMethods = {{{SolverKind::Ccd, colors::kRed},
-                                             {SolverKind::Fabrik, colors::kGreen},
-                                             {SolverKind::JacobianTranspose, colors::kOrange},
-                                             {SolverKind::PseudoInverse, colors::kYellow},
-                                             {SolverKind::DampedLeastSquares, colors::kBlue},
-                                             {SolverKind::SelectivelyDamped, colors::kPurple},
-                                             {SolverKind::GradientDescent, colors::kTeal},
-                                             {SolverKind::Lbfgs, colors::kPink}}};
+// Each method's colour (the switch has no default: a new SolverKind must get one, or -Wswitch says so).
+Color colorOf(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::Analytic: return colors::kDark;
+    case SolverKind::Ccd: return colors::kRed;
+    case SolverKind::Fabrik: return colors::kGreen;
+    case SolverKind::JacobianTranspose: return colors::kOrange;
+    case SolverKind::PseudoInverse: return colors::kYellow;
+    case SolverKind::DampedLeastSquares: return colors::kBlue;
+    case SolverKind::SelectivelyDamped: return colors::kPurple;
+    case SolverKind::GradientDescent: return colors::kTeal;
+    case SolverKind::Lbfgs: return colors::kPink;
+  }
+  return colors::kDark;
+}
+// Every method of the solver table except the closed-form one (it applies to 1–2 links only).
+std::vector<Method> comparedMethods() {
+  std::vector<Method> methods;
+  for (const SolverInfo& s : solverTable())
+    if (s.kind != SolverKind::Analytic) methods.push_back({s.kind, colorOf(s.kind)});
+  return methods;
+}
+const std::vector<Method> kMethods = comparedMethods();
 constexpr Real kPlotFloor = -7.0;  // [log10 m] bottom of the residual plot
 constexpr Real kSpacing = 0.8;     // [chain lengths] between neighbouring bases
 // The runner's default camera yaw (graphics/camera.h, OrbitCamera::yaw): the row of chains, their
@@ -51,11 +68,16 @@ class ComparisonScene final : public app::Scene {
     params_.integer("max_iterations", &options_.maxIterations, 1, 1000, "", "Iteration cap per solve, for every method. Typical 60.");
     params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success tolerance, for every method. Typical 1e-4 m.").logarithmic();
     params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of DLS. Typical 0.05 m.");
+    params_.choiceEnum("line_search", &options_.lineSearch, lineSearchNames(),
+                       "Step length of gradient descent: backtracking (Armijo, the default here: golden-section costs "
+                       "~30 FK per step), golden, or fixed (asst4's plain method, gradient_step 0.2).");
+    declareMethodOptions(params_, options_, false);
     params_.flag("from_rest", &options_.fromRest,
                  "Start every solve from the rest pose (the plot then shows full convergence curves every frame).");
     params_.choiceEnum("path", &path_, {"figure8", "mouse"},
                        "How the goal moves: along a figure-8, or only where the mouse or the arrow keys put it.");
     params_.real("path_speed", &speed_, 0.0, 2.0, "Hz", "Laps per second of the goal's figure-8. Typical 0.25 Hz.");
+    options_.lineSearch = LineSearch::Backtracking;
     desc_.links = 8;
     desc_.axes = HingeAxes::Alternating;
     options_.fromRest = true;
@@ -147,7 +169,6 @@ class ComparisonScene final : public app::Scene {
       effectors[0].targetPosition = goal_;  // chains are solved at the origin and drawn at their base
       SolveOptions o = options_;
       o.solver = kMethods[m].kind;
-      o.lineSearch = LineSearch::Backtracking;  // gradient descent: golden section costs ~30 FK per step
       results_[m] = solve(rig_.skeleton, poses_[m], effectors, o);
     }
   }

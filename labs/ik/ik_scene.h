@@ -25,6 +25,12 @@ enum class TargetPath { Mouse, Circle, Figure8, RandomJumps };
 
 inline constexpr Real kTargetRadiusFactor = 2.2;  // goal sphere radius in bone radii
 
+/// Declares the options that depart from the methods as published (step clamp, line search of the
+/// Jacobian methods, stall-recovery restarts; SolveOptions) and the Jacobian's source, once for every
+/// IK scene. Their defaults are the published methods. With `jacobianOnly`, the Jacobian options
+/// show only while `options` selects a Jacobian-family method (they always load, save and parse).
+void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacobianOnly);
+
 class IkScene : public app::Scene {
  public:
   IkScene();
