@@ -28,6 +28,15 @@ Status applyParams(Scene& scene, const nlohmann::json& params, const std::string
   return Status::success();
 }
 
+Result<nlohmann::json> presetParams(const std::string& sceneName, const Preset& preset) {
+  const SceneEntry* entry = findScene(sceneName);
+  if (!entry) return Error{"preset " + preset.name + ": scene '" + sceneName + "' is not registered"};
+  nlohmann::json values = entry->create()->params().toJson();
+  if (!preset.params.is_object()) return Error{"preset " + preset.name + ": expected an object of parameters"};
+  for (const auto& [key, value] : preset.params.items()) values[key] = value;
+  return values;
+}
+
 Result<LoadedScene> parseSceneJson(const std::string& text, const std::string& path, const std::string& lab) {
   nlohmann::json doc;
   try {

@@ -8,7 +8,9 @@ namespace pba::app {
 namespace {
 
 constexpr float kRegularPixels = 16.0f;
-constexpr float kLecturePixels = 28.0f;
+// Lecture mode: large enough to read from the back of a hall at 1280×720, small enough that the
+// panel stays a narrow column beside the scene (the scene is what the hall looks at).
+constexpr float kLecturePixels = 24.0f;
 // Debian's fonts-dejavu-core; ./pba installs it. Without it ImGui's built-in font is used.
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 // The glyphs the labs' texts use, all in DejaVu Sans: ImGui loads only Latin-1 by default, and every
@@ -61,7 +63,7 @@ UiFonts loadUiFonts(float contentScale) {
     ImFontConfig config;
     config.SizePixels = 13.0f * fonts.contentScale;
     fonts.regular = io.Fonts->AddFontDefault(&config);
-    config.SizePixels = 24.0f * fonts.contentScale;
+    config.SizePixels = 20.0f * fonts.contentScale;
     fonts.lecture = io.Fonts->AddFontDefault(&config);
   }
   return fonts;
@@ -70,8 +72,10 @@ UiFonts loadUiFonts(float contentScale) {
 void applyUiStyle(UiFonts& fonts, bool lecture) {
   const int wanted = lecture ? 1 : 0;
   if (fonts.appliedStyle == wanted) return;
-  const float scale = fonts.contentScale * (lecture ? kLecturePixels / kRegularPixels : 1.0f);
+  // Paddings and spacings grow less than the font in lecture mode: the panel stays narrow.
+  const float scale = fonts.contentScale * (lecture ? 1.2f : 1.0f);
   ImGui::GetStyle() = makeStyle(scale, lecture);
+  ImGui::GetIO().FontDefault = lecture && fonts.lecture ? fonts.lecture : fonts.regular;
   fonts.appliedStyle = wanted;
 }
 
