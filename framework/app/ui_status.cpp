@@ -99,6 +99,7 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
           {"font_px", ImGui::GetFontSize()},
           {"camera", cameraJson(camera)},
           {"params", scene.params().toJson()},
+          {"metrics", scene.metrics()},
           {"presets", presets},
           {"handles", handles},
           {"picked", picked},

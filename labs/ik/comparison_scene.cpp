@@ -21,14 +21,17 @@ struct Method {
   SolverKind kind;
   Color color;
 };
+// The palette's yellow and pink read faintly on white panels and a projector: darker shades of them.
+constexpr Color kDarkGold{0.80f, 0.60f, 0.0f, 1.0f};
+constexpr Color kDeepPink{0.84f, 0.22f, 0.52f, 1.0f};
 constexpr std::array<Method, 8> kMethods = {{{SolverKind::Ccd, colors::kRed},
                                              {SolverKind::Fabrik, colors::kGreen},
                                              {SolverKind::JacobianTranspose, colors::kOrange},
-                                             {SolverKind::PseudoInverse, colors::kYellow},
+                                             {SolverKind::PseudoInverse, kDarkGold},
                                              {SolverKind::DampedLeastSquares, colors::kBlue},
                                              {SolverKind::SelectivelyDamped, colors::kPurple},
                                              {SolverKind::GradientDescent, colors::kTeal},
-                                             {SolverKind::Lbfgs, colors::kPink}}};
+                                             {SolverKind::Lbfgs, kDeepPink}}};
 constexpr Real kPlotFloor = -7.0;  // [log10 m] bottom of the residual plot
 constexpr Real kSpacing = 0.8;     // [chain lengths] between neighbouring bases
 // The runner's default camera yaw (graphics/camera.h, OrbitCamera::yaw): the row of chains, their
@@ -128,15 +131,29 @@ class ComparisonScene final : public app::Scene {
   void drag(int, const Vec3& target) override {
     dragging_ = true;
     goal_ = target - baseOf(0);
-    solveAll();
   }
   void release(int) override { dragging_ = false; }
   /// The arrow keys move the one goal of every chain; it then stays put (path: mouse).
   bool nudge(const Vec3& delta) override {
     goal_ += delta;
     path_ = ComparePath::Mouse;
-    solveAll();
     return true;
+  }
+  /// A drag or nudge while paused: every method solves toward the goal where it is now.
+  void refresh() override { solveAll(); }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, baseOf(0) + goal_}}; }
+  /// Each method's colour with its iterations, final residual and status: the key to the chains and
+  /// to the curves, kept on screen while Tab hides the panels.
+  std::vector<app::LegendEntry> legend() const override {
+    std::vector<app::LegendEntry> out;
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      char text[96];
+      std::snprintf(text, sizeof text, "%-6s %3d it  %.1e m  %s", solverName(kMethods[m].kind), results_[m].iterations,
+                    results_[m].positionResidual, statusName(results_[m].status));
+      out.push_back({kMethods[m].color, text});
+    }
+    out.push_back({colors::kDark, "goal (black ball): drag it"});
+    return out;
   }
   Real nudgeStep() const override { return 0.03 * desc_.totalLength; }
 
@@ -197,15 +214,10 @@ class ComparisonScene final : public app::Scene {
       const std::vector<Real>& hist = results_[m].residualHistory;
       std::vector<ImVec2> line;
       for (size_t i = 0; i < hist.size(); ++i) line.push_back(point(Real(i), hist[i]));
-      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 2.5f);
+      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 0.15f * font);
     }
     ImGui::Dummy(ImVec2(axis + width, height));
-    ImGui::TextDisabled("iterations 0 … %zu; dark line: tolerance %.0e m", longest - 1, options_.tolerance);
-    for (size_t m = 0; m < kMethods.size(); ++m) {
-      const Color& c = kMethods[m].color;
-      ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "■ %-6s %3d it  %.1e m  %s", solverName(kMethods[m].kind), results_[m].iterations,
-                         results_[m].positionResidual, statusName(results_[m].status));
-    }
+    ImGui::TextDisabled("iterations 0 … %zu; dark line: tolerance %.0e m; colours: see the legend", longest - 1, options_.tolerance);
     ImGui::End();
   }
 

@@ -117,6 +117,7 @@ class PendulumScene final : public app::Scene {
   }
   std::vector<std::string> defaultPlots() const override { return {"angle_rad", "energy"}; }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override { return app::pickSphere(ray, pivot_, 0.15, 0); }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, pivot_}}; }
   void drag(int, const Vec3& target) override {
     if (!byHand_) {
       // Take over from the script with the pivot's current position and velocity (no jump, no kick).
