@@ -28,12 +28,19 @@ void plotSeries(const std::string& name, const std::vector<double>& series, ImVe
   for (size_t i = 0; i < series.size(); ++i) {
     const double y = (series[i] - scale.offset - scale.lo) / (scale.hi - scale.lo);
     points.emplace_back(o.x + pad + (size.x - 2.0f * pad) * static_cast<float>(static_cast<double>(i) / n),
-                        o.y + size.y - pad - (size.y - 2.0f * pad - ImGui::GetFontSize()) * static_cast<float>(std::clamp(y, 0.0, 1.0)));
+                        o.y + size.y - pad - (size.y - 2.0f * pad - 1.8f * ImGui::GetFontSize()) * static_cast<float>(std::clamp(y, 0.0, 1.0)));
   }
   if (points.size() >= 2)
     draw->AddPolyline(points.data(), static_cast<int>(points.size()), ImGui::GetColorU32(ImGuiCol_PlotLines), 0, lecture ? 3.0f : 2.0f);
+  // The caption on two lines, so a narrow (lecture) plot never cuts the range off: "name = value" on
+  // top, the range (and the mean of a deviation plot) below it in a smaller size.
   const std::string caption = plotCaption(name, series, scale);
-  draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text), caption.c_str());
+  const size_t split = caption.find("  ");
+  const float font = ImGui::GetFontSize();
+  draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text), caption.substr(0, split).c_str());
+  if (split != std::string::npos)
+    draw->AddText(ImGui::GetFont(), 0.8f * font, ImVec2(o.x + pad, o.y + 0.5f * pad + font), ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                  caption.substr(split + 2).c_str());
   ImGui::Dummy(size);
 }
 
@@ -49,7 +56,7 @@ float plotPanel(LabSession& session, const UiState& ui) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   if (shown.empty()) return display.y;
   // Lecture mode: lower and narrower plots, the scene keeps the room.
-  const float height = std::min(ImGui::GetFontSize() * (ui.lecture ? 3.6f : 5.0f), display.y * 0.15f);
+  const float height = std::min(ImGui::GetFontSize() * (ui.lecture ? 4.0f : 5.0f), display.y * 0.16f);
   ImGui::SetNextWindowPos(ImVec2(display.x - kMargin, display.y - kMargin), ImGuiCond_Always, ImVec2(1, 1));
   // An explicit size: an auto-fitted axis set every frame would hide the window's contents.
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -72,6 +79,7 @@ void legendWindow(const Scene& scene, const UiState& ui) {
   ImGui::Begin("##legend", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  if (ui.lecture) ImGui::SetWindowFontScale(0.8f);  // still large on a projector; leaves the scene room
   for (const LegendEntry& e : entries) {
     ImGui::TextColored(ImVec4(e.color.r, e.color.g, e.color.b, 1.0f), "■");
     ImGui::SameLine();

@@ -125,12 +125,34 @@ void parameterWidgets(LabSession& session) {
   if (resetNeeded) session.reset();
 }
 
+/// Records the last item's rectangle under `name` when it is visible (UiState::widgets).
+void noteWidget(UiState& ui, const std::string& name) {
+  if (!ImGui::IsItemVisible()) return;
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  ui.widgets[name] = LabelBox{a.x, a.y, b.x, b.y};
+}
+
+/// A collapsing header whose rectangle is recorded as "header:<label>".
+bool header(UiState& ui, const char* label, ImGuiTreeNodeFlags flags = 0) {
+  const bool open = ImGui::CollapsingHeader(label, flags);
+  noteWidget(ui, std::string("header:") + label);
+  return open;
+}
+
+/// Puts the next button on this line when it fits in the panel (a narrow lecture panel wraps them).
+void sameLineIfFits(const char* nextLabel) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float next = ImGui::CalcTextSize(nextLabel).x + 2.0f * style.FramePadding.x;
+  const float right = ImGui::GetItemRectMax().x + style.ItemSpacing.x + next;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
 void simulationControls(LabSession& session) {
   SceneRunner& runner = session.runner();
   if (ImGui::Button(runner.paused() ? "Run (Space)" : "Pause (Space)")) session.togglePause();
-  ImGui::SameLine();
+  sameLineIfFits("Step (O)");
   if (ImGui::Button("Step (O)")) session.singleStep();
-  ImGui::SameLine();
+  sameLineIfFits("Reset (R)");
   if (ImGui::Button("Reset (R)")) session.reset();
 
   double dt = runner.dt();
@@ -197,10 +219,12 @@ void sceneFileControls(LabSession& session, UiState& ui) {
              "file is valid; Save writes the current parameters.");
   ImGui::SetNextItemWidth(-FLT_MIN);
   ImGui::InputText("##file", ui.scenePath, sizeof ui.scenePath);
+  noteWidget(ui, "file_field");
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextDisabled("%s", ui.scenePath);
   ImGui::PopTextWrapPos();
   if (ImGui::Button("Load")) session.loadSceneFile(ui.scenePath);
+  noteWidget(ui, "load_button");
   ImGui::SameLine();
   if (ImGui::Button("Save")) session.saveSceneFile(ui.scenePath);
   if (!session.fileError().empty()) {
@@ -252,26 +276,27 @@ void mainPanel(LabSession& session, UiState& ui) {
   ImGui::TextWrapped("%s", session.runner().scene().description().c_str());
   const std::vector<Preset> presets = session.runner().scene().presets();
   for (size_t i = 0; i < presets.size() && i < 9; ++i) {
-    if (i % 3 != 0) ImGui::SameLine();
     const std::string label = std::to_string(i + 1) + " " + presets[i].name;
+    if (i > 0) sameLineIfFits(label.c_str());
     if (ImGui::SmallButton(label.c_str())) session.applyPreset(static_cast<int>(i));
   }
-  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session);
-  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (header(ui, "Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session);
+  if (header(ui, "Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
     parameterWidgets(session);
     session.runner().scene().ui();
   }
-  if (ImGui::CollapsingHeader("Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
-  if (!session.exercises().empty() && ImGui::CollapsingHeader("Exercises", ImGuiTreeNodeFlags_DefaultOpen))
+  if (header(ui, "Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
+  if (!session.exercises().empty() && header(ui, "Exercises", ImGuiTreeNodeFlags_DefaultOpen))
     exerciseStatus(session);
-  if (ImGui::CollapsingHeader("Scene file")) sceneFileControls(session, ui);
-  if (ImGui::CollapsingHeader("View")) {
+  if (header(ui, "Scene file")) sceneFileControls(session, ui);
+  if (header(ui, "View")) {
     bool lecture = ui.lecture;  // the mode changes between frames, never inside this one
     if (ImGui::Checkbox("lecture mode (L)", &lecture)) ui.request(UiChange::ToggleLecture);
+    noteWidget(ui, "lecture_checkbox");
     if (ImGui::Button("Frame scene (F)")) ui.frameRequested = true;
-    ImGui::SameLine();
+    sameLineIfFits("Screenshot (F12)");
     if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
-    ImGui::SameLine();
+    sameLineIfFits("Help (F1)");
     if (ImGui::Button("Help (F1)")) ui.showHelp = !ui.showHelp;
   }
   if (!session.message().empty()) ImGui::TextDisabled("%s", session.message().c_str());
@@ -335,6 +360,7 @@ LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, floa
 }
 
 void drawLabUi(LabSession& session, UiState& ui) {
+  ui.widgets.clear();
   detail::banners(session);
   detail::noticeWindow(ui);
   if (ui.showHelp) helpOverlay(ui);

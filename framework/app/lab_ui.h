@@ -2,6 +2,7 @@
 // The lab's ImGui panels (DESIGN.md §3): simulation controls, scene description, parameters with
 // units and (?) tooltips, metrics, live plots, scene files, exercise status, the help overlay, the
 // instability guard's message, the not-implemented banner, the scene's legend and short notices.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,11 @@ namespace pba::app {
 /// carries it out between frames, so no frame is built under two readings of a mode (issue 15: L
 /// inside a frame unbalanced the lecture font's push and pop and aborted every lab).
 enum class UiChange { ToggleLecture, ToggleHideUi };
+
+/// A rectangle of the window [pixels, y down].
+struct LabelBox {
+  float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
+};
 
 struct UiState {
   bool showHelp = false;
@@ -30,6 +36,9 @@ struct UiState {
   std::string notice;        ///< short on-screen confirmation ("Screenshot saved: …")
   double noticeUntil = 0.0;  ///< [s, ImGui time] when the notice disappears
   std::string lastScreenshot;  ///< path of the last screenshot written
+  /// Where a few named widgets were drawn this frame, while visible ("header:View", "file_field",
+  /// "load_button", "lecture_checkbox"): the UI status reports them so tests can click them.
+  std::map<std::string, LabelBox> widgets;
 
   void request(UiChange change) { pending.push_back(change); }
   /// Applies the queued changes in order. Call between frames (before ImGui::NewFrame). A change of
@@ -52,9 +61,6 @@ float overlayWidthPixels(const UiState& ui);
 /// Where a label of `textSize` pixels anchored at `anchor` is drawn (its top-left corner): above and
 /// right of the anchor by `gap` pixels, so it never covers what it labels, moved inside `[x0, x1] ×
 /// [y0, y1]` (the free part of the window) when it would run off an edge.
-struct LabelBox {
-  float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
-};
 LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, float gap, const LabelBox& area);
 
 // Pieces of drawLabUi in lab_overlays.cpp (plots, legend, notice, banners).

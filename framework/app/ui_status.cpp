@@ -17,7 +17,7 @@ nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json cameraJson(const graphics::OrbitCamera& c) {
   return {{"yaw", c.yaw},          {"pitch", c.pitch},    {"distance", c.distance}, {"fov_y", c.fovY},
           {"target", vec(c.target)}, {"eye", vec(c.eye())}, {"right", vec(c.right())}, {"up", vec(c.up())},
-          {"forward", vec(c.forward())}};
+          {"forward", vec(c.forward())}, {"rotate_speed", c.rotateSpeed}, {"zoom_factor", c.zoomFactor}};
 }
 
 nlohmann::json pixelJson(const graphics::OrbitCamera& camera, const Vec3& p, const glm::vec2& viewport) {
@@ -80,6 +80,8 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
     if (f.picked && *f.picked == list[i].handle) picked = h;
     if (i < kMaxStatusHandles) handles.push_back(std::move(h));
   }
+  nlohmann::json widgets = nlohmann::json::object();
+  for (const auto& [name, r] : ui.widgets) widgets[name] = {r.x0, r.y0, r.x1, r.y1};
   const bool noticeShown = !ui.notice.empty() && ImGui::GetTime() < ui.noticeUntil;
   return {{"frame", f.frame},
           {"steps", runner.steps()},
@@ -105,6 +107,7 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
           {"picked", picked},
           {"legend_entries", scene.legend().size()},
           {"windows", windowsJson()},
+          {"widgets", widgets},
           {"scene_rect", sceneRectJson(camera, f)}};
 }
 
