@@ -85,12 +85,18 @@ void WindowInput::mouse(LabSession& session, graphics::OrbitCamera& camera, floa
       handle_ = hit->handle;
       planePoint_ = hit->point;
       planeNormal_ = -Vec3(camera.forward());
-      session.drag(hit->handle, hit->point);
+      // Where the scene reports the object's own position, the drag carries that point by the
+      // cursor's displacement: the object does not jump so that its centre sits under the grab point.
+      grabOffset_ = Vec3(0.0);
+      for (const DragHandle& d : scene.dragHandles())
+        if (d.handle == hit->handle) grabOffset_ = d.position - hit->point;
+      session.drag(hit->handle, hit->point + grabOffset_);
     }
   }
   if (handle_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     const Ray ray = toRay(camera.ray(cursor.x, cursor.y, w, h));
-    if (const std::optional<Real> t = intersectRayPlane(ray, planePoint_, planeNormal_)) session.drag(*handle_, pointAt(ray, *t));
+    if (const std::optional<Real> t = intersectRayPlane(ray, planePoint_, planeNormal_))
+      session.drag(*handle_, pointAt(ray, *t) + grabOffset_);
   }
   if (handle_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     session.release(*handle_);

@@ -39,6 +39,7 @@ class WindowInput {
   std::optional<int> lastHandle_;  ///< the one dragged before
   Vec3 planePoint_{0.0};       ///< the drag plane faces the camera through the picked point
   Vec3 planeNormal_{0.0, 0.0, 1.0};
+  Vec3 grabOffset_{0.0};  ///< [m] object position − grab point (Scene::dragHandles), kept while dragging
 };
 
 }  // namespace pba::app

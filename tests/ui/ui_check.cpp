@@ -333,7 +333,7 @@ void checkOrbitAndZoom(const std::string& exe, const std::string& work) {
 void checkBadSceneFile(const std::string& exe, const std::string& work) {
   const std::string bad = (fs::absolute(work) / "bad.json").string();
   LabWindow lab(exe, {}, work);
-  std::ofstream(bad) << "{ \"lab\": \"x\",, }\n";
+  std::ofstream(bad) << "{ \"lab\": \"x\",, }\n";  // a syntax error on line 1
   const std::string scene = lab.status()["scene"];
   lab.clickWidget("file_field", "Scene file");
   lab.key("ctrl+a");
@@ -364,16 +364,20 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
     const Rect view{0, 0, vecAt(s["viewport"], 0), vecAt(s["viewport"], 1)};
     expect(!s["scene_rect"].is_null(), list[index] + ": nothing of the scene in view");
     const Rect picture = Rect::fromJson(s["scene_rect"]).intersect(view);
-    double uncovered = picture.area(), largest = 0.0, panelWidth = 0.0;
+    double covered = 0.0, windowsArea = 0.0, largest = 0.0, panelWidth = 0.0;
     for (const auto& [name, r] : windows(s)) {
-      uncovered -= picture.intersect(r).area();
+      covered += picture.intersect(r).area();
+      windowsArea += r.intersect(view).area();
       largest = std::max(largest, r.intersect(view).area());
       if (name.find("###panel") != std::string::npos) panelWidth = r.width();
     }
-    std::printf("%-14s panel %.0f%% of the width, scene %.0f%% of the screen uncovered, largest window %.0f%%\n",
-                list[index].c_str(), 100 * panelWidth / view.width(), 100 * uncovered / view.area(), 100 * largest / view.area());
+    const double free = view.area() - windowsArea;
+    std::printf("%-14s panel %.0f%% of the width; free %.0f%% of the screen, largest window %.0f%%; %.0f%% of the scene covered\n",
+                list[index].c_str(), 100 * panelWidth / view.width(), 100 * free / view.area(), 100 * largest / view.area(),
+                100 * covered / std::max(picture.area(), 1.0));
     expect(panelWidth <= 0.30 * view.width(), list[index] + ": the lecture panel takes more than 30 % of the width");
-    expect(uncovered >= largest, list[index] + ": a window is larger than the uncovered scene");
+    expect(free >= 0.5 * view.area() && free >= largest, list[index] + ": the windows leave the scene less than half the screen");
+    expect(covered <= 0.15 * picture.area(), list[index] + ": windows cover more than 15 % of the scene's picture");
     if (keep) {
       lab.key("F12");
       lab.waitFor([&](const json& st) { return st["last_screenshot"].get<std::string>().find(list[index]) != std::string::npos; }, "F12");

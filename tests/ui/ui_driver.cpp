@@ -185,30 +185,41 @@ void LabWindow::drag(int button, double fromX, double fromY, double toX, double 
   frames(2);
 }
 
+/// True when `r` lies wholly inside one of the status's windows, clear of its bottom edge (a widget cut
+/// by the panel's edge is not safely clickable).
+bool wholeInWindow(const json& s, const Rect& r) {
+  for (const auto& [window, rect] : windows(s))
+    if (rect.contains(r.x0, r.y0) && rect.contains(r.x1, r.y1) && r.y1 < rect.y1 - 4) return true;
+  return false;
+}
+
+void LabWindow::click(double x, double y) {
+  move(x, y);
+  frames(2);
+  press(1);
+  frames(2);
+  release(1);
+  frames(2);
+}
+
 void LabWindow::clickWidget(const std::string& name, const std::string& headerToOpen) {
+  bool headerClicked = headerToOpen.empty();
   for (int attempt = 0; attempt < 60; ++attempt) {
     const json s = frames(1);
     const json& widgets = s.at("widgets");
-    if (widgets.contains(name)) {
+    if (widgets.contains(name) && wholeInWindow(s, Rect::fromJson(widgets[name]))) {
       const Rect r = Rect::fromJson(widgets[name]);
-      move(0.5 * (r.x0 + r.x1), 0.5 * (r.y0 + r.y1));
-      frames(2);
-      press(1);
-      frames(2);
-      release(1);
-      frames(2);
+      click(r.x0 + std::min(0.5 * r.width(), 0.5 * r.height()), 0.5 * (r.y0 + r.y1));  // a checkbox's box, a field's start
       return;
     }
-    if (!headerToOpen.empty() && widgets.contains("header:" + headerToOpen) && attempt % 4 == 0) {
-      const Rect h = Rect::fromJson(widgets["header:" + headerToOpen]);
-      move(h.x0 + 0.5 * h.height(), 0.5 * (h.y0 + h.y1));  // the arrow end: no drag of the window
-      frames(2);
-      press(1);
-      frames(2);
-      release(1);
+    const std::string header = "header:" + headerToOpen;
+    if (!headerClicked && !widgets.contains(name) && widgets.contains(header) && wholeInWindow(s, Rect::fromJson(widgets[header]))) {
+      const Rect h = Rect::fromJson(widgets[header]);
+      click(h.x0 + 0.5 * h.height(), 0.5 * (h.y0 + h.y1));  // on the arrow
+      headerClicked = true;
       continue;
     }
-    // Not on screen yet: scroll the control panel down with the wheel over it.
+    // Not (wholly) on screen yet: scroll the control panel down with the wheel over it.
     for (const auto& [window, rect] : windows(s))
       if (window.find("###panel") != std::string::npos) move(0.5 * (rect.x0 + rect.x1), 0.5 * (rect.y0 + rect.y1));
     frames(1);
