@@ -56,13 +56,13 @@ float plotPanel(LabSession& session, const UiState& ui) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   if (shown.empty()) return display.y;
   // Lecture mode: lower and narrower plots, the scene keeps the room.
-  const float height = std::min(ImGui::GetFontSize() * (ui.lecture ? 4.0f : 5.0f), display.y * 0.16f);
+  const float height = std::min(ImGui::GetFontSize() * (ui.lecture ? 3.6f : 5.0f), display.y * 0.16f);
   ImGui::SetNextWindowPos(ImVec2(display.x - kMargin, display.y - kMargin), ImGuiCond_Always, ImVec2(1, 1));
   // An explicit size: an auto-fitted axis set every frame would hide the window's contents.
   const ImGuiStyle& style = ImGui::GetStyle();
   const float windowHeight = static_cast<float>(shown.size()) * (height + style.ItemSpacing.y) +
                              ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y;
-  ImGui::SetNextWindowSize(ImVec2(display.x * (ui.lecture ? 0.30f : 0.38f), windowHeight), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(display.x * (ui.lecture ? 0.28f : 0.38f), windowHeight), ImGuiCond_Always);
   ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
   for (const auto& [name, series] : shown) plotSeries(name, series, ImVec2(ImGui::GetContentRegionAvail().x, height), ui.lecture);
   ImGui::End();
@@ -79,7 +79,6 @@ void legendWindow(const Scene& scene, const UiState& ui) {
   ImGui::Begin("##legend", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
-  if (ui.lecture) ImGui::SetWindowFontScale(0.8f);  // still large on a projector; leaves the scene room
   for (const LegendEntry& e : entries) {
     ImGui::TextColored(ImVec4(e.color.r, e.color.g, e.color.b, 1.0f), "■");
     ImGui::SameLine();

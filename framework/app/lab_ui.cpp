@@ -364,14 +364,24 @@ void drawLabUi(LabSession& session, UiState& ui) {
   detail::banners(session);
   detail::noticeWindow(ui);
   if (ui.showHelp) helpOverlay(ui);
+  // Beside the scene, lecture mode uses a smaller font: the legend and the scene's own window explain
+  // the picture without covering it. (Pushed and popped within this function: no mode changes here.)
+  const bool side = ui.lecture && ui.sideFont;
+  if (side) ImGui::PushFont(ui.sideFont);
   detail::legendWindow(session.runner().scene(), ui);
+  if (side) ImGui::PopFont();
   if (!ui.hideUi) {
     mainPanel(session, ui);
     const float plotsTop = detail::plotPanel(session, ui);
     Scene& scene = session.runner().scene();
     if (scene.wantsOverlay()) {
       const float right = ImGui::GetIO().DisplaySize.x - 8.0f;
-      scene.overlayUi(ScreenRect{right - overlayWidthPixels(ui) + 8.0f, 8.0f, right, plotsTop - 8.0f});
+      const ScreenRect column{right - overlayWidthPixels(ui) + 8.0f, 8.0f, right, plotsTop - 8.0f};
+      // The scene's window stays inside its column (it scrolls when its contents are taller).
+      ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(column.x1 - column.x0, column.y1 - column.y0));
+      if (side) ImGui::PushFont(ui.sideFont);
+      scene.overlayUi(column);
+      if (side) ImGui::PopFont();
     }
   }
   ui.relayout = false;

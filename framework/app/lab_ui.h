@@ -39,6 +39,8 @@ struct UiState {
   /// Where a few named widgets were drawn this frame, while visible ("header:View", "file_field",
   /// "load_button", "lecture_checkbox"): the UI status reports them so tests can click them.
   std::map<std::string, LabelBox> widgets;
+  /// Lecture mode's smaller font for the legend and a scene's own windows (set by the window).
+  ImFont* sideFont = nullptr;
 
   void request(UiChange change) { pending.push_back(change); }
   /// Applies the queued changes in order. Call between frames (before ImGui::NewFrame). A change of

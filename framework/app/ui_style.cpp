@@ -11,6 +11,7 @@ constexpr float kRegularPixels = 16.0f;
 // Lecture mode: large enough to read from the back of a hall at 1280×720, small enough that the
 // panel stays a narrow column beside the scene (the scene is what the hall looks at).
 constexpr float kLecturePixels = 24.0f;
+constexpr float kLectureSidePixels = 19.0f;  // legends and a scene's own windows beside the scene
 // Debian's fonts-dejavu-core; ./pba installs it. Without it ImGui's built-in font is used.
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 // The glyphs the labs' texts use, all in DejaVu Sans: ImGui loads only Latin-1 by default, and every
@@ -58,6 +59,7 @@ UiFonts loadUiFonts(float contentScale) {
   if (std::filesystem::exists(kFontPath)) {
     fonts.regular = io.Fonts->AddFontFromFileTTF(kFontPath, kRegularPixels * fonts.contentScale, nullptr, kGlyphRanges);
     fonts.lecture = io.Fonts->AddFontFromFileTTF(kFontPath, kLecturePixels * fonts.contentScale, nullptr, kGlyphRanges);
+    fonts.lectureSide = io.Fonts->AddFontFromFileTTF(kFontPath, kLectureSidePixels * fonts.contentScale, nullptr, kGlyphRanges);
   }
   if (!fonts.regular) {
     ImFontConfig config;
@@ -65,6 +67,8 @@ UiFonts loadUiFonts(float contentScale) {
     fonts.regular = io.Fonts->AddFontDefault(&config);
     config.SizePixels = 20.0f * fonts.contentScale;
     fonts.lecture = io.Fonts->AddFontDefault(&config);
+    config.SizePixels = 16.0f * fonts.contentScale;
+    fonts.lectureSide = io.Fonts->AddFontDefault(&config);
   }
   return fonts;
 }

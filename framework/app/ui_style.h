@@ -8,6 +8,7 @@ namespace pba::app {
 struct UiFonts {
   ImFont* regular = nullptr;  ///< DejaVu Sans at 16 px × content scale (ImGui's default font if missing)
   ImFont* lecture = nullptr;  ///< the same face at 24 px × content scale
+  ImFont* lectureSide = nullptr;  ///< 19 px × content scale: lecture mode's legend and scene windows
   float contentScale = 1.0f;
   int appliedStyle = -1;      ///< 0 normal, 1 lecture, -1 none yet
 };

@@ -153,6 +153,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   UiFonts fonts = loadUiFonts(window->contentScale().y);
 
   UiState ui;
+  ui.sideFont = fonts.lectureSide;
   ui.lecture = options.lecture || (!capture && session.settings().lecture);
   graphics::OrbitCamera camera;
   graphics::DebugRenderer debug;
