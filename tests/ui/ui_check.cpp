@@ -19,6 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 using Check = void (*)(const std::string& exe, const std::string& work);
 
+constexpr double kMaxCovered = 1.0 / 3.0;  // share of the scene's picture windows may cover in lecture mode
+
 bool near(double a, double b, double tolerance) { return std::abs(a - b) <= tolerance; }
 double vecAt(const json& v, int i) { return v.at(i).get<double>(); }
 bool hasWindow(const json& s, const std::string& part) {
@@ -213,10 +215,12 @@ void checkTab(const std::string& exe, const std::string& work) {
 
 double eyeHeight(const json& s) { return vecAt(s["camera"]["eye"], 1); }
 
-// Orbiting down past the horizon stops above the ground; zoomed out far, F frames the scene again.
+// Orbiting down past the horizon stops above the ground; zoomed out far, F frames the scene again with
+// the elevation the window started with (the scene's preferred view, else the default pitch).
 void checkFrame(const std::string& exe, const std::string& work) {
   LabWindow lab(exe, {}, work);
   const auto [x, y] = freePoint(lab.status());
+  const double initialPitch = lab.status()["camera"]["pitch"];  // the framing the window starts with
   double lowest = 1e30;
   lab.move(x, y);
   lab.frames(2);
@@ -236,7 +240,9 @@ void checkFrame(const std::string& exe, const std::string& work) {
   const long at = lab.status()["frame"];
   const json s = lab.waitFor([at](const json& st) { return st["frame"].get<long>() > at + 2; }, "F to frame");
   const double pitch = s["camera"]["pitch"];
-  expect(pitch >= 0.12 && pitch <= 1.35, "F left the pitch at " + std::to_string(pitch) + " rad");
+  expect(near(pitch, initialPitch, 1e-4), "F left the pitch at " + std::to_string(pitch) + " rad, not the framing's " +
+                                              std::to_string(initialPitch));
+  expect(eyeHeight(s) > 0.0, "after F the eye is below the ground");
   expect(!s["scene_rect"].is_null(), "after F nothing of the scene is in front of the camera");
   const Rect scene = Rect::fromJson(s["scene_rect"]);
   const Rect view{0, 0, vecAt(s["viewport"], 0), vecAt(s["viewport"], 1)};
@@ -351,10 +357,12 @@ void checkBadSceneFile(const std::string& exe, const std::string& work) {
 
 // Lecture mode keeps the scene the largest thing on screen in every scene: the panel is a narrow
 // column, the screen the windows leave free is larger than any of them (and at least 40 % of it),
-// and they cover at most 15 % of the scene's picture (the projection of what it draws).
+// and they cover at most a third of the scene's picture (the bounding rectangle of the projection of
+// what it draws, so its empty corners count too; the comparison scene's hidden chains were all of it).
 void checkLectureLayout(const std::string& exe, const std::string& work) {
   const std::vector<std::string> list = listScenes(exe);
   LabWindow lab(exe, {"--lecture"}, work);
+  pause(lab);  // every scene is then seen as its reset leaves it: the same picture on every run
   const bool keep = std::getenv("PBA_UI_SCREENSHOTS") != nullptr;  // for looking at them
   for (size_t index = 0; index < list.size(); ++index) {
     if (index > 0) {
@@ -379,7 +387,7 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
     expect(panelWidth <= 0.30 * view.width(), list[index] + ": the lecture panel takes more than 30 % of the width");
     expect(free >= largest, list[index] + ": a window is larger than the part of the screen left to the scene");
     expect(free >= 0.4 * view.area(), list[index] + ": the windows leave the scene less than 40 % of the screen");
-    expect(covered <= 0.15 * picture.area(), list[index] + ": windows cover more than 15 % of the scene's picture");
+    expect(covered <= kMaxCovered * picture.area(), list[index] + ": windows cover more than a third of the scene's picture");
     if (keep) {
       lab.key("F12");
       lab.waitFor([&](const json& st) { return st["last_screenshot"].get<std::string>().find(list[index]) != std::string::npos; }, "F12");
