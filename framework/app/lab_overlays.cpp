@@ -69,11 +69,10 @@ float plotPanel(LabSession& session, const UiState& ui) {
   return display.y - kMargin - windowHeight;
 }
 
-void legendWindow(const Scene& scene, const UiState& ui) {
+void legendWindow(const Scene& scene, float left) {
   const std::vector<LegendEntry> entries = scene.legend();
   if (entries.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float left = ui.hideUi ? kMargin : panelWidthPixels(ui) + kMargin;
   ImGui::SetNextWindowPos(ImVec2(left, display.y - kMargin), ImGuiCond_Always, ImVec2(0, 1));
   ImGui::SetNextWindowBgAlpha(0.85f);
   ImGui::Begin("##legend", nullptr,

@@ -367,8 +367,9 @@ void drawLabUi(LabSession& session, UiState& ui) {
   // Beside the scene, lecture mode uses a smaller font: the legend and the scene's own window explain
   // the picture without covering it. (Pushed and popped within this function: no mode changes here.)
   const bool side = ui.lecture && ui.sideFont;
+  const float legendLeft = ui.hideUi ? 8.0f : panelWidthPixels(ui) + 8.0f;  // in the panel's font
   if (side) ImGui::PushFont(ui.sideFont);
-  detail::legendWindow(session.runner().scene(), ui);
+  detail::legendWindow(session.runner().scene(), legendLeft);
   if (side) ImGui::PopFont();
   if (!ui.hideUi) {
     mainPanel(session, ui);

@@ -71,8 +71,9 @@ inline const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
 inline const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
 /// Draws the plot window in the lower right; returns its top [pixels] (the display height when none).
 float plotPanel(LabSession& session, const UiState& ui);
-/// The scene's legend, docked in the lower left of the free area; kept while Tab hides the panels.
-void legendWindow(const Scene& scene, const UiState& ui);
+/// The scene's legend, its left edge at `left` [pixels] (right of the panel), at the bottom; drawn
+/// also while Tab hides the panels.
+void legendWindow(const Scene& scene, float left);
 void noticeWindow(const UiState& ui);
 void banners(LabSession& session);
 }  // namespace detail

@@ -356,7 +356,7 @@ void checkBadSceneFile(const std::string& exe, const std::string& work) {
 }
 
 // Lecture mode keeps the scene the largest thing on screen in every scene: the panel is a narrow
-// column, the screen the windows leave free is larger than any of them (and at least 40 % of it),
+// column, the windows do not overlap one another, the screen the windows leave free is larger than any of them (and at least 40 % of it),
 // and they cover at most a third of the scene's picture (the bounding rectangle of the projection of
 // what it draws, so its empty corners count too; the comparison scene's hidden chains were all of it).
 void checkLectureLayout(const std::string& exe, const std::string& work) {
@@ -381,6 +381,12 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
       if (name.find("###panel") != std::string::npos) panelWidth = r.width();
     }
     const double free = view.area() - windowsArea;
+    // Docked, not stacked: no window hides part of another (the legend under the panel did).
+    const auto all = windows(s);
+    for (size_t a = 0; a < all.size(); ++a)
+      for (size_t b = a + 1; b < all.size(); ++b)
+        expect(all[a].second.intersect(all[b].second).area() <= 0.01 * std::min(all[a].second.area(), all[b].second.area()),
+               list[index] + ": the windows " + all[a].first + " and " + all[b].first + " overlap");
     std::printf("%-14s panel %.0f%% of the width; free %.0f%% of the screen, largest window %.0f%%; %.0f%% of the scene covered\n",
                 list[index].c_str(), 100 * panelWidth / view.width(), 100 * free / view.area(), 100 * largest / view.area(),
                 100 * covered / std::max(picture.area(), 1.0));

@@ -67,7 +67,7 @@ class LabWindow {
   bool running();
   const std::string& workDir() const { return work_; }
 
-  static constexpr double kWaitSeconds = 30.0;  // [s] generous: llvmpipe on two shared cores
+  static constexpr double kWaitSeconds = 60.0;  // [s] generous: llvmpipe on two shared cores, 1080p
 
  private:
   void xdotool(const std::string& arguments);
