@@ -153,7 +153,6 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   UiFonts fonts = loadUiFonts(window->contentScale().y);
 
   UiState ui;
-  ui.sideFont = fonts.lectureSide;
   ui.lecture = options.lecture || (!capture && session.settings().lecture);
   graphics::OrbitCamera camera;
   graphics::DebugRenderer debug;
@@ -178,7 +177,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     const glm::ivec2 ws = window->windowSize();
     // Between frames: the modes asked for during the last frame, then the style and font they imply.
     ui.applyPending();
-    applyUiStyle(fonts, ui.lecture);
+    ui.sideFont = applyUiStyle(fonts, ui.lecture, static_cast<float>(ws.y));
     renderer->lectureMode(ui.lecture);
 
     ImGui_ImplOpenGL3_NewFrame();
