@@ -1,4 +1,4 @@
-// Particles benchmarks (issue 4, DESIGN.md §7): particle updates per second per core of the fused
+// Particles benchmarks (issue 4, docs/architecture.md §8): particle updates per second per core of the fused
 // gravity + drag + plane kernel at 10⁴ and 10⁶ particles beside a STREAM-like triad (the memory
 // bandwidth limit, measured in the same run); cost per particle of spatial-hash pair collisions at 10⁵,
 // per sweep and through a neighbour list; one fountain pool step at 10⁶; ns per degree of freedom per

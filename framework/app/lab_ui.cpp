@@ -24,7 +24,7 @@ constexpr float kWidgetShare = 0.56f;       // at most this share of the panel's
 constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.27f;
 constexpr float kOverlayShare = 0.34f, kLectureOverlayShare = 0.26f;
 
-// Key, action: the help overlay's table (the same bindings in every lab, DESIGN.md §3).
+// Key, action: the help overlay's table (the same bindings in every lab, docs/architecture.md §3).
 const char* const kKeys[][2] = {
     {"Space / P", "pause or resume"},
     {"O", "single step (hold to repeat)"},

@@ -1,5 +1,5 @@
 #pragma once
-// The lab's ImGui panels (DESIGN.md §3): simulation controls, scene description, parameters with
+// The lab's ImGui panels (docs/architecture.md §3): simulation controls, scene description, parameters with
 // units and (?) tooltips, metrics, live plots, scene files, exercise status, the help overlay, the
 // instability guard's message, the not-implemented banner, the scene's legend and short notices.
 #include <map>

@@ -1,5 +1,5 @@
 #pragma once
-// The scene interface every lab implements (DESIGN.md §3). A scene owns its simulation state and
+// The scene interface every lab implements (docs/architecture.md §3). A scene owns its simulation state and
 // steps it with a fixed dt handed in by the runner (never wall-clock time). The same object runs
 // headless (tests, benchmarks, --headless) and in the window.
 #include <cstdint>

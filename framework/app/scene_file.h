@@ -1,5 +1,5 @@
 #pragma once
-// Scene files (DESIGN.md §4): JSON under resources/scenes/<lab>/, round-trip exact.
+// Scene files (docs/architecture.md §4): JSON under resources/scenes/<lab>/, round-trip exact.
 //   { "lab": "hello", "scene": "drop", "dt": 0.008333, "params": { "restitution": 0.8, ... } }
 // "dt" is optional. Unknown keys are errors, so that a typo never goes unnoticed.
 #include <memory>

@@ -1,5 +1,5 @@
 #pragma once
-// Keys and mouse of DESIGN.md §3, the same in every lab. Reads ImGui's input state (ImGui 1.86:
+// Keys and mouse of docs/architecture.md §3, the same in every lab. Reads ImGui's input state (ImGui 1.86:
 // keys are indexed by GLFW key codes) so that typing in a text field never triggers a lab key.
 #include <optional>
 #include <vector>
