@@ -1,13 +1,8 @@
 #pragma once
-<<<<<<< HEAD
-// Live plots over time of any numeric scene metric (DESIGN.md §3): a ring buffer per metric, filled
+// Live plots over time of any numeric scene metric (docs/architecture.md §3): a ring buffer per metric, filled
 // once per displayed frame from Scene::metrics(), and the scale and caption of its plot. Samples are
 // doubles: in floats a conserved energy of 0.5 J drew a staircase of rounding steps. No GL, no
 // ImGui: tested headless.
-=======
-// Live plots over time of any numeric scene metric (docs/architecture.md §3): a ring buffer per metric,
-// filled once per displayed frame from Scene::metrics(). No GL, no ImGui: tested headless.
->>>>>>> main
 #include <cstddef>
 #include <map>
 #include <string>
