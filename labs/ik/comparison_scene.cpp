@@ -21,12 +21,14 @@ struct Method {
   SolverKind kind;
   Color color;
 };
-// The palette's yellow and pink read faintly on white panels and a projector: darker shades of them.
-constexpr Color kDarkGold{0.80f, 0.60f, 0.0f, 1.0f};
+// The palette's yellow, orange and pink read faintly on white panels and a projector: darker shades,
+// each at least 3:1 in contrast against white (tests/labs/ik_comparison_legend_test.cpp).
+constexpr Color kDarkGold{0.72f, 0.52f, 0.0f, 1.0f};
+constexpr Color kDeepOrange{0.90f, 0.45f, 0.05f, 1.0f};
 constexpr Color kDeepPink{0.84f, 0.22f, 0.52f, 1.0f};
 constexpr std::array<Method, 8> kMethods = {{{SolverKind::Ccd, colors::kRed},
                                              {SolverKind::Fabrik, colors::kGreen},
-                                             {SolverKind::JacobianTranspose, colors::kOrange},
+                                             {SolverKind::JacobianTranspose, kDeepOrange},
                                              {SolverKind::PseudoInverse, kDarkGold},
                                              {SolverKind::DampedLeastSquares, colors::kBlue},
                                              {SolverKind::SelectivelyDamped, colors::kPurple},
@@ -184,7 +186,7 @@ class ComparisonScene final : public app::Scene {
     ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowSize(ImVec2(column.x1 - column.x0, 0.0f), ImGuiCond_Always);
     ImGui::Begin("Residual per iteration (log scale)", nullptr,
-                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
     size_t longest = 2;
     Real top = -1.0;
     for (const SolveResult& r : results_) {
@@ -217,7 +219,7 @@ class ComparisonScene final : public app::Scene {
       if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 0.15f * font);
     }
     ImGui::Dummy(ImVec2(axis + width, height));
-    ImGui::TextDisabled("iterations 0 … %zu; dark line: tolerance %.0e m; colours: see the legend", longest - 1, options_.tolerance);
+    ImGui::TextDisabled("0 … %zu iterations; black: tolerance", longest - 1);
     ImGui::End();
   }
 

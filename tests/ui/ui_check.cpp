@@ -150,8 +150,9 @@ void checkScreenshot(const std::string& exe, const std::string& work) {
   lab.key("F12");
   const json s = lab.waitFor([](const json& st) { return !st["last_screenshot"].get<std::string>().empty(); }, "F12 to save");
   const std::string file = s["last_screenshot"];
-  const json shown = lab.waitFor([&](const json& st) { return st["notice"].get<std::string>().find(file) != std::string::npos; },
-                                 "the notice naming " + file);
+  const json shown = lab.waitFor(
+      [&](const json& st) { return st["notice"].get<std::string>().find(file) != std::string::npos && hasWindow(st, "##notice"); },
+      "the notice naming " + file);
   std::ifstream png(fs::path(work) / file, std::ios::binary);
   char magic[8] = {};
   png.read(magic, 8);
@@ -335,13 +336,23 @@ void checkOrbitAndZoom(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
-// A bad scene file loaded from the panel shows its error and the running scene keeps running.
+// A bad scene file loaded from the panel shows its error and the running scene keeps running; the
+// path field spans the panel.
 void checkBadSceneFile(const std::string& exe, const std::string& work) {
   const std::string bad = (fs::absolute(work) / "bad.json").string();
   LabWindow lab(exe, {}, work);
   std::ofstream(bad) << "{ \"lab\": \"x\",, }\n";  // a syntax error on line 1
   const std::string scene = lab.status()["scene"];
   lab.clickWidget("file_field", "Scene file");
+  {  // the path field spans the panel, so a long path can be read
+    const json st = lab.frames(1);
+    double panelWidth = 0.0;
+    for (const auto& [name, r] : windows(st))
+      if (name.find("###panel") != std::string::npos) panelWidth = r.width();
+    const Rect field = Rect::fromJson(st["widgets"]["file_field"]);
+    expect(field.width() >= 0.8 * panelWidth, "the scene file field is " + std::to_string(field.width()) + " px of a " +
+                                                  std::to_string(panelWidth) + " px panel");
+  }
   lab.key("ctrl+a");
   lab.type(bad);
   lab.frames(2);
