@@ -87,7 +87,7 @@ void legendWindow(const Scene& scene, float left) {
 }
 
 void noticeWindow(const UiState& ui) {
-  if (ui.notice.empty() || ImGui::GetTime() >= ui.noticeUntil) return;
+  if (!ui.noticeVisible(ImGui::GetTime())) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, display.y * 0.12f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowBgAlpha(0.92f);

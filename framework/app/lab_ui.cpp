@@ -350,6 +350,7 @@ void UiState::applyPending() {
 void UiState::showNotice(std::string text, double now, double seconds) {
   notice = std::move(text);
   noticeUntil = now + seconds;
+  noticeFrames = kNoticeFrames;
 }
 
 LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, float gap, const LabelBox& area) {
@@ -363,6 +364,7 @@ void drawLabUi(LabSession& session, UiState& ui) {
   ui.widgets.clear();
   detail::banners(session);
   detail::noticeWindow(ui);
+  if (ui.noticeFrames > 0) --ui.noticeFrames;
   if (ui.showHelp) helpOverlay(ui);
   // Beside the scene, lecture mode uses a smaller font: the legend and the scene's own window explain
   // the picture without covering it. (Pushed and popped within this function: no mode changes here.)

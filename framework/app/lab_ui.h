@@ -35,6 +35,7 @@ struct UiState {
   std::vector<UiChange> pending;  ///< asked for during this frame, applied before the next one
   std::string notice;        ///< short on-screen confirmation ("Screenshot saved: …")
   double noticeUntil = 0.0;  ///< [s, ImGui time] when the notice disappears
+  int noticeFrames = 0;      ///< frames it is still shown whatever the time (a slow frame rate still sees it)
   std::string lastScreenshot;  ///< path of the last screenshot written
   /// Where a few named widgets were drawn this frame, while visible ("header:View", "file_field",
   /// "load_button", "lecture_checkbox"): the UI status reports them so tests can click them.
@@ -46,9 +47,12 @@ struct UiState {
   /// Applies the queued changes in order. Call between frames (before ImGui::NewFrame). A change of
   /// lecture mode also asks for a relayout and a new framing of the camera.
   void applyPending();
-  /// Shows `text` on screen until `now + seconds` [s].
+  /// Shows `text` on screen until `now + seconds` [s], and for at least kNoticeFrames frames.
   void showNotice(std::string text, double now, double seconds = kNoticeSeconds);
+  /// True while the notice is on screen at ImGui time `now` [s].
+  bool noticeVisible(double now) const { return !notice.empty() && (now < noticeUntil || noticeFrames > 0); }
   static constexpr double kNoticeSeconds = 2.0;
+  static constexpr int kNoticeFrames = 3;
 };
 
 /// Draws every panel for this frame. Call between ImGui::NewFrame() and ImGui::Render().

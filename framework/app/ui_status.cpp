@@ -82,7 +82,7 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
   }
   nlohmann::json widgets = nlohmann::json::object();
   for (const auto& [name, r] : ui.widgets) widgets[name] = {r.x0, r.y0, r.x1, r.y1};
-  const bool noticeShown = !ui.notice.empty() && ImGui::GetTime() < ui.noticeUntil;
+  const bool noticeShown = ui.noticeVisible(ImGui::GetTime());
   return {{"frame", f.frame},
           {"steps", runner.steps()},
           {"sim_time_s", runner.simTime()},

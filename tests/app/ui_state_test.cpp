@@ -35,6 +35,17 @@ TEST(UiState, ANoticeLastsItsTimeThenIsGone) {
   ui.showNotice("Screenshot saved: a.png", 10.0);
   EXPECT_EQ(ui.notice, "Screenshot saved: a.png");
   EXPECT_DOUBLE_EQ(ui.noticeUntil, 10.0 + UiState::kNoticeSeconds);
+  EXPECT_TRUE(ui.noticeVisible(11.0));
+  ui.noticeFrames = 0;
+  EXPECT_FALSE(ui.noticeVisible(12.5));
+}
+
+TEST(UiState, ANoticeShowsForSomeFramesEvenWhenAFrameTakesLongerThanItsTime) {
+  UiState ui;
+  ui.showNotice("Screenshot saved: a.png", 10.0);
+  EXPECT_TRUE(ui.noticeVisible(15.0)) << "a 5 s frame: the notice is still seen";
+  ui.noticeFrames = 0;  // its frames drawn
+  EXPECT_FALSE(ui.noticeVisible(15.0));
 }
 
 TEST(PlaceLabel, ALabelSitsAboveAndRightOfItsAnchorSoItCoversNothingItLabels) {
