@@ -252,17 +252,40 @@ void checkFrame(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
-/// Walks the scenes with ] until one has a draggable object on screen, away from the panels.
+/// The draggable objects of a status that are on screen, away from the panels by `margin` pixels.
+std::vector<json> freeHandles(const json& s, double margin) {
+  std::vector<json> out;
+  for (const json& h : s["handles"])
+    if (h["visible"] == true && isFree(s, vecAt(h["pixel"], 0), vecAt(h["pixel"], 1), margin)) out.push_back(h);
+  return out;
+}
+
+/// Walks every scene with ] and returns to the one with the most draggable objects on screen (the
+/// IK tree's goals, the rope's particles, the hello ball): a scene built around dragging. Returns the
+/// first of those objects, away from the panels.
 json sceneWithHandle(LabWindow& lab, const std::vector<std::string>& list, double margin) {
+  std::string best;
+  size_t most = 0;
   for (size_t i = 0; i < list.size(); ++i) {
     const json s = lab.frames(3);
-    for (const json& h : s["handles"])
-      if (h["visible"] == true && isFree(s, vecAt(h["pixel"], 0), vecAt(h["pixel"], 1), margin)) return h;
+    const size_t n = freeHandles(s, margin).size();
+    if (n > most) {
+      most = n;
+      best = s["scene"];
+    }
     const std::string current = s["scene"];
     lab.key("bracketright");
     lab.waitFor([&](const json& st) { return st["scene"] != current; }, "] to switch scenes");
   }
-  throw CheckFailed("no scene of this lab shows a draggable object away from the panels");
+  expect(most > 0, "no scene of this lab shows a draggable object away from the panels");
+  for (size_t i = 0; i < list.size() && lab.status()["scene"] != best; ++i) {
+    const std::string current = lab.status()["scene"];
+    lab.key("bracketright");
+    lab.waitFor([&](const json& st) { return st["scene"] != current; }, "] to switch scenes");
+  }
+  const std::vector<json> handles = freeHandles(lab.frames(3), margin);
+  expect(!handles.empty(), best + ": its draggable objects left the screen");
+  return handles.front();
 }
 
 // A left drag moves the picked object by the dragged distance: dx right and dy down on screen move it
