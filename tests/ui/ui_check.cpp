@@ -294,10 +294,11 @@ json sceneWithHandle(LabWindow& lab, const std::vector<std::string>& list, doubl
 void checkDrag(const std::string& exe, const std::string& work) {
   LabWindow lab(exe, {}, work);
   pause(lab);  // a paused scene: only the drag moves anything
-  const double dx = 60, dy = -45;
-  const json h = sceneWithHandle(lab, listScenes(exe), 80);
+  const json h = sceneWithHandle(lab, listScenes(exe), 30);
   const json s0 = lab.status();
   const double px = vecAt(h["pixel"], 0), py = vecAt(h["pixel"], 1);
+  // 60 px across and 45 px up or down, toward the middle of the window (away from its edges).
+  const double dx = px < 0.5 * vecAt(s0["viewport"], 0) ? 60 : -60, dy = py < 0.5 * vecAt(s0["viewport"], 1) ? 45 : -45;
   lab.move(px, py);
   lab.frames(2);
   lab.press(1);
