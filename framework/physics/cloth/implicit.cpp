@@ -1,0 +1,148 @@
+#include "physics/cloth/implicit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "physics/exercises/not_implemented.h"
+
+namespace pba::cloth {
+namespace {
+
+constexpr Real kContactTolerance = 1e-4;  // [m] a particle this close beyond the margin counts as touching
+
+/// Colours the particles so that no spring joins two of one colour (for the probed preconditioner).
+void refreshColouring(const Cloth& cloth, ImplicitWorkspace& w) {
+  if (w.colouredSprings == cloth.springs.size() && w.colour.size() == cloth.size()) return;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(cloth.springs.size());
+  for (const Link& s : cloth.springs) pairs.emplace_back(s.i, s.j);
+  w.colour = colourParticles(cloth.size(), pairs, &w.colours);
+  w.colouredSprings = cloth.springs.size();
+}
+
+/// Filter and prescribed velocities: pins fixed at their velocity, touching particles moving into a
+/// collider constrained along its normal to the collider's normal velocity.
+std::size_t buildFilter(const Cloth& cloth, std::span<const Collider> colliders, const ImplicitSettings& settings,
+                        Real h, ImplicitWorkspace& w) {
+  const std::size_t n = cloth.size();
+  w.filter.assign(n, ParticleFilter{});
+  w.z.assign(n, Vec3(0.0));
+  w.released.resize(n, 0);
+  for (const Pin& p : cloth.pins) {
+    w.filter[p.particle].kind = ParticleFilter::Kind::Fixed;
+    w.z[p.particle] = (p.target - cloth.position[p.particle]) / h;
+  }
+  std::size_t contacts = 0;
+  if (!settings.contactConstraints) return contacts;
+  const Real margin = 0.5 * cloth.material.thickness;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (w.filter[i].kind != ParticleFilter::Kind::Free) continue;
+    if (w.released[i]) {
+      w.released[i] = 0;
+      continue;
+    }
+    for (const Collider& c : colliders) {
+      const SurfacePoint s = closestSurface(c, cloth.position[i]);
+      if (s.distance > margin + kContactTolerance || glm::dot(cloth.velocity[i] - c.velocity, s.normal) > 0.0) continue;
+      w.filter[i] = {ParticleFilter::Kind::OneDirection, s.normal, Vec3(0.0)};
+      w.z[i] = glm::dot(c.velocity, s.normal) * s.normal;
+      ++contacts;
+      break;
+    }
+  }
+  return contacts;
+}
+
+/// After the solve: the constraint impulse of each contact is (A v₁ − b) along its normal. A pulling one
+/// is released for the next step; a pushing one bounds the tangential velocity change by μ × impulse / m.
+void contactImpulses(const Cloth& cloth, std::span<const Collider> colliders, const ParticleOperator& A,
+                     ImplicitWorkspace& w) {
+  A(w.velocity, w.probeOut);
+  for (std::size_t i = 0; i < cloth.size(); ++i) {
+    if (w.filter[i].kind != ParticleFilter::Kind::OneDirection) continue;
+    const Vec3 n = w.filter[i].p;
+    const Real impulse = glm::dot(w.probeOut[i] - w.b[i], n);  // [N·s]
+    if (impulse < 0.0) {
+      w.released[i] = 1;
+      continue;
+    }
+    // The collider touched (the one whose normal was used): friction against its motion.
+    const Collider* touched = nullptr;
+    for (const Collider& c : colliders) {
+      if (glm::dot(closestSurface(c, cloth.position[i]).normal, n) > 1.0 - 1e-12) {
+        touched = &c;
+        break;
+      }
+    }
+    if (touched == nullptr) continue;
+    const Vec3 relative = w.velocity[i] - touched->velocity;
+    const Vec3 tangential = relative - glm::dot(relative, n) * n;
+    const Real slip = glm::length(tangential);
+    const Real bound = touched->friction * impulse / cloth.mass[i];
+    w.velocity[i] -= slip <= bound ? tangential : tangential * (bound / slip);
+  }
+}
+
+}  // namespace
+
+void implicitSystemProduct([[maybe_unused]] std::span<const SpringJacobian> springs,
+                           [[maybe_unused]] std::span<const Real> mass, [[maybe_unused]] Real massDamping,
+                           [[maybe_unused]] Real h, [[maybe_unused]] std::span<const Vec3> y, std::span<Vec3> out) {
+  // BEGIN SOLUTION
+  const Real massFactor = 1.0 + h * massDamping;
+  for (std::size_t i = 0; i < y.size(); ++i) out[i] = massFactor * mass[i] * y[i];
+  const Real h2 = h * h;
+  for (const SpringJacobian& s : springs) {
+    const Vec3 dy = y[s.j] - y[s.i];
+    const Real along = glm::dot(s.direction, dy);
+    const Vec3 t = h2 * (s.lateral * dy + (s.stiffness - s.lateral) * along * s.direction) + h * s.damping * along * s.direction;
+    out[s.i] -= t;
+    out[s.j] += t;
+  }
+  // END SOLUTION
+  // STUB: std::fill(out.begin(), out.end(), Vec3(0.0));
+  // STUB: exercises::markNotImplemented("CLOTH-5");
+}
+
+ImplicitStats implicitStep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
+                           const ImplicitSettings& settings, Real h, Real t, ImplicitWorkspace& w) {
+  const std::size_t n = cloth.size();
+  springJacobians(cloth.springs, cloth.material, cloth.position, settings.jacobian, w.jacobians);
+  const ParticleOperator A = [&](std::span<const Vec3> y, std::span<Vec3> out) {
+    implicitSystemProduct(w.jacobians, cloth.mass, env.massDamping, h, y, out);
+  };
+
+  // b = M v₀ + h f_undamped(x₀, v₀): elastic springs, gravity, aerodynamics (damping lives in A).
+  ClothEnvironment undamped = env;
+  undamped.massDamping = 0.0;
+  w.force.assign(n, Vec3(0.0));
+  accumulateSpringForces(cloth.springs, cloth.material, cloth.position, cloth.velocity, false, w.force);
+  accumulateExternalForces(cloth, undamped, t, cloth.position, cloth.velocity, w.force);
+  w.b.resize(n);
+  for (std::size_t i = 0; i < n; ++i) w.b[i] = cloth.mass[i] * cloth.velocity[i] + h * w.force[i];
+
+  ImplicitStats stats;
+  stats.contactConstraints = buildFilter(cloth, colliders, settings, h, w);
+  if (settings.preconditioner == Preconditioner::BlockJacobi) {
+    refreshColouring(cloth, w);
+    probedBlockJacobi(A, w.colour, w.colours, w.preconditioner, w.probeIn, w.probeOut);
+  } else {
+    w.preconditioner.clear();
+  }
+  w.velocity = cloth.velocity;  // warm start: v₁ ≈ v₀
+  stats.cg = filteredPcg(A, w.b, w.filter, w.z, w.preconditioner, settings.cg, w.velocity, w.pcg);
+  if (stats.contactConstraints > 0) contactImpulses(cloth, colliders, A, w);
+
+  for (std::size_t i = 0; i < n; ++i) {
+    cloth.velocity[i] = w.velocity[i];
+    cloth.position[i] += h * w.velocity[i];
+  }
+  for (const Pin& p : cloth.pins) cloth.position[p.particle] = p.target;
+  return stats;
+}
+
+// Start-up probe: tells the lab whether CLOTH-5 is still a stub.
+PBA_EXERCISE_PROBE(implicitSystemProduct({}, {}, 0.0, 0.01, {}, {}));
+
+}  // namespace pba::cloth
