@@ -1,21 +1,36 @@
 #!/usr/bin/env bash
-# The ctest check of DESIGN.md §5: in a freshly generated student release the tree builds, every
-# exercise test fails, every other test passes, and ./pba grade reports failures.
-# Usage: tools/check_student_release.sh SOURCE_ROOT WORK_DIR
+# The exercise checks of DESIGN.md §5 (ctest exercises.student-release), on two generated trees:
+#  1. the student release: it builds with -Werror, every exercise test fails, every other test passes,
+#     ./pba grade reports failures, and no solution's lines appear anywhere in it (check_solution_leaks.py);
+#  2. the switchable tree (one build, each exercise switched to its stub at run time): every tag alone
+#     stubbed fails exactly its own tests (check_exercise_isolation.py).
+# Both trees are built in WORK_DIR; with ccache installed the second build reuses the first one's objects
+# (only the files with solution blocks differ). Usage: tools/check_student_release.sh SOURCE_ROOT WORK_DIR
 set -euo pipefail
-src="$1"
+src="$(cd "$1" && pwd)"
 work="$2"
+jobs="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 rm -rf "$work"
-bash "$src/tools/student_release.sh" "$src" "$work/tree"
-cd "$work/tree"
-echo "== configure and build the student tree"
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DPBA_BUILD_BENCH=OFF -DPBA_WARNINGS_AS_ERRORS=ON >/dev/null
-cmake --build build -j "${PBA_JOBS:-2}" >/dev/null || { echo "FAIL: the student release does not build"; exit 1; }
+mkdir -p "$work"
+work="$(cd "$work" && pwd)"
+cmake_args=(-G Ninja -DCMAKE_BUILD_TYPE=Release -DPBA_BUILD_BENCH=OFF -DPBA_WARNINGS_AS_ERRORS=ON)
+if command -v ccache >/dev/null; then
+  export CCACHE_DIR="$work/ccache" CCACHE_BASEDIR="$work" CCACHE_NOHASHDIR=1
+  cmake_args+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+build_tree() {  # build_tree DIR: configure and build DIR/build
+  cmake -S "$1" -B "$1/build" "${cmake_args[@]}" >/dev/null
+  cmake --build "$1/build" -j "$jobs" >"$1/build.log" 2>&1 || { tail -n 40 "$1/build.log"; echo "FAIL: $1 does not build"; exit 1; }
+}
 
+echo "== the student release"
+bash "$src/tools/student_release.sh" "$src" "$work/release"
+build_tree "$work/release"
+cd "$work/release"
 tags="$(awk -F'\t' 'NR > 1 && $1 != "" { gsub("-", "_", $1); printf "%s^%s_", (n++ ? "|" : ""), $1 }' resources/exercises.tsv)"
-echo "== exercise tests must all fail (regex: $tags)"
+echo "== exercise tests must all fail against the stubs"
 set +e
-exercise_log="$(ctest --test-dir build -R "$tags" --no-tests=error 2>&1)"
+exercise_log="$(ctest --test-dir build -R "$tags" --no-tests=error -j "$jobs" 2>&1)"
 set -e
 passed_exercise_tests="$(grep -E '^ *[0-9]+/[0-9]+ Test +#[0-9]+: .* Passed' <<<"$exercise_log" || true)"
 total="$(grep -oE 'out of [0-9]+' <<<"$exercise_log" | grep -oE '[0-9]+' | tail -n 1)"
@@ -26,10 +41,16 @@ if [[ -n "$passed_exercise_tests" ]]; then
   exit 1
 fi
 echo "ok: all $total exercise tests fail against the stubs"
-
 echo "== every other test must pass"
-ctest --test-dir build -E "$tags" --output-on-failure -j "${PBA_JOBS:-2}" || { echo "FAIL: non-exercise tests fail in the student release"; exit 1; }
-
+ctest --test-dir build -E "$tags" --output-on-failure -j "$jobs" || { echo "FAIL: non-exercise tests fail in the student release"; exit 1; }
 echo "== ./pba grade must report failures"
-if bash tools/grade.sh build resources/exercises.tsv; then echo "FAIL: grade passed on stubs"; exit 1; fi
+if bash tools/grade.sh build resources/exercises.tsv >"$work/grade.log"; then cat "$work/grade.log"; echo "FAIL: grade passed on stubs"; exit 1; fi
+echo "ok: grade reports $(grep -c ' FAIL ' "$work/grade.log") failing exercises"
+echo "== no solution's lines in the release"
+python3 "$src/tools/check_solution_leaks.py" "$src" "$work/release"
+
+echo "== the switchable tree: each exercise alone stubbed"
+bash "$src/tools/student_release.sh" --switchable "$src" "$work/switchable"
+build_tree "$work/switchable"
+python3 "$src/tools/check_exercise_isolation.py" "$work/switchable/build" "$work/switchable/resources/exercises.tsv" --jobs "$jobs"
 echo "student release check: ok"

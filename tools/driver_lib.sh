@@ -3,7 +3,7 @@
 
 PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-dev libimgui-dev
   libassimp-dev nlohmann-json3-dev libstb-dev googletest libgtest-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels fonts-dejavu-core)
+  xvfb xauth assimp-testmodels fonts-dejavu-core python3 ccache)
 PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 pba_say() {
@@ -110,8 +110,10 @@ pba_cmd_grade() {
   local preset="release"
   [[ "${1:-}" == "--preset" ]] && { preset="${2:?}"; shift 2; }
   pba_ensure_packages
-  pba_build "$preset" pba_physics_tests
-  bash "$ROOT/tools/grade.sh" "$ROOT/build/$preset" "$ROOT/resources/exercises.tsv"
+  # Everything: exercise tests include command-line tests of the lab executables, and a partial
+  # build would grade stale binaries.
+  pba_build "$preset"
+  bash "$ROOT/tools/grade.sh" "$ROOT/build/$preset" "$ROOT/resources/exercises.tsv" "$@"
 }
 
 pba_cmd_student_release() {

@@ -3,7 +3,15 @@
 # Every block between "// BEGIN SOLUTION" and "// END SOLUTION" is removed and the "// STUB: code"
 # lines that follow it become code: the stub compiles, reports "TAG not implemented" through
 # pba::exercises::notImplemented and returns a safe default, so every lab still runs.
+#
+# --switchable writes the isolation build instead (tools/check_exercise_isolation.py): every block
+# stays, behind a run-time switch that runs the stub when PBA_STUB_EXERCISES names the tag (see
+# ExerciseSwitch in framework/physics/exercises/not_implemented.h). Either way a block must end its
+# function: the stub lines are followed by the function's closing brace.
 set -euo pipefail
+mode=release
+if [[ "${1:-}" == --switchable ]]; then mode=switchable; shift; fi
+[[ $# -eq 2 ]] || { echo "usage: student_release.sh [--switchable] SOURCE_ROOT OUT_DIR" >&2; exit 2; }
 src="$1"
 out="$2"
 [[ -e "$out" && -n "$(ls -A "$out" 2>/dev/null)" ]] && { echo "student-release: $out exists and is not empty" >&2; exit 2; }
@@ -22,13 +30,34 @@ for f in "${files[@]}"; do
   [[ -f "$src/$f" ]] || continue
   mkdir -p "$out/$(dirname "$f")"
   if [[ "$f" == *.cpp || "$f" == *.h ]] && grep -q '// BEGIN SOLUTION' "$src/$f"; then
-    if ! awk -v file="$f" '
-      /\/\/ BEGIN SOLUTION/ { if (inside) { print file ":" NR ": nested BEGIN SOLUTION" > "/dev/stderr"; exit 3 } inside = 1; next }
-      /\/\/ END SOLUTION/   { if (!inside) { print file ":" NR ": END SOLUTION without BEGIN" > "/dev/stderr"; exit 3 } inside = 0; ended = 1; next }
-      inside { next }
-      ended && /^[ \t]*\/\/ STUB: / { sub(/\/\/ STUB: /, ""); print; stubs++; next }
-      { if (ended && !stubs) { print file ":" NR ": a solution block must be followed by // STUB: lines" > "/dev/stderr"; exit 3 } ended = 0; stubs = 0; print }
-      END { if (inside) { print file ": BEGIN SOLUTION without END" > "/dev/stderr"; exit 3 } }
+    if ! awk -v file="$f" -v mode="$mode" '
+      function flush_block(   i, tag, returns) {
+        if (mode == "release") { for (i = 1; i <= nstub; i++) print stub[i]; return }
+        tag = ""
+        for (i = 1; i <= nstub; i++) if (tag == "" && match(stub[i], /"[A-Z]+-[0-9]+"/)) tag = substr(stub[i], RSTART, RLENGTH)
+        if (tag == "") { print file ":" NR ": no exercise tag in the STUB lines" > "/dev/stderr"; exit 3 }
+        print indent "static const ::pba::exercises::ExerciseSwitch pbaExerciseSwitch(" tag ");"
+        print indent "if (pbaExerciseSwitch.stub()) {"
+        returns = 0
+        for (i = 1; i <= nstub; i++) { print "  " stub[i]; if (stub[i] ~ /^[ \t]*return[ ;]/) returns = 1 }
+        if (!returns) print indent "  return;"
+        print indent "}"
+        for (i = 1; i <= nsol; i++) print sol[i]
+      }
+      /\/\/ BEGIN SOLUTION/ {
+        if (inside) { print file ":" NR ": nested BEGIN SOLUTION" > "/dev/stderr"; exit 3 }
+        inside = 1; nsol = 0; nstub = 0; indent = $0; sub(/\/\/ BEGIN SOLUTION.*/, "", indent); next
+      }
+      /\/\/ END SOLUTION/ { if (!inside) { print file ":" NR ": END SOLUTION without BEGIN" > "/dev/stderr"; exit 3 } inside = 0; ended = 1; next }
+      inside { sol[++nsol] = $0; next }
+      ended && /^[ \t]*\/\/ STUB: / { line = $0; sub(/\/\/ STUB: /, "", line); stub[++nstub] = line; next }
+      ended {
+        if (!nstub) { print file ":" NR ": a solution block must be followed by // STUB: lines" > "/dev/stderr"; exit 3 }
+        if ($0 !~ /^[ \t]*}/) { print file ":" NR ": a solution block and its stub must end the function (expected })" > "/dev/stderr"; exit 3 }
+        flush_block(); ended = 0
+      }
+      { print }
+      END { if (inside || ended) { print file ": BEGIN SOLUTION without END, or a block at the end of the file" > "/dev/stderr"; exit 3 } }
     ' "$src/$f" >"$out/$f"; then
       echo "student-release: malformed solution block in $f" >&2
       exit 1
@@ -41,6 +70,11 @@ done
 if grep -rl 'BEGIN SOLUTION' "$out" --include='*.cpp' --include='*.h' >/dev/null 2>&1; then
   echo "student-release: solution markers left in the output" >&2
   exit 1
+fi
+if [[ $mode == switchable ]]; then
+  echo "This tree is a PBA Labs isolation build: solutions behind run-time stub switches." >"$out/.student-release"
+  echo "student-release: wrote the switchable tree $out (${#files[@]} files, $blocks solution blocks behind switches)"
+  exit 0
 fi
 echo "This tree is a PBA Labs student release: exercise solutions are stubs." >"$out/.student-release"
 echo "student-release: wrote $out (${#files[@]} files, $blocks solution blocks replaced by stubs)"

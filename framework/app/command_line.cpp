@@ -172,7 +172,8 @@ std::string usage(const std::string& lab) {
       "      L lecture mode  Tab hide UI  F frame scene.  Arrows nudge the target in the view plane,\n"
       "      PageUp/PageDown or Shift+Up/Down away/toward the camera, Ctrl for a fine step.\n"
       "      Mouse: left drag picks, right drag orbits, middle or Shift+right drag pans, wheel zooms.\n"
-      "Exit codes: 0 success, 2 bad arguments or input file, 1 internal failure.\n";
+      "Exit codes: 0 success, 1 internal failure, 2 bad arguments or input file, 3 a --headless run that the\n"
+      "            instability guard paused (metrics still written, \"paused_by_guard\": true).\n";
   return text;
 }
 

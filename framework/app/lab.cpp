@@ -62,7 +62,7 @@ int runHeadless(const std::string& lab, const LabOptions& o, SceneRunner& runner
       return kExitBadInput;
     }
   }
-  return kExitOk;
+  return runner.guardMessage() ? kExitGuardPaused : kExitOk;
 }
 
 int runLab(const std::string& lab, int argc, const char* const* argv) {

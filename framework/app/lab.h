@@ -11,6 +11,9 @@ namespace pba::app {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitInternal = 1;
 inline constexpr int kExitBadInput = 2;
+/// A headless run that the instability guard paused (non-finite state or runaway energy): the metrics
+/// are still written (with "paused_by_guard": true) and the guard's message is on stderr.
+inline constexpr int kExitGuardPaused = 3;
 
 int runLab(const std::string& lab, int argc, const char* const* argv);
 

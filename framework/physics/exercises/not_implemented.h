@@ -5,6 +5,7 @@
 //
 // The record is process-wide on purpose: it is instrumentation read by the lab runner, never solver
 // state, and it is the one exception to the library's "no globals" rule (docs/architecture.md).
+#include <atomic>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -27,6 +28,32 @@ T notImplemented(std::string_view tag, T safeDefault, const Inputs&... /*inputsT
   markNotImplemented(tag);
   return safeDefault;
 }
+
+/// The run-time switch of the isolation build (`tools/student_release.sh --switchable`, used by
+/// tools/check_exercise_isolation.py). That tool rewrites every solution block as
+///   static const ExerciseSwitch pbaExerciseSwitch("TAG");
+///   if (pbaExerciseSwitch.stub()) { <the stub lines>; return; }
+///   <the solution>
+/// so that one build can run any set of exercises as stubs, chosen per process by the environment:
+///   PBA_STUB_EXERCISES=IK-3,PART-2   (or "all")  these tags run their stubs, every other its solution
+///   PBA_EXERCISE_TRACE=FILE          each tag whose code runs (outside start-up probes) is appended to
+///                                    FILE once per process, one tag a line
+/// Neither variable has any effect on the ordinary build, which never constructs a switch.
+class ExerciseSwitch {
+ public:
+  explicit ExerciseSwitch(std::string_view tag);
+  /// True when this process runs the exercise's stub. Cheap: one relaxed atomic load after the first call.
+  bool stub() const {
+    if (!traced_.load(std::memory_order_relaxed)) noteFirstRun();
+    return stub_;
+  }
+
+ private:
+  void noteFirstRun() const;
+  std::string tag_;
+  bool stub_ = false;
+  mutable std::atomic<bool> traced_{false};
+};
 
 /// A probe calls an exercise once on a harmless input so that a lab can tell at start-up which
 /// exercises are still stubs (a stub records its tag when it runs). Registered next to the

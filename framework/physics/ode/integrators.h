@@ -114,7 +114,8 @@ struct VerletHistory {
 };
 
 // ***** PART-6: position Verlet (Ragdoll paper §2, after Jakobsen 2001) *****
-// The step receives q(t), the previous positions q(t − h) (history.previous) and a = M⁻¹ f at time t.
+// The update (verletRecurrence in second_order_methods.cpp) receives q(t), the previous positions
+// q(t − h) and a = M⁻¹ f at time t; it returns true once it has stepped.
 // (1) For every coordinate: q(t + h) = 2 q(t) − q(t − h) + h² a. No velocity is used.
 // (2) The velocity is implicit in the positions. Estimate it for the state (second order, exact under
 //     constant acceleration): v(t + h) = (q(t + h) − q(t)) / h + (h/2) a.

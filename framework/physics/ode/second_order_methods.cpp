@@ -2,6 +2,8 @@
 // They update the system's own arrays in place (no state copies).
 #include <algorithm>
 #include <cstddef>
+#include <span>
+#include <vector>
 
 #include "physics/ode/oscillator.h"
 #include "physics/exercises/not_implemented.h"
@@ -55,6 +57,24 @@ void velocityVerletStep(SecondOrderSystem& system, Real h, Workspace& w) {
   finishInPlace(system, s, h);
 }
 
+namespace {
+// PART-6's update of every coordinate (q, v and the remembered q(t − h)); true when it stepped.
+bool verletRecurrence([[maybe_unused]] std::span<Real> q, [[maybe_unused]] std::span<Real> v,
+                      [[maybe_unused]] std::span<const Real> a, [[maybe_unused]] std::vector<Real>& previous,
+                      [[maybe_unused]] Real h) {
+  // BEGIN SOLUTION
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const Real next = 2.0 * q[i] - previous[i] + h * h * a[i];
+    v[i] = (next - q[i]) / h + 0.5 * h * a[i];
+    previous[i] = q[i];
+    q[i] = next;
+  }
+  return true;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("PART-6", false, q, v, a, previous, h);  // the state stays
+}
+}  // namespace
+
 void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistory& history, Workspace& w) {
   const InPlaceStep s = startInPlace(system, w);
   const std::size_t n = s.n;
@@ -68,15 +88,7 @@ void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistor
     history.previous.resize(n);
     for (std::size_t i = 0; i < n; ++i) history.previous[i] = q[i] - h * v[i] + 0.5 * h * h * a[i];
   }
-  // BEGIN SOLUTION
-  for (std::size_t i = 0; i < n; ++i) {
-    const Real next = 2.0 * q[i] - history.previous[i] + h * h * a[i];
-    v[i] = (next - q[i]) / h + 0.5 * h * a[i];
-    history.previous[i] = q[i];
-    q[i] = next;
-  }
-  // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-6");  // the state stays where it is
+  if (!verletRecurrence(q, v, a, history.previous, h)) return;  // a stub: the state and clock stay
   history.lastQ.assign(q.begin(), q.end());
   history.lastV.assign(v.begin(), v.end());
   history.lastH = h;
