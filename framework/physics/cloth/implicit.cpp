@@ -56,7 +56,10 @@ std::size_t buildFilter(const Cloth& cloth, std::span<const Collider> colliders,
 
 /// After the solve: the constraint impulse of each contact is (A v₁ − b) along its normal. A pulling one
 /// is released for the next step; a pushing one bounds the tangential velocity change by μ × impulse / m.
-void contactImpulses(const Cloth& cloth, std::span<const Collider> colliders, const ParticleOperator& A,
+/// That bound is CLOTH-4's friction: the particle ends at x₁ = x₀ + h v₁ on the surface; placed the depth
+/// h·impulse/m below it (the depth whose projection gives this impulse), the projection onto the sphere
+/// tangent at x₁ pushes it back to x₁ and takes the friction off its motion relative to the collider.
+void contactFriction(const Cloth& cloth, std::span<const Collider> colliders, const ParticleOperator& A, Real h,
                      ImplicitWorkspace& w) {
   A(w.velocity, w.probeOut);
   for (std::size_t i = 0; i < cloth.size(); ++i) {
@@ -67,8 +70,7 @@ void contactImpulses(const Cloth& cloth, std::span<const Collider> colliders, co
       w.released[i] = 1;
       continue;
     }
-    // The collider touched (the one whose normal was used): friction against its motion.
-    const Collider* touched = nullptr;
+    const Collider* touched = nullptr;  // the collider whose normal the filter used
     for (const Collider& c : colliders) {
       if (glm::dot(closestSurface(c, cloth.position[i]).normal, n) > 1.0 - 1e-12) {
         touched = &c;
@@ -76,11 +78,12 @@ void contactImpulses(const Cloth& cloth, std::span<const Collider> colliders, co
       }
     }
     if (touched == nullptr) continue;
-    const Vec3 relative = w.velocity[i] - touched->velocity;
-    const Vec3 tangential = relative - glm::dot(relative, n) * n;
-    const Real slip = glm::length(tangential);
-    const Real bound = touched->friction * impulse / cloth.mass[i];
-    w.velocity[i] -= slip <= bound ? tangential : tangential * (bound / slip);
+    const Real depth = h * impulse / cloth.mass[i];
+    const Real radius = std::max(1.0, 2.0 * depth);
+    const Vec3 x1 = cloth.position[i] + h * w.velocity[i];
+    const Vec3 start = cloth.position[i] + h * touched->velocity;
+    const Vec3 x = projectOutOfSphere(x1 - depth * n, start, x1 - radius * n, radius, touched->friction);
+    w.velocity[i] = (x - cloth.position[i]) / h;
   }
 }
 
@@ -132,7 +135,7 @@ ImplicitStats implicitStep(Cloth& cloth, const ClothEnvironment& env, std::span<
   }
   w.velocity = cloth.velocity;  // warm start: v₁ ≈ v₀
   stats.cg = filteredPcg(A, w.b, w.filter, w.z, w.preconditioner, settings.cg, w.velocity, w.pcg);
-  if (stats.contactConstraints > 0) contactImpulses(cloth, colliders, A, w);
+  if (stats.contactConstraints > 0) contactFriction(cloth, colliders, A, h, w);
 
   for (std::size_t i = 0; i < n; ++i) {
     cloth.velocity[i] = w.velocity[i];
