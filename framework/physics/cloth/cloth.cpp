@@ -69,6 +69,7 @@ Status validate(const ClothMaterial& m) {
   if (Status s = checkNonNegative("stretchCompliance", m.stretchCompliance, kMaxCompliance); !s) return s;
   if (Status s = checkNonNegative("shearCompliance", m.shearCompliance, kMaxCompliance); !s) return s;
   if (Status s = checkNonNegative("bendCompliance", m.bendCompliance, kMaxCompliance); !s) return s;
+  if (Status s = checkNonNegative("bendLinkCompliance", m.bendLinkCompliance, kMaxCompliance); !s) return s;
   return checkNonNegative("thickness", m.thickness, 1.0);
 }
 
@@ -142,6 +143,12 @@ void rebuildTopology(Cloth& cloth) {
     cloth.springs = meshSprings(cloth.edges, cloth.restPosition, cloth.gridX);
   }
   cloth.bending = bendingStencils(cloth.edges, cloth.restPosition);
+  // Bending links are all of kind Bend (even across a quad's diagonal): as rigid shear constraints the
+  // other diagonals would forbid folding along the diagonals and fight the stretch constraints.
+  cloth.bendLinks = acrossEdgeLinks(cloth.edges, cloth.restPosition, 0);
+  orderByColour(cloth.constraints, cloth.size());
+  orderByColour(cloth.bendLinks, cloth.size());
+  orderByColour(cloth.bending, cloth.size());
   cloth.mass = lumpedMasses(cloth.triangles, cloth.restPosition, cloth.material.massPerArea, cloth.size());
   refreshInverseMasses(cloth);
 }

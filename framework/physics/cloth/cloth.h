@@ -69,7 +69,8 @@ struct ClothMaterial {
   Real springDamping = 0.02;       ///< [N·s/m] along every spring (resists the rate of change of length)
   Real stretchCompliance = 0.0;    ///< α [m/N] XPBD distance constraints (0 = inextensible); 1/k of a spring
   Real shearCompliance = 0.0;      ///< α [m/N] for edges that are quad diagonals of a grid
-  Real bendCompliance = 10.0;      ///< α [1/(N·m)] isometric bending; 1/k_b, k_b [N·m] ≈ 0.01–1 for cloth
+  Real bendCompliance = 1000.0;    ///< α [1/(N·m)] isometric bending: 1/k_b, k_b [N·m] ≈ 10⁻⁵ (silk) – 10⁻³ (denim)
+  Real bendLinkCompliance = 1.0;   ///< α [m/N] distance bending (TMP #14–15: across every inner edge)
   Real thickness = 0.01;           ///< [m] particles keep this distance from each other and half of it from colliders
 };
 Status validate(const ClothMaterial& material);
@@ -122,6 +123,7 @@ struct Cloth {
   std::vector<Link> constraints;           ///< XPBD/PBD: one distance constraint per edge
   std::vector<Link> springs;               ///< mass-spring model
   std::vector<BendingStencil> bending;     ///< XPBD/PBD isometric bending, one per inner edge
+  std::vector<Link> bendLinks;             ///< XPBD/PBD distance bending: the opposite vertices of each inner edge
   std::vector<Pin> pins;
   ClothMaterial material;
   SpringLayout layout = SpringLayout::Mesh;

@@ -51,8 +51,9 @@ SurfacePoint closestSurface(const Collider& c, const Vec3& x);
 Vec3 projectOutOfSphere(const Vec3& x, const Vec3& xPrev, const Vec3& center, Real radius, Real friction);
 
 /// Projects x (which started the step at xPrev; h [s] the step) out of the collider with margin [m] and
-/// friction. Returns the new position; `depth` receives the penetration before projection (≥ 0).
-Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth = nullptr);
+/// friction μ × frictionScale. Returns the new position; `depth` receives the penetration before it (≥ 0).
+Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth = nullptr,
+             Real frictionScale = 1.0);
 
 struct CollisionPassStats {
   std::size_t contacts = 0;  ///< particle–collider contacts
@@ -60,8 +61,10 @@ struct CollisionPassStats {
 };
 /// Projects every free particle (w > 0) out of every collider. When `velocities` is not empty, adds the
 /// projection's Δx/h to each velocity (the force-based solvers; XPBD derives v from x afterwards).
+/// frictionScale 0 projects without friction (XPBD's final pass, after the constraints).
 CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec3> x, std::span<const Vec3> xPrev,
-                              std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities);
+                              std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities,
+                              Real frictionScale = 1.0);
 
 /// Smallest signed distance of any particle to any collider minus `margin` [m] (negative = penetration);
 /// +∞ without colliders.

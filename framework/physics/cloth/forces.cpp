@@ -18,7 +18,7 @@ std::array<Real, kLinkKinds> springStiffness(const ClothMaterial& m) {
 }
 
 std::array<Real, kLinkKinds> constraintCompliance(const ClothMaterial& m) {
-  return {m.stretchCompliance, m.shearCompliance, m.bendCompliance};
+  return {m.stretchCompliance, m.shearCompliance, m.bendLinkCompliance};
 }
 
 void accumulateSpringForces(std::span<const Link> springs, const ClothMaterial& m, std::span<const Vec3> x,

@@ -34,7 +34,7 @@ struct ClothEnvironment {
 
 /// Stiffness [N/m] of the springs of each LinkKind, indexed by the kind.
 std::array<Real, kLinkKinds> springStiffness(const ClothMaterial& m);
-/// XPBD compliance [m/N] of the distance constraints of each LinkKind (Bend: unused, bending is isometric).
+/// XPBD compliance [m/N] of the distance constraints of each LinkKind (Bend: the distance bending links).
 std::array<Real, kLinkKinds> constraintCompliance(const ClothMaterial& m);
 
 /// Adds the springs' forces [N] to f. With `withDamping` false only the elastic part k (l − L) n.

@@ -4,33 +4,41 @@
 #include <cmath>
 
 namespace pba::cloth {
+namespace {
+bool neighbours(const Vec3& restI, const Vec3& restJ, Real thickness) {
+  const Real limit = kSelfNeighbourFactor * thickness;
+  const Vec3 d = restI - restJ;
+  return glm::dot(d, d) < limit * limit;
+}
+}  // namespace
 
-void SelfCollision::update(std::span<const Vec3> x, std::span<const Vec3> rest, Real thickness, Real skin) {
-  if (thickness != thickness_) list_.invalidate();
-  thickness_ = thickness;
-  if (!list_.update(x, thickness, skin, hash_) && minDistance_.size() == list_.pairs().size()) return;
-  const auto pairs = list_.pairs();
-  minDistance_.resize(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto [i, j] = pairs[k];
-    minDistance_[k] = std::min(thickness, glm::length(rest[i] - rest[j]));
+void SelfCollision::buildPairs(std::span<const Vec3> x, std::span<const Vec3> rest, Real thickness, Real reach) {
+  pairs_.clear();
+  if (x.empty() || !(thickness > 0.0)) return;
+  reach = std::max(reach, thickness);
+  hash_.build(x, reach);
+  const Real reach2 = reach * reach;
+  for (std::uint32_t i = 0; i < x.size(); ++i) {
+    hash_.forEachNear(x[i], [&](std::uint32_t j) {
+      if (j <= i || neighbours(rest[i], rest[j], thickness)) return;
+      const Vec3 d = x[i] - x[j];
+      if (glm::dot(d, d) < reach2) pairs_.emplace_back(i, j);
+    });
   }
 }
 
 SelfCollisionStats SelfCollision::solve(std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> w,
-                                        Real friction) {
+                                        Real thickness, Real friction) const {
   SelfCollisionStats stats;
-  const auto pairs = list_.pairs();
-  for (std::size_t k = 0; k < pairs.size(); ++k) {
-    const auto [i, j] = pairs[k];
-    const Real wSum = w[i] + w[j];
-    if (wSum == 0.0) continue;
+  const Real thickness2 = thickness * thickness;
+  for (const auto& [i, j] : pairs_) {
     const Vec3 d = x[i] - x[j];
     const Real dist2 = glm::dot(d, d);
-    const Real minDist = minDistance_[k];
-    if (dist2 >= minDist * minDist || dist2 == 0.0) continue;
+    if (dist2 >= thickness2 || dist2 == 0.0) continue;
+    const Real wSum = w[i] + w[j];
+    if (wSum == 0.0) continue;
     const Real dist = std::sqrt(dist2);
-    const Real overlap = minDist - dist;
+    const Real overlap = thickness - dist;
     stats.deepest = std::max(stats.deepest, overlap);
     ++stats.contacts;
     const Vec3 correction = (overlap / dist) * d;
@@ -47,15 +55,15 @@ SelfCollisionStats SelfCollision::solve(std::span<Vec3> x, std::span<const Vec3>
 
 std::size_t countSelfIntersections(std::span<const Vec3> x, std::span<const Vec3> rest, Real thickness,
                                    particles::SpatialHash& hash) {
-  if (x.empty() || thickness <= 0.0) return 0;
+  if (x.empty() || !(thickness > 0.0)) return 0;
   hash.build(x, thickness);
+  const Real half2 = 0.25 * thickness * thickness;
   std::size_t count = 0;
   for (std::uint32_t i = 0; i < x.size(); ++i) {
     hash.forEachNear(x[i], [&](std::uint32_t j) {
-      if (j <= i) return;
-      const Real half = 0.5 * std::min(thickness, glm::length(rest[i] - rest[j]));
+      if (j <= i || neighbours(rest[i], rest[j], thickness)) return;
       const Vec3 d = x[i] - x[j];
-      if (glm::dot(d, d) < half * half) ++count;
+      if (glm::dot(d, d) < half2) ++count;
     });
   }
   return count;

@@ -48,19 +48,22 @@ StrainStats edgeStrain(const Cloth& cloth) {
   StrainStats s;
   if (cloth.constraints.empty()) return s;
   for (const Link& l : cloth.constraints) {
-    const Real e = std::abs(glm::length(cloth.position[l.i] - cloth.position[l.j]) - l.restLength) / l.restLength;
+    const Real e = (glm::length(cloth.position[l.i] - cloth.position[l.j]) - l.restLength) / l.restLength;
     s.max = std::max(s.max, e);
-    s.mean += e;
+    s.mean += std::max(0.0, e);
+    s.maxCompression = std::max(s.maxCompression, -e);
   }
   s.mean /= static_cast<Real>(cloth.constraints.size());
   return s;
 }
 
-Real clothEnergy(const Cloth& cloth, const ClothEnvironment& env, ClothSolverKind kind) {
+Real clothEnergy(const Cloth& cloth, const ClothEnvironment& env, ClothSolverKind kind, BendingModel bending) {
   Real e = kineticEnergy(cloth) + gravityEnergy(cloth, env.gravity);
   if (usesSprings(kind)) return e + springEnergy(cloth.springs, cloth.material, cloth.position);
-  return e + constraintEnergy(cloth.constraints, cloth.position, cloth.material) +
-         bendingEnergy(cloth.bending, cloth.position, cloth.material.bendCompliance);
+  e += constraintEnergy(cloth.constraints, cloth.position, cloth.material);
+  if (bending == BendingModel::Isometric) e += bendingEnergy(cloth.bending, cloth.position, cloth.material.bendCompliance);
+  if (bending == BendingModel::Distance) e += constraintEnergy(cloth.bendLinks, cloth.position, cloth.material);
+  return e;
 }
 
 Real explicitStabilityLimit(const Cloth& cloth) {
@@ -80,6 +83,7 @@ void ClothSolver::reset() {
   self_ = SelfCollision{};
   lambda_.clear();
   bendLambda_.clear();
+  bendLinkLambda_.clear();
 }
 
 void ClothSolver::movePins(Cloth& cloth, Real fraction) {
@@ -94,6 +98,7 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
   ClothStepStats stats;
   const int n = std::max(1, s.substeps);
   const Real h = dt / n;
+  if (s.selfCollision) beginSelfCollision(cloth, s, dt);
   pinStart_.resize(cloth.pins.size());
   for (std::size_t k = 0; k < cloth.pins.size(); ++k) pinStart_[k] = cloth.position[cloth.pins[k].particle];
   for (int k = 0; k < n; ++k) {
@@ -121,11 +126,27 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
   }
   stats.constraintIterations = usesSprings(s.kind) ? 0 : n * s.iterations;
   stats.tears = tearOverstretched(cloth, s.tearing);
-  if (stats.tears > 0) {
-    self_.invalidate();
-    implicit_.colouredSprings = ~std::size_t{0};
-  }
+  if (stats.tears > 0) implicit_.colouredSprings = ~std::size_t{0};
   return stats;
+}
+
+void ClothSolver::beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s, Real dt) {
+  // TMP #15: clamp the speed to the travel limit, then the pairs once for the frame.
+  const Real thickness = cloth.material.thickness;
+  Real reach = thickness;
+  if (s.selfCollisionMaxTravel > 0.0) {
+    const Real maxSpeed = s.selfCollisionMaxTravel * thickness * std::max(1, s.substeps) / dt;
+    for (Vec3& v : cloth.velocity) {
+      const Real speed = glm::length(v);
+      if (speed > maxSpeed) v *= maxSpeed / speed;
+    }
+    reach = thickness + maxSpeed * dt;  // TMP queries maxSpeed·dt; one thickness more for the pair
+  } else {
+    Real fastest = 0.0;
+    for (const Vec3& v : cloth.velocity) fastest = std::max(fastest, glm::length(v));
+    reach += 2.0 * (fastest + glm::length(Vec3(0.0, kStandardGravity, 0.0)) * dt) * dt;
+  }
+  self_.buildPairs(cloth.position, cloth.restPosition, thickness, reach);
 }
 
 void ClothSolver::explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
@@ -150,19 +171,17 @@ void ClothSolver::endSubstep(Cloth& cloth, std::span<const Collider> colliders, 
                              bool velocityLevel, ClothStepStats& stats) {
   const std::span<Vec3> noVelocities;
   if (s.selfCollision) {
-    Real fastest = 0.0;
-    for (std::size_t i = 0; i < cloth.size(); ++i) fastest = std::max(fastest, glm::length(cloth.position[i] - previous_[i]));
-    // TMP #15 queries once per frame with the distance travelled; the Verlet list rebuilds when needed.
-    const Real skin = std::max(cloth.material.thickness, 2.0 * fastest * std::max(1, s.substeps));
-    self_.update(cloth.position, cloth.restPosition, cloth.material.thickness, skin);
     if (velocityLevel) beforeSelf_ = cloth.position;
-    stats.selfContacts = self_.solve(cloth.position, previous_, cloth.inverseMass, s.selfFriction).contacts;
+    stats.selfContacts =
+        self_.solve(cloth.position, previous_, cloth.inverseMass, cloth.material.thickness, s.selfFriction).contacts;
     if (velocityLevel) {
       for (std::size_t i = 0; i < cloth.size(); ++i) cloth.velocity[i] += (cloth.position[i] - beforeSelf_[i]) / h;
     }
   }
+  // Force solvers: the one collision pass, with friction. PBD/XPBD had theirs before the constraints;
+  // this final pass only projects what the constraints and self-collision pushed back in.
   stats.contacts = collideAll(colliders, cloth.position, previous_, cloth.inverseMass, 0.5 * cloth.material.thickness, h,
-                              velocityLevel ? std::span<Vec3>(cloth.velocity) : noVelocities)
+                              velocityLevel ? std::span<Vec3>(cloth.velocity) : noVelocities, velocityLevel ? 1.0 : 0.0)
                        .contacts;
 }
 

@@ -33,16 +33,26 @@ std::vector<std::string> solverNames();
 /// True for the mass-spring solvers (explicit, implicit), false for the constraint ones.
 bool usesSprings(ClothSolverKind kind);
 
+/// Bending of the constraint solvers (the spring solvers bend through their bend springs).
+enum class BendingModel {
+  Isometric,  ///< Bergou et al. 2006 as one linear vector constraint per inner edge (xpbd.h)
+  Distance,   ///< TMP #14–15: the opposite vertices of every inner edge keep their rest distance (compliant)
+  None,
+};
+
 struct ClothSolverSettings {
   ClothSolverKind kind = ClothSolverKind::Xpbd;
   int substeps = 10;              ///< per step: symplectic Euler / PBD / XPBD substeps, implicit steps
   int iterations = 1;             ///< PBD/XPBD constraint sweeps per substep
   Real pbdStiffness = 1.0;        ///< PBD stretch stiffness s ∈ (0, 1] per projection
   Real pbdBendStiffness = 0.05;   ///< PBD bending stiffness ∈ [0, 1] per projection
-  bool bending = true;            ///< PBD/XPBD isometric bending on (the spring model has bend springs)
+  BendingModel bending = BendingModel::Isometric;  ///< PBD/XPBD
   ImplicitSettings implicit;
   bool selfCollision = false;
   Real selfFriction = 0.1;        ///< TMP #15 velocity averaging ∈ [0, 1]
+  /// TMP #15's speed limit with self-collision: at most this many thicknesses per substep (0 = none).
+  /// It bounds how far a particle travels in a frame, so the pair list of the frame stays complete.
+  Real selfCollisionMaxTravel = 0.2;
   TearSettings tearing;
 };
 Status validate(const ClothSolverSettings& s);
@@ -56,14 +66,17 @@ struct ClothStepStats {
   std::size_t tears = 0;         ///< vertex splits this step
 };
 
-/// Largest and mean strain |l − L|/L over the mesh edges (the same measure for every model).
+/// Stretch (l − L)/L of the mesh edges, the same measure for every model: largest and mean over the
+/// edges (compressed edges count 0), and the largest compression (L − l)/L apart (cloth buckles rather than
+/// compresses, so compression is the constraints' error, not the fabric's stretch).
 struct StrainStats {
-  Real max = 0.0, mean = 0.0;
+  Real max = 0.0, mean = 0.0, maxCompression = 0.0;
 };
 StrainStats edgeStrain(const Cloth& cloth);
 /// Kinetic + gravitational + elastic energy [J]; the elastic part is the springs' for the mass-spring
 /// solvers and ½ C²/α of the compliant constraints for PBD/XPBD.
-Real clothEnergy(const Cloth& cloth, const ClothEnvironment& env, ClothSolverKind kind);
+Real clothEnergy(const Cloth& cloth, const ClothEnvironment& env, ClothSolverKind kind,
+                 BendingModel bending = BendingModel::Isometric);
 /// Upper bound of the highest angular frequency of the spring network (Gershgorin: ω² ≤ max_i Σ 2k/m_i)
 /// and the explicit stability limit 2/ω it implies [s].
 Real explicitStabilityLimit(const Cloth& cloth);
@@ -86,11 +99,12 @@ class ClothSolver {
   void endSubstep(Cloth& cloth, std::span<const Collider> colliders, const ClothSolverSettings& s, Real h,
                   bool velocityLevel, ClothStepStats& stats);
   void movePins(Cloth& cloth, Real fraction);
+  void beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s, Real dt);
 
   ImplicitWorkspace implicit_;
   SelfCollision self_;
   std::vector<Vec3> previous_, force_, beforeSelf_, pinStart_;
-  std::vector<Real> lambda_;
+  std::vector<Real> lambda_, bendLinkLambda_;
   std::vector<Vec3> bendLambda_;
 };
 

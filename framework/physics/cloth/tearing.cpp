@@ -28,7 +28,6 @@ bool splitVertex(Cloth& cloth, std::uint32_t a, const Vec3& pull, std::vector<st
   cloth.restPosition.push_back(cloth.restPosition[a]);
   cloth.mass.push_back(0.0);  // rebuildTopology() lumps the masses again
   cloth.inverseMass.push_back(0.0);
-  if (const Pin* p = findPin(cloth, a)) cloth.pins.push_back({copy, p->target});
   for (std::uint32_t t : move) {
     for (std::uint32_t& v : cloth.triangles[t]) {
       if (v == a) v = copy;

@@ -3,6 +3,7 @@
 // more strained end a, perpendicular to the pull: the triangles around a whose centroids lie on the far
 // side of the plane through a with normal (x_b − x_a) keep a; the others get a new particle a' at the same
 // place with the same velocity (mass splits with the rest areas, so mass and momentum are conserved).
+// The copy of a pinned particle is free: a cloth torn at a pin leaves the pinned part behind.
 // Cracks so run across the direction of tension, as in real fabric. Every triangle still names valid
 // particles; edges, springs, constraints and bending are rebuilt from the triangles (Mesh layout from
 // then on), so the solvers and the renderer see one consistent mesh. A split whose one side would be

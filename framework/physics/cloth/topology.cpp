@@ -126,13 +126,20 @@ std::vector<GridLink> gridSpringTopology([[maybe_unused]] int nx, [[maybe_unused
   // STUB: return exercises::notImplemented("CLOTH-1", std::vector<GridLink>{}, nx, ny);
 }
 
-std::vector<Link> meshSprings(std::span<const Edge> edges, std::span<const Vec3> rest, int gridX) {
-  std::vector<Link> springs = edgeConstraints(edges, rest, gridX);
+std::vector<Link> acrossEdgeLinks(std::span<const Edge> edges, std::span<const Vec3> rest, int gridX) {
+  std::vector<Link> links;
   for (const Edge& e : edges) {
     if (!e.oppositeB) continue;
     const std::uint32_t p = e.oppositeA, q = *e.oppositeB;
-    springs.push_back(makeLink(p, q, rest, isQuadDiagonal(p, q, gridX) ? LinkKind::Shear : LinkKind::Bend));
+    links.push_back(makeLink(p, q, rest, isQuadDiagonal(p, q, gridX) ? LinkKind::Shear : LinkKind::Bend));
   }
+  return links;
+}
+
+std::vector<Link> meshSprings(std::span<const Edge> edges, std::span<const Vec3> rest, int gridX) {
+  std::vector<Link> springs = edgeConstraints(edges, rest, gridX);
+  const std::vector<Link> across = acrossEdgeLinks(edges, rest, gridX);
+  springs.insert(springs.end(), across.begin(), across.end());
   return springs;
 }
 
@@ -175,6 +182,39 @@ std::vector<BendingStencil> bendingStencils(std::span<const Edge> edges, std::sp
     stencils.push_back(s);
   }
   return stencils;
+}
+
+namespace {
+/// Greedy colouring of items by the particles they touch (verticesOf(item) gives them), then a stable
+/// sort by colour. Up to 64 colours through one bit mask per particle; items that find none go last.
+template <typename Item, typename VerticesOf>
+void colourSort(std::vector<Item>& items, std::size_t particles, VerticesOf verticesOf) {
+  std::vector<std::uint64_t> used(particles, 0);
+  std::vector<std::pair<int, std::size_t>> colour(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    std::uint64_t taken = 0;
+    for (std::uint32_t v : verticesOf(items[k])) taken |= used[v];
+    int c = 0;
+    while (c < 64 && (taken >> c & 1u)) ++c;
+    if (c < 64) {
+      for (std::uint32_t v : verticesOf(items[k])) used[v] |= std::uint64_t{1} << c;
+    }
+    colour[k] = {c, k};
+  }
+  std::stable_sort(colour.begin(), colour.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Item> sorted;
+  sorted.reserve(items.size());
+  for (const auto& [c, k] : colour) sorted.push_back(items[k]);
+  items = std::move(sorted);
+}
+}  // namespace
+
+void orderByColour(std::vector<Link>& links, std::size_t particles) {
+  colourSort(links, particles, [](const Link& l) { return std::array<std::uint32_t, 2>{l.i, l.j}; });
+}
+
+void orderByColour(std::vector<BendingStencil>& stencils, std::size_t particles) {
+  colourSort(stencils, particles, [](const BendingStencil& s) { return s.vertex; });
 }
 
 std::vector<Real> lumpedMasses(std::span<const Triangle> triangles, std::span<const Vec3> rest, Real massPerArea,

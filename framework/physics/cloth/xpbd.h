@@ -12,6 +12,7 @@
 // the stiffness 1/α, whatever the number of iterations or substeps. PBD (Müller et al. 2006 §3.3) is the
 // same projection with α̃ = 0 and no λ, scaled by a stiffness s ∈ [0, 1]: its effective stiffness then
 // depends on the iteration count and the step.
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -46,6 +47,20 @@ DistanceCorrection xpbdDistanceCorrection(const Vec3& xi, const Vec3& xj, Real w
 /// Updates x and λ (3 reals). compliance [1/(N·m)], h [s].
 void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::span<const Real> w, Real compliance,
                              Real h, Vec3& lambda);
+/// How a Gauss–Seidel sweep treats its constraints: XPBD (compliance by kind, λ accumulated) or PBD
+/// (Müller et al. 2006 §3.3: the exact projection, compliance 0, scaled by a stiffness ∈ [0, 1]).
+struct SweepMode {
+  bool xpbd = true;
+  Real pbdStiffness = 1.0;
+};
+/// One sweep of CLOTH-2 over `links` in their order; lambda holds one multiplier per link.
+void sweepDistanceConstraints(std::span<const Link> links, const std::array<Real, kLinkKinds>& compliance,
+                              const SweepMode& mode, Real h, std::span<Vec3> x, std::span<const Real> w,
+                              std::span<Real> lambda);
+/// One sweep over the isometric bending stencils (compliance [1/(N·m)]); lambda: 3 reals per stencil.
+void sweepIsometricBending(std::span<const BendingStencil> stencils, Real compliance, const SweepMode& mode, Real h,
+                           std::span<Vec3> x, std::span<const Real> w, std::span<Vec3> lambda);
+
 /// Bending energy ½ |C|²/α summed over the stencils [J] (0 when α = 0).
 Real bendingEnergy(std::span<const BendingStencil> stencils, std::span<const Vec3> x, Real compliance);
 /// ½ C²/α over the distance constraints with their kind's compliance [J] (constraints with α = 0 add 0).
