@@ -18,10 +18,14 @@ constexpr std::array<Color, 5> kStrainColors{colors::kBlue, colors::kGreen, colo
 
 Color scaled(const Color& c, float k) { return {std::min(1.0f, c.r * k), std::min(1.0f, c.g * k), std::min(1.0f, c.b * k), c.a}; }
 
-/// Two axes spanning the rest shape (the two largest extents of its bounding box) and a pattern cell size.
+/// Two axes spanning the rest shape (the two largest extents of its bounding box), its low corner and a
+/// pattern cell size: a whole number of edge lengths (the shortest rest edge, a grid's spacing), so that
+/// on a grid the squares follow the grid lines.
 struct RestFrame {
   int u = 0, v = 2;
-  Real cell = 0.1;  // [m]
+  Vec3 origin{0.0};
+  Real cellU = 0.1, cellV = 0.1;  // [m]
+  Real stepsU = 1.0, stepsV = 1.0;  // edge lengths per cell (whole numbers on a grid)
 };
 RestFrame restFrame(const Cloth& c) {
   Vec3 lo(std::numeric_limits<Real>::max()), hi(std::numeric_limits<Real>::lowest());
@@ -32,17 +36,33 @@ RestFrame restFrame(const Cloth& c) {
   const Vec3 extent = hi - lo;
   std::array<int, 3> axes{0, 1, 2};
   std::sort(axes.begin(), axes.end(), [&](int a, int b) { return extent[a] > extent[b]; });
-  RestFrame f{axes[0], axes[1], std::max(1e-3, extent[axes[1]] / 6.0)};
-  return f;
+  const Real target = std::max(1e-3, extent[axes[1]] / 6.0);
+  // Per axis, the shortest rest edge component along it (a grid's spacing on that axis).
+  auto cellAlong = [&](int a) {
+    Real spacing = std::numeric_limits<Real>::max();
+    for (const Link& l : c.constraints) {
+      const Real d = std::abs(c.restPosition[l.i][a] - c.restPosition[l.j][a]);
+      if (d > 1e-6 * target) spacing = std::min(spacing, d);
+    }
+    return spacing < target ? std::pair{spacing * std::round(target / spacing), std::round(target / spacing)}
+                            : std::pair{target, 1.0};
+  };
+  const auto [cellU, stepsU] = cellAlong(axes[0]);
+  const auto [cellV, stepsV] = cellAlong(axes[1]);
+  return {axes[0], axes[1], lo - Vec3(1e-9), cellU, cellV, stepsU, stepsV};
 }
 
 /// Pattern group of triangle t: checker (2 groups) or woven (4: ground, warp stripe, weft stripe, both).
 int patternGroup(const Cloth& c, const Triangle& t, const RestFrame& f, Pattern pattern) {
   const Vec3 centroid = (c.restPosition[t[0]] + c.restPosition[t[1]] + c.restPosition[t[2]]) / 3.0;
-  const Real u = centroid[f.u] / f.cell, v = centroid[f.v] / f.cell;
+  const Real u = (centroid[f.u] - f.origin[f.u]) / f.cellU, v = (centroid[f.v] - f.origin[f.v]) / f.cellV;
   if (pattern == Pattern::Checker) return static_cast<int>(std::floor(u) + std::floor(v)) & 1;
-  const auto stripe = [](Real s) { return s - std::floor(s) < 0.3 ? 1 : 0; };  // a stripe in each cell
-  return stripe(u) + 2 * stripe(v);
+  // Woven: in each cell a stripe a third as wide, made of whole edge lengths (so it follows a grid).
+  const auto stripe = [](Real s, Real steps) {
+    const Real width = std::max(1.0, std::round(steps / 3.0));
+    return std::floor((s - std::floor(s)) * steps + 1e-6) < width ? 1 : 0;
+  };
+  return stripe(u, f.stepsU) + 2 * stripe(v, f.stepsV);
 }
 
 Real triangleStrain(const Cloth& c, const Triangle& t) {

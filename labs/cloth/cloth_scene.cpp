@@ -51,6 +51,9 @@ ClothScene::ClothScene() {
   params_.real("friction", &friction_, 0.0, 2.0, "", "Coulomb friction μ of every collider. Typical 0.4.");
   params_.flag("self_collision", &settings_.selfCollision,
                "Particle–particle self-collision (Ten Minute Physics #15, dense spatial hash).");
+  params_.integer("self_sweeps", &settings_.selfCollisionSweeps, 1, 10, "",
+                  "Self-collision sweeps per substep (TMP: 1). More resolve piles of many layers.")
+      .shownWhen([this] { return settings_.selfCollision; });
   params_.flag("tearing", &settings_.tearing.enabled, "Edges stretched beyond tear_threshold split the cloth.");
   params_.real("tear_threshold", &settings_.tearing.threshold, 0.05, 5.0, "",
                "Strain (l − L)/L at which an edge tears. Typical 0.5.")

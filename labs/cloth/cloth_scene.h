@@ -60,7 +60,7 @@ class ClothScene : public app::Scene {
   Real bendStiffness_ = 20.0;   ///< [N/m] bend springs
   Real springDamping_ = 0.02;   ///< [N·s/m]
   Real compliance_ = 0.0;       ///< [m/N] XPBD stretch and shear
-  Real bendCompliance_ = 50.0;  ///< [1/(N·m)] XPBD isometric bending
+  Real bendCompliance_ = 1000.0;  ///< [1/(N·m)] XPBD isometric bending
   Real bendLinkCompliance_ = 1.0;  ///< [m/N] XPBD distance bending
   Real damping_ = 0.1;          ///< [1/s] mass (velocity) damping, every solver
   Real thickness_ = 0.01;       ///< [m]

@@ -19,6 +19,9 @@ class CurtainScene final : public ClothScene {
     clothColor_ = colors::kTeal;
     pattern_ = Pattern::Woven;
   }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 1.25, 0.0), 4.2, 0.35, 0.2};
+  }
   std::string description() const override {
     return "A curtain on a rail: its top row follows the sliding rings (moving pins) and bunches into folds.";
   }
@@ -45,10 +48,14 @@ class CurtainScene final : public ClothScene {
   void beforeStep(Real dt, Real t) override {
     const Real w = span(t + dt);
     const int nx = resolution_;
+    const Real rest = kWidth / (nx - 1), gap = w / (nx - 1);
+    // Pleating tape: as the rings close up, the fabric between them folds alternately forward and back,
+    // so the top row keeps its length and the pleats run down the curtain.
+    const Real depth = 0.5 * std::sqrt(std::max(0.0, rest * rest - gap * gap));
     for (Pin& p : cloth_.pins) {
       if (static_cast<int>(p.particle) == dragged_ || p.particle >= static_cast<std::uint32_t>(nx)) continue;
-      // Sliding rings: ring i at its share of the span, with a little sag between rings (z stays 0).
-      p.target = Vec3(kLeft + w * static_cast<Real>(p.particle) / (nx - 1), kRailHeight, 0.0);
+      const Real z = (p.particle % 2 == 0 ? 1.0 : -1.0) * depth;
+      p.target = Vec3(kLeft + gap * static_cast<Real>(p.particle), kRailHeight, z);
     }
   }
   void drawExtras(DebugDraw& d) const override {

@@ -22,6 +22,9 @@ class DrapeScene final : public ClothScene {
     clothColor_ = colors::kPurple;
     friction_ = 0.3;
   }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 0.55, 0.0), 2.8, 0.6, 0.45};
+  }
   std::string description() const override {
     return "A cloth falls on a sphere, box or capsule (collider parameter): drapes with friction, never inside it.";
   }

@@ -18,7 +18,10 @@ class FlagScene final : public ClothScene {
     params_.real("lift_coefficient", &env_.liftCoefficient, 0.0, 3.0, "", "C_L of the lift model. Typical 0.5.");
     declareDisplayParams();
     clothColor_ = colors::kBlue;
-    bendCompliance_ = 20.0;
+    bendCompliance_ = 300.0;
+  }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 1.8, 0.0), 3.6, 0.35, 0.2};
   }
   std::string description() const override {
     return "A flag on a pole in gusty wind: drag and lift on every triangle (CLOTH-3) make it flutter.";
@@ -45,9 +48,11 @@ class FlagScene final : public ClothScene {
     colliders_.push_back(Collider{});
     return c;
   }
-  void beforeStep(Real, Real) override {
+  void beforeStep(Real, Real t) override {
+    // The wind veers slowly by ±20° about +x: a flag aligned with a steady wind is edge-on and still.
+    const Real veer = degToRad(20.0) * std::sin(2.0 * kPi * 0.25 * t);
     env_.aerodynamics = true;
-    env_.wind.base = Vec3(windSpeed_, 0.0, 0.0);
+    env_.wind.base = windSpeed_ * Vec3(std::cos(veer), 0.0, std::sin(veer));
     env_.wind.gust = gust_;
     env_.wind.frequency = 0.7;
     env_.wind.wavelength = 4.0;

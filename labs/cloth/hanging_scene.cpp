@@ -8,6 +8,9 @@ namespace {
 class HangingScene final : public ClothScene {
  public:
   HangingScene() { declareDisplayParams(); }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 1.15, 0.0), 2.8, 0.5, 0.25};
+  }
   std::string description() const override {
     return "A square cloth pinned at two corners falls and swings: switch solvers live (1–8) and compare the "
            "stretch near the pins.";

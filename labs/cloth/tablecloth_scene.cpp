@@ -16,6 +16,9 @@ class TableclothScene final : public ClothScene {
     clothColor_ = Color{0.80f, 0.12f, 0.16f, 1.0f};
     friction_ = 0.6;
   }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 0.55, 0.0), 3.2, 0.6, 0.5};
+  }
   std::string description() const override {
     return "A tablecloth falls onto a table: friction holds it on the top, the corners fold over the edges.";
   }

@@ -21,6 +21,9 @@ class TearScene final : public ClothScene {
     clothColor_ = colors::kOrange;
     friction_ = 0.2;
   }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 0.9, 0.0), 3.0, 0.6, 0.55};
+  }
   std::string description() const override {
     return "A ball pushes through a cloth held at its border until it tears; the mesh splits and stays valid.";
   }

@@ -61,7 +61,7 @@ struct CollisionPassStats {
 };
 /// Projects every free particle (w > 0) out of every collider. When `velocities` is not empty, adds the
 /// projection's Δx/h to each velocity (the force-based solvers; XPBD derives v from x afterwards).
-/// frictionScale 0 projects without friction (XPBD's final pass, after the constraints).
+/// frictionScale 0 projects without friction (XPBD's first pass, before the constraints).
 CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec3> x, std::span<const Vec3> xPrev,
                               std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities,
                               Real frictionScale = 1.0);

@@ -169,20 +169,21 @@ void ClothSolver::explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std
 
 void ClothSolver::endSubstep(Cloth& cloth, std::span<const Collider> colliders, const ClothSolverSettings& s, Real h,
                              bool velocityLevel, ClothStepStats& stats) {
-  const std::span<Vec3> noVelocities;
+  const std::span<Vec3> velocities = velocityLevel ? std::span<Vec3>(cloth.velocity) : std::span<Vec3>();
   if (s.selfCollision) {
     if (velocityLevel) beforeSelf_ = cloth.position;
-    stats.selfContacts =
-        self_.solve(cloth.position, previous_, cloth.inverseMass, cloth.material.thickness, s.selfFriction).contacts;
+    for (int sweep = 0; sweep < std::max(1, s.selfCollisionSweeps); ++sweep) {
+      const std::size_t contacts =
+          self_.solve(cloth.position, previous_, cloth.inverseMass, cloth.material.thickness, s.selfFriction).contacts;
+      if (sweep == 0) stats.selfContacts = contacts;
+    }
     if (velocityLevel) {
       for (std::size_t i = 0; i < cloth.size(); ++i) cloth.velocity[i] += (cloth.position[i] - beforeSelf_[i]) / h;
     }
   }
-  // Force solvers: the one collision pass, with friction. PBD/XPBD had theirs before the constraints;
-  // this final pass only projects what the constraints and self-collision pushed back in.
-  stats.contacts = collideAll(colliders, cloth.position, previous_, cloth.inverseMass, 0.5 * cloth.material.thickness, h,
-                              velocityLevel ? std::span<Vec3>(cloth.velocity) : noVelocities, velocityLevel ? 1.0 : 0.0)
-                       .contacts;
+  stats.contacts =
+      collideAll(colliders, cloth.position, previous_, cloth.inverseMass, 0.5 * cloth.material.thickness, h, velocities)
+          .contacts;
 }
 
 }  // namespace pba::cloth

@@ -53,6 +53,7 @@ struct ClothSolverSettings {
   /// TMP #15's speed limit with self-collision: at most this many thicknesses per substep (0 = none).
   /// It bounds how far a particle travels in a frame, so the pair list of the frame stays complete.
   Real selfCollisionMaxTravel = 0.2;
+  int selfCollisionSweeps = 1;  ///< Gauss–Seidel sweeps over the self-collision pairs per substep (TMP: 1)
   TearSettings tearing;
 };
 Status validate(const ClothSolverSettings& s);
