@@ -26,6 +26,13 @@ ClothScene::ClothScene() {
                "Bend springs (skip one particle) of the mass-spring model. Typical 1–100.");
   params_.real("spring_damping", &springDamping_, 0.0, 10.0, "N·s/m",
                "Damping along every spring (resists the rate of stretch). Typical 0.02.");
+  params_.real("cg_tolerance", &settings_.implicit.cg.tolerance, 1e-12, 0.5, "",
+               "Implicit: relative residual (preconditioned norm) at which the conjugate gradient stops. Typical 10⁻³.")
+      .logarithmic()
+      .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
+  params_.integer("cg_max_iterations", &settings_.implicit.cg.maxIterations, 1, 10000, "",
+                  "Implicit: at most this many conjugate-gradient iterations per step. Typical 500.")
+      .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
   params_.real("compliance", &compliance_, 0.0, 1e-2, "m/N",
                "XPBD compliance α = 1/k of the stretch and shear constraints: 0 is inextensible. Independent of "
                "iterations and substeps, unlike PBD's stiffness. Typical 0–10⁻⁴.")
@@ -46,6 +53,10 @@ ClothScene::ClothScene() {
   params_.real("thickness", &thickness_, 0.001, 0.1, "m",
                "Particles keep this distance from each other (self-collision) and half of it from colliders.");
   params_.integer("resolution", &resolution_, 2, 256, "", "Particles along the cloth's first side. Typical 32.")
+      .needsReset();
+  params_.choiceEnum("layout", &layout_, {"grid", "mesh"},
+                     "Springs of the mass-spring model: grid (Provot: axis neighbours, both diagonals, skip-one; "
+                     "CLOTH-1) or mesh (every edge, and across every inner edge).")
       .needsReset();
   params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration. Earth 9.81.");
   params_.real("friction", &friction_, 0.0, 2.0, "", "Coulomb friction μ of every collider. Typical 0.4.");
@@ -95,6 +106,7 @@ void ClothScene::reset() {
   }
   applyParams();
   solver_.reset();
+  initialEnergy_ = clothEnergy(cloth_, env_, settings_.kind, settings_.bending);
   time_ = 0.0;
   stats_ = {};
   worstColliderDistance_ = std::numeric_limits<Real>::infinity();
@@ -128,6 +140,9 @@ nlohmann::json ClothScene::clothMetrics(const Cloth& c, const ClothStepStats& st
                    {"mean_strain", strain.mean},
                    {"max_compression", strain.maxCompression},
                    {"energy_J", clothEnergy(c, env_, kind, settings_.bending)},
+                   {"energy_drift", (clothEnergy(c, env_, kind, settings_.bending) - initialEnergy_) /
+                                        std::max(std::abs(initialEnergy_), 1e-9)},
+                   {"mesh_valid", checkMeshConsistency(c).empty()},
                    {"cg_iterations", stats.cgIterations},
                    {"cg_residual", stats.cgResidual},
                    {"constraint_iterations", stats.constraintIterations},
@@ -154,7 +169,7 @@ std::vector<app::Preset> ClothScene::presets() const {
   return {{"xpbd", {{"solver", "xpbd"}, {"substeps", 10}, {"iterations", 1}}},
           {"pbd", {{"solver", "pbd"}, {"substeps", 1}, {"iterations", 10}}},
           {"implicit", {{"solver", "implicit"}, {"substeps", 1}}},
-          {"explicit", {{"solver", "explicit"}, {"substeps", 60}}},
+          {"explicit", {{"solver", "explicit"}, {"substeps", 200}}},
           {"implicit k=1e5", {{"solver", "implicit"}, {"substeps", 1}, {"stiffness", 1e5}}},
           {"explicit k=1e5: boom", {{"solver", "explicit"}, {"substeps", 1}, {"stiffness", 1e5}}},
           {"xpbd stretchy", {{"solver", "xpbd"}, {"compliance", 1e-3}}},

@@ -11,6 +11,7 @@
 
 #include "app/scene_registry.h"
 #include "physics/cloth/solver.h"
+#include "physics/cloth/tearing.h"
 
 namespace pba::labs::cloth {
 
@@ -66,6 +67,7 @@ class ClothScene : public app::Scene {
   Real thickness_ = 0.01;       ///< [m]
   Real gravity_ = kStandardGravity;  ///< [m/s²]
   Real friction_ = 0.4;         ///< μ of the colliders
+  SpringLayout layout_ = SpringLayout::Grid;  ///< of the grid scenes' springs
   // Display
   Pattern pattern_ = Pattern::Checker;
   bool strainColors_ = false, wireframe_ = false, showLinks_ = false;
@@ -81,6 +83,7 @@ class ClothScene : public app::Scene {
   ClothStepStats stats_;
   std::string buildError_;
   Real time_ = 0.0;
+  Real initialEnergy_ = 0.0;  ///< [J] at reset
   double solverMs_ = 0.0;           ///< wall time of the last solver step [ms]
   std::size_t selfIntersections_ = 0, worstSelfIntersections_ = 0;
   bool countIntersections_ = false;  ///< every step (self-collision scenes) instead of on demand

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cloth_scene.h"
+#include "physics/cloth/self_collision.h"
 
 namespace pba::labs::cloth {
 namespace {
@@ -62,6 +63,9 @@ class ComparisonScene final : public ClothScene {
     j["explicit_substeps"] =
         static_cast<int>(std::ceil((1.0 / 60.0) / (0.5 * explicitStabilityLimit(cloths_[0]))));
     j["implicit_cg_iterations"] = stats_[1].cgIterations;
+    j["step_ms"] = ms_[0] + ms_[1] + ms_[2] + ms_[3];
+    particles::SpatialHash hash;
+    j["self_intersections"] = countSelfIntersections(cloths_[3].position, cloths_[3].restPosition, thickness_, hash);
     return j;
   }
   std::optional<std::string> nonFiniteState() const override {
@@ -84,6 +88,7 @@ class ComparisonScene final : public ClothScene {
  protected:
   Result<Cloth> build() override {
     grid_ = GridDesc{};
+    grid_.layout = layout_;
     grid_.resolutionX = grid_.resolutionY = resolution_;
     grid_.width = grid_.height = 0.9;
     grid_.pins = GridPins::TopCorners;

@@ -29,6 +29,7 @@ class CurtainScene final : public ClothScene {
  protected:
   Result<Cloth> build() override {
     grid_ = GridDesc{};
+    grid_.layout = layout_;
     grid_.resolutionX = resolution_;
     grid_.resolutionY = resolution_;
     grid_.width = kWidth;

@@ -60,6 +60,7 @@ class DrapeScene final : public ClothScene {
       return buildCloth(m.value(), material_);
     }
     grid_ = GridDesc{};
+    grid_.layout = layout_;
     grid_.resolutionX = grid_.resolutionY = resolution_;
     grid_.width = grid_.height = kSize;
     grid_.center = Vec3(0.0, kDropHeight, 0.0);

@@ -30,6 +30,7 @@ class FlagScene final : public ClothScene {
  protected:
   Result<Cloth> build() override {
     grid_ = GridDesc{};
+    grid_.layout = layout_;
     grid_.resolutionX = resolution_;
     grid_.resolutionY = std::max(2, resolution_ * 2 / 3);
     grid_.width = 1.5;

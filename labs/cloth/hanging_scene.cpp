@@ -19,6 +19,7 @@ class HangingScene final : public ClothScene {
  protected:
   Result<Cloth> build() override {
     grid_ = GridDesc{};
+    grid_.layout = layout_;
     grid_.resolutionX = grid_.resolutionY = resolution_;
     grid_.width = grid_.height = 1.0;
     grid_.center = Vec3(0.0, 1.6, 0.0);

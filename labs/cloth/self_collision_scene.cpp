@@ -38,6 +38,7 @@ class SelfCollisionScene final : public ClothScene {
  protected:
   Result<Cloth> build() override {
     grid_ = GridDesc{};
+    grid_.layout = layout_;
     grid_.resolutionX = resolution_;
     grid_.resolutionY = resolution_ * 20 / 3;  // 30 × 200
     grid_.width = kSpacing * (grid_.resolutionX - 1);

@@ -29,6 +29,7 @@ class TableclothScene final : public ClothScene {
     top.halfExtents = kTableHalf;
     colliders_ = {top, Collider{}};
     grid_ = GridDesc{};
+    grid_.layout = layout_;
     grid_.resolutionX = grid_.resolutionY = resolution_;
     grid_.width = grid_.height = 1.5;
     grid_.center = Vec3(0.05, kTableTop + 0.25, 0.03);  // a little off-centre: it settles asymmetrically
