@@ -93,19 +93,20 @@ void implicitSystemProduct([[maybe_unused]] std::span<const SpringJacobian> spri
                            [[maybe_unused]] std::span<const Real> mass, [[maybe_unused]] Real massDamping,
                            [[maybe_unused]] Real h, [[maybe_unused]] std::span<const Vec3> y, std::span<Vec3> out) {
   // BEGIN SOLUTION
-  const Real massFactor = 1.0 + h * massDamping;
-  for (std::size_t i = 0; i < y.size(); ++i) out[i] = massFactor * mass[i] * y[i];
-  const Real h2 = h * h;
-  for (const SpringJacobian& s : springs) {
-    const Vec3 dy = y[s.j] - y[s.i];
-    const Real along = glm::dot(s.direction, dy);
-    const Vec3 t = h2 * (s.lateral * dy + (s.stiffness - s.lateral) * along * s.direction) + h * s.damping * along * s.direction;
-    out[s.i] -= t;
-    out[s.j] += t;
+  std::transform(y.begin(), y.end(), mass.begin(), out.begin(),
+                 [&](const Vec3& yi, Real mi) { return (1.0 + h * massDamping) * mi * yi; });
+  for (const SpringJacobian& J : springs) {
+    const Vec3 n = J.direction;
+    const Vec3 stretch = y[J.j] - y[J.i];
+    // h² K_s Δy + h D_s Δy, with K_s Δy = lateral Δy + (k − lateral) n (n·Δy) and D_s Δy = k_d n (n·Δy)
+    const Vec3 coupling = h * h * J.lateral * stretch +
+                          (h * h * (J.stiffness - J.lateral) + h * J.damping) * glm::dot(n, stretch) * n;
+    out[J.i] -= coupling;
+    out[J.j] += coupling;
   }
   // END SOLUTION
-  // STUB: std::fill(out.begin(), out.end(), Vec3(0.0));
   // STUB: exercises::markNotImplemented("CLOTH-5");
+  // STUB: std::fill(out.begin(), out.end(), Vec3(0.0));
 }
 
 ImplicitStats implicitStep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
@@ -123,7 +124,7 @@ ImplicitStats implicitStep(Cloth& cloth, const ClothEnvironment& env, std::span<
   accumulateSpringForces(cloth.springs, cloth.material, cloth.position, cloth.velocity, false, w.force);
   accumulateExternalForces(cloth, undamped, t, cloth.position, cloth.velocity, w.force);
   w.b.resize(n);
-  for (std::size_t i = 0; i < n; ++i) w.b[i] = cloth.mass[i] * cloth.velocity[i] + h * w.force[i];
+  for (std::size_t i = 0; i < w.b.size(); ++i) w.b[i] = cloth.mass[i] * cloth.velocity[i] + h * w.force[i];
 
   ImplicitStats stats;
   stats.contactConstraints = buildFilter(cloth, colliders, settings, h, w);

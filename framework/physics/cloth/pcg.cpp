@@ -16,6 +16,16 @@ Vec3 precondition(std::span<const Mat3> inverse, std::size_t i, const Vec3& r) {
   return inverse.empty() ? r : inverse[i] * r;
 }
 
+/// v ← S v, particle by particle.
+void filterInPlace(std::span<const ParticleFilter> filter, std::span<Vec3> v) {
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = applyFilter(filter[k], v[k]);
+}
+
+/// out ← P⁻¹ r.
+void preconditionAll(std::span<const Mat3> inverse, std::span<const Vec3> r, std::span<Vec3> out) {
+  for (std::size_t k = 0; k < r.size(); ++k) out[k] = precondition(inverse, k, r[k]);
+}
+
 }  // namespace
 
 Vec3 applyFilter(const ParticleFilter& f, const Vec3& y) {
@@ -46,15 +56,17 @@ PcgStats filteredPcg(const ParticleOperator& A, std::span<const Vec3> b, std::sp
     bNorm2 += glm::dot(sb, sb);
   }
   A(x, w.q);
-  for (std::size_t i = 0; i < n; ++i) w.r[i] = applyFilter(filter[i], b[i] - w.q[i]);
-  for (std::size_t i = 0; i < n; ++i) w.c[i] = applyFilter(filter[i], precondition(preconditionerInverse, i, w.r[i]));
+  std::transform(b.begin(), b.end(), w.q.begin(), w.r.begin(), [](const Vec3& bi, const Vec3& qi) { return bi - qi; });
+  filterInPlace(filter, w.r);
+  preconditionAll(preconditionerInverse, w.r, w.c);
+  filterInPlace(filter, w.c);
   Real delta = sumDot(w.r, w.c);
 
   PcgStats stats;
   const Real eps2 = settings.tolerance * settings.tolerance;
   while (stats.iterations < settings.maxIterations && delta > eps2 * delta0) {
     A(w.c, w.q);
-    for (std::size_t i = 0; i < n; ++i) w.q[i] = applyFilter(filter[i], w.q[i]);
+    filterInPlace(filter, w.q);
     const Real cq = sumDot(w.c, w.q);
     if (!(cq > 0.0)) break;  // not positive definite along c: keep the iterate (the caller reports it)
     const Real alpha = delta / cq;

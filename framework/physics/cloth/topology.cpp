@@ -106,19 +106,21 @@ std::vector<Edge> buildEdges(std::span<const Triangle> triangles) {
 
 std::vector<GridLink> gridSpringTopology([[maybe_unused]] int nx, [[maybe_unused]] int ny) {
   // BEGIN SOLUTION
+  // Each particle starts the springs to these neighbours (column step, row step, kind).
+  struct Step {
+    int di, dj;
+    LinkKind kind;
+  };
+  constexpr Step kSteps[] = {{1, 0, LinkKind::Stretch}, {0, 1, LinkKind::Stretch}, {1, 1, LinkKind::Shear},
+                             {-1, 1, LinkKind::Shear},  {2, 0, LinkKind::Bend},    {0, 2, LinkKind::Bend}};
   std::vector<GridLink> links;
-  if (nx < 1 || ny < 1) return links;
-  auto index = [nx](int i, int j) { return static_cast<std::uint32_t>(j * nx + i); };
-  for (int j = 0; j < ny; ++j) {
-    for (int i = 0; i < nx; ++i) {
-      if (i + 1 < nx) links.push_back({index(i, j), index(i + 1, j), LinkKind::Stretch});
-      if (j + 1 < ny) links.push_back({index(i, j), index(i, j + 1), LinkKind::Stretch});
-      if (i + 1 < nx && j + 1 < ny) {
-        links.push_back({index(i, j), index(i + 1, j + 1), LinkKind::Shear});
-        links.push_back({index(i + 1, j), index(i, j + 1), LinkKind::Shear});
+  const int count = nx > 0 && ny > 0 ? nx * ny : 0;
+  for (int p = 0; p < count; ++p) {
+    for (const Step& step : kSteps) {
+      const int qi = p % nx + step.di, qj = p / nx + step.dj;
+      if (qi >= 0 && qi < nx && qj < ny) {
+        links.push_back({static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(qj * nx + qi), step.kind});
       }
-      if (i + 2 < nx) links.push_back({index(i, j), index(i + 2, j), LinkKind::Bend});
-      if (j + 2 < ny) links.push_back({index(i, j), index(i, j + 2), LinkKind::Bend});
     }
   }
   return links;
