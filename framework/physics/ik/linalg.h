@@ -1,7 +1,7 @@
 #pragma once
 // Small dense linear algebra for the Jacobian IK methods: a row-major matrix, products with vectors,
 // J Jᵀ, a Cholesky solve and the singular value decomposition. The factorisations come from Eigen 3.4
-// (DESIGN.md §1: linear algebra that is not the lesson); the lesson, the damped least-squares step
+// (docs/architecture.md §1: linear algebra that is not the lesson); the lesson, the damped least-squares step
 // of IK-4, is written on top of solveSpd.
 #include <vector>
 
