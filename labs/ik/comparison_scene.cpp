@@ -23,18 +23,23 @@ struct Method {
   SolverKind kind;
   Color color;
 };
+// The palette's yellow, orange and pink read faintly on white panels and a projector: darker shades,
+// each at least 3:1 in contrast against white (tests/labs/ik_comparison_legend_test.cpp).
+constexpr Color kDarkGold{0.72f, 0.52f, 0.0f, 1.0f};
+constexpr Color kDeepOrange{0.90f, 0.45f, 0.05f, 1.0f};
+constexpr Color kDeepPink{0.84f, 0.22f, 0.52f, 1.0f};
 // Each method's colour (the switch has no default: a new SolverKind must get one, or -Wswitch says so).
 Color colorOf(SolverKind kind) {
   switch (kind) {
     case SolverKind::Analytic: return colors::kDark;
     case SolverKind::Ccd: return colors::kRed;
     case SolverKind::Fabrik: return colors::kGreen;
-    case SolverKind::JacobianTranspose: return colors::kOrange;
-    case SolverKind::PseudoInverse: return colors::kYellow;
+    case SolverKind::JacobianTranspose: return kDeepOrange;
+    case SolverKind::PseudoInverse: return kDarkGold;
     case SolverKind::DampedLeastSquares: return colors::kBlue;
     case SolverKind::SelectivelyDamped: return colors::kPurple;
     case SolverKind::GradientDescent: return colors::kTeal;
-    case SolverKind::Lbfgs: return colors::kPink;
+    case SolverKind::Lbfgs: return kDeepPink;
   }
   return colors::kDark;
 }
@@ -150,15 +155,29 @@ class ComparisonScene final : public app::Scene {
   void drag(int, const Vec3& target) override {
     dragging_ = true;
     goal_ = target - baseOf(0);
-    solveAll();
   }
   void release(int) override { dragging_ = false; }
   /// The arrow keys move the one goal of every chain; it then stays put (path: mouse).
   bool nudge(const Vec3& delta) override {
     goal_ += delta;
     path_ = ComparePath::Mouse;
-    solveAll();
     return true;
+  }
+  /// A drag or nudge while paused: every method solves toward the goal where it is now.
+  void refresh() override { solveAll(); }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, baseOf(0) + goal_}}; }
+  /// Each method's colour with its iterations, final residual and status: the key to the chains and
+  /// to the curves, kept on screen while Tab hides the panels.
+  std::vector<app::LegendEntry> legend() const override {
+    std::vector<app::LegendEntry> out;
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      char text[96];
+      std::snprintf(text, sizeof text, "%-6s %3d it  %.1e m  %s", solverName(kMethods[m].kind), results_[m].iterations,
+                    results_[m].positionResidual, statusName(results_[m].status));
+      out.push_back({kMethods[m].color, text});
+    }
+    out.push_back({colors::kDark, "goal (black ball): drag it"});
+    return out;
   }
   Real nudgeStep() const override { return 0.03 * desc_.totalLength; }
 
@@ -188,7 +207,7 @@ class ComparisonScene final : public app::Scene {
     ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowSize(ImVec2(column.x1 - column.x0, 0.0f), ImGuiCond_Always);
     ImGui::Begin("Residual per iteration (log scale)", nullptr,
-                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
     size_t longest = 2;
     Real top = -1.0;
     for (const SolveResult& r : results_) {
@@ -218,15 +237,10 @@ class ComparisonScene final : public app::Scene {
       const std::vector<Real>& hist = results_[m].residualHistory;
       std::vector<ImVec2> line;
       for (size_t i = 0; i < hist.size(); ++i) line.push_back(point(Real(i), hist[i]));
-      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 2.5f);
+      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 0.15f * font);
     }
     ImGui::Dummy(ImVec2(axis + width, height));
-    ImGui::TextDisabled("iterations 0 … %zu; dark line: tolerance %.0e m", longest - 1, options_.tolerance);
-    for (size_t m = 0; m < kMethods.size(); ++m) {
-      const Color& c = kMethods[m].color;
-      ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "■ %-6s %3d it  %.1e m  %s", solverName(kMethods[m].kind), results_[m].iterations,
-                         results_[m].positionResidual, statusName(results_[m].status));
-    }
+    ImGui::TextDisabled("0 … %zu iterations; black: tolerance", longest - 1);
     ImGui::End();
   }
 

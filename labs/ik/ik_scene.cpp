@@ -182,8 +182,22 @@ bool IkScene::nudge(const Vec3& delta) {
   selected_ = std::min(selected_, rig_.effectors.size() - 1);
   rig_.effectors[selected_].targetPosition += delta;
   path_ = TargetPath::Mouse;  // the goal stays where the keys put it
-  solveNow();
   return true;
+}
+
+std::vector<app::DragHandle> IkScene::dragHandles() const {
+  std::vector<app::DragHandle> out;
+  for (size_t k = 0; k < rig_.effectors.size(); ++k) out.push_back({static_cast<int>(k), rig_.effectors[k].targetPosition});
+  return out;
+}
+
+std::vector<app::LegendEntry> IkScene::legend() const {
+  std::vector<app::LegendEntry> out = {{colors::kRed, "goal: drag it, or nudge it with the arrow keys"},
+                                       {colors::kGreen, "effector"},
+                                       {colors::kBlue, "bones"}};
+  if (showLimits_) out.push_back({colors::kOrange, "joint limits"});
+  if (showPath_) out.push_back({colors::kPurple, "effector path over the last solve's iterations"});
+  return out;
 }
 
 }  // namespace pba::labs::ik
