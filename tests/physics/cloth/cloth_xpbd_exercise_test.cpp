@@ -57,7 +57,7 @@ TEST(CLOTH_2_XpbdDistance, ComplianceSoftensTheCorrectionByTheScaledComplianceAn
   EXPECT_NEAR(C, 0.1 * 10.0 / 11.0, 1e-12);  // the fixed point: C = C₀ α̃/(w + α̃)
 }
 
-TEST(CLOTH_2_XpbdDistance, DoesNothingForCoincidentOrPinnedPairs) {
+TEST(ClothXpbdDistance, DoesNothingForCoincidentOrPinnedPairs) {
   const DistanceCorrection same = xpbdDistanceCorrection(Vec3(1.0), Vec3(1.0), 1.0, 1.0, 0.5, 0.0, 0.01, 0.0);
   EXPECT_EQ(same.deltaI, Vec3(0.0));
   const DistanceCorrection pinned = xpbdDistanceCorrection(Vec3(0.0), Vec3(2.0, 0.0, 0.0), 0.0, 0.0, 1.0, 0.0, 0.01, 0.0);
