@@ -151,7 +151,7 @@ void BM_Integrator(benchmark::State& state) {
   desc.copies = 100000;
   ode::HarmonicOscillator osc(desc);
   ode::Integrator integrator(kind);
-  integrator.adaptiveSettings.tolerance = 1e-6;
+  (void)integrator.setAdaptiveSettings({.tolerance = 1e-6});  // valid: a constant
   for (auto _ : state) integrator.step(osc, 1e-3);
   state.SetLabel(std::string(ode::integratorName(kind)));
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * desc.copies));

@@ -18,6 +18,13 @@ if(NOT TARGET glm::glm)
   add_library(glm::glm INTERFACE IMPORTED)
 endif()
 
+# Eigen 3.4 (header-only): dense factorisations of the physics library where linear algebra is not
+# the lesson (IK's SVD and Cholesky, Horn's 4 × 4 eigenproblem).
+find_package(Eigen3 3.4 CONFIG QUIET)
+if(NOT Eigen3_FOUND)
+  pba_missing("Eigen 3.4" "libeigen3-dev")
+endif()
+
 find_package(nlohmann_json 3.10 CONFIG QUIET)
 if(NOT nlohmann_json_FOUND)
   pba_missing("nlohmann-json" "nlohmann-json3-dev")

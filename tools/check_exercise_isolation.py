@@ -115,6 +115,7 @@ def main():
     ap.add_argument("build")
     ap.add_argument("catalog")
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("PBA_JOBS", os.cpu_count() or 2)))
+    ap.add_argument("--skip-label", action="append", default=[], help="leave out tests with this ctest label")
     ap.add_argument("--work", default=None, help="folder for trace files and logs (default BUILD/isolation)")
     args = ap.parse_args()
     if not os.path.isdir(args.build) or not os.path.isfile(args.catalog):
@@ -124,7 +125,8 @@ def main():
     known = {tag for tag, _ in tags}
     work = os.path.abspath(args.work or os.path.join(args.build, "isolation"))
     os.makedirs(work, exist_ok=True)
-    tests = load_tests(args.build)
+    tests = [t for t in load_tests(args.build)
+             if not set(t["props"].get("LABELS", [])) & set(args.skip_label)]
     by_name = {t["name"]: t for t in tests}
     problems = []
 
