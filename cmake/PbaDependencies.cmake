@@ -18,9 +18,11 @@ if(NOT TARGET glm::glm)
   add_library(glm::glm INTERFACE IMPORTED)
 endif()
 
-find_package(Eigen3 3.3 QUIET NO_MODULE)
-if(NOT Eigen3_FOUND OR NOT TARGET Eigen3::Eigen)
-  pba_missing("Eigen 3 (Eigen3Config.cmake)" "libeigen3-dev")
+# Eigen 3.4 (header-only): dense factorisations of the physics library where linear algebra is not
+# the lesson (IK's SVD and Cholesky, Horn's 4 × 4 eigenproblem).
+find_package(Eigen3 3.4 CONFIG QUIET)
+if(NOT Eigen3_FOUND)
+  pba_missing("Eigen 3.4" "libeigen3-dev")
 endif()
 
 find_package(nlohmann_json 3.10 CONFIG QUIET)

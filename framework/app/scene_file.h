@@ -33,4 +33,9 @@ Status saveSceneFile(const std::string& path, const std::string& lab, const std:
 /// Applies a JSON object of parameters (scene file "params" or a preset); messages use fieldPrefix.
 Status applyParams(Scene& scene, const nlohmann::json& params, const std::string& fieldPrefix);
 
+/// Every parameter value of `preset` of registered scene `sceneName`: the scene's defaults (those of
+/// a freshly created instance), then the preset's own values. Error when no such scene is registered
+/// or a value is invalid (checked on that fresh instance, never on a running scene).
+Result<nlohmann::json> presetParams(const std::string& sceneName, const Preset& preset);
+
 }  // namespace pba::app

@@ -81,6 +81,7 @@ class DropScene final : public app::Scene {
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
     return app::pickSphere(ray, state_.position, desc_.radius, 0);
   }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, state_.position}}; }
   void drag(int, const Vec3& target) override {
     dragging_ = true;
     const Real floorY = desc_.groundHeight + desc_.radius;

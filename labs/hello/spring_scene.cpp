@@ -74,6 +74,7 @@ class SpringScene final : public app::Scene {
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
     return app::pickSphere(ray, state_.position, kBallRadius, 0);
   }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, state_.position}}; }
   void drag(int, const Vec3& target) override {
     dragging_ = true;
     state_.position = target;

@@ -1,0 +1,171 @@
+#include "physics/cloth/colliders.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "physics/exercises/not_implemented.h"
+
+namespace pba::cloth {
+namespace {
+
+constexpr Real kMinDistance = 1e-12;  // [m] a particle this close to a sphere's centre has no normal
+
+/// A collider with what every query needs precomputed: the unit orientation, its local y axis (the
+/// plane's normal, the capsule's axis) and a bounding radius for a quick rejection.
+struct Prepared {
+  const Collider* c = nullptr;
+  Quat q{1.0, 0.0, 0.0, 0.0};
+  Vec3 axis{0.0, 1.0, 0.0};
+  Real bound = std::numeric_limits<Real>::infinity();  ///< [m] no point farther from the centre touches it
+};
+
+Prepared prepare(const Collider& c) {
+  Prepared p;
+  p.c = &c;
+  p.q = glm::normalize(c.orientation);
+  p.axis = p.q * Vec3(0.0, 1.0, 0.0);
+  switch (c.shape) {
+    case ColliderShape::Plane: break;
+    case ColliderShape::Sphere: p.bound = c.radius; break;
+    case ColliderShape::Capsule: p.bound = c.radius + c.halfLength; break;
+    case ColliderShape::Box: p.bound = glm::length(c.halfExtents); break;
+  }
+  return p;
+}
+
+SurfacePoint boxSurface(const Prepared& b, const Vec3& x) {
+  const Collider& c = *b.c;
+  const Vec3 p = glm::conjugate(b.q) * (x - c.center);  // box frame
+  const Vec3 a = glm::abs(p) - c.halfExtents;           // per-axis distance outside the slab
+  SurfacePoint s;
+  if (a.x > 0.0 || a.y > 0.0 || a.z > 0.0) {  // outside: distance to the closest point of the box
+    const Vec3 outside = glm::max(a, Vec3(0.0));
+    s.distance = glm::length(outside);
+    const Vec3 n = outside * glm::sign(p);
+    s.normal = b.q * (n / s.distance);
+    return s;
+  }
+  int axis = 0;  // inside: leave through the nearest face
+  if (a.y > a[axis]) axis = 1;
+  if (a.z > a[axis]) axis = 2;
+  Vec3 n(0.0);
+  n[axis] = p[axis] >= 0.0 ? 1.0 : -1.0;
+  s.distance = a[axis];
+  s.normal = b.q * n;
+  return s;
+}
+
+/// The closest point of a capsule's axis segment to x.
+Vec3 capsuleCore(const Prepared& p, const Vec3& x) {
+  return p.c->center + std::clamp(glm::dot(x - p.c->center, p.axis), -p.c->halfLength, p.c->halfLength) * p.axis;
+}
+
+SurfacePoint surfaceOf(const Prepared& p, const Vec3& x) {
+  const Collider& c = *p.c;
+  switch (c.shape) {
+    case ColliderShape::Plane: return {glm::dot(p.axis, x - c.center), p.axis};
+    case ColliderShape::Sphere:
+    case ColliderShape::Capsule: {
+      const Vec3 r = x - (c.shape == ColliderShape::Capsule ? capsuleCore(p, x) : c.center);
+      const Real l = glm::length(r);
+      return {l - c.radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
+    }
+    case ColliderShape::Box: return boxSurface(p, x);
+  }
+  return {};
+}
+
+/// True when x is certainly farther than margin from the collider (bounding sphere test).
+bool clearOf(const Prepared& p, const Vec3& x, Real margin) {
+  const Vec3 d = x - p.c->center;
+  const Real r = p.bound + margin;
+  return glm::dot(d, d) > r * r;
+}
+
+Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth,
+                     Real frictionScale);
+
+}  // namespace
+
+SurfacePoint closestSurface(const Collider& c, const Vec3& x) { return surfaceOf(prepare(c), x); }
+
+Vec3 projectOutOfSphere([[maybe_unused]] const Vec3& x, [[maybe_unused]] const Vec3& xPrev,
+                        [[maybe_unused]] const Vec3& center, [[maybe_unused]] Real radius,
+                        [[maybe_unused]] Real friction) {
+  // BEGIN SOLUTION
+  const Vec3 offset = x - center;
+  const Real length = glm::length(offset);
+  const Real d = length - radius;
+  if (d >= 0.0 || length < kMinDistance) return x;
+  const Vec3 n = offset / length;
+  Vec3 projected = center + radius * n;
+  const Vec3 motion = projected - xPrev;
+  const Vec3 tangential = motion - glm::dot(motion, n) * n;
+  const Real slip = glm::length(tangential);
+  const Real bound = friction * (-d);
+  projected -= slip <= bound ? tangential : tangential * (bound / slip);
+  return projected;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("CLOTH-4", x, xPrev, center, radius, friction);
+}
+
+namespace {
+Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth,
+                     Real frictionScale) {
+  const Collider& c = *p.c;
+  const SurfacePoint s = surfaceOf(p, x);
+  if (depth) *depth = std::max(0.0, margin - s.distance);
+  if (s.distance >= margin) return x;
+  const Vec3 previous = xPrev + h * c.velocity;  // friction sees the motion relative to the collider
+  const Real mu = frictionScale * c.friction;
+  if (c.shape == ColliderShape::Sphere) return projectOutOfSphere(x, previous, c.center, c.radius + margin, mu);
+  if (c.shape == ColliderShape::Capsule) return projectOutOfSphere(x, previous, capsuleCore(p, x), c.radius + margin, mu);
+  // Plane and box: the tangent sphere of radius R at the closest surface point (see the header).
+  const Real R = std::max(1.0, -2.0 * s.distance);
+  return projectOutOfSphere(x, previous, x - (s.distance + R) * s.normal, R + margin, mu);
+}
+}  // namespace
+
+Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth, Real frictionScale) {
+  return collidePrepared(prepare(c), x, xPrev, margin, h, depth, frictionScale);
+}
+
+CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec3> x, std::span<const Vec3> xPrev,
+                              std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities,
+                              Real frictionScale) {
+  CollisionPassStats stats;
+  if (colliders.empty()) return stats;
+  std::vector<Prepared> prepared;
+  prepared.reserve(colliders.size());
+  for (const Collider& c : colliders) prepared.push_back(prepare(c));
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (inverseMass[i] == 0.0) continue;
+    for (const Prepared& p : prepared) {
+      if (clearOf(p, x[i], margin)) continue;
+      Real depth = 0.0;
+      const Vec3 projected = collidePrepared(p, x[i], xPrev[i], margin, h, &depth, frictionScale);
+      if (depth <= 0.0) continue;
+      ++stats.contacts;
+      stats.deepest = std::max(stats.deepest, depth);
+      if (!velocities.empty()) velocities[i] += (projected - x[i]) / h;
+      x[i] = projected;
+    }
+  }
+  return stats;
+}
+
+Real minColliderDistance(std::span<const Collider> colliders, std::span<const Vec3> x, Real margin) {
+  Real best = std::numeric_limits<Real>::infinity();
+  for (const Collider& c : colliders) {
+    const Prepared p = prepare(c);
+    for (const Vec3& v : x) best = std::min(best, surfaceOf(p, v).distance - margin);
+  }
+  return best;
+}
+
+// Start-up probe: tells the lab whether CLOTH-4 is still a stub.
+PBA_EXERCISE_PROBE(projectOutOfSphere(Vec3(0.0, 0.5, 0.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0), 1.0, 0.5));
+
+}  // namespace pba::cloth

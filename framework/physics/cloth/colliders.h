@@ -1,0 +1,73 @@
+#pragma once
+// Collisions of cloth particles with planes, spheres, capsules and boxes, with Coulomb friction and the
+// cloth's thickness, for every solver alike: positions are projected out at the end of a (sub)step and
+// friction removes tangential motion in proportion to the penetration depth (Müller et al. 2007 §3.5;
+// Macklin et al. 2014 "Unified particle physics" §6.1). The force solvers then add Δx/h to the velocity,
+// which is an inelastic contact: a resting particle loses exactly the g h it gained in the step.
+//
+// Every shape reduces to the sphere of CLOTH-4: a capsule is the sphere of its radius about the closest
+// point of its axis (exact); a plane or a box is the sphere tangent at the particle's closest surface point
+// (centre x − (d + R) n for signed distance d and normal n, any R > 0), which projects to the same point
+// and gives friction the same normal, so the result is exact too.
+#include <span>
+#include <vector>
+
+#include "physics/core/types.h"
+
+namespace pba::cloth {
+
+enum class ColliderShape { Plane, Sphere, Capsule, Box };
+
+struct Collider {
+  ColliderShape shape = ColliderShape::Plane;
+  Vec3 center{0.0};                       ///< [m] sphere, capsule and box centre; a point of a plane
+  Quat orientation{1.0, 0.0, 0.0, 0.0};   ///< capsule axis = local y; box axes; plane normal = local y
+  Real radius = 0.5;                      ///< [m] sphere and capsule
+  Real halfLength = 0.5;                  ///< [m] capsule: half the distance between its end-sphere centres
+  Vec3 halfExtents{0.5};                  ///< [m] box
+  Vec3 velocity{0.0};                     ///< [m/s] of a moving collider (friction acts on relative motion)
+  Real friction = 0.5;                    ///< μ, Coulomb: static and kinetic alike
+};
+
+/// Signed distance of x to the surface [m] (negative inside) and the outward unit normal there.
+struct SurfacePoint {
+  Real distance = 0.0;
+  Vec3 normal{0.0, 1.0, 0.0};
+};
+SurfacePoint closestSurface(const Collider& c, const Vec3& x);
+
+// ***** CLOTH-4: sphere collision projection with friction (Müller et al. 2007 §3.5; Macklin et al. 2014 §6.1) *****
+// A particle ended a step at x, coming from xPrev (where it was at the start of the step, already moved
+// with the collider). The sphere has centre c and radius r (the collider's radius plus the cloth's
+// collision margin). Return where the particle ends after the contact:
+// (1) d = |x − c| − r. If d ≥ 0 (outside or touching), or x sits at the very centre, return x unchanged.
+// (2) Push the particle out along n = (x − c)/|x − c| onto the surface: x' = c + r n. Its depth was −d.
+// (3) Friction acts on the tangential part of the motion over the step, δ_t = δ − (δ·n) n with δ = x' − xPrev.
+//     Coulomb: the friction "impulse" is at most μ times the normal one, i.e. it can undo at most μ·(−d) of
+//     tangential motion. If |δ_t| ≤ μ (−d) the particle sticks: x' −= δ_t. Otherwise it slides and loses
+//     μ (−d) of it: x' −= δ_t · μ (−d) / |δ_t|.
+// (4) Return x'.
+// *****
+Vec3 projectOutOfSphere(const Vec3& x, const Vec3& xPrev, const Vec3& center, Real radius, Real friction);
+
+/// Projects x (which started the step at xPrev; h [s] the step) out of the collider with margin [m] and
+/// friction μ × frictionScale. Returns the new position; `depth` receives the penetration before it (≥ 0).
+Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth = nullptr,
+             Real frictionScale = 1.0);
+
+struct CollisionPassStats {
+  std::size_t contacts = 0;  ///< particle–collider contacts
+  Real deepest = 0.0;        ///< [m] deepest penetration before projection
+};
+/// Projects every free particle (w > 0) out of every collider. When `velocities` is not empty, adds the
+/// projection's Δx/h to each velocity (the force-based solvers; XPBD derives v from x afterwards).
+/// frictionScale 0 projects without friction (XPBD's first pass, before the constraints).
+CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec3> x, std::span<const Vec3> xPrev,
+                              std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities,
+                              Real frictionScale = 1.0);
+
+/// Smallest signed distance of any particle to any collider minus `margin` [m] (negative = penetration);
+/// +∞ without colliders.
+Real minColliderDistance(std::span<const Collider> colliders, std::span<const Vec3> x, Real margin);
+
+}  // namespace pba::cloth

@@ -1,0 +1,152 @@
+#include "physics/cloth/implicit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "physics/exercises/not_implemented.h"
+
+namespace pba::cloth {
+namespace {
+
+constexpr Real kContactTolerance = 1e-4;  // [m] a particle this close beyond the margin counts as touching
+
+/// Colours the particles so that no spring joins two of one colour (for the probed preconditioner).
+void refreshColouring(const Cloth& cloth, ImplicitWorkspace& w) {
+  if (w.colouredSprings == cloth.springs.size() && w.colour.size() == cloth.size()) return;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(cloth.springs.size());
+  for (const Link& s : cloth.springs) pairs.emplace_back(s.i, s.j);
+  w.colour = colourParticles(cloth.size(), pairs, &w.colours);
+  w.colouredSprings = cloth.springs.size();
+}
+
+/// Filter and prescribed velocities: pins fixed at their velocity, touching particles moving into a
+/// collider constrained along its normal to the collider's normal velocity.
+std::size_t buildFilter(const Cloth& cloth, std::span<const Collider> colliders, const ImplicitSettings& settings,
+                        Real h, ImplicitWorkspace& w) {
+  const std::size_t n = cloth.size();
+  w.filter.assign(n, ParticleFilter{});
+  w.z.assign(n, Vec3(0.0));
+  w.released.resize(n, 0);
+  for (const Pin& p : cloth.pins) {
+    w.filter[p.particle].kind = ParticleFilter::Kind::Fixed;
+    w.z[p.particle] = (p.target - cloth.position[p.particle]) / h;
+  }
+  std::size_t contacts = 0;
+  if (!settings.contactConstraints) return contacts;
+  const Real margin = 0.5 * cloth.material.thickness;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (w.filter[i].kind != ParticleFilter::Kind::Free) continue;
+    if (w.released[i]) {
+      w.released[i] = 0;
+      continue;
+    }
+    for (const Collider& c : colliders) {
+      const SurfacePoint s = closestSurface(c, cloth.position[i]);
+      if (s.distance > margin + kContactTolerance || glm::dot(cloth.velocity[i] - c.velocity, s.normal) > 0.0) continue;
+      w.filter[i] = {ParticleFilter::Kind::OneDirection, s.normal, Vec3(0.0)};
+      w.z[i] = glm::dot(c.velocity, s.normal) * s.normal;
+      ++contacts;
+      break;
+    }
+  }
+  return contacts;
+}
+
+/// After the solve: the constraint impulse of each contact is (A v₁ − b) along its normal. A pulling one
+/// is released for the next step; a pushing one bounds the tangential velocity change by μ × impulse / m.
+/// That bound is CLOTH-4's friction: the particle ends at x₁ = x₀ + h v₁ on the surface; placed the depth
+/// h·impulse/m below it (the depth whose projection gives this impulse), the projection onto the sphere
+/// tangent at x₁ pushes it back to x₁ and takes the friction off its motion relative to the collider.
+void contactFriction(const Cloth& cloth, std::span<const Collider> colliders, const ParticleOperator& A, Real h,
+                     ImplicitWorkspace& w) {
+  A(w.velocity, w.probeOut);
+  for (std::size_t i = 0; i < cloth.size(); ++i) {
+    if (w.filter[i].kind != ParticleFilter::Kind::OneDirection) continue;
+    const Vec3 n = w.filter[i].p;
+    const Real impulse = glm::dot(w.probeOut[i] - w.b[i], n);  // [N·s]
+    if (impulse < 0.0) {
+      w.released[i] = 1;
+      continue;
+    }
+    const Collider* touched = nullptr;  // the collider whose normal the filter used
+    for (const Collider& c : colliders) {
+      if (glm::dot(closestSurface(c, cloth.position[i]).normal, n) > 1.0 - 1e-12) {
+        touched = &c;
+        break;
+      }
+    }
+    if (touched == nullptr) continue;
+    const Real depth = h * impulse / cloth.mass[i];
+    const Real radius = std::max(1.0, 2.0 * depth);
+    const Vec3 x1 = cloth.position[i] + h * w.velocity[i];
+    const Vec3 start = cloth.position[i] + h * touched->velocity;
+    const Vec3 x = projectOutOfSphere(x1 - depth * n, start, x1 - radius * n, radius, touched->friction);
+    w.velocity[i] = (x - cloth.position[i]) / h;
+  }
+}
+
+}  // namespace
+
+void implicitSystemProduct([[maybe_unused]] std::span<const SpringJacobian> springs,
+                           [[maybe_unused]] std::span<const Real> mass, [[maybe_unused]] Real massDamping,
+                           [[maybe_unused]] Real h, [[maybe_unused]] std::span<const Vec3> y, std::span<Vec3> out) {
+  // BEGIN SOLUTION
+  std::transform(y.begin(), y.end(), mass.begin(), out.begin(),
+                 [&](const Vec3& yi, Real mi) { return (1.0 + h * massDamping) * mi * yi; });
+  for (const SpringJacobian& J : springs) {
+    const Vec3 n = J.direction;
+    const Vec3 stretch = y[J.j] - y[J.i];
+    // h² K_s Δy + h D_s Δy, with K_s Δy = lateral Δy + (k − lateral) n (n·Δy) and D_s Δy = k_d n (n·Δy)
+    const Vec3 coupling = h * h * J.lateral * stretch +
+                          (h * h * (J.stiffness - J.lateral) + h * J.damping) * glm::dot(n, stretch) * n;
+    out[J.i] -= coupling;
+    out[J.j] += coupling;
+  }
+  // END SOLUTION
+  // STUB: exercises::markNotImplemented("CLOTH-5");
+  // STUB: std::fill(out.begin(), out.end(), Vec3(0.0));
+}
+
+ImplicitStats implicitStep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
+                           const ImplicitSettings& settings, Real h, Real t, ImplicitWorkspace& w) {
+  const std::size_t n = cloth.size();
+  springJacobians(cloth.springs, cloth.material, cloth.position, settings.jacobian, w.jacobians);
+  const ParticleOperator A = [&](std::span<const Vec3> y, std::span<Vec3> out) {
+    implicitSystemProduct(w.jacobians, cloth.mass, env.massDamping, h, y, out);
+  };
+
+  // b = M v₀ + h f_undamped(x₀, v₀): elastic springs, gravity, aerodynamics (damping lives in A).
+  ClothEnvironment undamped = env;
+  undamped.massDamping = 0.0;
+  w.force.assign(n, Vec3(0.0));
+  accumulateSpringForces(cloth.springs, cloth.material, cloth.position, cloth.velocity, false, w.force);
+  accumulateExternalForces(cloth, undamped, t, cloth.position, cloth.velocity, w.force);
+  w.b.resize(n);
+  for (std::size_t i = 0; i < w.b.size(); ++i) w.b[i] = cloth.mass[i] * cloth.velocity[i] + h * w.force[i];
+
+  ImplicitStats stats;
+  stats.contactConstraints = buildFilter(cloth, colliders, settings, h, w);
+  if (settings.preconditioner == Preconditioner::BlockJacobi) {
+    refreshColouring(cloth, w);
+    probedBlockJacobi(A, w.colour, w.colours, w.preconditioner, w.probeIn, w.probeOut);
+  } else {
+    w.preconditioner.clear();
+  }
+  w.velocity = cloth.velocity;  // warm start: v₁ ≈ v₀
+  stats.cg = filteredPcg(A, w.b, w.filter, w.z, w.preconditioner, settings.cg, w.velocity, w.pcg);
+  if (stats.contactConstraints > 0) contactFriction(cloth, colliders, A, h, w);
+
+  for (std::size_t i = 0; i < n; ++i) {
+    cloth.velocity[i] = w.velocity[i];
+    cloth.position[i] += h * w.velocity[i];
+  }
+  for (const Pin& p : cloth.pins) cloth.position[p.particle] = p.target;
+  return stats;
+}
+
+// Start-up probe: tells the lab whether CLOTH-5 is still a stub.
+PBA_EXERCISE_PROBE(implicitSystemProduct({}, {}, 0.0, 0.01, {}, {}));
+
+}  // namespace pba::cloth

@@ -1,0 +1,112 @@
+#pragma once
+// One object that steps a cloth with the solver chosen by name, live (the models share the particles):
+//   explicit   symplectic Euler on the mass-spring model with substeps; stable only for h < 2/ω_max
+//   implicit   Baraff & Witkin 1998 backward Euler, one Newton step per step, filtered PCG (implicit.h)
+//   pbd        Müller et al. 2006: distance constraints on the edges + isometric bending, stiffness per
+//              iteration (its effective stiffness depends on iterations and step)
+//   xpbd       Macklin et al. 2016 with compliance; substeps × iterations, Macklin et al. 2019 "Small
+//              steps": many substeps of one iteration beat many iterations of one step
+// Every solver ends a (sub)step with self-collision (when on), collider projection and tearing (when on).
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "physics/cloth/cloth.h"
+#include "physics/cloth/colliders.h"
+#include "physics/cloth/forces.h"
+#include "physics/cloth/implicit.h"
+#include "physics/cloth/self_collision.h"
+#include "physics/cloth/tearing.h"
+
+namespace pba::cloth {
+
+enum class ClothSolverKind { Explicit, Implicit, Pbd, Xpbd };
+inline constexpr std::array kAllClothSolvers = {ClothSolverKind::Explicit, ClothSolverKind::Implicit,
+                                                ClothSolverKind::Pbd, ClothSolverKind::Xpbd};
+/// "explicit", "implicit", "pbd", "xpbd".
+std::string_view solverName(ClothSolverKind kind);
+std::optional<ClothSolverKind> parseSolver(std::string_view name);
+std::vector<std::string> solverNames();
+/// True for the mass-spring solvers (explicit, implicit), false for the constraint ones.
+bool usesSprings(ClothSolverKind kind);
+
+/// Bending of the constraint solvers (the spring solvers bend through their bend springs).
+enum class BendingModel {
+  Isometric,  ///< Bergou et al. 2006 as one linear vector constraint per inner edge (xpbd.h)
+  Distance,   ///< TMP #14–15: the opposite vertices of every inner edge keep their rest distance (compliant)
+  None,
+};
+
+struct ClothSolverSettings {
+  ClothSolverKind kind = ClothSolverKind::Xpbd;
+  int substeps = 10;              ///< per step: symplectic Euler / PBD / XPBD substeps, implicit steps
+  int iterations = 1;             ///< PBD/XPBD constraint sweeps per substep
+  Real pbdStiffness = 1.0;        ///< PBD stretch stiffness s ∈ (0, 1] per projection
+  Real pbdBendStiffness = 0.05;   ///< PBD bending stiffness ∈ [0, 1] per projection
+  BendingModel bending = BendingModel::Isometric;  ///< PBD/XPBD
+  ImplicitSettings implicit;
+  bool selfCollision = false;
+  Real selfFriction = 0.1;        ///< TMP #15 velocity averaging ∈ [0, 1]
+  /// TMP #15's speed limit with self-collision: at most this many thicknesses per substep (0 = none).
+  /// It bounds how far a particle travels in a frame, so the pair list of the frame stays complete.
+  Real selfCollisionMaxTravel = 0.2;
+  int selfCollisionSweeps = 1;  ///< Gauss–Seidel sweeps over the self-collision pairs per substep (TMP: 1)
+  TearSettings tearing;
+};
+Status validate(const ClothSolverSettings& s);
+
+struct ClothStepStats {
+  int cgIterations = 0;          ///< implicit: CG iterations of the last step
+  Real cgResidual = 0.0;         ///< implicit: relative residual of the last solve
+  int constraintIterations = 0;  ///< PBD/XPBD: sweeps per step (substeps × iterations)
+  std::size_t contacts = 0;      ///< particle–collider contacts in the last (sub)step
+  std::size_t selfContacts = 0;  ///< self-collision pairs separated in the last (sub)step
+  std::size_t tears = 0;         ///< vertex splits this step
+};
+
+/// Stretch (l − L)/L of the mesh edges, the same measure for every model: largest and mean over the
+/// edges (compressed edges count 0), and the largest compression (L − l)/L apart (cloth buckles rather than
+/// compresses, so compression is the constraints' error, not the fabric's stretch).
+struct StrainStats {
+  Real max = 0.0, mean = 0.0, maxCompression = 0.0;
+};
+StrainStats edgeStrain(const Cloth& cloth);
+/// Kinetic + gravitational + elastic energy [J]; the elastic part is the springs' for the mass-spring
+/// solvers and ½ C²/α of the compliant constraints for PBD/XPBD.
+Real clothEnergy(const Cloth& cloth, const ClothEnvironment& env, ClothSolverKind kind,
+                 BendingModel bending = BendingModel::Isometric);
+/// Upper bound of the highest angular frequency of the spring network (Gershgorin: ω² ≤ max_i Σ 2k/m_i)
+/// and the explicit stability limit 2/ω it implies [s].
+Real explicitStabilityLimit(const Cloth& cloth);
+
+class ClothSolver {
+ public:
+  /// Advances the cloth by dt [s] from time t [s].
+  ClothStepStats step(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
+                      const ClothSolverSettings& settings, Real dt, Real t);
+  /// Forgets what the solver remembers between steps (after a reset, a teleport or tearing).
+  void reset();
+  const SelfCollision& selfCollision() const { return self_; }
+
+ private:
+  void explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
+                       const ClothSolverSettings& s, Real h, Real t, Real pinFraction, ClothStepStats& stats);
+  void positionBasedSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
+                            const ClothSolverSettings& s, Real h, Real t, Real pinFraction, ClothStepStats& stats);
+  void solveConstraints(Cloth& cloth, const ClothSolverSettings& s, Real h);
+  void endSubstep(Cloth& cloth, std::span<const Collider> colliders, const ClothSolverSettings& s, Real h,
+                  bool velocityLevel, ClothStepStats& stats);
+  void movePins(Cloth& cloth, Real fraction);
+  void beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s, Real dt);
+
+  ImplicitWorkspace implicit_;
+  SelfCollision self_;
+  std::vector<Vec3> previous_, force_, beforeSelf_, pinStart_;
+  std::vector<Real> lambda_, bendLinkLambda_;
+  std::vector<Vec3> bendLambda_;
+};
+
+}  // namespace pba::cloth

@@ -1,0 +1,69 @@
+#pragma once
+// Position-based constraint kernels (stateless, over arrays of particle data, as in Bender's
+// PositionBasedDynamics library): the distance constraint of PBD/XPBD and isometric bending.
+//
+// XPBD (Macklin, Müller & Chentanez 2016, "XPBD: position-based simulation of compliant constrained
+// dynamics"). A constraint C(x) with compliance α (inverse stiffness) has the potential U = ½ C²/α. Per
+// substep of length h, with α̃ = α/h² and the multiplier λ accumulated over the iterations of that
+// substep (reset to 0 at its start):
+//   Δλ = (−C − α̃ λ) / (Σ_k w_k |∇_k C|² + α̃)          (eq. 18)
+//   Δx_k = w_k ∇_k C Δλ                                (eq. 17)
+// The converged state satisfies C + α̃ λ = 0: the constraint force λ∇C/h² balances the other forces with
+// the stiffness 1/α, whatever the number of iterations or substeps. PBD (Müller et al. 2006 §3.3) is the
+// same projection with α̃ = 0 and no λ, scaled by a stiffness s ∈ [0, 1]: its effective stiffness then
+// depends on the iteration count and the step.
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "physics/cloth/cloth.h"
+
+namespace pba::cloth {
+
+/// The corrections of one distance-constraint projection.
+struct DistanceCorrection {
+  Vec3 deltaI{0.0};    ///< Δx_i [m]
+  Vec3 deltaJ{0.0};    ///< Δx_j [m]
+  Real deltaLambda = 0.0;  ///< Δλ [N·s²] (XPBD's multiplier increment; PBD ignores it)
+};
+
+// ***** CLOTH-2: the XPBD distance constraint update with compliance (Macklin et al. 2016, eq. 17–18) *****
+// Constraint C = |x_i − x_j| − L between particles of inverse masses w_i, w_j. Inputs: positions, inverse
+// masses, rest length L [m], compliance α [m/N], the substep h [s] and the multiplier λ accumulated so far
+// in this substep. Return the position corrections and Δλ:
+// (1) n = (x_i − x_j)/|x_i − x_j| (the gradient of C with respect to x_i; −n with respect to x_j).
+//     If the particles coincide or both are pinned (w_i + w_j = 0) there is nothing to do: return zeros.
+// (2) The time-step-scaled compliance α̃ = α / h².
+// (3) Δλ = (−C − α̃ λ) / (w_i + w_j + α̃).
+// (4) Δx_i = +w_i Δλ n and Δx_j = −w_j Δλ n.
+// With α = 0 this is PBD's projection: each call makes the constraint exactly satisfied.
+// *****
+DistanceCorrection xpbdDistanceCorrection(const Vec3& xi, const Vec3& xj, Real wi, Real wj, Real restLength,
+                                          Real compliance, Real h, Real lambda);
+
+/// Isometric bending (cloth.h, BendingStencil) as an XPBD vector constraint C = Σ_k K_k x_k ∈ ℝ³ with
+/// compliance α = 1/k_b: because C is linear with ∇_k C = K_k I, one projection solves it exactly:
+///   Δλ = (−C − α̃ λ) / (Σ_k w_k K_k² + α̃) ∈ ℝ³,  Δx_k = w_k K_k Δλ.
+/// Updates x and λ (3 reals). compliance [1/(N·m)], h [s].
+void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::span<const Real> w, Real compliance,
+                             Real h, Vec3& lambda);
+/// How a Gauss–Seidel sweep treats its constraints: XPBD (compliance by kind, λ accumulated) or PBD
+/// (Müller et al. 2006 §3.3: the exact projection, compliance 0, scaled by a stiffness ∈ [0, 1]).
+struct SweepMode {
+  bool xpbd = true;
+  Real pbdStiffness = 1.0;
+};
+/// One sweep of CLOTH-2 over `links` in their order; lambda holds one multiplier per link.
+void sweepDistanceConstraints(std::span<const Link> links, const std::array<Real, kLinkKinds>& compliance,
+                              const SweepMode& mode, Real h, std::span<Vec3> x, std::span<const Real> w,
+                              std::span<Real> lambda);
+/// One sweep over the isometric bending stencils (compliance [1/(N·m)]); lambda: 3 reals per stencil.
+void sweepIsometricBending(std::span<const BendingStencil> stencils, Real compliance, const SweepMode& mode, Real h,
+                           std::span<Vec3> x, std::span<const Real> w, std::span<Vec3> lambda);
+
+/// Bending energy ½ |C|²/α summed over the stencils [J] (0 when α = 0).
+Real bendingEnergy(std::span<const BendingStencil> stencils, std::span<const Vec3> x, Real compliance);
+/// ½ C²/α over the distance constraints with their kind's compliance [J] (constraints with α = 0 add 0).
+Real constraintEnergy(std::span<const Link> constraints, std::span<const Vec3> x, const ClothMaterial& m);
+
+}  // namespace pba::cloth

@@ -1,0 +1,102 @@
+#pragma once
+// Shared base of the cloth lab's scenes: one cloth (framework/physics/cloth), its solver switchable live,
+// the common parameters of issue 14 (solver, iterations, substeps, stiffness, compliance, damping,
+// thickness, resolution), colliders, mouse drag of any particle, drawing (lit two-sided cloth with smooth
+// normals and a checker or woven pattern, strain colours, wireframe, springs/constraints) and the
+// "cloth" metrics. A scene builds its cloth and colliders and may move pins or colliders each step.
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/scene_registry.h"
+#include "physics/cloth/solver.h"
+#include "physics/cloth/tearing.h"
+
+namespace pba::labs::cloth {
+
+using namespace pba::cloth;
+
+enum class Pattern { Checker, Woven, Plain };
+
+class ClothScene : public app::Scene {
+ public:
+  ClothScene();
+  void reset() override;
+  void step(Real dt) override;
+  void draw(DebugDraw& d) const override;
+  nlohmann::json metrics() const override;
+  Real defaultDt() const override { return 1.0 / 60.0; }
+  std::optional<std::string> nonFiniteState() const override { return describeNonFinite(cloth_); }
+  std::optional<Real> energy() const override { return clothEnergy(cloth_, env_, settings_.kind, settings_.bending); }
+  std::vector<std::string> defaultPlots() const override { return {"energy_J", "max_strain"}; }
+  std::vector<app::Preset> presets() const override;
+  std::optional<app::PickHit> pick(const app::Ray& ray) const override;
+  void drag(int handle, const Vec3& target) override;
+  void release(int handle) override;
+  bool nudge(const Vec3& delta) override;
+
+ protected:
+  /// Builds the cloth (grid_ and material_ are set from the parameters) and fills colliders_.
+  virtual Result<Cloth> build() = 0;
+  /// Moves pins, colliders or the wind before each step (t: time at the start of the step [s]).
+  virtual void beforeStep(Real /*dt*/, Real /*t*/) {}
+  /// Extra drawing (rails, poles, markers) after the cloth.
+  virtual void drawExtras(DebugDraw& /*d*/) const {}
+  /// Declares the display toggles; scenes call it after their own parameters.
+  void declareDisplayParams();
+  /// Applies the live parameters (stiffness, compliance, damping, gravity, thickness) to the material,
+  /// the environment and the solver settings.
+  void applyParams();
+  /// Draws one cloth (its pattern, strain colours or plain), with an optional tint.
+  void drawCloth(DebugDraw& d, const Cloth& c, const Color& base) const;
+  void drawColliders(DebugDraw& d) const;
+  /// The metrics of one cloth (comparison reports four).
+  nlohmann::json clothMetrics(const Cloth& c, const ClothStepStats& stats, ClothSolverKind kind) const;
+
+  // Parameters (the common ones of every cloth scene)
+  ClothSolverKind solverKind_ = ClothSolverKind::Xpbd;
+  int resolution_ = 32;         ///< particles along the cloth's first side
+  Real stiffness_ = 2000.0;     ///< [N/m] stretch and shear springs
+  Real bendStiffness_ = 20.0;   ///< [N/m] bend springs
+  Real springDamping_ = 0.02;   ///< [N·s/m]
+  Real compliance_ = 0.0;       ///< [m/N] XPBD stretch and shear
+  Real bendCompliance_ = 1000.0;  ///< [1/(N·m)] XPBD isometric bending
+  Real bendLinkCompliance_ = 1.0;  ///< [m/N] XPBD distance bending
+  Real damping_ = 0.1;          ///< [1/s] mass (velocity) damping, every solver
+  Real thickness_ = 0.01;       ///< [m]
+  Real gravity_ = kStandardGravity;  ///< [m/s²]
+  Real friction_ = 0.4;         ///< μ of the colliders
+  SpringLayout layout_ = SpringLayout::Grid;  ///< of the grid scenes' springs
+  // Display
+  Pattern pattern_ = Pattern::Checker;
+  bool strainColors_ = false, wireframe_ = false, showLinks_ = false;
+
+  // State
+  GridDesc grid_;
+  ClothMaterial material_;
+  ClothSolverSettings settings_;
+  ClothEnvironment env_;
+  std::vector<Collider> colliders_;
+  Cloth cloth_;
+  ClothSolver solver_;
+  ClothStepStats stats_;
+  std::string buildError_;
+  Real time_ = 0.0;
+  Real initialEnergy_ = 0.0;  ///< [J] at reset
+  double solverMs_ = 0.0;           ///< wall time of the last solver step [ms]
+  std::size_t selfIntersections_ = 0, worstSelfIntersections_ = 0;
+  bool countIntersections_ = false;  ///< every step (self-collision scenes) instead of on demand
+  Real worstColliderDistance_ = 0.0;  ///< [m] most negative over the run
+  Color clothColor_{0.85f, 0.33f, 0.25f, 1.0f};
+  int dragged_ = -1;
+  std::optional<Pin> draggedWasPinned_;
+
+ private:
+  mutable particles::SpatialHash hash_;
+};
+
+/// Smooth vertex normals (area weighted) of a cloth's current shape.
+void vertexNormals(const Cloth& c, std::vector<Vec3>& out);
+
+}  // namespace pba::labs::cloth

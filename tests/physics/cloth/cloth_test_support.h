@@ -1,0 +1,79 @@
+#pragma once
+// Builders and helpers shared by the cloth tests. Everything here is reference-only library code (no
+// exercise): grids use the Mesh spring layout, so no test but CLOTH-1's runs gridSpringTopology.
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "physics/cloth/cloth.h"
+#include "physics/cloth/solver.h"
+#include "support/fp_traps.h"
+
+namespace pba::cloth::testing {
+
+/// A square cloth of n × n particles, size × size metres, horizontal at height y, pinned as asked,
+/// with the Mesh layout (every edge a spring, bend springs across inner edges).
+inline Cloth meshGrid(int n, Real size, Real y, GridPins pins, const ClothMaterial& material = {}) {
+  GridDesc d;
+  d.resolutionX = d.resolutionY = n;
+  d.width = d.height = size;
+  d.center = Vec3(0.0, y, 0.0);
+  d.pins = pins;
+  d.layout = SpringLayout::Mesh;
+  return buildClothGrid(d, material).value();
+}
+
+/// A vertical chain of `particles` (mass m each) hanging from a pinned top at height `top`, links of rest
+/// length L, with the chain's links as springs AND as distance constraints (no triangles: the solvers
+/// only need the arrays). Starts at rest length.
+inline Cloth hangingChain(int particles, Real m, Real L, Real top, const ClothMaterial& material) {
+  Cloth c;
+  c.material = material;
+  for (int k = 0; k < particles; ++k) {
+    c.position.emplace_back(0.0, top - k * L, 0.0);
+    c.velocity.emplace_back(0.0);
+    c.restPosition.push_back(c.position.back());
+    c.mass.push_back(m);
+    c.inverseMass.push_back(1.0 / m);
+  }
+  for (int k = 0; k + 1 < particles; ++k) {
+    const Link link{static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(k + 1), L, LinkKind::Stretch};
+    c.springs.push_back(link);
+    c.constraints.push_back(link);
+  }
+  pin(c, 0, c.position[0]);
+  return c;
+}
+
+/// Length of link k of the chain minus its rest length [m].
+inline Real chainExtension(const Cloth& c, std::size_t k) {
+  return glm::length(c.position[k + 1] - c.position[k]) - c.constraints[k].restLength;
+}
+
+/// Steps `frames` frames of dt, returns the stats of the last one.
+inline ClothStepStats run(Cloth& cloth, ClothSolver& solver, const ClothEnvironment& env,
+                          std::span<const Collider> colliders, const ClothSolverSettings& s, Real dt, int frames,
+                          Real* time = nullptr) {
+  ClothStepStats stats;
+  Real t = time ? *time : 0.0;
+  for (int f = 0; f < frames; ++f) {
+    stats = solver.step(cloth, env, colliders, s, dt, t);
+    t += dt;
+  }
+  if (time) *time = t;
+  return stats;
+}
+
+/// FNV-1a over the bytes of positions and velocities: equal hashes ⇔ (practically) identical state.
+inline std::uint64_t stateHash(const Cloth& c) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](const std::vector<Vec3>& v) {
+    const auto* bytes = reinterpret_cast<const unsigned char*>(v.data());
+    for (std::size_t i = 0; i < v.size() * sizeof(Vec3); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+  };
+  mix(c.position);
+  mix(c.velocity);
+  return h;
+}
+
+}  // namespace pba::cloth::testing
