@@ -113,8 +113,8 @@ BENCHMARK(BM_NeighbourListBuildAndThreeSweeps)->Arg(100000)->Unit(benchmark::kMi
 // it resting on the ground). The lab takes two such steps per displayed frame.
 void BM_FountainPoolStep(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
-  particles::EmitterDesc ed{Vec3(0.0, 0.1, 0.0), kUp, 0.0, 3.0, 0.3, degToRad(12.0), 8.0, 0.1, 0.01, n,
-                            colors::kBlue, colors::kOrange};
+  particles::EmitterDesc ed{Vec3(0.0, 0.1, 0.0), kUp, 0.0, 3.0, 0.3, degToRad(12.0), 8.0, 0.1, 0.01, n, colors::kBlue,
+                            colors::kOrange};
   ed.rate = static_cast<Real>(n) / (ed.lifetime * (1.0 - ed.lifetimeJitter));  // the scene's keep_full
   particles::Emitter emitter(ed, 1);
   particles::Particles p;

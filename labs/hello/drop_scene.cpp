@@ -13,7 +13,8 @@ using namespace pba;
 class DropScene final : public app::Scene {
  public:
   DropScene() {
-    params_.real("mass", &desc_.mass, 0.01, 100.0, "kg", "Mass of the ball. Drag slows a light ball more. Typical 1 kg.")
+    params_
+        .real("mass", &desc_.mass, 0.01, 100.0, "kg", "Mass of the ball. Drag slows a light ball more. Typical 1 kg.")
         .logarithmic();
     params_.real("radius", &desc_.radius, 0.05, 1.0, "m", "Radius of the ball. Typical 0.25 m.");
     params_.real("restitution", &desc_.restitution, 0.0, 1.0, "",

@@ -12,9 +12,9 @@
 namespace {
 using namespace pba;
 
-constexpr int kCoilTurns = 12;          // turns drawn for the spring's helix
-constexpr Real kCoilRadius = 0.12;      // [m]
-constexpr Real kBallRadius = 0.22;      // [m] visual and picking radius
+constexpr int kCoilTurns = 12;                // turns drawn for the spring's helix
+constexpr Real kCoilRadius = 0.12;            // [m]
+constexpr Real kBallRadius = 0.22;            // [m] visual and picking radius
 constexpr Vec3 kInitialPull{0.8, -0.4, 0.0};  // [m] offset from equilibrium at reset: a visible swing
 
 class SpringScene final : public app::Scene {

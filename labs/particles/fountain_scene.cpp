@@ -14,7 +14,7 @@
 namespace {
 using namespace pba;
 
-constexpr Real kRadius = 0.02;  // [m] particle radius for contacts
+constexpr Real kRadius = 0.02;      // [m] particle radius for contacts
 constexpr int kFusedAbove = 20000;  // pools larger than this use the fused kernel (velocity Verlet only)
 
 class FountainScene final : public app::Scene {
@@ -88,9 +88,8 @@ class FountainScene final : public app::Scene {
     d.cone(emitter_.position, emitter_.direction, emitter_.spread, 0.4, colors::kDark);
     // Colour over life is evaluated here, for the drawn subsample only (the fused step leaves it).
     const particles::Particles& p = system_.particles;
-    lab::drawPointSubsample(d, p, [&](std::size_t i) {
-      return particles::colorOverLife(emitter_, p.age[i], p.lifetime[i]);
-    });
+    lab::drawPointSubsample(d, p,
+                            [&](std::size_t i) { return particles::colorOverLife(emitter_, p.age[i], p.lifetime[i]); });
   }
 
   // The whole step in one pass over the pool (kernels.h: ageing and removal, motion, contacts, the
@@ -154,10 +153,11 @@ class FountainScene final : public app::Scene {
   bool keepFull_ = true, fused_ = false, nonFinite_ = false;
   Real fusedEnergy_ = 0.0;  // [J] of the pool after the last fused step
   Real windSpeed_ = 2.0, vortexStrength_ = 3.0, gravity_ = kStandardGravity;
-  particles::EmitterDesc emitter_{Vec3(0.0, 0.1, 0.0), kUp, 1500.0, 3.0, 0.3, degToRad(12.0), 8.0, 0.1, 0.01, 5000,
-                                  colors::kBlue, colors::kOrange};
+  particles::EmitterDesc emitter_{
+      Vec3(0.0, 0.1, 0.0), kUp, 1500.0, 3.0, 0.3, degToRad(12.0), 8.0, 0.1, 0.01, 5000, colors::kBlue, colors::kOrange};
   particles::Emitter emitterState_;
-  particles::ForceDesc forces_{Vec3(0.0, -kStandardGravity, 0.0), {0.005, 0.0}, {Vec3(2.0, 0, 0), 1.5, 0.5, 8.0}, {}, {}};
+  particles::ForceDesc forces_{
+      Vec3(0.0, -kStandardGravity, 0.0), {0.005, 0.0}, {Vec3(2.0, 0, 0), 1.5, 0.5, 8.0}, {}, {}};
   particles::Obstacles obstacles_{{}, {}, {}, particles::ContactMaterial{0.4, 0.3, 0.2, 0.1}};
   ode::IntegratorKind kind_ = ode::IntegratorKind::VelocityVerlet;
   ode::Integrator integrator_;

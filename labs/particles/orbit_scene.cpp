@@ -20,15 +20,16 @@ constexpr std::size_t kTrail = 600;
 // The orbital plane is y = 0 in the simulation; it is drawn this high so the ground grid hides nothing.
 constexpr Vec3 kDrawOffset{0.0, 0.6, 0.0};  // [m]
 constexpr int kEllipseSegments = 128;
-constexpr Color kColors[] = {colors::kRed, colors::kBlue, colors::kGreen, colors::kPurple,
-                             colors::kOrange, colors::kYellow, colors::kDark, colors::kGrey};
+constexpr Color kColors[] = {colors::kRed,    colors::kBlue,   colors::kGreen, colors::kPurple,
+                             colors::kOrange, colors::kYellow, colors::kDark,  colors::kGrey};
 
 class OrbitScene final : public app::Scene {
  public:
   OrbitScene() {
-    params_.real("h", &h_, 0.001, 0.2, "s",
-                 "Integrator step h of every method (the period is ≈ 11 s at the default). The runner's dt only "
-                 "paces the clock (3× sped up) on which h-steps fall due. Typical 0.05.")
+    params_
+        .real("h", &h_, 0.001, 0.2, "s",
+              "Integrator step h of every method (the period is ≈ 11 s at the default). The runner's dt only "
+              "paces the clock (3× sped up) on which h-steps fall due. Typical 0.05.")
         .logarithmic();
     params_.real("speed", &speed_, 0.6, 1.35, "m/s", "Initial tangential speed at 1 m (1 = circular).").needsReset();
     lab::addIntegratorParam(params_, &selected_, " Here: which method the energy metrics report.");
@@ -122,7 +123,8 @@ class OrbitScene final : public app::Scene {
     Vec3 previous(0.0);
     for (int k = 0; k <= kEllipseSegments; ++k) {
       const Real theta = 2.0 * kPi * k / kEllipseSegments;
-      const Vec3 p = kDrawOffset + semiLatus / (1.0 + e * std::cos(theta)) * (std::cos(theta) * u + std::sin(theta) * w);
+      const Vec3 p =
+          kDrawOffset + semiLatus / (1.0 + e * std::cos(theta)) * (std::cos(theta) * u + std::sin(theta) * w);
       if (k > 0) d.line(previous, p, colors::kGrey);
       previous = p;
     }

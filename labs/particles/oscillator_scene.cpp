@@ -24,26 +24,28 @@ using namespace pba;
 // bottom right is left empty for the plot window (error and energy of the selected method).
 constexpr int kColumns = 4;
 constexpr int kRows = 3;
-constexpr Real kPanel = 3.4;        // [m] horizontal spacing of the cells in the scene
-constexpr Real kPanelHeight = 3.7;  // [m] vertical spacing (room for the labels above and below)
-constexpr Real kPhaseLimit = 1.4;   // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
-constexpr Real kBottom = 0.6;       // [m] lowest cell edge above the ground (its label sits below it)
-constexpr Real kFacingYaw = 0.6;    // [rad] the figure faces the lab's default camera (OrbitCamera::yaw)
+constexpr Real kPanel = 3.4;          // [m] horizontal spacing of the cells in the scene
+constexpr Real kPanelHeight = 3.7;    // [m] vertical spacing (room for the labels above and below)
+constexpr Real kPhaseLimit = 1.4;     // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
+constexpr Real kBottom = 0.6;         // [m] lowest cell edge above the ground (its label sits below it)
+constexpr Real kFacingYaw = 0.6;      // [rad] the figure faces the lab's default camera (OrbitCamera::yaw)
 constexpr std::size_t kTrail = 2000;  // samples kept per trajectory
-constexpr Color kMethodColors[] = {colors::kRed,    colors::kBlue,  colors::kGreen, colors::kPurple,
+constexpr Color kMethodColors[] = {colors::kRed,    colors::kBlue,   colors::kGreen, colors::kPurple,
                                    colors::kOrange, colors::kYellow, colors::kDark,  colors::kGrey};
 
 class OscillatorScene final : public app::Scene {
  public:
   OscillatorScene() {
-    params_.real("h", &h_, 0.001, 0.5, "s",
-                 "Integrator step h of every method (the runner's dt only paces the clock on which h-steps fall "
-                 "due; set coarse steps here, --set h=0.3). ωh is what matters: Euler's energy grows by 1 + (ωh)² "
-                 "per step. Typical 0.1.")
+    params_
+        .real("h", &h_, 0.001, 0.5, "s",
+              "Integrator step h of every method (the runner's dt only paces the clock on which h-steps fall "
+              "due; set coarse steps here, --set h=0.3). ωh is what matters: Euler's energy grows by 1 + (ωh)² "
+              "per step. Typical 0.1.")
         .logarithmic();
-    params_.real("end_time", &endTime_, 1.0, 200.0, "s",
-                 "The methods stop here (the last step is shortened to end exactly here) and the error metric "
-                 "sqrt(dx² + dv²) is taken against the closed form. 3 periods ≈ 18.85 s.")
+    params_
+        .real("end_time", &endTime_, 1.0, 200.0, "s",
+              "The methods stop here (the last step is shortened to end exactly here) and the error metric "
+              "sqrt(dx² + dv²) is taken against the closed form. 3 periods ≈ 18.85 s.")
         .needsReset();
     lab::addIntegratorParam(params_, &selected_, " Here: which method the energy/error metrics report.");
   }
@@ -153,7 +155,9 @@ class OscillatorScene final : public app::Scene {
   // method's energy; switch "integrator" to plot another).
   std::vector<std::string> defaultPlots() const override { return {"error", "energy"}; }
   std::vector<app::Preset> presets() const override {
-    return {{"Lobb: h = 0.1", {{"h", 0.1}}}, {"coarse h = 0.3", {{"h", 0.3}}}, {"fine h = 0.01", {{"h", 0.01}}},
+    return {{"Lobb: h = 0.1", {{"h", 0.1}}},
+            {"coarse h = 0.3", {{"h", 0.3}}},
+            {"fine h = 0.01", {{"h", 0.01}}},
             {"very coarse h = 0.5", {{"h", 0.5}}}};
   }
 
@@ -161,7 +165,7 @@ class OscillatorScene final : public app::Scene {
   struct Method {
     std::unique_ptr<ode::HarmonicOscillator> system;
     ode::Integrator integrator;
-    std::deque<Vec2> trail;   // (x, v)
+    std::deque<Vec2> trail;        // (x, v)
     std::deque<Vec2> energy = {};  // (t, E/E₀)
   };
   // The figure's plane: x of the phase plot along right(), v along +y.

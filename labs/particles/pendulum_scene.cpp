@@ -145,7 +145,9 @@ class PendulumScene final : public app::Scene {
  private:
   static constexpr Real kPivotHeight = 3.0;  // [m]
   static constexpr Real kFollow = 12.0;      // [rad/s] how fast a dragged pivot follows the mouse
-  Vec3 scriptedPivot(Real t) const { return Vec3(amplitude_ * std::sin(2.0 * kPi * frequency_ * t), kPivotHeight, 0.0); }
+  Vec3 scriptedPivot(Real t) const {
+    return Vec3(amplitude_ * std::sin(2.0 * kPi * frequency_ * t), kPivotHeight, 0.0);
+  }
   // Second derivative of scriptedPivot(): x = A sin ωt ⇒ ẍ = −A ω² sin ωt [m/s²].
   Vec3 scriptedAcceleration(Real t) const {
     const Real w = 2.0 * kPi * frequency_;

@@ -16,16 +16,18 @@ using namespace pba;
 class StiffSpringScene final : public app::Scene {
  public:
   StiffSpringScene() {
-    params_.real("stiffness", &beam_.stiffness, 100.0, 1e7, "N/m",
-                 "Spring constant. ω ≈ 2√(k/m): explicit methods need h < 2/ω. Typical 1e5.")
+    params_
+        .real("stiffness", &beam_.stiffness, 100.0, 1e7, "N/m",
+              "Spring constant. ω ≈ 2√(k/m): explicit methods need h < 2/ω. Typical 1e5.")
         .logarithmic()
         .needsReset();
     params_.real("damping", &beam_.damping, 0.0, 50.0, "N·s/m", "Damping along each spring. Typical 1.").needsReset();
     params_.integer("cg_max_iterations", &cg_.maxIterations, 1, 2000, "",
                     "Implicit Euler: cap on conjugate-gradient iterations per step. Typical 200; the metric "
                     "cg_iterations shows what a step needs (block-Jacobi preconditioned).");
-    params_.real("cg_tolerance", &cg_.relativeTolerance, 1e-14, 1e-2, "",
-                 "Implicit Euler: CG stops when the residual |b − A Δv| ≤ tolerance·|b|. Typical 1e-10.")
+    params_
+        .real("cg_tolerance", &cg_.relativeTolerance, 1e-14, 1e-2, "",
+              "Implicit Euler: CG stops when the residual |b − A Δv| ≤ tolerance·|b|. Typical 1e-10.")
         .logarithmic();
     sim_.kind = ode::IntegratorKind::ImplicitEuler;
     sim_.declareParams(params_, " Default implicit-euler; the explicit ones blow up here.");
@@ -67,9 +69,10 @@ class StiffSpringScene final : public app::Scene {
   void ui() override {
     if (!capHit_) return;
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.85f, 0.35f, 0.0f, 1.0f));
-    ImGui::TextWrapped("Implicit Euler: at t = %.3f s CG stopped at its cap of %d iterations with residual %.2g "
-                       "> tolerance %.2g; the step is not converged. Raise cg_max_iterations or cg_tolerance.",
-                       capHit_->time, capHit_->iterations, capHit_->residual, cg_.relativeTolerance);
+    ImGui::TextWrapped(
+        "Implicit Euler: at t = %.3f s CG stopped at its cap of %d iterations with residual %.2g "
+        "> tolerance %.2g; the step is not converged. Raise cg_max_iterations or cg_tolerance.",
+        capHit_->time, capHit_->iterations, capHit_->residual, cg_.relativeTolerance);
     ImGui::PopStyleColor();
   }
 
@@ -119,9 +122,9 @@ class StiffSpringScene final : public app::Scene {
 
  private:
   struct CapHit {
-    Real time;       // [s]
+    Real time;  // [s]
     int iterations;
-    Real residual;   // relative
+    Real residual;  // relative
   };
   springs::LatticeDesc beam_{Vec3(0.0), 10, 3, 3, 0.2, 0.05, 1e5, 1.0, true, false};
   ode::ImplicitEulerSettings cg_;

@@ -11,11 +11,11 @@
 namespace pba::hello {
 
 Status validate(const BallDesc& d) {
-  for (Status s : {checkRange("mass", d.mass, 1e-6, 1e6), checkRange("radius", d.radius, 1e-4, 100.0),
-                   checkRange("restitution", d.restitution, 0.0, 1.0), checkRange("drag", d.drag, 0.0, 1e4),
-                   checkRange("gravity", d.gravity, 0.0, 1e3), checkRange("dropHeight", d.dropHeight, 0.0, 1e4),
-                   checkRange("groundHeight", d.groundHeight, -1e4, 1e4),
-                   checkRange("restingSpeed", d.restingSpeed, 0.0, 1e3)}) {
+  for (Status s :
+       {checkRange("mass", d.mass, 1e-6, 1e6), checkRange("radius", d.radius, 1e-4, 100.0),
+        checkRange("restitution", d.restitution, 0.0, 1.0), checkRange("drag", d.drag, 0.0, 1e4),
+        checkRange("gravity", d.gravity, 0.0, 1e3), checkRange("dropHeight", d.dropHeight, 0.0, 1e4),
+        checkRange("groundHeight", d.groundHeight, -1e4, 1e4), checkRange("restingSpeed", d.restingSpeed, 0.0, 1e3)}) {
     if (!s) return s;
   }
   return Status::success();
@@ -141,7 +141,9 @@ void SpringBallSystem::force(Real, std::span<const Real> q, std::span<const Real
   for (int k = 0; k < 3; ++k) out[static_cast<std::size_t>(k)] = f[k];
 }
 
-Real springExtension(const SpringDesc& d, const BallState& s) { return glm::length(s.position - d.anchor) - d.restLength; }
+Real springExtension(const SpringDesc& d, const BallState& s) {
+  return glm::length(s.position - d.anchor) - d.restLength;
+}
 
 Real springEnergy(const SpringDesc& d, const BallState& s) {
   const Real e = springExtension(d, s);

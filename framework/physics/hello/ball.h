@@ -25,13 +25,13 @@ struct BallState {
 
 /// What the user edits: the ball, the air and the ground. Defaults give a lively, readable drop.
 struct BallDesc {
-  Real mass = 1.0;          ///< [kg], > 0; typical 0.1–10
-  Real radius = 0.25;       ///< [m], > 0; typical 0.05–1
-  Real restitution = 0.8;   ///< [1] in [0, 1]: share of normal speed kept by a bounce
-  Real drag = 0.1;          ///< [N·s/m] ≥ 0: linear air drag coefficient c
+  Real mass = 1.0;                  ///< [kg], > 0; typical 0.1–10
+  Real radius = 0.25;               ///< [m], > 0; typical 0.05–1
+  Real restitution = 0.8;           ///< [1] in [0, 1]: share of normal speed kept by a bounce
+  Real drag = 0.1;                  ///< [N·s/m] ≥ 0: linear air drag coefficient c
   Real gravity = kStandardGravity;  ///< [m/s²] ≥ 0, acting along −y
-  Real dropHeight = 3.0;    ///< [m] ≥ 0: initial height of the ball's lowest point above the ground
-  Real groundHeight = 0.0;  ///< [m] world y of the ground plane
+  Real dropHeight = 3.0;            ///< [m] ≥ 0: initial height of the ball's lowest point above the ground
+  Real groundHeight = 0.0;          ///< [m] world y of the ground plane
   Real restingSpeed = 0.1;  ///< [m/s] ≥ 0: slower impacts are resting contact, not bounces (particles lab's default)
 };
 
@@ -63,8 +63,8 @@ BallState eulerStep(const BallState& state, const Vec3& acceleration, Real h);
 
 /// Outcome of a ground contact test.
 struct BounceResult {
-  BallState state;      ///< state after the bounce (unchanged when there was no contact)
-  bool bounced = false; ///< true when the ball touched the plane moving into it
+  BallState state;       ///< state after the bounce (unchanged when there was no contact)
+  bool bounced = false;  ///< true when the ball touched the plane moving into it
 };
 
 // ***** HELLO-2: the ground bounce (Lobb notes, "particle/plane collisions") *****
@@ -90,11 +90,11 @@ BounceResult stepDrop(const BallDesc& desc, const BallState& state, Real h);
 
 /// A ball hanging from a damped spring whose anchor the user can drag.
 struct SpringDesc {
-  Real mass = 1.0;           ///< [kg] > 0
-  Real stiffness = 40.0;     ///< [N/m] > 0, k
-  Real restLength = 1.5;     ///< [m] > 0, L
-  Real damping = 0.6;        ///< [N·s/m] ≥ 0, c_s along the spring
-  Real drag = 0.05;          ///< [N·s/m] ≥ 0, linear air drag
+  Real mass = 1.0;                  ///< [kg] > 0
+  Real stiffness = 40.0;            ///< [N/m] > 0, k
+  Real restLength = 1.5;            ///< [m] > 0, L
+  Real damping = 0.6;               ///< [N·s/m] ≥ 0, c_s along the spring
+  Real drag = 0.05;                 ///< [N·s/m] ≥ 0, linear air drag
   Real gravity = kStandardGravity;  ///< [m/s²] ≥ 0
   Vec3 anchor{0.0, 3.5, 0.0};       ///< [m] world position of the fixed end
 };

@@ -4,8 +4,8 @@
 // the same error estimate from one step, reusing its stages (and the last stage is the first of the
 // next step: "first same as last", 6 new evaluations per step).
 #include <algorithm>
-#include <cmath>
 #include <cassert>
+#include <cmath>
 #include <cstddef>
 #include <string>
 
@@ -21,8 +21,7 @@ constexpr Real a21 = 1.0 / 5;
 constexpr Real a31 = 3.0 / 40, a32 = 9.0 / 40;
 constexpr Real a41 = 44.0 / 45, a42 = -56.0 / 15, a43 = 32.0 / 9;
 constexpr Real a51 = 19372.0 / 6561, a52 = -25360.0 / 2187, a53 = 64448.0 / 6561, a54 = -212.0 / 729;
-constexpr Real a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176,
-               a65 = -5103.0 / 18656;
+constexpr Real a61 = 9017.0 / 3168, a62 = -355.0 / 33, a63 = 46732.0 / 5247, a64 = 49.0 / 176, a65 = -5103.0 / 18656;
 // 5th-order weights (also the 7th stage's row: FSAL).
 constexpr Real b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.0 / 6784, b6 = 11.0 / 84;
 // Error weights e = b − b̂ (difference of the 5th- and 4th-order solutions).
@@ -67,22 +66,26 @@ void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, A
     // Take the remainder when it is close to the proposal, so that no sliver of a step is left.
     const bool last = delta >= remaining * (1.0 - 1e-12) || remaining - delta < settings.minStep;
     const Real d = last ? remaining : delta;
-    stage(t + c2 * d, [&](std::size_t i) { return d * a21 * w.k1[i]; }, w.k2);
-    stage(t + c3 * d, [&](std::size_t i) { return d * (a31 * w.k1[i] + a32 * w.k2[i]); }, w.k3);
-    stage(t + c4 * d, [&](std::size_t i) { return d * (a41 * w.k1[i] + a42 * w.k2[i] + a43 * w.k3[i]); }, w.k4);
-    stage(t + c5 * d,
-          [&](std::size_t i) { return d * (a51 * w.k1[i] + a52 * w.k2[i] + a53 * w.k3[i] + a54 * w.k4[i]); }, w.k5);
-    stage(t + d,
-          [&](std::size_t i) {
-            return d * (a61 * w.k1[i] + a62 * w.k2[i] + a63 * w.k3[i] + a64 * w.k4[i] + a65 * w.k5[i]);
-          },
-          w.k6);
+    stage(
+        t + c2 * d, [&](std::size_t i) { return d * a21 * w.k1[i]; }, w.k2);
+    stage(
+        t + c3 * d, [&](std::size_t i) { return d * (a31 * w.k1[i] + a32 * w.k2[i]); }, w.k3);
+    stage(
+        t + c4 * d, [&](std::size_t i) { return d * (a41 * w.k1[i] + a42 * w.k2[i] + a43 * w.k3[i]); }, w.k4);
+    stage(
+        t + c5 * d, [&](std::size_t i) { return d * (a51 * w.k1[i] + a52 * w.k2[i] + a53 * w.k3[i] + a54 * w.k4[i]); },
+        w.k5);
+    stage(
+        t + d,
+        [&](std::size_t i) {
+          return d * (a61 * w.k1[i] + a62 * w.k2[i] + a63 * w.k3[i] + a64 * w.k4[i] + a65 * w.k5[i]);
+        },
+        w.k6);
     // 5th-order candidate (propagated, "local extrapolation"), and its derivative (FSAL stage 7).
-    stage(t + d,
-          [&](std::size_t i) {
-            return d * (b1 * w.k1[i] + b3 * w.k3[i] + b4 * w.k4[i] + b5 * w.k5[i] + b6 * w.k6[i]);
-          },
-          w.k7);
+    stage(
+        t + d,
+        [&](std::size_t i) { return d * (b1 * w.k1[i] + b3 * w.k3[i] + b4 * w.k4[i] + b5 * w.k5[i] + b6 * w.k6[i]); },
+        w.k7);
     Real errorNorm = 0.0;
     bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {

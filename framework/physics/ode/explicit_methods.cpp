@@ -33,7 +33,7 @@ void addScaled(std::span<Real> out, std::span<const Real> s, Real c, std::span<c
 void midpointStep(OdeSystem& system, Real h, Workspace& w) {
   Workspace::fit(system.stateSize(), {&w.s, &w.k1, &w.k2, &w.tmp});
   const Real start = beginGenericStep(system, w);
-  addScaled(w.tmp, w.s, 0.5 * h, w.k1);         // s + Δs/2
+  addScaled(w.tmp, w.s, 0.5 * h, w.k1);             // s + Δs/2
   system.derivative(start + 0.5 * h, w.tmp, w.k2);  // g_mid
   addScaled(w.s, w.s, h, w.k2);
   endGenericStep(system, w, start + h);

@@ -7,14 +7,22 @@ namespace pba::ode {
 
 std::string_view integratorName(IntegratorKind kind) {
   switch (kind) {
-    case IntegratorKind::Euler: return "euler";
-    case IntegratorKind::SymplecticEuler: return "symplectic-euler";
-    case IntegratorKind::Midpoint: return "midpoint";
-    case IntegratorKind::Rk4: return "rk4";
-    case IntegratorKind::Verlet: return "verlet";
-    case IntegratorKind::VelocityVerlet: return "velocity-verlet";
-    case IntegratorKind::ImplicitEuler: return "implicit-euler";
-    case IntegratorKind::Adaptive: return "adaptive";
+    case IntegratorKind::Euler:
+      return "euler";
+    case IntegratorKind::SymplecticEuler:
+      return "symplectic-euler";
+    case IntegratorKind::Midpoint:
+      return "midpoint";
+    case IntegratorKind::Rk4:
+      return "rk4";
+    case IntegratorKind::Verlet:
+      return "verlet";
+    case IntegratorKind::VelocityVerlet:
+      return "velocity-verlet";
+    case IntegratorKind::ImplicitEuler:
+      return "implicit-euler";
+    case IntegratorKind::Adaptive:
+      return "adaptive";
   }
   return "unknown";
 }
@@ -36,12 +44,16 @@ int integratorOrder(IntegratorKind kind) {
   switch (kind) {
     case IntegratorKind::Euler:
     case IntegratorKind::SymplecticEuler:
-    case IntegratorKind::ImplicitEuler: return 1;
+    case IntegratorKind::ImplicitEuler:
+      return 1;
     case IntegratorKind::Midpoint:
     case IntegratorKind::Verlet:
-    case IntegratorKind::VelocityVerlet: return 2;
-    case IntegratorKind::Rk4: return 4;
-    case IntegratorKind::Adaptive: return 5;
+    case IntegratorKind::VelocityVerlet:
+      return 2;
+    case IntegratorKind::Rk4:
+      return 4;
+    case IntegratorKind::Adaptive:
+      return 5;
   }
   return 1;
 }
@@ -83,14 +95,30 @@ Status Integrator::setAdaptiveSettings(const AdaptiveSettings& settings) {
 void Integrator::step(SecondOrderSystem& system, Real h) {
   assert(h > 0.0);
   switch (kind_) {
-    case IntegratorKind::Euler: explicitEulerStep(system, h, work_); break;
-    case IntegratorKind::SymplecticEuler: symplecticEulerStep(system, h, work_); break;
-    case IntegratorKind::Midpoint: midpointStep(system, h, work_); break;
-    case IntegratorKind::Rk4: rk4Step(system, h, work_); break;
-    case IntegratorKind::Verlet: verletStep(system, h, verlet_, work_); break;
-    case IntegratorKind::VelocityVerlet: velocityVerletStep(system, h, work_); break;
-    case IntegratorKind::ImplicitEuler: implicitStats_ = implicitEulerStep(system, h, implicitSettings_, work_); break;
-    case IntegratorKind::Adaptive: adaptiveStep(system, h, adaptiveSettings_, adaptive_, work_); break;
+    case IntegratorKind::Euler:
+      explicitEulerStep(system, h, work_);
+      break;
+    case IntegratorKind::SymplecticEuler:
+      symplecticEulerStep(system, h, work_);
+      break;
+    case IntegratorKind::Midpoint:
+      midpointStep(system, h, work_);
+      break;
+    case IntegratorKind::Rk4:
+      rk4Step(system, h, work_);
+      break;
+    case IntegratorKind::Verlet:
+      verletStep(system, h, verlet_, work_);
+      break;
+    case IntegratorKind::VelocityVerlet:
+      velocityVerletStep(system, h, work_);
+      break;
+    case IntegratorKind::ImplicitEuler:
+      implicitStats_ = implicitEulerStep(system, h, implicitSettings_, work_);
+      break;
+    case IntegratorKind::Adaptive:
+      adaptiveStep(system, h, adaptiveSettings_, adaptive_, work_);
+      break;
   }
 }
 

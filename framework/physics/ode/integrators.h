@@ -134,9 +134,9 @@ struct ImplicitEulerSettings {
 /// "implicit.maxIterations: …" when a setting is out of range (non-finite, tolerance ≤ 0 or ≥ 1, cap < 1).
 Status validate(const ImplicitEulerSettings& settings);
 struct ImplicitEulerStats {
-  int iterations = 0;          ///< CG iterations of the last step
-  Real relativeResidual = 0.0; ///< |b − A Δv| / |b| of the returned Δv (recomputed, not CG's recursive estimate)
-  bool converged = true;       ///< relativeResidual ≤ tolerance; false when the cap stopped CG first
+  int iterations = 0;           ///< CG iterations of the last step
+  Real relativeResidual = 0.0;  ///< |b − A Δv| / |b| of the returned Δv (recomputed, not CG's recursive estimate)
+  bool converged = true;        ///< relativeResidual ≤ tolerance; false when the cap stopped CG first
   bool blockPreconditioner = false;  ///< the system gave its Jacobian's diagonal blocks (else mass Jacobi)
 };
 /// Linearised backward Euler (Baraff & Witkin 1998, eq. 16–18): solve

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "physics/exercises/not_implemented.h"
-#include "physics/ode/step_helpers.h"
 #include "physics/ode/integrators.h"
 #include "physics/ode/oscillator.h"
+#include "physics/ode/step_helpers.h"
 
 namespace pba::ode {
 using detail::finishInPlace;

@@ -4,9 +4,9 @@
 #include <cstddef>
 
 #include "physics/exercises/not_implemented.h"
-#include "physics/ode/step_helpers.h"
 #include "physics/ode/integrators.h"
 #include "physics/ode/oscillator.h"
+#include "physics/ode/step_helpers.h"
 
 namespace pba::ode {
 using detail::finishInPlace;
@@ -31,7 +31,8 @@ void velocityVerletStep(SecondOrderSystem& system, Real h, Workspace& w) {
   const Real halfStep = 0.5 * h;
   // v ← v + (h/2) a, with the acceleration in w.k1 (which s.a views).
   auto halfKick = [&] {
-    std::transform(s.v.begin(), s.v.end(), s.a.begin(), s.v.begin(), [&](Real vi, Real ai) { return vi + halfStep * ai; });
+    std::transform(s.v.begin(), s.v.end(), s.a.begin(), s.v.begin(),
+                   [&](Real vi, Real ai) { return vi + halfStep * ai; });
   };
   halfKick();  // v(t + h/2)
   // q ← q + h v(t + h/2) = q + h v + h² a/2.

@@ -75,7 +75,8 @@ CollisionStats collideWithObstacles(Particles& p, const Obstacles& o, Real radiu
   const ContactMaterial& m = o.material;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.inverseMass[i] <= 0.0) continue;
-    for (const PlaneObstacle& plane : o.planes) resolve(p, i, closestSurface(plane, p.position[i]), radius, m, step, stats);
+    for (const PlaneObstacle& plane : o.planes)
+      resolve(p, i, closestSurface(plane, p.position[i]), radius, m, step, stats);
     for (const SphereObstacle& s : o.spheres) resolve(p, i, closestSurface(s, p.position[i]), radius, m, step, stats);
     for (const BoxObstacle& b : o.boxes) resolve(p, i, closestSurface(b, p.position[i]), radius, m, step, stats);
   }
@@ -108,7 +109,8 @@ Status validate(const Obstacles& o) {
     for (int a = 0; a < 3; ++a) {
       if (Status s = checkPositive("boxes.halfExtents", box.halfExtents[a]); !s) return s;
     }
-    if (!(std::abs(glm::length(box.orientation) - 1.0) <= 1e-9)) return Error{"boxes.orientation: must be a unit quaternion"};
+    if (!(std::abs(glm::length(box.orientation) - 1.0) <= 1e-9))
+      return Error{"boxes.orientation: must be a unit quaternion"};
   }
   return validate(o.material);
 }

@@ -53,16 +53,16 @@ Status validate(const ContactMaterial& material);
 inline constexpr Real kContactSlop = 1e-6;
 
 struct PlaneObstacle {
-  Vec3 point{0.0};           ///< [m] any point of the plane
+  Vec3 point{0.0};             ///< [m] any point of the plane
   Vec3 normal{0.0, 1.0, 0.0};  ///< unit, pointing to the free side
 };
 struct SphereObstacle {
-  Vec3 center{0.0};  ///< [m]
-  Real radius = 1.0; ///< [m] > 0
+  Vec3 center{0.0};   ///< [m]
+  Real radius = 1.0;  ///< [m] > 0
 };
 struct BoxObstacle {
-  Vec3 center{0.0};           ///< [m]
-  Vec3 halfExtents{0.5};      ///< [m] > 0
+  Vec3 center{0.0};       ///< [m]
+  Vec3 halfExtents{0.5};  ///< [m] > 0
   Quat orientation{1.0, 0.0, 0.0, 0.0};
 };
 

@@ -9,11 +9,12 @@
 namespace pba::particles {
 
 Status validate(const EmitterDesc& d) {
-  for (Status s : {checkPositive("emitter.rate", d.rate), checkPositive("emitter.lifetime", d.lifetime),
-                   checkRange("emitter.lifetimeJitter", d.lifetimeJitter, 0.0, 0.99),
-                   checkRange("emitter.spread", d.spread, 0.0, kPi), checkRange("emitter.speed", d.speed, 0.0, 1e4),
-                   checkRange("emitter.speedJitter", d.speedJitter, 0.0, 1.0),
-                   checkPositive("emitter.particleMass", d.particleMass), checkFinite("emitter.position", d.position)}) {
+  for (Status s :
+       {checkPositive("emitter.rate", d.rate), checkPositive("emitter.lifetime", d.lifetime),
+        checkRange("emitter.lifetimeJitter", d.lifetimeJitter, 0.0, 0.99),
+        checkRange("emitter.spread", d.spread, 0.0, kPi), checkRange("emitter.speed", d.speed, 0.0, 1e4),
+        checkRange("emitter.speedJitter", d.speedJitter, 0.0, 1.0),
+        checkPositive("emitter.particleMass", d.particleMass), checkFinite("emitter.position", d.position)}) {
     if (!s) return s;
   }
   if (glm::length(d.direction) < 1e-9) return Error{"emitter.direction: must not be zero"};

@@ -29,18 +29,18 @@ Vec3 windVelocity(const WindDesc& wind, const Vec3& x, Real t);
 /// Point attractor, softened inverse square (Plummer): a = S (c − x) / (|c − x|² + ε²)^{3/2}.
 /// Potential per unit mass −S/√(|c − x|² + ε²). S < 0 repels.
 struct AttractorDesc {
-  Vec3 center{0.0};     ///< [m]
-  Real strength = 1.0;  ///< S [m³/s²] (like G·M)
-  Real softening = 0.2; ///< ε [m] > 0: keeps the force finite at the centre
+  Vec3 center{0.0};      ///< [m]
+  Real strength = 1.0;   ///< S [m³/s²] (like G·M)
+  Real softening = 0.2;  ///< ε [m] > 0: keeps the force finite at the centre
 };
 
 /// Vortex about a line through `center` along `axis`: a swirl acceleration tangential to circles
 /// around the axis, a = S (â × r⊥) / (|r⊥|² + r_c²), r⊥ the offset from the axis (Rankine-like core).
 struct VortexDesc {
-  Vec3 center{0.0};         ///< [m] a point of the axis
-  Vec3 axis{0.0, 1.0, 0.0}; ///< unit
-  Real strength = 2.0;      ///< S [m²/s²]
-  Real coreRadius = 0.5;    ///< r_c [m] > 0
+  Vec3 center{0.0};          ///< [m] a point of the axis
+  Vec3 axis{0.0, 1.0, 0.0};  ///< unit
+  Real strength = 2.0;       ///< S [m²/s²]
+  Real coreRadius = 0.5;     ///< r_c [m] > 0
 };
 
 struct ForceDesc {

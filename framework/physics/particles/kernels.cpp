@@ -72,7 +72,7 @@ inline Vec3 swirlKick(const Vec3& x, Real cx, Real cz, Real halfSwirl, Real core
 }  // namespace
 
 FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h) {
-  const Real keep = 1.0 - 0.5 * h * d.dragRate;                    // each half kick (kernels.h)
+  const Real keep = 1.0 - 0.5 * h * d.dragRate;                       // each half kick (kernels.h)
   const Vec3 halfKick = 0.5 * h * (d.gravity + d.dragRate * d.wind);  // (h/2) G
   const Vec3 g = d.gravity;
   const Real halfSwirl = 0.5 * h * d.vortexStrength, core2 = d.vortexCore * d.vortexCore;
@@ -128,7 +128,8 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
     // test, so only the flagged ones need pass 2.
     for (std::size_t i = begin; i < end; ++i) {
       const Real age = ages[i] + h;
-      if (age >= lifetimes[i]) [[unlikely]] continue;  // expired: not kept
+      if (age >= lifetimes[i]) [[unlikely]]
+        continue;  // expired: not kept
       const Vec3 half = keep * vs[i] + halfKick + swirlKick(xs[i], cx, cz, halfSwirl, core2);
       const Vec3 xi = xs[i] + h * half;
       const Vec3 vi = keep * half + halfKick + swirlKick(xi, cx, cz, halfSwirl, core2);

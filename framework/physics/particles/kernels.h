@@ -26,7 +26,7 @@ struct FusedStepDesc {
   Real dragRate = 0.0;                        ///< c/m [1/s]: linear drag per unit mass, same for all
   PlaneObstacle ground;
   ContactMaterial material;
-  Real radius = 0.0;                          ///< [m] particle radius
+  Real radius = 0.0;  ///< [m] particle radius
 };
 
 /// Velocity Verlet under a = g − (c/m) v, then the contact model of collision.h against the plane.
@@ -48,17 +48,17 @@ struct FusedFountainDesc {
   std::span<const PlaneObstacle> planes;
   std::span<const SphereObstacle> spheres;
   ContactMaterial material;
-  Real radius = 0.0;                          ///< [m] particle radius
+  Real radius = 0.0;  ///< [m] particle radius
 };
 
 /// What one stepFountain() call found, gathered on the way (no extra pass over the pool).
 struct FountainStepStats {
-  std::size_t contacts = 0;     ///< particle–obstacle contacts resolved
+  std::size_t contacts = 0;         ///< particle–obstacle contacts resolved
   std::size_t heldBySafetyNet = 0;  ///< contacts the contact model's safety net corrected (0 for a correct PART-5)
-  std::size_t expired = 0;      ///< particles removed because age ≥ lifetime
-  bool nonFinite = false;       ///< some survivor's x or v is NaN or ±∞ (describeNonFinite() names it)
-  Real kineticPerMass = 0.0;    ///< Σ ½|v|² over the survivors after the step [J/kg]
-  Real potentialPerMass = 0.0;  ///< Σ −g·x over the survivors after the step [J/kg] (zero at the origin)
+  std::size_t expired = 0;          ///< particles removed because age ≥ lifetime
+  bool nonFinite = false;           ///< some survivor's x or v is NaN or ±∞ (describeNonFinite() names it)
+  Real kineticPerMass = 0.0;        ///< Σ ½|v|² over the survivors after the step [J/kg]
+  Real potentialPerMass = 0.0;      ///< Σ −g·x over the survivors after the step [J/kg] (zero at the origin)
 };
 
 /// One step of an emitter's pool in one sweep over its arrays (the whole step of the fountain at 10⁶):

@@ -11,12 +11,12 @@ namespace pba::springs {
 /// A chain is a rope with heavier, stiffer links; `bending` adds springs that skip one particle,
 /// which resist folding (a stiff cable rather than a string).
 struct RopeDesc {
-  Vec3 start{0.0, 3.0, 0.0};   ///< [m] first particle
-  Vec3 end{2.0, 3.0, 0.0};     ///< [m] last particle at rest
-  int segments = 20;           ///< ≥ 1
-  Real mass = 1.0;             ///< [kg] total, shared equally by the particles
-  Real stiffness = 2000.0;     ///< [N/m] per segment
-  Real damping = 2.0;          ///< [N·s/m] per segment, along the spring
+  Vec3 start{0.0, 3.0, 0.0};  ///< [m] first particle
+  Vec3 end{2.0, 3.0, 0.0};    ///< [m] last particle at rest
+  int segments = 20;          ///< ≥ 1
+  Real mass = 1.0;            ///< [kg] total, shared equally by the particles
+  Real stiffness = 2000.0;    ///< [N/m] per segment
+  Real damping = 2.0;         ///< [N·s/m] per segment, along the spring
   bool bending = false;
   bool pinStart = true;
   bool pinEnd = false;

@@ -66,8 +66,8 @@ void accumulateSpringDifferential(std::span<const Spring> springs, std::span<con
   }
 }
 
-void accumulateSpringJacobianDiagonal(std::span<const Spring> springs, std::span<const Vec3> x,
-                                      std::span<Mat3> dfdx, std::span<Mat3> dfdv) {
+void accumulateSpringJacobianDiagonal(std::span<const Spring> springs, std::span<const Vec3> x, std::span<Mat3> dfdx,
+                                      std::span<Mat3> dfdv) {
   for (const Spring& s : springs) {
     const std::optional<Linearisation> lin = linearise(s, x);
     if (!lin) continue;

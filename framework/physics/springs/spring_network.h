@@ -35,8 +35,8 @@ struct Spring {
 //     (Positive when stretched or lengthening: it pulls i towards j.)
 // (4) Force on i = magnitude · r̂. (The force on j is its negative: the caller applies both.)
 // *****
-Vec3 dampedSpringForce(const Vec3& xi, const Vec3& xj, const Vec3& vi, const Vec3& vj, Real stiffness,
-                       Real restLength, Real damping);
+Vec3 dampedSpringForce(const Vec3& xi, const Vec3& xj, const Vec3& vi, const Vec3& vj, Real stiffness, Real restLength,
+                       Real damping);
 
 /// Adds every spring's force to f (both ends).
 void accumulateSpringForces(std::span<const Spring> springs, std::span<const Vec3> x, std::span<const Vec3> v,
@@ -46,8 +46,8 @@ void accumulateSpringDifferential(std::span<const Spring> springs, std::span<con
                                   std::span<const Vec3> dv, std::span<Vec3> df);
 /// Adds every spring's part of the Jacobian's diagonal blocks, ∂F_i/∂x_i = −K_s and ∂F_i/∂v_i = −K_d at
 /// both ends, to dfdx and dfdv (one 3×3 block per particle): implicit Euler's preconditioner.
-void accumulateSpringJacobianDiagonal(std::span<const Spring> springs, std::span<const Vec3> x,
-                                      std::span<Mat3> dfdx, std::span<Mat3> dfdv);
+void accumulateSpringJacobianDiagonal(std::span<const Spring> springs, std::span<const Vec3> x, std::span<Mat3> dfdx,
+                                      std::span<Mat3> dfdv);
 /// Σ k (l − L)² / 2 [J].
 Real springPotentialEnergy(std::span<const Spring> springs, std::span<const Vec3> x);
 /// Largest |l − L| / L over the springs (a measure of how far a stiff network is from rest).

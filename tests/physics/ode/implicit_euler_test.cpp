@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "physics/ode/integrators.h"
 #include "physics/particles/particle_system.h"
@@ -103,7 +103,8 @@ TEST(ImplicitEuler, TheConjugateGradientSolutionMatchesADenseDirectSolveOnThirty
   const Real scale = expected.norm();
   for (std::size_t r = 0; r < dense.free.size(); ++r) {
     const std::size_t i = dense.free[r];
-    EXPECT_NEAR(sys.velocities()[i] - v0[i], expected(static_cast<Eigen::Index>(r)), 1e-8 * scale) << "coordinate " << i;
+    EXPECT_NEAR(sys.velocities()[i] - v0[i], expected(static_cast<Eigen::Index>(r)), 1e-8 * scale)
+        << "coordinate " << i;
     EXPECT_NEAR(sys.positions()[i], q0[i] + h * sys.velocities()[i], 1e-14) << "coordinate " << i;
   }
   for (std::size_t i = 0; i < 3; ++i) {  // the pinned particle: Δv = 0, it moves on kinematically

@@ -75,7 +75,8 @@ TEST(Adaptive, MeetsItsToleranceWithFewerStepsThanAFixedStepOfEqualAccuracy) {
     Integrator adaptive(IntegratorKind::Adaptive);
     ASSERT_TRUE(adaptive.setAdaptiveSettings({.tolerance = tolerance}).ok());
     adaptive.step(osc, T);  // one call: the controller chooses every substep
-    const Real error = std::hypot(osc.positions()[0] - osc.exactPosition(T), osc.velocities()[0] - osc.exactVelocity(T));
+    const Real error =
+        std::hypot(osc.positions()[0] - osc.exactPosition(T), osc.velocities()[0] - osc.exactVelocity(T));
     // Error per unit step ≤ tolerance ⇒ global error ≲ tolerance × T on this non-expanding system.
     EXPECT_LE(error, tolerance * T);
     const long steps = adaptive.adaptiveState().accepted + adaptive.adaptiveState().rejected;
@@ -205,12 +206,11 @@ TEST(IntegratorSettings, InvalidValuesAreRefusedWithTheFieldNamedAndTheOldSettin
     AdaptiveSettings settings;
     const char* field;
   };
-  for (const AdaptiveCase& c : {AdaptiveCase{{.tolerance = 0.0}, "adaptive.tolerance"},
-                                AdaptiveCase{{.tolerance = -1e-6}, "adaptive.tolerance"},
-                                AdaptiveCase{{.tolerance = inf}, "adaptive.tolerance"},
-                                AdaptiveCase{{.minStep = 0.0}, "adaptive.minStep"},
-                                AdaptiveCase{{.minStep = nan}, "adaptive.minStep"},
-                                AdaptiveCase{{.maxSubsteps = 0}, "adaptive.maxSubsteps"}}) {
+  for (const AdaptiveCase& c :
+       {AdaptiveCase{{.tolerance = 0.0}, "adaptive.tolerance"},
+        AdaptiveCase{{.tolerance = -1e-6}, "adaptive.tolerance"},
+        AdaptiveCase{{.tolerance = inf}, "adaptive.tolerance"}, AdaptiveCase{{.minStep = 0.0}, "adaptive.minStep"},
+        AdaptiveCase{{.minStep = nan}, "adaptive.minStep"}, AdaptiveCase{{.maxSubsteps = 0}, "adaptive.maxSubsteps"}}) {
     const Status s = integrator.setAdaptiveSettings(c.settings);
     ASSERT_FALSE(s.ok()) << c.field;
     EXPECT_EQ(s.error().rfind(c.field, 0), 0u) << s.error();

@@ -158,8 +158,10 @@ TEST(PART_5_RestingContact, BallsBounceThenComeToRestWithoutSinkingUnderTheLibra
           const Vec3& x = sys.particles.position[i];
           lowest = std::min(lowest, x.y - radius);
           if (firstApex[i] >= 0.0) continue;
-          if (sys.particles.velocity[i].y > 0.0) rising[i] = std::max(rising[i], x.y - radius);
-          else if (rising[i] >= 0.0) firstApex[i] = rising[i];
+          if (sys.particles.velocity[i].y > 0.0)
+            rising[i] = std::max(rising[i], x.y - radius);
+          else if (rising[i] >= 0.0)
+            firstApex[i] = rising[i];
         }
       }
       EXPECT_GT(lowest, -1e-3);

@@ -41,9 +41,9 @@ TEST(ParticleContact, ProjectionPutsEveryPenetratingParticleOnTheSurfaceAndRepor
   EXPECT_NEAR(closestSurface(o.boxes[0], p.position[2]).distance, r, 1e-14);
   for (std::size_t i = 0; i < 3; ++i) {  // moved along the normal only
     const Vec3 move = p.position[i] - before.position[i];
-    const SurfacePoint s = i == 0 ? closestSurface(o.planes[0], p.position[i])
-                                  : i == 1 ? closestSurface(o.spheres[0], p.position[i])
-                                           : closestSurface(o.boxes[0], p.position[i]);
+    const SurfacePoint s = i == 0   ? closestSurface(o.planes[0], p.position[i])
+                           : i == 1 ? closestSurface(o.spheres[0], p.position[i])
+                                    : closestSurface(o.boxes[0], p.position[i]);
     EXPECT_NEAR(glm::length(glm::cross(move, s.normal)), 0.0, 1e-14) << "particle " << i;
   }
   EXPECT_VEC3_NEAR(p.position[3], before.position[3], 0.0);
@@ -81,7 +81,9 @@ TEST(ParticleContact, AThousandParticlesDroppedFromAHundredMetresNeverTunnel) {
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<Real> u(-5.0, 5.0);
   ParticleSystem sys;
-  for (int i = 0; i < 1000; ++i) sys.particles.add(Vec3(u(rng), 100.0 + u(rng), u(rng)), Vec3(u(rng), 0.0, u(rng)), 0.05);
+  for (int i = 0; i < 1000; ++i) {
+    sys.particles.add(Vec3(u(rng), 100.0 + u(rng), u(rng)), Vec3(u(rng), 0.0, u(rng)), 0.05);
+  }
   sys.syncMasses();
   Obstacles obstacles;
   obstacles.planes.push_back({});
@@ -335,7 +337,9 @@ TEST(FusedKernel, MatchesTheGenericPathOfForcesVelocityVerletAndTheContactModel)
   ParticleSystem sys;
   sys.forces.gravity = desc.gravity;
   sys.forces.drag.linear = desc.dragRate * 0.1;  // c = (c/m)·m for particles of 0.1 kg
-  for (int i = 0; i < 300; ++i) sys.particles.add(Vec3(u(rng), 0.5 + u(rng), u(rng)), 3.0 * Vec3(u(rng), u(rng), u(rng)), 0.1);
+  for (int i = 0; i < 300; ++i) {
+    sys.particles.add(Vec3(u(rng), 0.5 + u(rng), u(rng)), 3.0 * Vec3(u(rng), u(rng), u(rng)), 0.1);
+  }
   sys.syncMasses();
   std::vector<Vec3> x = sys.particles.position, v = sys.particles.velocity;
   Obstacles ground;

@@ -7,12 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "physics/ode/integrators.h"
 #include "physics/particles/collision.h"
 #include "physics/particles/emitter.h"
 #include "physics/particles/forces.h"
 #include "physics/particles/kernels.h"
 #include "physics/particles/particle_system.h"
-#include "physics/ode/integrators.h"
 #include "support/expect_helpers.h"
 #include "support/fp_traps.h"
 
@@ -117,7 +117,8 @@ TEST(FountainKernel, MeetsEveryObstacleHoweverMany) {
   // Forty small spheres in a ring and three planes (a floor and two walls): more than any fixed table of
   // the kernel would hold. Against the generic path, and nothing ends inside any obstacle.
   Scene scene;
-  scene.planes = {PlaneObstacle{}, {Vec3(1.6, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0)}, {Vec3(-1.6, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)}};
+  scene.planes = {
+      PlaneObstacle{}, {Vec3(1.6, 0.0, 0.0), Vec3(-1.0, 0.0, 0.0)}, {Vec3(-1.6, 0.0, 0.0), Vec3(1.0, 0.0, 0.0)}};
   scene.spheres.clear();
   for (int k = 0; k < 40; ++k) {
     const Real a = 2.0 * kPi * k / 40.0;

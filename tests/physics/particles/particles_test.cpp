@@ -58,7 +58,8 @@ TEST(ParticleForces, AttractorForceIsMinusTheGradientOfItsPotential) {
     Vec3 d(0.0);
     d[a] = step;
     gradient[a] = (fieldPotentialEnergy(desc, std::vector<Vec3>{x + d}, w) -
-                   fieldPotentialEnergy(desc, std::vector<Vec3>{x - d}, w)) / (2.0 * step);
+                   fieldPotentialEnergy(desc, std::vector<Vec3>{x - d}, w)) /
+                  (2.0 * step);
   }
   EXPECT_VEC3_NEAR(f[0], -gradient, 1e-8);
 }
@@ -132,7 +133,7 @@ TEST(Validation, ForcesMaterialsAndObstaclesNameTheOffendingField) {
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
   auto names = [](const Status& s, const char* field) {
     return !s.ok() && s.error().rfind(field, 0) == 0 ? ::testing::AssertionSuccess()
-                                                      : ::testing::AssertionFailure() << "got: " << s.error();
+                                                     : ::testing::AssertionFailure() << "got: " << s.error();
   };
   EXPECT_TRUE(validate(ForceDesc{}).ok());
   ForceDesc forces;

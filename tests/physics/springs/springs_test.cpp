@@ -133,9 +133,9 @@ TEST(SpringNetwork, UnderCompressionTheLateralStiffnessIsClampedToZeroAndTheAxia
     return glm::dot(u, out[1]);
   };
   const Vec3 across = glm::normalize(glm::cross(n, Vec3(0.0, 0.0, 1.0)));
-  EXPECT_NEAR(-analytic(n), exactCurvature(n), 1e-3);          // axial: k = 300 N/m, exact
+  EXPECT_NEAR(-analytic(n), exactCurvature(n), 1e-3);                    // axial: k = 300 N/m, exact
   EXPECT_NEAR(exactCurvature(across), 300.0 * (1.0 - 1.0 / 0.6), 1e-3);  // the true lateral stiffness < 0
-  EXPECT_NEAR(analytic(across), 0.0, 1e-12);                  // clamped to 0
+  EXPECT_NEAR(analytic(across), 0.0, 1e-12);                             // clamped to 0
 }
 
 TEST(SpringNetwork, TheDampingJacobianIsMinusTheHessianOfTheRayleighDissipationFunction) {
