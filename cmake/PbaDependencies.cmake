@@ -1,4 +1,4 @@
-# Every dependency comes from a system package (DESIGN.md §5b). A missing one stops configure
+# Every dependency comes from a system package (docs/architecture.md §6). A missing one stops configure
 # with the Debian package to install; ./pba installs them all with apt-get.
 find_package(PkgConfig)
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""One exercise, one grade (DESIGN.md §5, docs/architecture.md "Exercises"), checked on one build.
+"""One exercise, one grade (docs/architecture.md §5, docs/architecture.md "Exercises"), checked on one build.
 
 Usage: check_exercise_isolation.py BUILD_DIR CATALOG.tsv [--jobs N] [--work DIR]
 
@@ -115,6 +115,7 @@ def main():
     ap.add_argument("build")
     ap.add_argument("catalog")
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("PBA_JOBS", os.cpu_count() or 2)))
+    ap.add_argument("--skip-label", action="append", default=[], help="leave out tests with this ctest label")
     ap.add_argument("--work", default=None, help="folder for trace files and logs (default BUILD/isolation)")
     args = ap.parse_args()
     if not os.path.isdir(args.build) or not os.path.isfile(args.catalog):
@@ -124,12 +125,18 @@ def main():
     known = {tag for tag, _ in tags}
     work = os.path.abspath(args.work or os.path.join(args.build, "isolation"))
     os.makedirs(work, exist_ok=True)
-    tests = load_tests(args.build)
+    tests = [t for t in load_tests(args.build)
+             if not set(t["props"].get("LABELS", [])) & set(args.skip_label)]
     by_name = {t["name"]: t for t in tests}
     problems = []
 
     print(f"== trace run: {len(tests)} tests, every solution in place", flush=True)
+    started = time.monotonic()
     traced = run_all(tests, work, "trace", {}, args.jobs)
+    with open(os.path.join(work, "trace.json"), "w", encoding="utf-8") as f:
+        json.dump({n: {"passed": r["passed"], "seconds": round(r["seconds"], 3), "ran": sorted(r["ran"])}
+                   for n, r in sorted(traced.items())}, f, indent=1)
+    print(f"   {time.monotonic() - started:.0f} s; traces in {work}/trace.json", flush=True)
     for name, r in sorted(traced.items()):
         if not r["passed"]:
             problems.append(f"{name} fails with every solution in place (log {r['log']}):\n{tail(r['log'])}")
@@ -148,6 +155,7 @@ def main():
     for tag, _ in tags:
         own = [t for t in tests if tag_of(t["name"], tags) == tag]
         touching = [t for t in tests if t not in own and tag in traced[t["name"]]["ran"]]
+        tag_start = time.monotonic()
         results = run_all(own + touching, work, f"stub-{tag}", {"PBA_STUB_EXERCISES": tag}, args.jobs)
         still_pass = sorted(n for n in (t["name"] for t in own) if results[n]["passed"])
         broken = sorted(n for n in (t["name"] for t in touching) if not results[n]["passed"])
@@ -158,7 +166,8 @@ def main():
                             f"{tail(results[n]['log'])}")
         state = "ok" if not still_pass and not broken else "FAIL"
         print(f"{tag:8s} {state:4s}  {len(own) - len(still_pass)}/{len(own)} own tests fail, "
-              f"{len(touching) - len(broken)}/{len(touching)} other tests that run {tag} pass", flush=True)
+              f"{len(touching) - len(broken)}/{len(touching)} other tests that run {tag} pass "
+              f"({time.monotonic() - tag_start:.0f} s)", flush=True)
 
     total = sum(r["seconds"] for r in traced.values())
     print(f"trace run: {len(traced)} tests, {total:.0f} s of test time")

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The hand-out gives nothing away (DESIGN.md §5): no solution's distinctive lines anywhere in the release.
+"""The hand-out gives nothing away (docs/architecture.md §5): no solution's distinctive lines anywhere in the release.
 
 Usage: check_solution_leaks.py SOURCE_ROOT RELEASE_ROOT [--window N]
 
@@ -81,7 +81,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("source")
     ap.add_argument("release")
-    ap.add_argument("--window", type=int, default=28, help="tokens per window (default 28)")
+    ap.add_argument("--window", type=int, default=34, help="tokens per window (default 34)")
     ap.add_argument("--min-distinct", type=int, default=10, help="distinct tokens a window needs (default 10)")
     args = ap.parse_args()
     index = {}

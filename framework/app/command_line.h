@@ -1,5 +1,5 @@
 #pragma once
-// The command line contract of every lab executable (DESIGN.md §4):
+// The command line contract of every lab executable (docs/architecture.md §4):
 //   pba-<lab> [--scene NAME|FILE.json] [--headless] [--frames N | --seconds T] [--dt H]
 //             [--screenshot FILE.png] [--metrics FILE|-] [--seed N] [--lecture] [--list-scenes] [--help]
 // plus --substeps N, --time-scale S, --set NAME=VALUE (any scene parameter) and the lab's own flags.

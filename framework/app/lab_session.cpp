@@ -53,13 +53,35 @@ void LabSession::applyPreset(int index) {
     return;
   }
   const Preset& preset = presets[static_cast<size_t>(index)];
-  if (Status s = applyParams(runner_.scene(), preset.params, "preset " + preset.name); !s) {
+  const Result<nlohmann::json> values = presetParams(runner_.sceneName(), preset);
+  if (!values) {
+    message_ = values.error();
+    return;
+  }
+  if (Status s = applyParams(runner_.scene(), values.value(), "preset " + preset.name); !s) {
     message_ = s.error();
     return;
   }
   runner_.reset();
   plots_.clear();
   message_ = "Preset " + std::to_string(index + 1) + ": " + preset.name;
+}
+
+void LabSession::drag(int handle, const Vec3& target) {
+  runner_.scene().drag(handle, target);
+  if (runner_.paused()) runner_.scene().refresh();
+}
+
+void LabSession::release(int handle) {
+  runner_.scene().release(handle);
+  if (runner_.paused()) runner_.scene().refresh();
+}
+
+bool LabSession::nudge(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real sceneSize,
+                       bool fine) {
+  if (!nudgeScene(runner_.scene(), direction, right, up, forward, sceneSize, fine)) return false;
+  if (runner_.paused()) runner_.scene().refresh();
+  return true;
 }
 
 bool LabSession::loadSceneFile(const std::string& path) {

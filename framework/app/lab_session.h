@@ -10,6 +10,7 @@
 #include "app/lab_settings.h"
 #include "app/plot_history.h"
 #include "app/scene_runner.h"
+#include "app/target_nudge.h"
 
 namespace pba::app {
 
@@ -28,8 +29,16 @@ class LabSession {
   void switchScene(int index);
   void nextScene(int delta);
   int sceneIndex() const;
-  /// Applies preset `index` (0-based) of the current scene and resets. Message on failure.
+  /// Applies preset `index` (0-based) of the current scene and resets: every parameter takes the
+  /// scene's default, then the preset's value (presetParams). Message on failure.
   void applyPreset(int index);
+
+  /// Mouse drag and keyboard nudge of the scene's objects. While the scene is paused each is followed
+  /// by Scene::refresh(), so a paused scene shows the effect of a goal change whatever moved it.
+  void drag(int handle, const Vec3& target);
+  void release(int handle);
+  /// Nudges the scene's target (target_nudge.h); false when the scene has none.
+  bool nudge(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real sceneSize, bool fine);
 
   /// Loads a scene file. On error the running scene stays and the error is kept for the UI.
   bool loadSceneFile(const std::string& path);

@@ -1,5 +1,5 @@
 #pragma once
-// Per-lab persisted settings (DESIGN.md §3): last scene, window size, lecture mode, plotted metrics.
+// Per-lab persisted settings (docs/architecture.md §3): last scene, window size, lecture mode, plotted metrics.
 // Stored as JSON next to the ImGui ini in $XDG_CONFIG_HOME/pba-labs/<lab>/ (default ~/.config).
 #include <string>
 #include <vector>

@@ -12,13 +12,19 @@
 namespace pba::app {
 namespace {
 
+using detail::kAlertRed;
+using detail::kWarnOrange;
+
 constexpr float kPanelWidth = 400.0f;       // [px at UI scale 1]
 constexpr float kOverlayWidth = 350.0f;     // [px at UI scale 1] a scene's own right-hand column
 constexpr float kWidgetWidthInFonts = 11.5f;  // slider width in font heights: leaves room for labels
-const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
-const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
+constexpr float kWidgetShare = 0.56f;       // at most this share of the panel's width (lecture mode)
+// Shares of the window's width the panel and the overlay column may take: in lecture mode both stay
+// narrow columns, so that the scene keeps most of a 1280×720 projector image.
+constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.27f;
+constexpr float kOverlayShare = 0.34f, kLectureOverlayShare = 0.26f;
 
-// Key, action: the help overlay's table (the same bindings in every lab, DESIGN.md §3).
+// Key, action: the help overlay's table (the same bindings in every lab, docs/architecture.md §3).
 const char* const kKeys[][2] = {
     {"Space / P", "pause or resume"},
     {"O", "single step (hold to repeat)"},
@@ -119,12 +125,34 @@ void parameterWidgets(LabSession& session) {
   if (resetNeeded) session.reset();
 }
 
+/// Records the last item's rectangle under `name` when it is visible (UiState::widgets).
+void noteWidget(UiState& ui, const std::string& name) {
+  if (!ImGui::IsItemVisible()) return;
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  ui.widgets[name] = LabelBox{a.x, a.y, b.x, b.y};
+}
+
+/// A collapsing header whose rectangle is recorded as "header:<label>".
+bool header(UiState& ui, const char* label, ImGuiTreeNodeFlags flags = 0) {
+  const bool open = ImGui::CollapsingHeader(label, flags);
+  noteWidget(ui, std::string("header:") + label);
+  return open;
+}
+
+/// Puts the next button on this line when it fits in the panel (a narrow lecture panel wraps them).
+void sameLineIfFits(const char* nextLabel) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float next = ImGui::CalcTextSize(nextLabel).x + 2.0f * style.FramePadding.x;
+  const float right = ImGui::GetItemRectMax().x + style.ItemSpacing.x + next;
+  if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
 void simulationControls(LabSession& session) {
   SceneRunner& runner = session.runner();
   if (ImGui::Button(runner.paused() ? "Run (Space)" : "Pause (Space)")) session.togglePause();
-  ImGui::SameLine();
+  sameLineIfFits("Step (O)");
   if (ImGui::Button("Step (O)")) session.singleStep();
-  ImGui::SameLine();
+  sameLineIfFits("Reset (R)");
   if (ImGui::Button("Reset (R)")) session.reset();
 
   double dt = runner.dt();
@@ -184,10 +212,19 @@ void sceneFileControls(LabSession& session, UiState& ui) {
   if (ui.scenePath[0] == '\0')
     std::snprintf(ui.scenePath, sizeof ui.scenePath, "%s/scenes/%s/%s.json", PBA_RESOURCE_DIR, session.lab().c_str(),
                   session.runner().sceneName().c_str());
-  ImGui::InputText("file", ui.scenePath, sizeof ui.scenePath);
+  // The path takes the panel's whole width, and the full text is repeated below it (wrapped), so a long
+  // path can be read without scrolling the field.
+  ImGui::TextUnformatted("scene file (JSON)");
   helpMarker("A JSON scene file: the scene's name and its parameters. Load replaces the scene only when the "
              "file is valid; Save writes the current parameters.");
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  ImGui::InputText("##file", ui.scenePath, sizeof ui.scenePath);
+  noteWidget(ui, "file_field");
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextDisabled("%s", ui.scenePath);
+  ImGui::PopTextWrapPos();
   if (ImGui::Button("Load")) session.loadSceneFile(ui.scenePath);
+  noteWidget(ui, "load_button");
   ImGui::SameLine();
   if (ImGui::Button("Save")) session.saveSceneFile(ui.scenePath);
   if (!session.fileError().empty()) {
@@ -212,14 +249,17 @@ void exerciseStatus(LabSession& session) {
 }
 
 void mainPanel(LabSession& session, UiState& ui) {
-  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(panelWidthPixels() - 8.0f, ImGui::GetIO().DisplaySize.y - 16), ImGuiCond_FirstUseEver);
+  // The panel takes its size from the mode once per change (start, lecture on or off); in between the
+  // user may resize it.
+  const ImGuiCond cond = ui.relayout ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), cond);
+  ImGui::SetNextWindowSize(ImVec2(panelWidthPixels(ui) - 8.0f, ImGui::GetIO().DisplaySize.y - 16), cond);
   const std::string title = "pba-" + session.lab() + "###panel";
   if (!ImGui::Begin(title.c_str())) {
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(ImGui::GetFontSize() * kWidgetWidthInFonts);
+  ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * kWidgetWidthInFonts, kWidgetShare * ImGui::GetContentRegionAvail().x));
   const auto& list = scenes();
   const int current = session.sceneIndex();
   if (ImGui::BeginCombo("scene", session.runner().sceneName().c_str())) {
@@ -236,81 +276,32 @@ void mainPanel(LabSession& session, UiState& ui) {
   ImGui::TextWrapped("%s", session.runner().scene().description().c_str());
   const std::vector<Preset> presets = session.runner().scene().presets();
   for (size_t i = 0; i < presets.size() && i < 9; ++i) {
-    if (i % 3 != 0) ImGui::SameLine();
     const std::string label = std::to_string(i + 1) + " " + presets[i].name;
+    if (i > 0) sameLineIfFits(label.c_str());
     if (ImGui::SmallButton(label.c_str())) session.applyPreset(static_cast<int>(i));
   }
-  if (ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session);
-  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (header(ui, "Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session);
+  if (header(ui, "Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
     parameterWidgets(session);
     session.runner().scene().ui();
   }
-  if (ImGui::CollapsingHeader("Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
-  if (!session.exercises().empty() && ImGui::CollapsingHeader("Exercises", ImGuiTreeNodeFlags_DefaultOpen))
+  if (header(ui, "Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
+  if (!session.exercises().empty() && header(ui, "Exercises", ImGuiTreeNodeFlags_DefaultOpen))
     exerciseStatus(session);
-  if (ImGui::CollapsingHeader("Scene file")) sceneFileControls(session, ui);
-  if (ImGui::CollapsingHeader("View")) {
-    ImGui::Checkbox("lecture mode (L)", &ui.lecture);
+  if (header(ui, "Scene file")) sceneFileControls(session, ui);
+  if (header(ui, "View")) {
+    bool lecture = ui.lecture;  // the mode changes between frames, never inside this one
+    if (ImGui::Checkbox("lecture mode (L)", &lecture)) ui.request(UiChange::ToggleLecture);
+    noteWidget(ui, "lecture_checkbox");
     if (ImGui::Button("Frame scene (F)")) ui.frameRequested = true;
-    ImGui::SameLine();
+    sameLineIfFits("Screenshot (F12)");
     if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
-    ImGui::SameLine();
+    sameLineIfFits("Help (F1)");
     if (ImGui::Button("Help (F1)")) ui.showHelp = !ui.showHelp;
   }
   if (!session.message().empty()) ImGui::TextDisabled("%s", session.message().c_str());
   ImGui::PopItemWidth();
   ImGui::End();
-}
-
-// Returns the top of the plot window [pixels] (the display height when there is none).
-float plotPanel(LabSession& session) {
-  // Only the chosen metrics this scene has (a plotted metric of another scene is kept, not shown).
-  std::vector<std::pair<std::string, std::vector<float>>> shown;
-  for (const std::string& name : session.settings().plotted) {
-    std::vector<float> series = session.plots().series(name);
-    if (!series.empty()) shown.emplace_back(name, std::move(series));
-  }
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  if (shown.empty()) return display.y;
-  const float height = ImGui::GetFontSize() * 5.0f;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 8, display.y - 8), ImGuiCond_Always, ImVec2(1, 1));
-  // An explicit size: an auto-fitted axis set every frame would hide the window's contents.
-  const ImGuiStyle& style = ImGui::GetStyle();
-  const float windowHeight = static_cast<float>(shown.size()) * (height + style.ItemSpacing.y) +
-                             ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y;
-  ImGui::SetNextWindowSize(ImVec2(display.x * 0.38f, windowHeight), ImGuiCond_Always);
-  ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
-  for (const auto& [name, series] : shown) {
-    const auto [lo, hi] = std::minmax_element(series.begin(), series.end());
-    char overlay[96];
-    std::snprintf(overlay, sizeof overlay, "%s = %.4g  [%.3g, %.3g]", name.c_str(), series.back(), *lo, *hi);
-    ImGui::PlotLines(("##" + name).c_str(), series.data(), static_cast<int>(series.size()), 0, overlay, FLT_MAX,
-                     FLT_MAX, ImVec2(ImGui::GetContentRegionAvail().x, height));
-  }
-  ImGui::End();
-  return display.y - 8.0f - windowHeight;
-}
-
-void banners(LabSession& session) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  std::string text;
-  ImVec4 colour = kAlertRed;
-  if (const auto& guard = session.runner().guardMessage()) {
-    text = *guard;
-  } else if (const auto stubs = exercises::notImplementedTags(); !stubs.empty()) {
-    for (const std::string& tag : stubs) text += (text.empty() ? "" : ", ") + tag;
-    text += " not implemented: this lab runs with a stub. Complete the starred TODO block, then ./pba grade.";
-    colour = kWarnOrange;
-  }
-  if (text.empty()) return;
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f + 100, 10), ImGuiCond_Always, ImVec2(0.5f, 0));
-  ImGui::SetNextWindowSize(ImVec2(std::min(display.x * 0.55f, 900.0f), 0), ImGuiCond_Always);
-  ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
-  ImGui::Begin("##banner", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::TextWrapped("%s", text.c_str());
-  ImGui::End();
-  ImGui::PopStyleColor(2);
 }
 
 void helpOverlay(UiState& ui) {
@@ -333,20 +324,70 @@ void helpOverlay(UiState& ui) {
 
 }  // namespace
 
-float panelWidthPixels() { return kPanelWidth * ImGui::GetFontSize() / 16.0f + 8.0f; }
-float overlayWidthPixels() { return kOverlayWidth * ImGui::GetFontSize() / 16.0f + 8.0f; }
+float panelWidthPixels(const UiState& ui) {
+  const float share = ui.lecture ? kLecturePanelShare : kPanelShare;
+  return std::min(kPanelWidth * ImGui::GetFontSize() / 16.0f, share * ImGui::GetIO().DisplaySize.x) + 8.0f;
+}
+float overlayWidthPixels(const UiState& ui) {
+  const float share = ui.lecture ? kLectureOverlayShare : kOverlayShare;
+  return std::min(kOverlayWidth * ImGui::GetFontSize() / 16.0f, share * ImGui::GetIO().DisplaySize.x) + 8.0f;
+}
+
+void UiState::applyPending() {
+  for (const UiChange change : pending) {
+    switch (change) {
+      case UiChange::ToggleLecture:
+        lecture = !lecture;
+        relayout = true;
+        frameRequested = true;  // the panels' widths changed: frame the scene in what they leave
+        break;
+      case UiChange::ToggleHideUi: hideUi = !hideUi; break;
+    }
+  }
+  pending.clear();
+}
+
+void UiState::showNotice(std::string text, double now, double seconds) {
+  notice = std::move(text);
+  noticeUntil = now + seconds;
+  noticeFrames = kNoticeFrames;
+}
+
+LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, float gap, const LabelBox& area) {
+  float x = anchorX + gap, y = anchorY - gap - textH;  // above and to the right: the anchor stays visible
+  x = std::max(area.x0, std::min(x, area.x1 - textW));
+  y = std::max(area.y0, std::min(y, area.y1 - textH));
+  return LabelBox{x, y, x + textW, y + textH};
+}
 
 void drawLabUi(LabSession& session, UiState& ui) {
-  banners(session);
+  ui.widgets.clear();
+  detail::banners(session);
+  detail::noticeWindow(ui);
+  if (ui.noticeFrames > 0) --ui.noticeFrames;
   if (ui.showHelp) helpOverlay(ui);
-  if (ui.hideUi) return;
-  mainPanel(session, ui);
-  const float plotsTop = plotPanel(session);
-  Scene& scene = session.runner().scene();
-  if (scene.wantsOverlay()) {
-    const float right = ImGui::GetIO().DisplaySize.x - 8.0f;
-    scene.overlayUi(ScreenRect{right - overlayWidthPixels() + 8.0f, 8.0f, right, plotsTop - 8.0f});
+  // Beside the scene, lecture mode uses a smaller font: the legend and the scene's own window explain
+  // the picture without covering it. (Pushed and popped within this function: no mode changes here.)
+  const bool side = ui.lecture && ui.sideFont;
+  const float legendLeft = ui.hideUi ? 8.0f : panelWidthPixels(ui) + 8.0f;  // in the panel's font
+  if (side) ImGui::PushFont(ui.sideFont);
+  detail::legendWindow(session.runner().scene(), legendLeft);
+  if (side) ImGui::PopFont();
+  if (!ui.hideUi) {
+    mainPanel(session, ui);
+    const float plotsTop = detail::plotPanel(session, ui);
+    Scene& scene = session.runner().scene();
+    if (scene.wantsOverlay()) {
+      const float right = ImGui::GetIO().DisplaySize.x - 8.0f;
+      const ScreenRect column{right - overlayWidthPixels(ui) + 8.0f, 8.0f, right, plotsTop - 8.0f};
+      // The scene's window stays inside its column (it scrolls when its contents are taller).
+      ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(column.x1 - column.x0, column.y1 - column.y0));
+      if (side) ImGui::PushFont(ui.sideFont);
+      scene.overlayUi(column);
+      if (side) ImGui::PopFont();
+    }
   }
+  ui.relayout = false;
 }
 
 }  // namespace pba::app

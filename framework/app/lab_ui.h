@@ -1,12 +1,26 @@
 #pragma once
-// The lab's ImGui panels (DESIGN.md §3): simulation controls, scene description, parameters with
+// The lab's ImGui panels (docs/architecture.md §3): simulation controls, scene description, parameters with
 // units and (?) tooltips, metrics, live plots, scene files, exercise status, the help overlay, the
-// instability guard's message and the not-implemented banner.
+// instability guard's message, the not-implemented banner, the scene's legend and short notices.
+#include <map>
 #include <string>
+#include <vector>
+
+#include <imgui.h>
 
 #include "app/lab_session.h"
 
 namespace pba::app {
+
+/// A change of the window's mode. Keys and widgets only ask for it during a frame; UiState::applyPending
+/// carries it out between frames, so no frame is built under two readings of a mode (issue 15: L
+/// inside a frame unbalanced the lecture font's push and pop and aborted every lab).
+enum class UiChange { ToggleLecture, ToggleHideUi };
+
+/// A rectangle of the window [pixels, y down].
+struct LabelBox {
+  float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
+};
 
 struct UiState {
   bool showHelp = false;
@@ -14,16 +28,58 @@ struct UiState {
   bool lecture = false;
   bool screenshotRequested = false;
   bool frameRequested = false;
+  /// Set when the layout changed between frames (lecture mode): panels take their new size once.
+  bool relayout = true;
   double frameMs = 0.0;     ///< wall time of the last displayed frame [ms]
   char scenePath[512] = {};  ///< the scene file field
+  std::vector<UiChange> pending;  ///< asked for during this frame, applied before the next one
+  std::string notice;        ///< short on-screen confirmation ("Screenshot saved: …")
+  double noticeUntil = 0.0;  ///< [s, ImGui time] when the notice disappears
+  int noticeFrames = 0;      ///< frames it is still shown whatever the time (a slow frame rate still sees it)
+  std::string lastScreenshot;  ///< path of the last screenshot written
+  /// Where a few named widgets were drawn this frame, while visible ("header:View", "file_field",
+  /// "load_button", "lecture_checkbox"): the UI status reports them so tests can click them.
+  std::map<std::string, LabelBox> widgets;
+  /// Lecture mode's smaller font for the legend and a scene's own windows (set by the window).
+  ImFont* sideFont = nullptr;
+
+  void request(UiChange change) { pending.push_back(change); }
+  /// Applies the queued changes in order. Call between frames (before ImGui::NewFrame). A change of
+  /// lecture mode also asks for a relayout and a new framing of the camera.
+  void applyPending();
+  /// Shows `text` on screen until `now + seconds` [s], and for at least kNoticeFrames frames.
+  void showNotice(std::string text, double now, double seconds = kNoticeSeconds);
+  /// True while the notice is on screen at ImGui time `now` [s].
+  bool noticeVisible(double now) const { return !notice.empty() && (now < noticeUntil || noticeFrames > 0); }
+  static constexpr double kNoticeSeconds = 2.0;
+  static constexpr int kNoticeFrames = 3;
 };
 
 /// Draws every panel for this frame. Call between ImGui::NewFrame() and ImGui::Render().
 void drawLabUi(LabSession& session, UiState& ui);
 
-/// Width of the main panel in pixels at the current font size (for camera framing).
-float panelWidthPixels();
+/// Width of the main panel in pixels at the current font size (for camera framing). Lecture mode caps
+/// it at a smaller share of the window, so that the scene stays the largest thing on screen.
+float panelWidthPixels(const UiState& ui);
 /// Width [pixels] of the right-hand column reserved for a scene's own window (Scene::wantsOverlay).
-float overlayWidthPixels();
+float overlayWidthPixels(const UiState& ui);
+
+/// Where a label of `textSize` pixels anchored at `anchor` is drawn (its top-left corner): above and
+/// right of the anchor by `gap` pixels, so it never covers what it labels, moved inside `[x0, x1] ×
+/// [y0, y1]` (the free part of the window) when it would run off an edge.
+LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, float gap, const LabelBox& area);
+
+// Pieces of drawLabUi in lab_overlays.cpp (plots, legend, notice, banners).
+namespace detail {
+inline const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
+inline const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
+/// Draws the plot window in the lower right; returns its top [pixels] (the display height when none).
+float plotPanel(LabSession& session, const UiState& ui);
+/// The scene's legend, its left edge at `left` [pixels] (right of the panel), at the bottom; drawn
+/// also while Tab hides the panels.
+void legendWindow(const Scene& scene, float left);
+void noticeWindow(const UiState& ui);
+void banners(LabSession& session);
+}  // namespace detail
 
 }  // namespace pba::app

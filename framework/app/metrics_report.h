@@ -1,5 +1,5 @@
 #pragma once
-// The metrics JSON of DESIGN.md §4: lab, scene, frames, sim_time_s, step_ms {median, p95, max},
+// The metrics JSON of docs/architecture.md §4: lab, scene, frames, sim_time_s, step_ms {median, p95, max},
 // finite, and the scene's own metrics under the lab's name.
 #include <string>
 

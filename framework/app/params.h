@@ -39,7 +39,7 @@ struct Param {
 class Params {
  public:
   Params& real(std::string name, Real* value, double min, double max, std::string unit, std::string tooltip);
-  /// An angle stored in radians and shown in degrees at the UI (DESIGN.md §2); min/max in degrees.
+  /// An angle stored in radians and shown in degrees at the UI (docs/architecture.md §2); min/max in degrees.
   Params& angle(std::string name, Real* radians, double minDegrees, double maxDegrees, std::string tooltip);
   Params& integer(std::string name, int* value, int min, int max, std::string unit, std::string tooltip);
   Params& flag(std::string name, bool* value, std::string tooltip);

@@ -1,5 +1,5 @@
 #pragma once
-// The scene interface every lab implements (DESIGN.md §3). A scene owns its simulation state and
+// The scene interface every lab implements (docs/architecture.md §3). A scene owns its simulation state and
 // steps it with a fixed dt handed in by the runner (never wall-clock time). The same object runs
 // headless (tests, benchmarks, --headless) and in the window.
 #include <cstdint>
@@ -27,10 +27,24 @@ struct PickHit {
 /// The hit of `ray` with a sphere, reported as object `handle`: the usual pick() of a ball.
 std::optional<PickHit> pickSphere(const Ray& ray, const Vec3& center, Real radius, int handle);
 
-/// A named preset (keys 1–9): a set of parameter values applied before a reset.
+/// A named preset (keys 1–9): parameter values applied before a reset. A preset sets every parameter:
+/// those it does not name take the scene's defaults (app::presetParams), so a key gives the same
+/// setup whatever was pressed before.
 struct Preset {
   std::string name;
   nlohmann::json params;  ///< same shape as a scene file's "params"
+};
+
+/// An object the left mouse button can drag, where it is now (Scene::dragHandles).
+struct DragHandle {
+  int handle = -1;     ///< the id pick() reports for it
+  Vec3 position{0.0};  ///< [m] world
+};
+
+/// One line of a scene's legend: a colour swatch and what that colour shows.
+struct LegendEntry {
+  Color color;
+  std::string text;
 };
 
 /// A camera a scene asks for when fitting its drawing's bounding sphere frames it poorly (a flat figure
@@ -94,6 +108,16 @@ class Scene {
   /// Keyboard nudge (arrow keys, PageUp/PageDown; app/target_nudge.h): moves the scene's current
   /// target (the goal last picked, …) by `delta` [m, world]. False when there is nothing to nudge.
   virtual bool nudge(const Vec3& /*delta*/) { return false; }
+  /// Recomputes what follows from the scene's inputs without advancing time (an IK pose after its goal
+  /// moved). The runner calls it after every drag and nudge while the scene is paused, so a paused
+  /// scene shows the effect of any goal change at once, whatever moved it. Default: nothing.
+  virtual void refresh() {}
+  /// The draggable objects and their positions (at most a few dozen; a large system lists a sample).
+  /// The window's UI status reports them, so tests can find an object on screen and check a drag.
+  virtual std::vector<DragHandle> dragHandles() const { return {}; }
+  /// What the colours of the picture mean. The window shows it in a free corner, also while Tab hides
+  /// the panels, since it explains the picture rather than controlling it.
+  virtual std::vector<LegendEntry> legend() const { return {}; }
   /// Length [m] of one nudge; 0 lets the runner choose 2 % of the scene's drawn size.
   virtual Real nudgeStep() const { return 0.0; }
 

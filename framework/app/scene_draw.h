@@ -1,5 +1,5 @@
 #pragma once
-// The bridge of DESIGN.md §1: implements the physics library's pba::DebugDraw with pba::graphics.
+// The bridge of docs/architecture.md §1: implements the physics library's pba::DebugDraw with pba::graphics.
 // Converts double-precision world data to float at this one place.
 #include "graphics/debug_renderer.h"
 #include "physics/core/debug_draw.h"

@@ -28,6 +28,18 @@ Status applyParams(Scene& scene, const nlohmann::json& params, const std::string
   return Status::success();
 }
 
+Result<nlohmann::json> presetParams(const std::string& sceneName, const Preset& preset) {
+  const SceneEntry* entry = findScene(sceneName);
+  if (!entry) return Error{"preset " + preset.name + ": scene '" + sceneName + "' is not registered"};
+  const std::unique_ptr<Scene> fresh = entry->create();
+  nlohmann::json values = fresh->params().toJson();
+  if (!preset.params.is_object()) return Error{"preset " + preset.name + ": expected an object of parameters"};
+  for (const auto& [key, value] : preset.params.items()) values[key] = value;
+  // Tried on the fresh instance first, so that a bad preset leaves the running scene untouched.
+  if (Status s = applyParams(*fresh, values, "preset " + preset.name); !s) return Error{s.error()};
+  return values;
+}
+
 Result<LoadedScene> parseSceneJson(const std::string& text, const std::string& path, const std::string& lab) {
   nlohmann::json doc;
   try {

@@ -1,5 +1,5 @@
 #pragma once
-// Scene files (DESIGN.md §4): JSON under resources/scenes/<lab>/, round-trip exact.
+// Scene files (docs/architecture.md §4): JSON under resources/scenes/<lab>/, round-trip exact.
 //   { "lab": "hello", "scene": "drop", "dt": 0.008333, "params": { "restitution": 0.8, ... } }
 // "dt" is optional. Unknown keys are errors, so that a typo never goes unnoticed.
 #include <memory>
@@ -32,5 +32,10 @@ Status saveSceneFile(const std::string& path, const std::string& lab, const std:
 
 /// Applies a JSON object of parameters (scene file "params" or a preset); messages use fieldPrefix.
 Status applyParams(Scene& scene, const nlohmann::json& params, const std::string& fieldPrefix);
+
+/// Every parameter value of `preset` of registered scene `sceneName`: the scene's defaults (those of
+/// a freshly created instance), then the preset's own values. Error when no such scene is registered
+/// or a value is invalid (checked on that fresh instance, never on a running scene).
+Result<nlohmann::json> presetParams(const std::string& sceneName, const Preset& preset);
 
 }  // namespace pba::app

@@ -1,5 +1,5 @@
 #pragma once
-// One-line scene registration (DESIGN.md §3; Box2D's RegisterSample is the model):
+// One-line scene registration (docs/architecture.md §3; Box2D's RegisterSample is the model):
 //   PBA_REGISTER_SCENE("Basics", "drop", DropScene);
 // registers a factory in the executable's scene list in the order of the lab's source files.
 #include <functional>

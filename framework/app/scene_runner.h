@@ -1,7 +1,7 @@
 #pragma once
 // The lab runner's simulation core, shared by the window and headless mode: one scene, a fixed step
 // with an accumulator, pause / single step / reset, time scale, substeps, step timing and the
-// instability guard (DESIGN.md §3).
+// instability guard (docs/architecture.md §3).
 #include <cstdint>
 #include <memory>
 #include <optional>

@@ -1,7 +1,7 @@
 #pragma once
 // Keyboard nudging of a scene's current target (IK goal, …): the arrow keys move it in the camera
 // plane, PageUp/PageDown (or Shift+Up/Down) toward or away from the camera; Ctrl makes the step
-// five times finer. The keys do not overlap the standard keys of DESIGN.md §3. No GL and no ImGui
+// five times finer. The keys do not overlap the standard keys of docs/architecture.md §3. No GL and no ImGui
 // here, so the mapping is tested headless (tests/app/target_nudge_test.cpp).
 #include <optional>
 

@@ -8,7 +8,14 @@ namespace pba::app {
 namespace {
 
 constexpr float kRegularPixels = 16.0f;
-constexpr float kLecturePixels = 28.0f;
+// Lecture mode: large enough to read from the back of a hall at 1280×720, small enough that the
+// panel stays a narrow column beside the scene (the scene is what the hall looks at).
+constexpr float kLecturePixels = 24.0f;
+constexpr float kLectureSidePixels = 19.0f;  // legends and a scene's own windows beside the scene
+// A window at least this tall [px] (1920×1080) gets the large lecture fonts: on the same projector
+// the text then takes the same share of the picture as at 1280×720.
+constexpr float kLargeLectureHeight = 960.0f;
+constexpr float kLargeLectureFactor = 4.0f / 3.0f;
 // Debian's fonts-dejavu-core; ./pba installs it. Without it ImGui's built-in font is used.
 constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 // The glyphs the labs' texts use, all in DejaVu Sans: ImGui loads only Latin-1 by default, and every
@@ -53,26 +60,38 @@ UiFonts loadUiFonts(float contentScale) {
   UiFonts fonts;
   fonts.contentScale = contentScale > 0.0f ? contentScale : 1.0f;
   ImGuiIO& io = ImGui::GetIO();
+  const float k = fonts.contentScale, large = kLargeLectureFactor;
   if (std::filesystem::exists(kFontPath)) {
-    fonts.regular = io.Fonts->AddFontFromFileTTF(kFontPath, kRegularPixels * fonts.contentScale, nullptr, kGlyphRanges);
-    fonts.lecture = io.Fonts->AddFontFromFileTTF(kFontPath, kLecturePixels * fonts.contentScale, nullptr, kGlyphRanges);
+    auto add = [&](float pixels) { return io.Fonts->AddFontFromFileTTF(kFontPath, pixels * k, nullptr, kGlyphRanges); };
+    fonts.regular = add(kRegularPixels);
+    fonts.lecture = {add(kLecturePixels), add(kLectureSidePixels)};
+    fonts.lectureLarge = {add(kLecturePixels * large), add(kLectureSidePixels * large)};
   }
   if (!fonts.regular) {
-    ImFontConfig config;
-    config.SizePixels = 13.0f * fonts.contentScale;
-    fonts.regular = io.Fonts->AddFontDefault(&config);
-    config.SizePixels = 24.0f * fonts.contentScale;
-    fonts.lecture = io.Fonts->AddFontDefault(&config);
+    auto add = [&](float pixels) {
+      ImFontConfig config;
+      config.SizePixels = pixels * k;
+      return io.Fonts->AddFontDefault(&config);
+    };
+    fonts.regular = add(13.0f);
+    fonts.lecture = {add(20.0f), add(16.0f)};
+    fonts.lectureLarge = {add(20.0f * large), add(16.0f * large)};
   }
   return fonts;
 }
 
-void applyUiStyle(UiFonts& fonts, bool lecture) {
-  const int wanted = lecture ? 1 : 0;
-  if (fonts.appliedStyle == wanted) return;
-  const float scale = fonts.contentScale * (lecture ? kLecturePixels / kRegularPixels : 1.0f);
-  ImGui::GetStyle() = makeStyle(scale, lecture);
-  fonts.appliedStyle = wanted;
+ImFont* applyUiStyle(UiFonts& fonts, bool lecture, float windowHeight) {
+  const bool large = lecture && windowHeight >= kLargeLectureHeight;
+  const LectureFonts& chosen = large ? fonts.lectureLarge : fonts.lecture;
+  const int wanted = lecture ? (large ? 2 : 1) : 0;
+  if (fonts.appliedStyle != wanted) {
+    // Paddings and spacings grow less than the font in lecture mode: the panel stays narrow.
+    const float scale = fonts.contentScale * (lecture ? 1.2f * (large ? kLargeLectureFactor : 1.0f) : 1.0f);
+    ImGui::GetStyle() = makeStyle(scale, lecture);
+    ImGui::GetIO().FontDefault = lecture && chosen.panel ? chosen.panel : fonts.regular;
+    fonts.appliedStyle = wanted;
+  }
+  return lecture ? chosen.side : nullptr;
 }
 
 }  // namespace pba::app

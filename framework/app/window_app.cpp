@@ -21,6 +21,7 @@
 #include "app/metrics_report.h"
 #include "app/scene_draw.h"
 #include "app/scene_registry.h"
+#include "app/ui_status.h"
 #include "app/ui_style.h"
 #include "app/window_input.h"
 #include "graphics/debug_renderer.h"
@@ -33,6 +34,8 @@ namespace {
 
 constexpr int kMaxStepsPerFrame = 2000;  // bounds one frame's physics so the window stays responsive
 constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame (dragging the window) never jumps far
+constexpr float kMinFramedPitch = 0.12f;  // [rad] F keeps a pitch in this range, else restores the default
+constexpr float kMaxFramedPitch = 1.35f;  // [rad]
 
 // Ctrl+C in the terminal (SIGINT) or SIGTERM closes the window normally, so settings are saved.
 std::atomic<bool> gStopRequested{false};
@@ -55,11 +58,21 @@ struct ImGuiContextGuard {
   ImGuiContextGuard& operator=(const ImGuiContextGuard&) = delete;
 };
 
-void drawLabels(const graphics::DebugRenderer& debug, const graphics::OrbitCamera& camera, float w, float h) {
+// The scene's 3-D text labels in the UI font (the lecture font in lecture mode), each above and right
+// of its anchor so it never covers what it labels, on a light halo for contrast, and kept inside
+// `area` (the part of the window the panels leave free) so none runs off an edge.
+void drawLabels(const graphics::DebugRenderer& debug, const graphics::OrbitCamera& camera, float w, float h,
+                const LabelBox& area) {
   ImDrawList* list = ImGui::GetBackgroundDrawList();
+  const float gap = 0.3f * ImGui::GetFontSize(), halo = 0.15f * ImGui::GetFontSize();
   for (const graphics::ScreenLabel& label : debug.projectLabels(camera, w, h)) {
+    if (!label.visible) continue;
+    const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
+    const LabelBox box = placeLabel(label.pixel.x, label.pixel.y, size.x, size.y, gap, area);
+    list->AddRectFilled(ImVec2(box.x0 - halo, box.y0 - halo), ImVec2(box.x1 + halo, box.y1 + halo), IM_COL32(255, 255, 255, 190),
+                        halo);
     const ImU32 colour = ImGui::ColorConvertFloat4ToU32(ImVec4(label.color.r, label.color.g, label.color.b, label.color.a));
-    list->AddText(ImVec2(label.pixel.x, label.pixel.y), colour, label.text.c_str());
+    list->AddText(ImVec2(box.x0, box.y0), colour, label.text.c_str());
   }
 }
 
@@ -92,6 +105,9 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
   glm::vec3 lo, hi;
   if (probe.bounds(&lo, &hi)) {
     lo.y = std::min(lo.y, 0.0f);  // keep the ground in view
+    // F always recovers a view: a camera left looking along the ground or from far overhead gets the
+    // default elevation back (frame() keeps yaw and pitch).
+    if (!(camera.pitch >= kMinFramedPitch && camera.pitch <= kMaxFramedPitch)) camera.pitch = graphics::OrbitCamera{}.pitch;
     camera.frame(lo, hi, aspect);
     camera.zoom(-2.0f);  // a margin around the scene: room to move
     camera.pan(0.5f * (panelPixels - overlayPixels), plotsShown ? -0.12f * viewport.y : 0.0f, viewport);
@@ -143,6 +159,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   WindowInput input;
   input.install(window->handle());
   const long captureFrames = options.frameCount();
+  std::string statusPath = uiStatusPath();  // tests/ui: the machine-readable status of every frame
   long frame = 0;
   auto last = std::chrono::steady_clock::now();
   int exitCode = kExitOk;
@@ -158,19 +175,20 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
 
     const glm::ivec2 fb = window->framebufferSize();
     const glm::ivec2 ws = window->windowSize();
-    applyUiStyle(fonts, ui.lecture);
+    // Between frames: the modes asked for during the last frame, then the style and font they imply.
+    ui.applyPending();
+    ui.sideFont = applyUiStyle(fonts, ui.lecture, static_cast<float>(ws.y));
     renderer->lectureMode(ui.lecture);
 
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
-    if (ui.lecture && fonts.lecture) ImGui::PushFont(fonts.lecture);
 
     if (!capture) input.update(session, ui, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
+    const float panelPixels = ui.hideUi ? 0.0f : panelWidthPixels(ui);
+    const float overlayPixels = ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(ui);
     if (session.takeFrameRequest() || ui.frameRequested) {
-      frameCamera(camera, runner.scene(), glm::vec2(ws), ui.hideUi ? 0.0f : panelWidthPixels(),
-                  ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(),
-                  !ui.hideUi && !session.settings().plotted.empty());
+      frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels, !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }
     runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds), capture ? -1 : kMaxStepsPerFrame);
@@ -180,10 +198,12 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     SceneDraw draw(debug);
     runner.scene().draw(draw);
     debug.flush(*renderer);
-    drawLabels(debug, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
+    const LabelBox labelArea{panelPixels, 0.0f, static_cast<float>(ws.x) - overlayPixels, static_cast<float>(ws.y)};
+    drawLabels(debug, camera, static_cast<float>(ws.x), static_cast<float>(ws.y), labelArea);
+    UiFrame status{frame + 1, glm::vec2(ws), input.pickedHandle()};
+    status.hasBounds = debug.bounds(&status.boundsMin, &status.boundsMax);
     debug.clear();
     drawLabUi(session, ui);
-    if (ui.lecture && fonts.lecture) ImGui::PopFont();
     ImGui::Render();
     renderer->endFrame();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -197,8 +217,16 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
         exitCode = kExitBadInput;
       } else {
         session.setMessage("Screenshot saved: " + path);
+        ui.lastScreenshot = path;
+        ui.showNotice("Screenshot saved: " + path, ImGui::GetTime());
       }
       ui.screenshotRequested = false;
+    }
+    if (!statusPath.empty()) {
+      if (Status s = writeUiStatus(statusPath, uiStatus(session, ui, camera, status)); !s) {
+        std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+        statusPath.clear();  // said once; the window goes on
+      }
     }
     window->swapBuffers();
     if (captureNow) break;

@@ -6,7 +6,6 @@
 #include <imgui.h>
 
 #include "app/scene_draw.h"
-#include "app/target_nudge.h"
 
 namespace pba::app {
 namespace {
@@ -47,8 +46,8 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
   if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing in a text field
   for (const auto [key, mods] : keys) {
     if (const std::optional<NudgeDirection> d = nudgeDirectionForKey(key, mods)) {
-      Scene& scene = session.runner().scene();
-      if (!nudgeScene(scene, *d, Vec3(camera.right()), Vec3(camera.up()), Vec3(camera.forward()), drawnSize(scene), nudgeIsFine(mods)))
+      const Real size = drawnSize(session.runner().scene());
+      if (!session.nudge(*d, Vec3(camera.right()), Vec3(camera.up()), Vec3(camera.forward()), size, nudgeIsFine(mods)))
         session.setMessage("This scene has no target to move with the arrow keys");
       continue;
     }
@@ -62,8 +61,9 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
       case GLFW_KEY_F1:
       case GLFW_KEY_H: ui.showHelp = !ui.showHelp; break;
       case GLFW_KEY_F12: ui.screenshotRequested = true; break;
-      case GLFW_KEY_L: ui.lecture = !ui.lecture; break;
-      case GLFW_KEY_TAB: ui.hideUi = !ui.hideUi; break;
+      // Mode changes wait for the end of the frame (UiState::applyPending).
+      case GLFW_KEY_L: ui.request(UiChange::ToggleLecture); break;
+      case GLFW_KEY_TAB: ui.request(UiChange::ToggleHideUi); break;
       case GLFW_KEY_F: ui.frameRequested = true; break;
       default:
         if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) session.applyPreset(key - GLFW_KEY_1);
@@ -85,15 +85,22 @@ void WindowInput::mouse(LabSession& session, graphics::OrbitCamera& camera, floa
       handle_ = hit->handle;
       planePoint_ = hit->point;
       planeNormal_ = -Vec3(camera.forward());
-      scene.drag(hit->handle, hit->point);
+      // Where the scene reports the object's own position, the drag carries that point by the
+      // cursor's displacement: the object does not jump so that its centre sits under the grab point.
+      grabOffset_ = Vec3(0.0);
+      for (const DragHandle& d : scene.dragHandles())
+        if (d.handle == hit->handle) grabOffset_ = d.position - hit->point;
+      session.drag(hit->handle, hit->point + grabOffset_);
     }
   }
   if (handle_ && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     const Ray ray = toRay(camera.ray(cursor.x, cursor.y, w, h));
-    if (const std::optional<Real> t = intersectRayPlane(ray, planePoint_, planeNormal_)) scene.drag(*handle_, pointAt(ray, *t));
+    if (const std::optional<Real> t = intersectRayPlane(ray, planePoint_, planeNormal_))
+      session.drag(*handle_, pointAt(ray, *t) + grabOffset_);
   }
   if (handle_ && !ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-    scene.release(*handle_);
+    session.release(*handle_);
+    lastHandle_ = handle_;
     handle_.reset();
   }
   if (overUi) return;

@@ -1,5 +1,5 @@
 #pragma once
-// Keys and mouse of DESIGN.md §3, the same in every lab. Reads ImGui's input state (ImGui 1.86:
+// Keys and mouse of docs/architecture.md §3, the same in every lab. Reads ImGui's input state (ImGui 1.86:
 // keys are indexed by GLFW key codes) so that typing in a text field never triggers a lab key.
 #include <optional>
 #include <vector>
@@ -21,6 +21,8 @@ class WindowInput {
   /// Handles this frame's keys and mouse. viewport: window size in screen coordinates.
   void update(LabSession& session, UiState& ui, graphics::OrbitCamera& camera, float viewportW, float viewportH);
   bool dragging() const { return handle_.has_value(); }
+  /// The object being dragged, else the one dragged last (the UI status reports it).
+  std::optional<int> pickedHandle() const { return handle_ ? handle_ : lastHandle_; }
 
  private:
   void keys(LabSession& session, UiState& ui, const graphics::OrbitCamera& camera);
@@ -34,8 +36,10 @@ class WindowInput {
   };
   std::vector<KeyPress> pressed_;  ///< keys pressed since the last frame
   std::optional<int> handle_;  ///< the scene object being dragged
+  std::optional<int> lastHandle_;  ///< the one dragged before
   Vec3 planePoint_{0.0};       ///< the drag plane faces the camera through the picked point
   Vec3 planeNormal_{0.0, 0.0, 1.0};
+  Vec3 grabOffset_{0.0};  ///< [m] object position − grab point (Scene::dragHandles), kept while dragging
 };
 
 }  // namespace pba::app

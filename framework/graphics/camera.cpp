@@ -32,10 +32,18 @@ void OrbitCamera::clampState() {
   pitch = std::clamp(pitch, -kMaxPitch, kMaxPitch);
   yaw = std::remainder(yaw, 6.2831853f);
   distance = std::clamp(distance, kMinDistance, kMaxDistance);
+  if (keepAboveGround && std::isfinite(groundHeight)) {
+    // eye.y = target.y + distance sin(pitch) >= ground + minEyeHeight gives the lowest pitch.
+    if (!std::isfinite(target.y) || target.y < groundHeight) target.y = groundHeight;
+    const float s = (groundHeight + minEyeHeight() - target.y) / distance;
+    if (s > -1.0f) pitch = std::clamp(pitch, std::asin(std::min(s, std::sin(kMaxPitch))), kMaxPitch);
+  }
   fovY = std::clamp(fovY, 0.01f, 3.0f);
   nearPlane = std::max(nearPlane, 1e-5f);
   farPlane = std::max(farPlane, nearPlane * 2.0f);
 }
+
+float OrbitCamera::minEyeHeight() const { return std::max(0.01f, 0.01f * distance); }
 
 void OrbitCamera::rotate(float dxPixels, float dyPixels) {
   yaw -= dxPixels * rotateSpeed;
@@ -47,6 +55,7 @@ void OrbitCamera::pan(float dxPixels, float dyPixels, const glm::vec2& viewport)
   // World size of one pixel at the target depth: the view height there is 2 d tan(fov/2).
   const float metresPerPixel = 2.0f * distance * std::tan(0.5f * fovY) / safeExtent(viewport.y);
   target += (-dxPixels * right() + dyPixels * up()) * metresPerPixel;
+  clampState();
 }
 
 void OrbitCamera::zoom(float wheelSteps) {

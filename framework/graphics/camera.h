@@ -32,6 +32,12 @@ class OrbitCamera {
   float fovY = 0.7853982f; ///< vertical field of view, rad (45 degrees)
   float nearPlane = 0.05f; ///< m
   float farPlane = 500.0f; ///< m
+  /// The ground plane y = groundHeight [m] (the renderer's grid) stays below the eye: clampState keeps
+  /// the target on or above it and the eye at least minEyeHeight() above it, so no orbit, pan or zoom
+  /// looks at the ground from below (which shows nothing but the grid's underside). keepAboveGround
+  /// false lifts the rule (a scene without ground).
+  bool keepAboveGround = true;
+  float groundHeight = 0.0f;   ///< m
   float rotateSpeed = 0.006f;  ///< rad per pixel of drag
   float zoomFactor = 0.88f;    ///< distance multiplier per wheel step (wheel up = closer)
 
@@ -58,8 +64,10 @@ class OrbitCamera {
   /// Projects a world point to pixels (top-left origin).
   ScreenPoint project(const glm::vec3& world, float viewportW, float viewportH) const;
 
-  /// Restores the invariants after fields were edited directly (pitch, distance, planes).
+  /// Restores the invariants after fields were edited directly (pitch, distance, planes, ground).
   void clampState();
+  /// The smallest height [m] of the eye above the ground: 1 % of the distance, at least 1 cm.
+  float minEyeHeight() const;
 };
 
 }  // namespace pba::graphics

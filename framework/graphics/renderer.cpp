@@ -23,6 +23,22 @@ constexpr float kMinLength = 1e-6f;  // m; keeps degenerate segments invertible
 
 glm::vec3 srgbToLinear(const glm::vec3& c) { return glm::pow(c, glm::vec3(2.2f)); }
 
+/// Lecture mode's stronger line and dot colours: mid-tones darken (a pale yellow or grey line holds on
+/// a washed-out projector), black and white stay, hues and alpha are kept.
+glm::vec4 lectureContrast(const glm::vec4& c) { return glm::vec4(glm::pow(glm::vec3(c), glm::vec3(1.6f)), c.a); }
+
+/// Colours of the ground and its grid (sRGB): normal, and lecture mode's darker lines on a lighter ground.
+struct GridColors {
+  glm::vec3 ground, minor, major, axisX, axisZ;
+};
+constexpr GridColors kGridColors{{0.90f, 0.905f, 0.91f}, {0.78f, 0.79f, 0.81f}, {0.60f, 0.62f, 0.66f}, {0.85f, 0.45f, 0.42f},
+                                 {0.42f, 0.56f, 0.86f}};
+constexpr GridColors kLectureGridColors{{0.95f, 0.955f, 0.96f}, {0.62f, 0.63f, 0.66f}, {0.36f, 0.38f, 0.42f},
+                                        {0.80f, 0.22f, 0.18f}, {0.16f, 0.36f, 0.80f}};
+// Lecture mode's background: nearly white, barely graded, so the scene's colours carry the picture.
+constexpr glm::vec3 kLectureBackgroundTop{0.90f, 0.93f, 0.96f};
+constexpr glm::vec3 kLectureBackgroundBottom{1.0f, 1.0f, 1.0f};
+
 /// Model matrix mapping the unit +y segment [0,1] (radius 1) onto a -> b with the given radius.
 glm::mat4 segmentTransform(const glm::vec3& a, const glm::vec3& b, float radius) {
   const glm::vec3 axis = b - a;
@@ -152,13 +168,14 @@ void Renderer::drawCone(const glm::vec3& base, const glm::vec3& apex, float radi
 void Renderer::drawLine(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color) { drawLine(a, b, color, color); }
 
 void Renderer::drawLine(const glm::vec3& a, const glm::vec3& b, const glm::vec4& colorA, const glm::vec4& colorB) {
-  lines_->addLine(a, b, colorA, colorB);
+  if (settings_.lectureMode) lines_->addLine(a, b, lectureContrast(colorA), lectureContrast(colorB));
+  else lines_->addLine(a, b, colorA, colorB);
   grow(a);
   grow(b);
 }
 
 void Renderer::drawPoint(const glm::vec3& p, float sizePx, const glm::vec4& color) {
-  lines_->addPoint(p, sizePx, color);
+  lines_->addPoint(p, sizePx, settings_.lectureMode ? lectureContrast(color) : color);
   grow(p);
 }
 
@@ -251,11 +268,12 @@ void Renderer::drawGrid() {
   gridShader_->set("uExtent", extent);
   gridShader_->set("uFadeStart", 0.3f * fadeEnd);
   gridShader_->set("uFadeEnd", fadeEnd);
-  gridShader_->set("uGroundColor", glm::vec3(0.90f, 0.905f, 0.91f));
-  gridShader_->set("uMinorColor", glm::vec3(0.78f, 0.79f, 0.81f));
-  gridShader_->set("uMajorColor", glm::vec3(0.60f, 0.62f, 0.66f));
-  gridShader_->set("uAxisXColor", glm::vec3(0.85f, 0.45f, 0.42f));
-  gridShader_->set("uAxisZColor", glm::vec3(0.42f, 0.56f, 0.86f));
+  const GridColors& c = settings_.lectureMode ? kLectureGridColors : kGridColors;
+  gridShader_->set("uGroundColor", c.ground);
+  gridShader_->set("uMinorColor", c.minor);
+  gridShader_->set("uMajorColor", c.major);
+  gridShader_->set("uAxisXColor", c.axisX);
+  gridShader_->set("uAxisZColor", c.axisZ);
   plane_->drawInstanced({Instance{}});
   ++building_.drawCalls;
 }
@@ -264,15 +282,17 @@ void Renderer::colorPass() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, viewport_.x, viewport_.y);
   glDepthMask(GL_TRUE);
-  glClearColor(settings_.backgroundBottom.r, settings_.backgroundBottom.g, settings_.backgroundBottom.b, 1.0f);
+  const glm::vec3 top = settings_.lectureMode ? kLectureBackgroundTop : settings_.backgroundTop;
+  const glm::vec3 bottom = settings_.lectureMode ? kLectureBackgroundBottom : settings_.backgroundBottom;
+  glClearColor(bottom.r, bottom.g, bottom.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   // Background gradient (no depth).
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   backgroundShader_->use();
-  backgroundShader_->set("uTop", settings_.backgroundTop);
-  backgroundShader_->set("uBottom", settings_.backgroundBottom);
+  backgroundShader_->set("uTop", top);
+  backgroundShader_->set("uBottom", bottom);
   glBindVertexArray(emptyVao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

@@ -1,10 +1,13 @@
 // Hello lab, scene "spring": a ball hanging from a damped spring (Lobb notes, damped spring force).
-// Drag the ball with the left mouse button, let go and watch the oscillation decay.
+// Drag the ball with the left mouse button, let go and watch the oscillation decay. A preview of the
+// particles lab: the force is PART-4's damped spring, the step PART-2's symplectic Euler.
 #include <cmath>
 #include <cstdio>
 
 #include "app/scene_registry.h"
+#include "physics/core/basis.h"
 #include "physics/hello/ball.h"
+#include "physics/ode/integrators.h"
 
 namespace {
 using namespace pba;
@@ -37,7 +40,10 @@ class SpringScene final : public app::Scene {
   }
   void step(Real dt) override {
     if (dragging_) return;
-    state_ = hello::symplecticEulerStep(desc_, state_, dt);
+    ball_.setDesc(desc_);
+    ball_.setBall(state_);
+    ode::symplecticEulerStep(ball_, dt, work_);
+    state_ = ball_.ball();
   }
   void draw(DebugDraw& d) const override {
     d.box(desc_.anchor + Vec3(0, 0.06, 0), Vec3(0.3, 0.06, 0.3), Quat(1, 0, 0, 0), colors::kGrey);
@@ -68,6 +74,7 @@ class SpringScene final : public app::Scene {
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
     return app::pickSphere(ray, state_.position, kBallRadius, 0);
   }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, state_.position}}; }
   void drag(int, const Vec3& target) override {
     dragging_ = true;
     state_.position = target;
@@ -82,8 +89,8 @@ class SpringScene final : public app::Scene {
     const Real length = glm::length(axis);
     if (length < 1e-9) return;
     const Vec3 n = axis / length;
-    const Vec3 u = glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1)));
-    const Vec3 v = glm::cross(n, u);
+    const Basis around = orthonormalBasis(n);
+    const Vec3 u = around.tangent, v = around.bitangent;
     constexpr int kSegments = kCoilTurns * 16;
     Vec3 previous = desc_.anchor;
     for (int i = 1; i <= kSegments; ++i) {
@@ -99,6 +106,8 @@ class SpringScene final : public app::Scene {
 
   hello::SpringDesc desc_;
   hello::BallState state_;
+  hello::SpringBallSystem ball_;  // state_ as an ODE system, for the step
+  ode::Workspace work_;
   bool dragging_ = false;
 };
 

@@ -1,6 +1,8 @@
-// IK lab, scene "comparison": the same chain solved by CCD, FABRIK, Jacobian transpose,
-// pseudo-inverse, DLS, SDLS, gradient descent (CMU asst4, Armijo backtracking) and L-BFGS toward the
-// same moving goal (IK slides, "Comparison"; Workbook §2.6).
+// IK lab, scene "comparison": the same chain solved by every iterative method of the library's
+// solver table (CCD, FABRIK, Jacobian transpose, pseudo-inverse, DLS, SDLS, gradient descent with
+// Armijo backtracking, L-BFGS) toward the same moving goal (IK slides, "Comparison"; Workbook §2.6).
+// Every method runs as published by default: no step clamp, no line search of the Jacobian methods,
+// no restarts (the panel's max_joint_step, jacobian_line_search and restarts turn them on).
 // Each method has its own colour; the chains stand side by side (or overlaid as ghosts on one base),
 // and a window on the right plots each method's residual after every iteration of the last solve
 // (log scale, one line per method) — the convergence curves of the methods, live. The metrics
@@ -21,14 +23,34 @@ struct Method {
   SolverKind kind;
   Color color;
 };
-constexpr std::array<Method, 8> kMethods = {{{SolverKind::Ccd, colors::kRed},
-                                             {SolverKind::Fabrik, colors::kGreen},
-                                             {SolverKind::JacobianTranspose, colors::kOrange},
-                                             {SolverKind::PseudoInverse, colors::kYellow},
-                                             {SolverKind::DampedLeastSquares, colors::kBlue},
-                                             {SolverKind::SelectivelyDamped, colors::kPurple},
-                                             {SolverKind::GradientDescent, colors::kTeal},
-                                             {SolverKind::Lbfgs, colors::kPink}}};
+// The palette's yellow, orange and pink read faintly on white panels and a projector: darker shades,
+// each at least 3:1 in contrast against white (tests/labs/ik_comparison_legend_test.cpp).
+constexpr Color kDarkGold{0.72f, 0.52f, 0.0f, 1.0f};
+constexpr Color kDeepOrange{0.90f, 0.45f, 0.05f, 1.0f};
+constexpr Color kDeepPink{0.84f, 0.22f, 0.52f, 1.0f};
+// Each method's colour (the switch has no default: a new SolverKind must get one, or -Wswitch says so).
+Color colorOf(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::Analytic: return colors::kDark;
+    case SolverKind::Ccd: return colors::kRed;
+    case SolverKind::Fabrik: return colors::kGreen;
+    case SolverKind::JacobianTranspose: return kDeepOrange;
+    case SolverKind::PseudoInverse: return kDarkGold;
+    case SolverKind::DampedLeastSquares: return colors::kBlue;
+    case SolverKind::SelectivelyDamped: return colors::kPurple;
+    case SolverKind::GradientDescent: return colors::kTeal;
+    case SolverKind::Lbfgs: return kDeepPink;
+  }
+  return colors::kDark;
+}
+// Every method of the solver table except the closed-form one (it applies to 1–2 links only).
+std::vector<Method> comparedMethods() {
+  std::vector<Method> methods;
+  for (const SolverInfo& s : solverTable())
+    if (s.kind != SolverKind::Analytic) methods.push_back({s.kind, colorOf(s.kind)});
+  return methods;
+}
+const std::vector<Method> kMethods = comparedMethods();
 constexpr Real kPlotFloor = -7.0;  // [log10 m] bottom of the residual plot
 constexpr Real kSpacing = 0.8;     // [chain lengths] between neighbouring bases
 // The runner's default camera yaw (graphics/camera.h, OrbitCamera::yaw): the row of chains, their
@@ -51,11 +73,16 @@ class ComparisonScene final : public app::Scene {
     params_.integer("max_iterations", &options_.maxIterations, 1, 1000, "", "Iteration cap per solve, for every method. Typical 60.");
     params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success tolerance, for every method. Typical 1e-4 m.").logarithmic();
     params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of DLS. Typical 0.05 m.");
+    params_.choiceEnum("line_search", &options_.lineSearch, lineSearchNames(),
+                       "Step length of gradient descent: backtracking (Armijo, the default here: golden-section costs "
+                       "~30 FK per step), golden, or fixed (asst4's plain method, gradient_step 0.2).");
+    declareMethodOptions(params_, options_, false);
     params_.flag("from_rest", &options_.fromRest,
                  "Start every solve from the rest pose (the plot then shows full convergence curves every frame).");
     params_.choiceEnum("path", &path_, {"figure8", "mouse"},
                        "How the goal moves: along a figure-8, or only where the mouse or the arrow keys put it.");
     params_.real("path_speed", &speed_, 0.0, 2.0, "Hz", "Laps per second of the goal's figure-8. Typical 0.25 Hz.");
+    options_.lineSearch = LineSearch::Backtracking;
     desc_.links = 8;
     desc_.axes = HingeAxes::Alternating;
     options_.fromRest = true;
@@ -128,15 +155,29 @@ class ComparisonScene final : public app::Scene {
   void drag(int, const Vec3& target) override {
     dragging_ = true;
     goal_ = target - baseOf(0);
-    solveAll();
   }
   void release(int) override { dragging_ = false; }
   /// The arrow keys move the one goal of every chain; it then stays put (path: mouse).
   bool nudge(const Vec3& delta) override {
     goal_ += delta;
     path_ = ComparePath::Mouse;
-    solveAll();
     return true;
+  }
+  /// A drag or nudge while paused: every method solves toward the goal where it is now.
+  void refresh() override { solveAll(); }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, baseOf(0) + goal_}}; }
+  /// Each method's colour with its iterations, final residual and status: the key to the chains and
+  /// to the curves, kept on screen while Tab hides the panels.
+  std::vector<app::LegendEntry> legend() const override {
+    std::vector<app::LegendEntry> out;
+    for (size_t m = 0; m < kMethods.size(); ++m) {
+      char text[96];
+      std::snprintf(text, sizeof text, "%-6s %3d it  %.1e m  %s", solverName(kMethods[m].kind), results_[m].iterations,
+                    results_[m].positionResidual, statusName(results_[m].status));
+      out.push_back({kMethods[m].color, text});
+    }
+    out.push_back({colors::kDark, "goal (black ball): drag it"});
+    return out;
   }
   Real nudgeStep() const override { return 0.03 * desc_.totalLength; }
 
@@ -147,7 +188,6 @@ class ComparisonScene final : public app::Scene {
       effectors[0].targetPosition = goal_;  // chains are solved at the origin and drawn at their base
       SolveOptions o = options_;
       o.solver = kMethods[m].kind;
-      o.lineSearch = LineSearch::Backtracking;  // gradient descent: golden section costs ~30 FK per step
       results_[m] = solve(rig_.skeleton, poses_[m], effectors, o);
     }
   }
@@ -167,7 +207,7 @@ class ComparisonScene final : public app::Scene {
     ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowSize(ImVec2(column.x1 - column.x0, 0.0f), ImGuiCond_Always);
     ImGui::Begin("Residual per iteration (log scale)", nullptr,
-                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
     size_t longest = 2;
     Real top = -1.0;
     for (const SolveResult& r : results_) {
@@ -197,15 +237,10 @@ class ComparisonScene final : public app::Scene {
       const std::vector<Real>& hist = results_[m].residualHistory;
       std::vector<ImVec2> line;
       for (size_t i = 0; i < hist.size(); ++i) line.push_back(point(Real(i), hist[i]));
-      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 2.5f);
+      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 0.15f * font);
     }
     ImGui::Dummy(ImVec2(axis + width, height));
-    ImGui::TextDisabled("iterations 0 … %zu; dark line: tolerance %.0e m", longest - 1, options_.tolerance);
-    for (size_t m = 0; m < kMethods.size(); ++m) {
-      const Color& c = kMethods[m].color;
-      ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "■ %-6s %3d it  %.1e m  %s", solverName(kMethods[m].kind), results_[m].iterations,
-                         results_[m].positionResidual, statusName(results_[m].status));
-    }
+    ImGui::TextDisabled("0 … %zu iterations; black: tolerance", longest - 1);
     ImGui::End();
   }
 

@@ -13,11 +13,35 @@ constexpr Real kJumpInterval = 1.5;  // [s] between random jumps
 
 IkScene::IkScene() { options_.recordHistory = true; }
 
+void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacobianOnly) {
+  auto jacobian = [&options, jacobianOnly] { return !jacobianOnly || usesJacobian(options.solver); };
+  auto stepMethod = [&options, jacobianOnly] {
+    const SolverKind k = options.solver;
+    return !jacobianOnly || k == SolverKind::JacobianTranspose || k == SolverKind::PseudoInverse ||
+           k == SolverKind::DampedLeastSquares || k == SolverKind::SelectivelyDamped;
+  };
+  params.choiceEnum("jacobian", &options.jacobian, jacobianSourceNames(),
+                    "Where the Jacobian methods take J from: analytic (IK-3's columns a x (e - r)) or differences "
+                    "(central differences of forward kinematics: 2 FK per column, slower, independent of IK-3).")
+      .shownWhen(jacobian);
+  params.angle("max_joint_step", &options.maxJointStep, 0.0, 180.0,
+               "Not in the papers (our safeguard): JT, pinv, DLS and SDLS scale a step down so that no DOF turns by more "
+               "than this. 0 = off, the methods as published (SDLS always applies its own gamma_max = 45 deg).")
+      .shownWhen(stepMethod);
+  params.flag("jacobian_line_search", &options.jacobianLineSearch,
+              "Not in the papers (our safeguard): JT, pinv, DLS and SDLS halve a step until the residual decreases "
+              "(JT: Armijo's sufficient decrease from Buss's step length). Off = the methods as published.")
+      .shownWhen(stepMethod);
+  params.integer("restarts", &options.restarts, 0, 100, "",
+                 "Stall recovery, not in the papers (IK slides, 'when stuck, randomise the pose'): a stalled or crawling "
+                 "solve restarts from a random pose inside the limits at most this many times, within the same "
+                 "iteration cap, and keeps its best attempt. 0 = off: a stall ends the solve, as published.");
+}
+
 void IkScene::declareSolverParams(bool withPath) {
   // Table-driven from the library: every method it names appears in the dropdown.
   std::string methods;
-  for (int k = 0; k < kSolverKindCount; ++k)
-    methods += std::string(k ? ", " : "") + solverName(static_cast<SolverKind>(k)) + " (" + solverLongName(static_cast<SolverKind>(k)) + ")";
+  for (const SolverInfo& s : solverTable()) methods += std::string(methods.empty() ? "" : ", ") + s.name + " (" + s.longName + ")";
   params_.choiceEnum("solver", &options_.solver, solverNames(), "IK method: " + methods + ".");
   params_.integer("max_iterations", &options_.maxIterations, 1, 5000, "",
                   "Iteration cap per solve (CCD/FABRIK: passes; Jacobian methods: steps). Typical 100.");
@@ -25,7 +49,7 @@ void IkScene::declareSolverParams(bool withPath) {
       .logarithmic();
   params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of damped least squares. Typical 0.05 m.")
       .shownWhen([this] { return options_.solver == SolverKind::DampedLeastSquares; });
-  params_.choiceEnum("line_search", &options_.lineSearch, {"fixed", "backtracking", "golden"},
+  params_.choiceEnum("line_search", &options_.lineSearch, lineSearchNames(),
                      "Step length of gradient descent: fixed (asst4: gradient_step every step), backtracking "
                      "(Armijo's sufficient decrease) or golden (golden-section search, an exact line search).")
       .shownWhen([this] { return options_.solver == SolverKind::GradientDescent; });
@@ -39,19 +63,16 @@ void IkScene::declareSolverParams(bool withPath) {
                "would give huge steps). Typical 1e-3.")
       .logarithmic()
       .shownWhen([this] { return options_.solver == SolverKind::PseudoInverse; });
+  declareMethodOptions(params_, options_, true);
   params_.integer("stall_iterations", &options_.stallIterations, 0, 1000, "",
                   "Stop as 'stalled' when the residual has not dropped by 0.1 % over this many iterations (a local "
                   "minimum, IK slides). 0 = never. Typical 20.");
-  params_.integer("restarts", &options_.restarts, 0, 100, "",
-                  "Stall recovery (IK slides, 'when stuck, randomise the pose'): a stalled or crawling solve restarts "
-                  "from a random pose inside the limits at most this many times, within the same iteration cap, "
-                  "and keeps its best attempt. 0 = a stall ends the solve. Typical 10.");
   params_.real("time_cap", &options_.maxSeconds, 0.0, 0.1, "s",
                "Stop a solve after this much wall time (status time_cap). 0 = no cap. Results then depend on the "
                "machine's speed.");
   params_.flag("from_rest", &options_.fromRest, "Repeatability: start every solve from the rest pose instead of the last pose.");
   params_.flag("limits", &options_.enforceLimits, "Enforce the joint limits (clamping; Jacobian methods also zero blocked columns).");
-  params_.choiceEnum("limit_mode", &options_.limitMode, {"clamp", "zero_columns"},
+  params_.choiceEnum("limit_mode", &options_.limitMode, jacobianLimitModeNames(),
                      "Jacobian methods at a limit: clamp the pose after each step, or also zero the columns of DOFs "
                      "pushed against their limit (one-sided derivative, IK slides).")
       .shownWhen([this] {
@@ -161,8 +182,22 @@ bool IkScene::nudge(const Vec3& delta) {
   selected_ = std::min(selected_, rig_.effectors.size() - 1);
   rig_.effectors[selected_].targetPosition += delta;
   path_ = TargetPath::Mouse;  // the goal stays where the keys put it
-  solveNow();
   return true;
+}
+
+std::vector<app::DragHandle> IkScene::dragHandles() const {
+  std::vector<app::DragHandle> out;
+  for (size_t k = 0; k < rig_.effectors.size(); ++k) out.push_back({static_cast<int>(k), rig_.effectors[k].targetPosition});
+  return out;
+}
+
+std::vector<app::LegendEntry> IkScene::legend() const {
+  std::vector<app::LegendEntry> out = {{colors::kRed, "goal: drag it, or nudge it with the arrow keys"},
+                                       {colors::kGreen, "effector"},
+                                       {colors::kBlue, "bones"}};
+  if (showLimits_) out.push_back({colors::kOrange, "joint limits"});
+  if (showPath_) out.push_back({colors::kPurple, "effector path over the last solve's iterations"});
+  return out;
 }
 
 }  // namespace pba::labs::ik

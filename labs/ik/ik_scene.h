@@ -25,6 +25,12 @@ enum class TargetPath { Mouse, Circle, Figure8, RandomJumps };
 
 inline constexpr Real kTargetRadiusFactor = 2.2;  // goal sphere radius in bone radii
 
+/// Declares the options that depart from the methods as published (step clamp, line search of the
+/// Jacobian methods, stall-recovery restarts; SolveOptions) and the Jacobian's source, once for every
+/// IK scene. Their defaults are the published methods. With `jacobianOnly`, the Jacobian options
+/// show only while `options` selects a Jacobian-family method (they always load, save and parse).
+void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacobianOnly);
+
 class IkScene : public app::Scene {
  public:
   IkScene();
@@ -40,9 +46,13 @@ class IkScene : public app::Scene {
   std::optional<app::PickHit> pick(const app::Ray& ray) const override;
   void drag(int handle, const Vec3& target) override;
   void release(int) override { dragging_ = false; }
-  /// Moves the selected goal (the one last picked) by delta [m] and solves at once, so a paused
-  /// scene shows the new pose; the goal then stays put (path: mouse).
+  /// Moves the selected goal (the one last picked) by delta [m]; the goal then stays put (path: mouse).
+  /// Like a drag, it is solved by the next step, or at once by refresh() when the scene is paused.
   bool nudge(const Vec3& delta) override;
+  /// Solves toward the goals as they are now (the runner calls it after a drag or nudge while paused).
+  void refresh() override { solveNow(); }
+  std::vector<app::DragHandle> dragHandles() const override;
+  std::vector<app::LegendEntry> legend() const override;
   /// A tenth of the scripted path's radius: ~20 key presses across the path.
   Real nudgeStep() const override { return 0.1 * pathRadius(); }
 

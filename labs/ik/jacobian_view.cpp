@@ -151,7 +151,8 @@ JacobianView computeJacobianView(const Skeleton& s, const Pose& pose, const std:
   const std::vector<Frame> frames = forwardKinematics(s, pose);
   const Real scale = resolvedOrientationScale(s, effectors, options);
   const JacobianLayout layout = planJacobian(s, pose, effectors, frames, scale);
-  v.J = jacobian(s, pose, effectors, frames, layout, scale);
+  v.J = options.jacobian == JacobianSource::Analytic ? jacobian(s, pose, effectors, frames, layout, scale)
+                                                     : numericalJacobian(s, pose, effectors, layout, scale, kJacobianStep);
   v.sigma = svd(v.J).sigma;
   v.rowLabels.resize(static_cast<size_t>(v.J.rows));
   for (size_t k = 0; k < effectors.size(); ++k) {

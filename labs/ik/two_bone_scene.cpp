@@ -41,6 +41,11 @@ class TwoBoneScene final : public IkScene {
     setPoleToward(options_.polePoint + delta);
     return true;
   }
+  std::vector<app::DragHandle> dragHandles() const override {
+    std::vector<app::DragHandle> out = IkScene::dragHandles();
+    out.push_back({kPoleHandle, options_.polePoint});
+    return out;
+  }
   void draw(DebugDraw& d) const override {
     IkScene::draw(d);
     d.sphere(options_.polePoint, kPoleRadius, colors::kPurple);
@@ -60,8 +65,7 @@ class TwoBoneScene final : public IkScene {
   void setPoleToward(const Vec3& p) {
     const Vec3 r = p - desc_.shoulder;
     if (std::abs(r.y) + std::abs(r.z) > 1e-9) poleAngle_ = std::atan2(r.z, r.y);
-    options_.polePoint = polePoint();
-    solveNow();
+    options_.polePoint = polePoint();  // solved by the next step, or by refresh() while paused
   }
 
   TwoBoneDesc desc_;

@@ -89,6 +89,7 @@ class BouncingScene final : public app::Scene {
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
     return lab::pickParticle(ray, sim_.system.particles, radius_);
   }
+  std::vector<app::DragHandle> dragHandles() const override { return lab::particleHandles(sim_.system.particles); }
   void drag(int handle, const Vec3& target) override {
     auto i = static_cast<std::size_t>(handle);
     sim_.system.particles.position[i] = Vec3(target.x, std::max(target.y, radius_), target.z);

@@ -133,6 +133,14 @@ inline std::optional<app::PickHit> pickParticle(const app::Ray& ray, const parti
   return best;
 }
 
+/// The particles as drag handles (Scene::dragHandles): every one up to `max`, else an even sample.
+inline std::vector<app::DragHandle> particleHandles(const particles::Particles& p, std::size_t max = 48) {
+  std::vector<app::DragHandle> out;
+  const std::size_t stride = std::max<std::size_t>(1, (p.size() + max - 1) / max);
+  for (std::size_t i = 0; i < p.size(); i += stride) out.push_back({static_cast<int>(i), p.position[i]});
+  return out;
+}
+
 /// A ground grid line set (the renderer has its own grid; this marks the collision plane's extent).
 inline void drawGroundSquare(DebugDraw& d, Real half, Real y = 0.0) {
   const Vec3 a(-half, y, -half), b(half, y, -half), c(half, y, half), e(-half, y, half);

@@ -1,8 +1,9 @@
 // Particles lab, scene "fountain": an emitter sprays particles into gusty wind and a vortex; they bounce
 // off sphere obstacles and the ground, change colour over their life and are recycled when they expire.
-// Scales to 1,000,000 particles (--particles 1000000): above kFusedAbove particles with symplectic Euler
-// the whole step is particles::stepFountain (kernels.h): ageing and removal, gravity, drag towards the
-// wind, vortex, plane and sphere contacts, the guard's finiteness test and the energy sums in one sweep,
+// Scales to 1,000,000 particles (--particles 1000000): above kFusedAbove particles with velocity Verlet
+// (the scene's default integrator) the whole step is particles::stepFountain (kernels.h): ageing and
+// removal, gravity, drag towards the wind, vortex, plane and sphere contacts (the library's contact model),
+// the guard's finiteness test and the energy sums in one sweep,
 // instead of the emitter's update and the generic force-array path. Huge counts are drawn as a
 // subsample of points, coloured over life only for the drawn ones.
 #include "app/scene_registry.h"
@@ -14,7 +15,7 @@ namespace {
 using namespace pba;
 
 constexpr Real kRadius = 0.02;  // [m] particle radius for contacts
-constexpr int kFusedAbove = 20000;  // pools larger than this use the fused kernel (symplectic Euler only)
+constexpr int kFusedAbove = 20000;  // pools larger than this use the fused kernel (velocity Verlet only)
 
 class FountainScene final : public app::Scene {
  public:
@@ -34,7 +35,8 @@ class FountainScene final : public app::Scene {
     params_.real("vortex", &vortexStrength_, -20.0, 20.0, "m²/s²", "Swirl strength of a vortex around the y axis.");
     params_.real("restitution", &obstacles_.material.restitution, 0.0, 1.0, "", "Bounce of the ground and spheres.");
     params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration. Earth 9.81.");
-    lab::addIntegratorParam(params_, &kind_);
+    lab::addIntegratorParam(params_, &kind_,
+                            " Default velocity-verlet: pools above 20,000 then take the fused one-pass kernel.");
   }
 
   std::string description() const override {
@@ -68,14 +70,14 @@ class FountainScene final : public app::Scene {
     system_.forces = forces_;
     integrator_.setKind(kind_);
     rate_.start();
-    fused_ = kind_ == ode::IntegratorKind::SymplecticEuler && maxParticles_ > kFusedAbove;
+    fused_ = kind_ == ode::IntegratorKind::VelocityVerlet && maxParticles_ > kFusedAbove;
     if (fused_) {
       stepFused(dt);
     } else {
       emitterState_.update(system_.particles, dt);
       system_.syncMasses();
       integrator_.step(system_, dt);
-      particles::collideWithObstacles(system_.particles, obstacles_, kRadius);
+      particles::collideWithObstacles(system_.particles, obstacles_, kRadius, {forces_.gravity, dt});
     }
     rate_.stop(system_.particles.size());
   }
@@ -157,7 +159,7 @@ class FountainScene final : public app::Scene {
   particles::Emitter emitterState_;
   particles::ForceDesc forces_{Vec3(0.0, -kStandardGravity, 0.0), {0.005, 0.0}, {Vec3(2.0, 0, 0), 1.5, 0.5, 8.0}, {}, {}};
   particles::Obstacles obstacles_{{}, {}, {}, particles::ContactMaterial{0.4, 0.3, 0.2, 0.1}};
-  ode::IntegratorKind kind_ = ode::IntegratorKind::SymplecticEuler;
+  ode::IntegratorKind kind_ = ode::IntegratorKind::VelocityVerlet;
   ode::Integrator integrator_;
   particles::ParticleSystem system_;
   lab::UpdateRate rate_;

@@ -45,7 +45,7 @@ class OrbitScene final : public app::Scene {
     desc.velocity = Vec3(0.0, 0.0, -speed_);
     for (ode::IntegratorKind k : ode::kAllIntegrators) {
       Planet p{std::make_unique<ode::KeplerOrbit>(desc), ode::Integrator(k), {}};
-      p.integrator.adaptiveSettings.tolerance = 1e-6;
+      (void)p.integrator.setAdaptiveSettings({.tolerance = 1e-6});  // valid: a constant
       planets_.push_back(std::move(p));
     }
     e0_ = planets_[0].orbit->energy();

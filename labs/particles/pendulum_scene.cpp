@@ -82,7 +82,7 @@ class PendulumScene final : public app::Scene {
       integrator_.step(system_, dt);
       state_ = system_.pendulumState();
     }
-    time_ += dt;
+    time_ += dt - integrator_.lastShortfall();  // the state's time (adaptive may fall short of dt)
     previousPivot_ = pivot_;
     pivot_ = next;
     rate_.stop(1);
@@ -117,6 +117,14 @@ class PendulumScene final : public app::Scene {
   }
   std::vector<std::string> defaultPlots() const override { return {"angle_rad", "energy"}; }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override { return app::pickSphere(ray, pivot_, 0.15, 0); }
+  std::vector<app::DragHandle> dragHandles() const override { return {{0, pivot_}}; }
+  /// A drag while paused: the pivot held by hand stands where the mouse put it (time does not run, so
+  /// it does not follow through the spring of step()).
+  void refresh() override {
+    if (!byHand_) return;
+    pivot_ = previousPivot_ = target_;
+    pivotVelocity_ = Vec3(0.0);
+  }
   void drag(int, const Vec3& target) override {
     if (!byHand_) {
       // Take over from the script with the pivot's current position and velocity (no jump, no kick).

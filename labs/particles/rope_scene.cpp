@@ -89,6 +89,11 @@ class RopeScene final : public app::Scene {
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
     return lab::pickParticle(ray, sim_.system.particles, 2.0 * kBeadRadius);
   }
+  std::vector<app::DragHandle> dragHandles() const override { return lab::particleHandles(sim_.system.particles); }
+  std::vector<app::LegendEntry> legend() const override {
+    return {{colors::kOrange, "light rope"}, {colors::kDark, "heavy chain (with bending springs)"},
+            {colors::kRed, "pinned end"}, {colors::kYellow, "the particle being dragged"}};
+  }
   void drag(int handle, const Vec3& target) override {
     const auto i = static_cast<std::size_t>(handle);
     if (dragged_ != handle) {

@@ -2,6 +2,9 @@
 // end). Implicit Euler (Baraff & Witkin 1998) is stable at the lab's step; switch to any explicit method
 // and it explodes within a few steps — the runner pauses and names the first particle that blew up.
 #include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
 
 #include "app/scene_registry.h"
 #include "common.h"
@@ -18,6 +21,12 @@ class StiffSpringScene final : public app::Scene {
         .logarithmic()
         .needsReset();
     params_.real("damping", &beam_.damping, 0.0, 50.0, "N·s/m", "Damping along each spring. Typical 1.").needsReset();
+    params_.integer("cg_max_iterations", &cg_.maxIterations, 1, 2000, "",
+                    "Implicit Euler: cap on conjugate-gradient iterations per step. Typical 200; the metric "
+                    "cg_iterations shows what a step needs (block-Jacobi preconditioned).");
+    params_.real("cg_tolerance", &cg_.relativeTolerance, 1e-14, 1e-2, "",
+                 "Implicit Euler: CG stops when the residual |b − A Δv| ≤ tolerance·|b|. Typical 1e-10.")
+        .logarithmic();
     sim_.kind = ode::IntegratorKind::ImplicitEuler;
     sim_.declareParams(params_, " Default implicit-euler; the explicit ones blow up here.");
   }
@@ -41,11 +50,27 @@ class StiffSpringScene final : public app::Scene {
       for (int k = 0; k < beam_.nz; ++k) system.particles.inverseMass[static_cast<std::size_t>(j * beam_.nz + k)] = 0.0;
     for (std::size_t i = 0; i < system.particles.size(); ++i) system.particles.color[i] = colors::kGreen;
     sim_.finishReset();
+    capHit_.reset();
   }
 
   void step(Real dt) override {
+    (void)sim_.integrator.setImplicitSettings(cg_);  // the sliders' ranges keep it valid
     sim_.integrate(dt);
+    const ode::ImplicitEulerStats& cg = sim_.integrator.lastImplicitStats();
+    if (sim_.kind == ode::IntegratorKind::ImplicitEuler && !cg.converged && !capHit_) {
+      capHit_ = CapHit{sim_.system.time(), cg.iterations, cg.relativeResidual};  // kept until reset: once
+    }
     sim_.finishStep();
+  }
+
+  // A one-time warning: the first step whose CG stopped at its cap before meeting the tolerance.
+  void ui() override {
+    if (!capHit_) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.85f, 0.35f, 0.0f, 1.0f));
+    ImGui::TextWrapped("Implicit Euler: at t = %.3f s CG stopped at its cap of %d iterations with residual %.2g "
+                       "> tolerance %.2g; the step is not converged. Raise cg_max_iterations or cg_tolerance.",
+                       capHit_->time, capHit_->iterations, capHit_->residual, cg_.relativeTolerance);
+    ImGui::PopStyleColor();
   }
 
   void draw(DebugDraw& d) const override {
@@ -66,7 +91,17 @@ class StiffSpringScene final : public app::Scene {
 
   nlohmann::json metrics() const override {
     nlohmann::json j = sim_.metrics();
-    j["cg_iterations"] = sim_.integrator.lastImplicitStats().iterations;
+    const ode::ImplicitEulerStats& cg = sim_.integrator.lastImplicitStats();
+    j["cg_iterations"] = cg.iterations;
+    j["cg_relative_residual"] = cg.relativeResidual;
+    j["cg_converged"] = cg.converged;
+    j["cg_cap_hit"] = capHit_.has_value();  // since reset
+    // The beam's energy balance: E₀ is almost all gravitational potential, so energy_drift says little;
+    // what springs and damping did is the dissipated energy E₀ − E against the stored spring energy
+    // (equal at static equilibrium for a linear structure, Clapeyron's theorem).
+    j["dissipated_J"] = sim_.initialEnergy - sim_.system.energy();
+    j["spring_energy_J"] = springs::springPotentialEnergy(sim_.system.springs, sim_.system.particles.position);
+    j["kinetic_energy_J"] = sim_.system.particles.kineticEnergy();
     j["max_stretch"] = springs::maxRelativeStretch(sim_.system.springs, sim_.system.particles.position);
     j["tip_y_m"] = sim_.system.particles.position.back().y;
     return j;
@@ -83,7 +118,14 @@ class StiffSpringScene final : public app::Scene {
   }
 
  private:
+  struct CapHit {
+    Real time;       // [s]
+    int iterations;
+    Real residual;   // relative
+  };
   springs::LatticeDesc beam_{Vec3(0.0), 10, 3, 3, 0.2, 0.05, 1e5, 1.0, true, false};
+  ode::ImplicitEulerSettings cg_;
+  std::optional<CapHit> capHit_;
   lab::IntegratedSystem sim_;
 };
 

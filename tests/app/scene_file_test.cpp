@@ -94,6 +94,41 @@ TEST(LabSession, PresetsApplyAndResetAndABadPresetChangesNothing) {
   EXPECT_NE(session.message().find("no preset 9"), std::string::npos);
 }
 
+// Issue 15: presets set only the parameters they name, so a key gave different setups depending on
+// what was pressed before. Every parameter the preset does not name takes the scene's default.
+TEST(LabSession, APresetSetsEveryParameterFromTheDefaultsThenItsOwnValues) {
+  SceneRunner runner;
+  ASSERT_TRUE(runner.load("constant", 1).ok());
+  LabSession session("test", runner, 1);
+  auto& scene = static_cast<ConstantVelocityScene&>(runner.scene());
+  const ConstantVelocityScene defaults;  // an independent instance: the declared defaults
+  scene.mode = 2;
+  scene.visible = !defaults.visible;
+  scene.count = defaults.count + 5;
+  scene.heading = 1.0;
+  scene.label = "changed";
+  session.applyPreset(0);  // "fast": speed 5 and nothing else
+  EXPECT_EQ(scene.speed, 5.0);
+  EXPECT_EQ(scene.mode, defaults.mode);
+  EXPECT_EQ(scene.visible, defaults.visible);
+  EXPECT_EQ(scene.count, defaults.count);
+  EXPECT_EQ(scene.heading, defaults.heading);
+  EXPECT_EQ(scene.label, defaults.label);
+}
+
+TEST(LabSession, ABadPresetLeavesEveryParameterAsItWas) {
+  SceneRunner runner;
+  ASSERT_TRUE(runner.load("constant", 1).ok());
+  LabSession session("test", runner, 1);
+  auto& scene = static_cast<ConstantVelocityScene&>(runner.scene());
+  scene.mode = 2;
+  scene.label = "changed";
+  session.applyPreset(1);  // "broken": speed 99 is out of range
+  EXPECT_EQ(scene.mode, 2);
+  EXPECT_EQ(scene.label, "changed");
+  EXPECT_NE(session.message().find("speed"), std::string::npos) << session.message();
+}
+
 TEST(LabSession, SaveThenLoadRestoresTheParameters) {
   SceneRunner runner;
   ASSERT_TRUE(runner.load("constant", 1).ok());

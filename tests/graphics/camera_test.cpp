@@ -74,6 +74,7 @@ TEST(OrbitCamera, FrameMakesAllEightCornersProjectInsideTheViewport) {
   std::uniform_real_distribution<float> u(-1.0f, 1.0f), size(0.001f, 50.0f);
   for (int i = 0; i < 100; ++i) {
     OrbitCamera c = randomCamera(rng);
+    c.keepAboveGround = false;  // boxes anywhere, some under the ground: the framing math alone
     const glm::vec3 centre = glm::vec3(u(rng), u(rng), u(rng)) * 10.0f;
     const glm::vec3 half(size(rng), size(rng), size(rng));
     const float aspect = (i % 2) ? kW / kH : 0.5f;  // landscape and portrait
@@ -147,4 +148,38 @@ TEST(OrbitCamera, DegenerateViewportAndAspectGiveFiniteMatrices) {
   for (int i = 0; i < 4; ++i) EXPECT_TRUE(std::isfinite(glm::length(p[i])));
   const auto ray = c.ray(0.0f, 0.0f, 0.0f, 0.0f);
   EXPECT_TRUE(std::isfinite(glm::length(ray.direction)));
+}
+
+// Issue 15: orbiting (or panning) below the ground showed a grey screen that neither F nor R
+// recovered. Whatever the drags, the eye stays above the ground plane y = 0 (the grid).
+TEST(OrbitCamera, NoOrbitPanOrZoomTakesTheEyeBelowTheGround) {
+  std::mt19937 rng(15);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  OrbitCamera c;
+  for (int i = 0; i < 2000; ++i) {
+    switch (i % 3) {
+      case 0: c.rotate(400.0f * u(rng), 400.0f * u(rng)); break;
+      case 1: c.pan(300.0f * u(rng), 300.0f * u(rng), glm::vec2(kW, kH)); break;
+      default: c.zoom(5.0f * u(rng)); break;
+    }
+    ASSERT_GE(c.eye().y, c.groundHeight + 0.99f * c.minEyeHeight()) << "seed 15, step " << i;
+    ASSERT_GE(c.target.y, c.groundHeight) << "seed 15, step " << i;
+  }
+}
+
+TEST(OrbitCamera, DraggingStraightDownStopsAtTheGroundNotBelowIt) {
+  OrbitCamera c;
+  c.target = glm::vec3(0.0f, 0.5f, 0.0f);
+  c.distance = 6.0f;
+  c.rotate(0.0f, -5000.0f);  // far past the horizon
+  // eye.y = 0.5 + 6 sin(pitch) = the smallest allowed height, 1 % of the distance.
+  EXPECT_NEAR(c.eye().y, 0.06f, 1e-4f);
+  EXPECT_LT(c.pitch, 0.0f) << "a target above the ground may still be seen from slightly below its height";
+}
+
+TEST(OrbitCamera, WithoutTheGroundRuleThePitchReachesTheLowerPole) {
+  OrbitCamera c;
+  c.keepAboveGround = false;
+  c.rotate(0.0f, -5000.0f);
+  EXPECT_FLOAT_EQ(c.pitch, -OrbitCamera::kMaxPitch);
 }

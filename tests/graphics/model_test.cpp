@@ -2,6 +2,7 @@
 // identity, CPU linear blend skinning against a hand-written reference, and bad files. No window.
 #include "graphics/model.h"
 #include "graphics/skinning.h"
+#include "model_file_check.h"
 
 #include <gtest/gtest.h>
 
@@ -18,16 +19,7 @@ namespace {
 const std::string kBvh = "/usr/share/assimp/models/BVH/01_01.bvh";
 const std::string kSkin = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf";
 
-gfx::Model loadOrFail(const std::string& path) {
-  if (!std::filesystem::exists(path)) {
-    ADD_FAILURE() << path << " is missing: install the Debian package assimp-testmodels";
-    return {};
-  }
-  std::string error;
-  auto model = gfx::loadModel(path, &error);
-  EXPECT_TRUE(model.has_value()) << error;
-  return model ? *model : gfx::Model{};
-}
+using pba::testing::models::loadOrFail;
 
 float maxAbsDifference(const glm::mat4& a, const glm::mat4& b) {
   float d = 0.0f;

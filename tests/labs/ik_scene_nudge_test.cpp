@@ -4,6 +4,9 @@
 // interface the mouse uses.
 #include <gtest/gtest.h>
 
+#include <functional>
+
+#include "app/lab_session.h"
 #include "app/scene_registry.h"
 
 namespace pba::labs::ik {
@@ -63,6 +66,41 @@ TEST(IkSceneNudge, TheTwoBonePoleTargetIsPickedDraggedAndNudged) {
   // A nudge toward +z turns it to atan2(1.5, 1.5) = 45°.
   ASSERT_TRUE(scene->nudge(Vec3(0.0, 0.0, 1.5)));
   EXPECT_NEAR(scene->params().toJson()["pole_angle"].get<double>(), 45.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace pba::labs::ik
+
+// Issue 15: dragging the goal while paused moved the goal but did not re-solve, while the arrow keys
+// did. Both now go through LabSession, which refreshes a paused scene after any goal change. The goal
+// is put far out of reach, so only a new solve can make the residual metric large (with a stubbed
+// solver too: its pose stays, its residual is then the distance to the far goal).
+namespace pba::labs::ik {
+namespace {
+
+double residualAfter(const std::function<void(app::LabSession&)>& moveGoal) {
+  app::SceneRunner runner;
+  EXPECT_TRUE(runner.load("limits", 1).ok());
+  app::LabSession session("ik", runner, 1);
+  runner.setPaused(true);
+  moveGoal(session);
+  EXPECT_EQ(runner.steps(), 0) << "nothing stepped: the solve came from the refresh";
+  return runner.scene().metrics()["residual"].get<double>();
+}
+
+TEST(IkScenePaused, ADragOfTheGoalReSolvesLikeANudge) {
+  const Vec3 far(30.0, 1.5, 0.0);  // [m] the limits arm reaches about 2 m
+  const double dragged = residualAfter([&](app::LabSession& s) {
+    s.drag(0, far);
+    s.release(0);
+  });
+  // The arrow key Right with the camera's right along +x, pressed until the goal is as far.
+  const double nudged = residualAfter([&](app::LabSession& s) {
+    for (int press = 0; press < 100000 && s.runner().scene().dragHandles().at(0).position.x < far.x; ++press)
+      ASSERT_TRUE(s.nudge(app::NudgeDirection::Right, Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, -1), 1.0, false));
+  });
+  EXPECT_GT(dragged, 20.0) << "the paused drag re-solved toward the far goal";
+  EXPECT_GT(nudged, 20.0) << "the paused nudges re-solved toward the far goal";
 }
 
 }  // namespace

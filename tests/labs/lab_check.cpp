@@ -1,5 +1,5 @@
 // Checks used by the lab smoke tests:
-//   pba_lab_check metrics FILE LAB [SCENE]   the metrics JSON has the shape of DESIGN.md §4
+//   pba_lab_check metrics FILE LAB [SCENE]   the metrics JSON has the shape of docs/architecture.md §4
 //   pba_lab_check same A B                   two metrics files agree except for timings
 //   pba_lab_check image FILE.png             the screenshot is not blank
 #include <algorithm>

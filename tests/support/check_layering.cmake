@@ -1,4 +1,4 @@
-# DESIGN.md §1: pba::physics includes nothing from graphics, app, OpenGL, GLFW, ImGui or Assimp.
+# docs/architecture.md §1: pba::physics includes nothing from graphics, app, OpenGL, GLFW, ImGui or Assimp.
 # Checks both the sources (includes) and the built library (undefined symbols it would need).
 file(GLOB_RECURSE sources "${SOURCE_DIR}/*.h" "${SOURCE_DIR}/*.cpp")
 foreach(f ${sources})

@@ -1,10 +1,10 @@
 #pragma once
-// A cloth: a triangle mesh of particles (DESIGN.md §2: a description with documented defaults, separate
+// A cloth: a triangle mesh of particles (docs/architecture.md §2: a description with documented defaults, separate
 // from the runtime object it builds). Two models live on the same particles and can be switched live:
 //   mass-spring   Provot 1995: structural, shear and bend springs (links), forces and their Jacobians;
 //   constraints   Müller et al. 2007 (PBD), Macklin et al. 2016 (XPBD): a distance constraint on every mesh
 //                 edge plus isometric bending (Bergou et al. 2006) on every pair of triangles sharing an edge.
-// Pinned particles have inverse mass 0 (DESIGN.md §2); a pin may move (a curtain rail) through its target.
+// Pinned particles have inverse mass 0 (docs/architecture.md §2); a pin may move (a curtain rail) through its target.
 //
 // Glossary
 //   x, v      particle positions [m] and velocities [m/s], world frame, y up
@@ -111,7 +111,7 @@ struct TriangleMesh {
 /// The grid's mesh (rest positions and triangles) without building a cloth.
 TriangleMesh gridMesh(const GridDesc& desc);
 
-/// The runtime cloth: plain structs of arrays (DESIGN.md §2), so saving and restoring state is a copy.
+/// The runtime cloth: plain structs of arrays (docs/architecture.md §2), so saving and restoring state is a copy.
 struct Cloth {
   std::vector<Vec3> position;      ///< x [m]
   std::vector<Vec3> velocity;      ///< v [m/s]
@@ -140,7 +140,7 @@ struct Cloth {
 /// more than two triangles). `pinned` lists particles to pin where they are.
 Result<Cloth> buildCloth(const TriangleMesh& mesh, const ClothMaterial& material,
                          std::span<const std::uint32_t> pinned = {});
-/// Builds the grid of `desc` (DESIGN.md §1: the lab, the tests and the benchmarks share this builder).
+/// Builds the grid of `desc` (docs/architecture.md §1: the lab, the tests and the benchmarks share this builder).
 Result<Cloth> buildClothGrid(const GridDesc& desc, const ClothMaterial& material);
 
 /// Recomputes edges, constraints, springs, bending stencils and lumped masses from the triangles and the

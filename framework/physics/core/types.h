@@ -1,5 +1,5 @@
 #pragma once
-// The one header of numeric aliases for the physics library (DESIGN.md §2).
+// The one header of numeric aliases for the physics library (docs/architecture.md §2).
 // Physics runs in double precision; rendering converts to float at upload.
 // SI units throughout: m, kg, s, N, rad. Right-handed, y up.
 #include <glm/glm.hpp>
@@ -20,7 +20,7 @@ inline constexpr Vec3 kUp{0.0, 1.0, 0.0};
 inline constexpr Real kStandardGravity = 9.80665;  // [m/s²]
 inline constexpr Real kPi = 3.14159265358979323846;
 
-/// Degrees appear only at the user interface; this is the one conversion helper (DESIGN.md §2).
+/// Degrees appear only at the user interface; this is the one conversion helper (docs/architecture.md §2).
 constexpr Real degToRad(Real degrees) { return degrees * (kPi / 180.0); }
 constexpr Real radToDeg(Real radians) { return radians * (180.0 / kPi); }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Exercise stubs (DESIGN.md §5). In the student release every solution block is replaced by a stub
+// Exercise stubs (docs/architecture.md §5). In the student release every solution block is replaced by a stub
 // that calls notImplemented("TAG", safeDefault): it records the tag, so the lab can show a banner,
 // and returns a safe default so that every lab still runs.
 //

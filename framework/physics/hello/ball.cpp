@@ -5,6 +5,8 @@
 
 #include "physics/core/validate.h"
 #include "physics/exercises/not_implemented.h"
+#include "physics/particles/collision.h"
+#include "physics/springs/spring_network.h"
 
 namespace pba::hello {
 
@@ -12,7 +14,8 @@ Status validate(const BallDesc& d) {
   for (Status s : {checkRange("mass", d.mass, 1e-6, 1e6), checkRange("radius", d.radius, 1e-4, 100.0),
                    checkRange("restitution", d.restitution, 0.0, 1.0), checkRange("drag", d.drag, 0.0, 1e4),
                    checkRange("gravity", d.gravity, 0.0, 1e3), checkRange("dropHeight", d.dropHeight, 0.0, 1e4),
-                   checkRange("groundHeight", d.groundHeight, -1e4, 1e4)}) {
+                   checkRange("groundHeight", d.groundHeight, -1e4, 1e4),
+                   checkRange("restingSpeed", d.restingSpeed, 0.0, 1e3)}) {
     if (!s) return s;
   }
   return Status::success();
@@ -66,17 +69,34 @@ BounceResult bounceOffPlane(const BallState& state, Real radius, Real restitutio
 PBA_EXERCISE_PROBE(eulerStep(BallState{}, Vec3(0.0), 0.01));
 PBA_EXERCISE_PROBE(bounceOffPlane(BallState{}, 0.1, 0.5, Vec3(0.0), kUp));
 
-BounceResult stepDrop(const BallDesc& d, const BallState& s, Real h) {
-  const BallState moved = eulerStep(s, acceleration(d, s.velocity), h);
-  BounceResult r = bounceOffPlane(moved, d.radius, d.restitution, Vec3(0.0, d.groundHeight, 0.0), kUp);
-  // Safety net that keeps the scene sane even while HELLO-2 is a stub: never let the ball fall
-  // through the ground. It does not bounce, so an unimplemented HELLO-2 is still plain to see.
-  const Real floorY = d.groundHeight + d.radius;
-  if (r.state.position.y < floorY) {
-    r.state.position.y = floorY;
-    r.state.velocity.y = std::max(r.state.velocity.y, 0.0);
+BounceResult groundContact(const BallDesc& d, const BallState& moved, Real h) {
+  const Vec3 groundPoint(0.0, d.groundHeight, 0.0);
+  const Real phi = heightAboveGround(d, moved);  // the ball's lowest point above the ground [m]
+  BounceResult r{moved, false};
+  const Real normalSpeed = moved.velocity.y;  // N·v, N = ŷ
+  if (phi < particles::kContactSlop && normalSpeed < 0.0) {
+    // Steps 3–4 of the particles lab's contact model, under the inward acceleration g.
+    const particles::ContactApproach approach =
+        particles::classifyApproach(std::max(0.0, -phi), -normalSpeed, d.gravity, d.restingSpeed, h);
+    BallState atContact = moved;
+    if (approach.kind == particles::ContactKind::Impact) {
+      atContact.velocity.y = -approach.contactSpeed;  // the normal velocity at the contact time
+      r = bounceOffPlane(atContact, d.radius, d.restitution, groundPoint, kUp);
+    } else {
+      r = bounceOffPlane(atContact, d.radius, 0.0, groundPoint, kUp);
+      r.bounced = false;  // resting contact is not a bounce
+    }
   }
+  // Safety net (a no-op after a correct HELLO-2 except at exact touching, which HELLO-2's strict contact
+  // test leaves alone): never below the ground, never moving into it while touching it.
+  const Real floorY = d.groundHeight + d.radius;
+  if (r.state.position.y < floorY) r.state.position.y = floorY;
+  if (r.state.position.y - floorY < particles::kContactSlop) r.state.velocity.y = std::max(r.state.velocity.y, 0.0);
   return r;
+}
+
+BounceResult stepDrop(const BallDesc& d, const BallState& s, Real h) {
+  return groundContact(d, eulerStep(s, acceleration(d, s.velocity), h), h);
 }
 
 Status validate(const SpringDesc& d) {
@@ -89,24 +109,36 @@ Status validate(const SpringDesc& d) {
   return Status::success();
 }
 
-Vec3 springForce(const SpringDesc& d, const BallState& s) {
-  const Vec3 delta = s.position - d.anchor;
-  const Real length = glm::length(delta);
-  if (length <= 0.0) return Vec3(0.0);
-  const Vec3 direction = delta / length;
-  const Real magnitude = d.stiffness * (length - d.restLength) + d.damping * glm::dot(direction, s.velocity);
-  return -magnitude * direction;
-}
-
 Vec3 springBallForce(const SpringDesc& d, const BallState& s) {
-  return springForce(d, s) + Vec3(0.0, -d.mass * d.gravity, 0.0) - d.drag * s.velocity;
+  const Vec3 spring =
+      springs::dampedSpringForce(s.position, d.anchor, s.velocity, Vec3(0.0), d.stiffness, d.restLength, d.damping);
+  return spring + Vec3(0.0, -d.mass * d.gravity, 0.0) - d.drag * s.velocity;
 }
 
-BallState symplecticEulerStep(const SpringDesc& d, const BallState& s, Real h) {
-  BallState next;
-  next.velocity = s.velocity + (h / d.mass) * springBallForce(d, s);
-  next.position = s.position + h * next.velocity;
-  return next;
+SpringBallSystem::SpringBallSystem(const SpringDesc& desc, const BallState& state)
+    : OwnedStateSystem(std::vector<Real>(3), std::vector<Real>(3), std::vector<Real>(3)) {
+  setDesc(desc);
+  setBall(state);
+}
+
+void SpringBallSystem::setDesc(const SpringDesc& desc) {
+  desc_ = desc;
+  std::fill(w_.begin(), w_.end(), 1.0 / desc_.mass);
+}
+
+BallState SpringBallSystem::ball() const { return {Vec3(q_[0], q_[1], q_[2]), Vec3(v_[0], v_[1], v_[2])}; }
+
+void SpringBallSystem::setBall(const BallState& state) {
+  for (int k = 0; k < 3; ++k) {
+    q_[static_cast<std::size_t>(k)] = state.position[k];
+    v_[static_cast<std::size_t>(k)] = state.velocity[k];
+  }
+  stateChanged();
+}
+
+void SpringBallSystem::force(Real, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const {
+  const Vec3 f = springBallForce(desc_, BallState{Vec3(q[0], q[1], q[2]), Vec3(v[0], v[1], v[2])});
+  for (int k = 0; k < 3; ++k) out[static_cast<std::size_t>(k)] = f[k];
 }
 
 Real springExtension(const SpringDesc& d, const BallState& s) { return glm::length(s.position - d.anchor) - d.restLength; }

@@ -4,12 +4,16 @@
 //
 // Equations of motion (Lobb notes, "Particle" and "Damping"):
 //   m dv/dt = m g − c v            linear (viscous) air drag, c [N·s/m]
-//   F_spring = −[k (|d| − L) + c_s (d·v)/|d|] d/|d|,  d = x − anchor   (Lobb notes, damped spring)
+// The ground contact is the particles lab's contact model (particles/collision.h): approach speed at the
+// contact time, resting contact below a resting speed, HELLO-2 as the bounce. The spring ball is a
+// preview of the particles lab: the damped spring force of PART-4 (springs/spring_network.h) stepped by
+// PART-2's symplectic Euler (ode/integrators.h).
 #include <optional>
 #include <string>
 
 #include "physics/core/result.h"
 #include "physics/core/types.h"
+#include "physics/ode/ode_system.h"
 
 namespace pba::hello {
 
@@ -28,6 +32,7 @@ struct BallDesc {
   Real gravity = kStandardGravity;  ///< [m/s²] ≥ 0, acting along −y
   Real dropHeight = 3.0;    ///< [m] ≥ 0: initial height of the ball's lowest point above the ground
   Real groundHeight = 0.0;  ///< [m] world y of the ground plane
+  Real restingSpeed = 0.1;  ///< [m/s] ≥ 0: slower impacts are resting contact, not bounces (particles lab's default)
 };
 
 /// Checks every field; the message names the field ("mass: must be ...").
@@ -72,7 +77,15 @@ struct BounceResult {
 BounceResult bounceOffPlane(const BallState& state, Real radius, Real restitution, const Vec3& planePoint,
                             const Vec3& planeNormal);
 
-/// One full step of the drop scene: HELLO-1 under gravity and drag, then HELLO-2 against the ground.
+/// The ground contact after a flight step of h [s] that ended in `moved`: the particles lab's contact model
+/// (particles/collision.h, steps 3–4) decides between an impact and resting contact. An impact bounces
+/// through HELLO-2 at the normal speed the ball had at the contact time; resting contact (no faster than
+/// restingSpeed + g h) is HELLO-2 with restitution 0, and is not a bounce. Last, a safety net that also
+/// holds the ball while HELLO-2 is a stub: the ball never ends below the ground, nor moving into it while
+/// touching it. `bounced` is true for real bounces only (an impact that HELLO-2 reflected).
+BounceResult groundContact(const BallDesc& desc, const BallState& moved, Real h);
+
+/// One full step of the drop scene: HELLO-1 under gravity and drag, then groundContact().
 BounceResult stepDrop(const BallDesc& desc, const BallState& state, Real h);
 
 /// A ball hanging from a damped spring whose anchor the user can drag.
@@ -88,16 +101,26 @@ struct SpringDesc {
 
 Status validate(const SpringDesc& desc);
 
-/// Damped spring force on the ball (Lobb notes): −[k(|d| − L) + c_s (d·v)/|d|] d/|d|, d = x − anchor.
-/// Zero when the ball sits exactly on the anchor (direction undefined).
-Vec3 springForce(const SpringDesc& desc, const BallState& state);
-
-/// Total force on the spring ball: spring + gravity + drag.
+/// Total force on the spring ball: the damped spring of PART-4 (springs::dampedSpringForce, the anchor at
+/// rest) + gravity + drag [N].
 Vec3 springBallForce(const SpringDesc& desc, const BallState& state);
 
-/// Symplectic (semi-implicit) Euler: v += h a(x, v); x += h v_new. Lobb's "simple loop"; stable for
-/// the spring at the lab's step sizes, unlike explicit Euler.
-BallState symplecticEulerStep(const SpringDesc& desc, const BallState& state, Real h);
+/// The spring ball as a second-order system (3 coordinates), so that the ODE layer's integrators step it:
+/// the scene uses symplectic Euler (PART-2, Lobb's "simple loop"), stable for the spring at the lab's
+/// step sizes, unlike explicit Euler.
+class SpringBallSystem final : public ode::OwnedStateSystem {
+ public:
+  explicit SpringBallSystem(const SpringDesc& desc = {}, const BallState& state = {});
+  const SpringDesc& desc() const { return desc_; }
+  /// Changes the spring or the ball (the scene's sliders, between steps); the state stays.
+  void setDesc(const SpringDesc& desc);
+  BallState ball() const;
+  void setBall(const BallState& state);
+  void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
+
+ private:
+  SpringDesc desc_;
+};
 
 /// Extension |d| − L [m] and total energy (kinetic + spring + gravity, gravity measured from the anchor) [J].
 Real springExtension(const SpringDesc& desc, const BallState& state);

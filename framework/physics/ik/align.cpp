@@ -13,11 +13,6 @@
 #include "physics/ik/solver_internal.h"
 
 namespace pba::ik::detail {
-namespace {
-
-Vec3 perp(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
-
-}  // namespace
 
 Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits) {
   const Joint& joint = c.skeleton.joint(j);
@@ -66,7 +61,7 @@ Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, cons
                const std::vector<Real>& w) {
   Real S = 0.0, C = 0.0;
   for (size_t i = 0; i < from.size(); ++i) {
-    const Vec3 u = perp(from[i] - p, a), v = perp(to[i] - p, a);
+    const Vec3 u = perpendicularPart(from[i] - p, a), v = perpendicularPart(to[i] - p, a);
     S += w[i] * glm::dot(a, glm::cross(u, v));
     C += w[i] * glm::dot(u, v);
   }
@@ -155,7 +150,7 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
       Real theta = 0.0;
       if (from.size() == 1 && useExercise) {
         // Workbook Algorithm 1 on the projections onto the hinge plane: the update's axis is ±a.
-        const Quat q = ccdJointUpdate(p, p + perp(from[0] - p, a), p + perp(to[0] - p, a));
+        const Quat q = ccdJointUpdate(p, p + perpendicularPart(from[0] - p, a), p + perpendicularPart(to[0] - p, a));
         theta = glm::dot(rotationVector(q), a);
       } else {
         theta = bestAngle(a, p, from, to, w);

@@ -19,7 +19,7 @@ namespace pba::ik {
 // (2) cos θ = b · t (dot product); the rotation axis is b × t (cross product), sin θ = |b × t|.
 // (3) θ = atan2(|b × t|, b · t): in [0, π], and never NaN (acos of a dot product slightly above 1 is).
 // (4) If |b × t| is (almost) zero the directions are parallel (θ = 0, keep any axis) or opposite
-//     (θ = π about any axis perpendicular to b, e.g. b × x̂, or b × ŷ when b is close to x̂).
+//     (θ = π about any axis perpendicular to b: anyPerpendicular(b)).
 // (5) Return the unit axis and θ.
 // *****
 AxisAngle analyticSingleJoint([[maybe_unused]] const Vec3& boneDirection, [[maybe_unused]] const Vec3& toTarget) {
@@ -29,11 +29,7 @@ AxisAngle analyticSingleJoint([[maybe_unused]] const Vec3& boneDirection, [[mayb
   const Vec3 b = boneDirection / lb, t = toTarget / lt;
   const Vec3 axis = glm::cross(b, t);
   const Real s = glm::length(axis), c = glm::dot(b, t);
-  if (s < 1e-12) {
-    if (c > 0.0) return {};
-    const Vec3 n = glm::cross(b, std::abs(b.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-    return {n / glm::length(n), kPi};
-  }
+  if (s < 1e-12) return c > 0.0 ? AxisAngle{} : AxisAngle{anyPerpendicular(b), kPi};
   return {axis / s, std::atan2(s, c)};
   // END SOLUTION
   // STUB: return exercises::notImplemented("IK-1", AxisAngle{});
@@ -48,9 +44,8 @@ TwoBonePose twoBoneGeometry(const Vec3& s, Real a, Real b, const Vec3& t, const 
   out.reachable = dRaw >= dMin - 1e-12 && dRaw <= dMax + 1e-12;
   // Directions: n̂ toward the target (any axis when the target sits on the shoulder), m̂ toward the pole.
   Vec3 n = dRaw > 1e-12 ? st / dRaw : Vec3(1, 0, 0);
-  Vec3 m = (pole - s) - glm::dot(pole - s, n) * n;
-  if (glm::length(m) < 1e-12) m = glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-  m /= glm::length(m);
+  Vec3 m = detail::perpendicularPart(pole - s, n);
+  m = glm::length(m) < 1e-12 ? anyPerpendicular(n) : m / glm::length(m);
   const Real cosAlpha = d > 1e-12 ? std::clamp((a * a + d * d - b * b) / (2.0 * a * d), -1.0, 1.0) : 0.0;
   const Real sinAlpha = std::sqrt(std::max(0.0, 1.0 - cosAlpha * cosAlpha));
   out.elbow = s + a * (cosAlpha * n + sinAlpha * m);
@@ -162,7 +157,7 @@ void aimJoint(Context& c, int j, const Vec3& from, const Vec3& to, const Vec3* e
   if (usePole) {
     // Twist about the goal axis: the elbow (after the swing) toward the pole's side of that axis.
     const Vec3 el = world * (*elbow - f.position);
-    const Vec3 ep = el - glm::dot(el, n) * n, pp = pole - glm::dot(pole, n) * n;
+    const Vec3 ep = perpendicularPart(el, n), pp = perpendicularPart(pole, n);
     if (glm::length(ep) > 1e-12 && glm::length(pp) > 1e-12)
       world = glm::angleAxis(std::atan2(glm::dot(n, glm::cross(ep, pp)), glm::dot(ep, pp)), n) * world;
   }
@@ -181,7 +176,7 @@ void aimJoint(Context& c, int j, const Vec3& from, const Vec3& to, const Vec3* e
   auto cost = [&](const Quat& q) {
     if (usePole) {  // the elbow's angle from the pole about the goal axis
       const Vec3 el = q * elbowLocal;
-      const Vec3 ep = el - glm::dot(el, goal) * goal, pp = poleLocal - glm::dot(poleLocal, goal) * goal;
+      const Vec3 ep = perpendicularPart(el, goal), pp = perpendicularPart(poleLocal, goal);
       const Real lengths = glm::length(ep) * glm::length(pp);
       return lengths > 1e-15 ? -glm::dot(ep, pp) / lengths : 0.0;
     }
@@ -248,7 +243,7 @@ class Analytic final : public Method {
     } else {
       Vec3 k = glm::cross(A, B);
       if (glm::length(k) < 1e-12) k = glm::cross(A, (c.options.usePole ? c.options.polePoint : s + Vec3(0, 0, 1)) - s);
-      if (glm::length(k) < 1e-12) k = glm::cross(A, std::abs(A.x) < 0.9 * glm::length(A) ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+      if (glm::length(k) < 1e-12 && glm::length(A) >= 1e-12) k = anyPerpendicular(A);
       if (glm::length(k) >= 1e-12 && glm::length(A) >= 1e-12) {
         k = glm::normalize(k);
         const Vec3 a = glm::normalize(A);

@@ -1,5 +1,5 @@
 #pragma once
-// Scene builders of the IK lab (DESIGN.md §1: used by the lab, the tests and the benchmarks alike).
+// Scene builders of the IK lab (docs/architecture.md §1: used by the lab, the tests and the benchmarks alike).
 // Descriptions with documented defaults; builders validate them and return a rig: a skeleton and its
 // effectors (goals at the effectors' rest positions).
 #include <cstdint>

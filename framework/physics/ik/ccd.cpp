@@ -18,15 +18,17 @@
 
 namespace pba::ik {
 
-// ***** IK-2: the CCD joint update (Workbook §2.4, Algorithm 1) *****
+// ***** IK-2: the CCD joint update as a quaternion (Workbook §2.4, Algorithm 1) *****
 // (1) V1 = effector − pivot (the direction the bone chain points now), V2 = target − pivot (where it
 //     should point).
 // (2) If either vector is (almost) zero, there is no defined rotation: return the identity.
-// (3) The rotation axis is V1 × V2; the angle between them is atan2(|V1 × V2|, V1 · V2) (better
-//     conditioned than acos of the normalised dot product, and never NaN).
-// (4) If the cross product is (almost) zero the vectors are parallel (angle 0: identity) or opposite
-//     (angle π about any axis perpendicular to V1).
-// (5) Return the quaternion glm::angleAxis(angle, unit axis).
+// (3) The rotation turns V1 onto V2 about n = V1 × V2 by their angle θ. A unit quaternion is
+//     (cos θ/2, sin θ/2 · n̂). Write cos θ and sin θ with the dot and cross products and use the
+//     half-angle identities: up to a positive factor, the quaternion's scalar part is
+//     |V1| |V2| + V1 · V2 and its vector part is V1 × V2. Normalise it: no trigonometry needed.
+// (4) When that scalar part is (almost) zero the vectors are opposite: the answer is a half turn,
+//     scalar part 0 and vector part any unit vector perpendicular to V1 (anyPerpendicular).
+// (5) glm::dquat's constructor takes (w, x, y, z).
 // *****
 Quat ccdJointUpdate([[maybe_unused]] const Vec3& pivot, [[maybe_unused]] const Vec3& effector,
                     [[maybe_unused]] const Vec3& target) {
@@ -34,14 +36,13 @@ Quat ccdJointUpdate([[maybe_unused]] const Vec3& pivot, [[maybe_unused]] const V
   const Vec3 v1 = effector - pivot, v2 = target - pivot;
   const Real l1 = glm::length(v1), l2 = glm::length(v2);
   if (l1 < 1e-12 || l2 < 1e-12) return Quat(1, 0, 0, 0);
-  const Vec3 axis = glm::cross(v1, v2);
-  const Real s = glm::length(axis), c = glm::dot(v1, v2);
-  if (s <= 1e-12 * l1 * l2) {
-    if (c > 0.0) return Quat(1, 0, 0, 0);
-    Vec3 n = glm::cross(v1, std::abs(v1.x) < 0.9 * l1 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-    return glm::angleAxis(kPi, n / glm::length(n));
+  const Real w = l1 * l2 + glm::dot(v1, v2);
+  if (w <= 1e-12 * l1 * l2) {
+    const Vec3 n = anyPerpendicular(v1);
+    return Quat(0.0, n.x, n.y, n.z);
   }
-  return glm::angleAxis(std::atan2(s, c), axis / s);
+  const Vec3 x = glm::cross(v1, v2);
+  return glm::normalize(Quat(w, x.x, x.y, x.z));
   // END SOLUTION
   // STUB: return exercises::notImplemented("IK-2", Quat(1, 0, 0, 0));
 }
@@ -86,10 +87,8 @@ class Ccd final : public Method {
 
  private:
   bool goalsMet(Real tolerance) const {
-    for (size_t k = 0; k < points_.size(); ++k) {
-      const Vec3 d = points_[k] - goals_[k];
-      if (glm::dot(d, d) > tolerance * tolerance) return false;
-    }
+    for (size_t k = 0; k < points_.size(); ++k)
+      if (glm::distance(points_[k], goals_[k]) > tolerance) return false;
     return true;
   }
 

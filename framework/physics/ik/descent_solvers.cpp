@@ -13,9 +13,10 @@
 //   fixed          α = gradientStep: asst4's method (a small constant, several steps per frame). Stable
 //                  only below 2/λ_max(J̃ᵀJ̃); above it f oscillates or grows, which the lab shows.
 //   backtracking   α₀ = |g|² / |J̃ g|², the minimiser of the linearised model along −g, halved until
-//                  f(θ + α d) ≤ f(θ) + c₁ α ∇f·d with c₁ = 10⁻⁴ (Armijo's sufficient decrease).
+//                  f(θ + α d) ≤ f(θ) + c₁ α ∇f·d with c₁ = 10⁻⁴ (Armijo's sufficient decrease; the
+//                  one backtrack() of least_squares.h, shared with the Jacobian methods' option).
 //   golden         golden-section search for the minimum of φ(α) = f(θ + α d) on [0, α_max], α_max the
-//                  step that turns some DOF by maxJointStep: an exact line search (kGoldenIterations
+//                  step that turns some DOF by lineSearchMaxStep: an exact line search (kGoldenIterations
 //                  evaluations of FK), falling back to backtracking if it finds no decrease.
 // lbfgs     d = −H g, H the limited-memory BFGS estimate of the inverse Hessian from the last m pairs
 //           s = Δy, y = Δg (two-loop recursion, Nocedal & Wright 2006, Algorithm 7.4, with
@@ -37,8 +38,6 @@
 namespace pba::ik::detail {
 namespace {
 
-constexpr Real kArmijo = 1e-4;        // c₁ of the sufficient-decrease condition
-constexpr int kMaxHalvings = 30;      // backtracking gives up after α has shrunk by 2³⁰
 constexpr int kGoldenIterations = 30; // the bracket shrinks by 0.618³⁰ ≈ 5·10⁻⁷
 constexpr Real kInvGolden = 0.6180339887498949;  // (√5 − 1) / 2
 constexpr Real kCurvatureEpsilon = 1e-10;        // relative sᵀy below which a pair is skipped
@@ -80,7 +79,7 @@ class DescentMethod final : public Method {
     const Real f0 = objective(c, c.frames);
     std::vector<Real> wd(n);
     for (size_t i = 0; i < n; ++i) wd[i] = sys.dofWeights[i] * d[i];
-    const Real alphaMax = c.options.maxJointStep / maxAbs(wd);
+    const Real alphaMax = c.options.lineSearchMaxStep / maxAbs(wd);
     auto f = [&](Real alpha) {
       for (size_t i = 0; i < n; ++i) delta_[i] = alpha * wd[i];
       return trialObjective(c, start_, c.frames, sys.layout, delta_, scratch_);
@@ -135,13 +134,6 @@ class DescentMethod final : public Method {
     const std::vector<Real> jd = multiply(J, d);
     const Real curvature = dot(jd, jd);
     return curvature > 0.0 ? -slope / curvature : 1.0;
-  }
-
-  template <typename F>
-  static bool backtrack(F& f, Real f0, Real alpha, Real slope) {
-    for (int h = 0; h < kMaxHalvings; ++h, alpha *= 0.5)
-      if (f(alpha) <= f0 + kArmijo * alpha * slope) return true;
-    return false;
   }
 
   // Golden-section search on [0, alphaMax]; leaves the pose at the best point found if it decreases f.

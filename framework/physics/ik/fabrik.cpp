@@ -97,8 +97,6 @@ PBA_EXERCISE_PROBE(probeFabrikPasses());
 namespace detail {
 namespace {
 
-Vec3 perpTo(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
-
 class Fabrik final : public Method {
  public:
   FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::Current; }
@@ -213,7 +211,7 @@ class Fabrik final : public Method {
 
   // Joint k (child of body j) must relate body j's proposal (*Pp, *Rp) to body k's new pose: moves
   // the proposal to the nearest one the joint allows. `oldP`: body j's pivot before the pass.
-  void constrain(const Context& c, int k, const Vec3& oldP, Vec3* Pp, Quat* Rp) const {
+  void constrain(Context& c, int k, const Vec3& oldP, Vec3* Pp, Quat* Rp) const {
     const Joint& joint = c.skeleton.joint(k);
     const Vec3& Pk = P_[static_cast<size_t>(k)];
     const Quat& Rk = R_[static_cast<size_t>(k)];
@@ -226,7 +224,7 @@ class Fabrik final : public Method {
         *Rp = Rk * restInverse;
         const Vec3 u = *Rp * (joint.restRotation * joint.axis), base = Pk - *Rp * joint.offset;
         Real d = glm::dot(base - oldP, u);
-        if (clamp) d = std::clamp(d, joint.lo[0], joint.hi[0]);
+        if (clamp) d = clampedByLimits(c, k, &d, 1)[0];
         *Pp = base - u * d;
         return;
       }
@@ -237,7 +235,7 @@ class Fabrik final : public Method {
         // or oldP on it), the twist of the rule's proposal.
         const Vec3 w = Rk * joint.axis;
         const Vec3 t = jointTranslation(joint, c.pose);
-        const Vec3 u = perpTo(-(Rk * (restInverse * t)), w), v = perpTo(oldP - Pk, w);
+        const Vec3 u = perpendicularPart(-(Rk * (restInverse * t)), w), v = perpendicularPart(oldP - Pk, w);
         const Real S = glm::dot(w, glm::cross(u, v)), C = glm::dot(u, v);
         Real theta;
         if (std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk))) {
@@ -246,7 +244,10 @@ class Fabrik final : public Method {
           const Quat local = glm::conjugate(*Rp * joint.restRotation) * Rk;
           theta = 2.0 * std::atan2(glm::dot(Vec3(local.x, local.y, local.z), joint.axis), local.w);
         }
-        if (clamp) theta = std::clamp(bestHingeValue(theta, joint.lo[0], joint.hi[0], true), joint.lo[0], joint.hi[0]);
+        if (clamp) {
+          theta = bestHingeValue(theta, joint.lo[0], joint.hi[0], true);
+          theta = clampedByLimits(c, k, &theta, 1)[0];
+        }
         *Rp = glm::normalize(Rk * glm::angleAxis(-theta, joint.axis) * restInverse);
         break;
       }
@@ -258,15 +259,12 @@ class Fabrik final : public Method {
         Quat allowed = local;
         if (joint.type == JointType::Ball) {
           const Vec3 e = eulerWithinLimits(joint, local);
-          Vec3 clamped;
-          for (int i = 0; i < 3; ++i) clamped[i] = std::clamp(e[i], joint.lo[i], joint.hi[i]);
+          const Vec3 clamped = clampedByLimits(c, k, &e[0], 3);
           if (clamped == e) return;
           allowed = quatFromEulerXYZ(clamped);
         } else {
-          const Vec3 r = rotationVector(local);
-          const Real angle = glm::length(r);
-          if (angle <= joint.maxRotation) return;
-          allowed = quatFromRotationVector(r * (joint.maxRotation / angle));
+          allowed = clampedRotation(c, k, local);
+          if (allowed == local) return;
         }
         *Rp = glm::normalize(Rk * glm::conjugate(allowed) * restInverse);
         break;
@@ -275,7 +273,29 @@ class Fabrik final : public Method {
     *Pp = Pk - *Rp * jointTranslation(joint, c.pose);
   }
 
-  void backward(const Context& c) {
+  // IK-6's clamp on a candidate value of joint k that is not the pose's: the `count` scalar DOFs
+  // `values` (hinge angle, displacement, Euler angles), or a free joint's rotation. They are written
+  // into the pose's slots of joint k, clamped there and read back, and the slots are restored (the
+  // backward pass only proposes; the forward pass writes the pose).
+  static Vec3 clampedByLimits(Context& c, int k, const Real* values, int count) {
+    Real* slots = c.pose.dofs.data() + c.skeleton.joint(k).firstDof;
+    Vec3 saved(0.0), out(0.0);
+    for (int i = 0; i < count; ++i) saved[i] = slots[i], slots[i] = values[i];
+    clampJointToLimits(c.skeleton, c.pose, k);
+    for (int i = 0; i < count; ++i) out[i] = slots[i], slots[i] = saved[i];
+    return out;
+  }
+  static Quat clampedRotation(Context& c, int k, const Quat& q) {
+    Quat& slot = c.pose.rotations[static_cast<size_t>(k)];
+    const Quat saved = slot;
+    slot = q;
+    clampJointToLimits(c.skeleton, c.pose, k);
+    const Quat out = slot;
+    slot = saved;
+    return out;
+  }
+
+  void backward(Context& c) {
     const int J = c.skeleton.jointCount();
     for (int j = 0; j < J; ++j) {
       P_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].position;

@@ -1,20 +1,22 @@
 // Jacobian IK methods (Workbook §2.5, Algorithm 2; IK slides; Buss 2004 "Introduction to inverse
 // kinematics with Jacobian transpose, pseudoinverse and damped least squares methods"; Buss & Kim 2005).
-// Each step linearises ė = J θ̇ at the current pose and solves J Δθ ≈ Δe:
+// Each step linearises ė = J θ̇ at the current pose and solves J Δθ ≈ Δe, as the sources state it:
 //   JT     Δθ = α Jᵀ r, r the full (weighted) error: the steepest-descent direction of
-//          f(θ) = ½ Σ wₖ² |gₖ − eₖ(θ)|². α starts at Buss's ⟨r, J Jᵀ r⟩ / |J Jᵀ r|² and is halved until
-//          f decreases by the Armijo amount 10⁻⁴ α |Jᵀ r|² (backtracking line search): every accepted
-//          step decreases f, so JT cannot diverge; no acceptable step means a stall.
+//          f(θ) = ½ Σ wₖ² |gₖ − eₖ(θ)|², with Buss's (2004 §4) α = ⟨r, J Jᵀ r⟩ / |J Jᵀ r|².
 //   pinv   Δθ = J⁺ Δe = Σ_{σᵢ > c σ_max} σᵢ⁻¹ (uᵢ·Δe) vᵢ  (SVD; c = singularCutoff drops near-singular
 //          directions, which would otherwise give huge steps: IK slides "Degenerate cases").
 //   DLS    Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe = Σ σᵢ/(σᵢ² + λ²) (uᵢ·Δe) vᵢ: minimises |J Δθ − Δe|² + λ² |Δθ|².
 //   SDLS   Buss & Kim 2005 §4: each singular direction gets its own clamp γᵢ = min(1, Nᵢ/Mᵢ) γ_max,
 //          Nᵢ = Σₖ |uᵢ,ₖ| (effector blocks), Mᵢ = σᵢ⁻¹ Σⱼ |vⱼᵢ| Σₖ |J_kj| — the ratio of the motion the
-//          step asks for to the motion the joints would produce; γ_max = π/4.
-// Δe is each effector's error clamped to maxErrorStep (Buss's D_max) to keep the linearisation valid.
-// DOF weights wⱼ scale the columns (J̃ = J W) and the step (Δθ = W Δỹ). Joint limits: the pose is
-// clamped after each step; with ZeroColumns, DOFs at a limit whose step points outward lose their
-// column and the step is solved again (IK slides, "Joint limits").
+//          step asks for to the motion the joints would produce; the sum is clamped to γ_max = π/4.
+// Δe is each effector's error clamped to maxErrorStep (Buss's D_max, the clamping of Buss & Kim's
+// experiments) to keep the linearisation valid. DOF weights wⱼ scale the columns (J̃ = J W) and the
+// step (Δθ = W Δỹ). Joint limits: the pose is clamped after each step (IK-6); with ZeroColumns, DOFs
+// at a limit whose step points outward lose their column and the step is solved again (IK slides,
+// "Joint limits").
+// Departures from the sources, off by default (SolveOptions): maxJointStep scales any step down to
+// a largest DOF change; jacobianLineSearch halves a step until f decreases (JT: from Buss's α until
+// Armijo's sufficient decrease 10⁻⁴ α |Jᵀ r|² holds, so JT cannot diverge).
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -54,8 +56,6 @@ namespace detail {
 namespace {
 
 constexpr Real kSdlsGammaMax = kPi / 4.0;  // [rad] Buss & Kim 2005, γ_max
-constexpr Real kArmijo = 1e-4;             // sufficient-decrease constant of the JT line search
-constexpr int kMaxHalvings = 30;
 
 class JacobianMethod final : public Method {
  public:
@@ -66,32 +66,34 @@ class JacobianMethod final : public Method {
     layout_ = std::move(sys.layout);
     weights_ = std::move(sys.dofWeights);
     Matrix& J = sys.J;
-    const std::vector<Real>& full = sys.residual;
-    const std::vector<Real>& clamped = sys.clamped;
-    std::vector<Real> delta = step(c, J, full, clamped);
+    std::vector<Real> delta = step(c, J, sys.residual, sys.clamped);
     if (c.options.enforceLimits && c.options.limitMode == JacobianLimitMode::ZeroColumns && zeroBlockedColumns(c, J, delta))
-      delta = step(c, J, full, clamped);
-    if (kind_ == SolverKind::JacobianTranspose) {
-      jacobianTransposeStep(c, J, full, delta);
+      delta = step(c, J, sys.residual, sys.clamped);
+    // α: 1 for pinv, DLS and SDLS; Buss's step length for JT. slope: ∇f·Δ for JT's Armijo test, 0
+    // (ask only for decrease) for the others, whose step is not a multiple of the gradient.
+    Real alpha = 1.0, slope = 0.0;
+    if (kind_ == SolverKind::JacobianTranspose && !transposeStepLength(J, sys.residual, &alpha, &slope)) return;
+    const Real largest = alpha * maxAbs(delta);
+    if (c.options.maxJointStep > 0.0 && largest > c.options.maxJointStep) alpha *= c.options.maxJointStep / largest;
+    if (c.options.jacobianLineSearch) {
+      lineSearch(c, delta, alpha, slope);
       return;
     }
-    // Safeguard (our addition to the texts' methods): halve the step until the objective does not
-    // increase. Near a stretched, unreachable pose the Gauss-Newton model of pinv/DLS/SDLS ignores the
-    // large residual's curvature term and would oscillate (Buss 2004 §6 notes the jitter); this keeps
-    // every accepted step a descent step. It almost always accepts the full step.
-    clampMaxAbs(delta, c.options.maxJointStep);
-    backtrack(c, delta, 1.0, 0.0);
+    // As published: take the step.
+    for (Real& x : delta) x *= alpha;
+    applyStep(c.skeleton, c.pose, c.frames, layout_, delta);
+    projectOntoLimits(c);
   }
 
  private:
-  // Δθ = W Δỹ for the method; JT returns the unscaled direction (the line search picks α).
-  std::vector<Real> step(const Context& c, const Matrix& J, const std::vector<Real>& full, const std::vector<Real>& clamped) {
+  // Δθ = W Δỹ for the method; JT returns the unscaled direction W J̃ᵀ r (α comes separately).
+  std::vector<Real> step(const Context& c, const Matrix& J, const std::vector<Real>& full, const std::vector<Real>& clamped) const {
     std::vector<Real> dy;
     switch (kind_) {
       case SolverKind::JacobianTranspose: dy = multiplyTransposed(J, full); break;
       case SolverKind::DampedLeastSquares: dy = dampedLeastSquaresStep(J, clamped, c.options.damping); break;
       case SolverKind::PseudoInverse: dy = pseudoInverseStep(J, clamped, c.options.singularCutoff); break;
-      default: dy = selectivelyDampedStep(c, J, clamped); break;
+      default: dy = selectivelyDampedStep(J, clamped); break;
     }
     for (size_t i = 0; i < dy.size(); ++i) dy[i] *= weights_[i];
     return dy;
@@ -109,12 +111,7 @@ class JacobianMethod final : public Method {
     return out;
   }
 
-  static void clampMaxAbs(std::vector<Real>& v, Real limit) {
-    const Real largest = maxAbs(v);
-    if (largest > limit) for (Real& x : v) x *= limit / largest;
-  }
-
-  std::vector<Real> selectivelyDampedStep(const Context& c, const Matrix& J, const std::vector<Real>& e) const {
+  static std::vector<Real> selectivelyDampedStep(const Matrix& J, const std::vector<Real>& e) {
     const Svd d = svd(J);
     const int n = J.cols;
     // ρⱼ = Σₖ |J_kj| (3-row blocks: each effector's position, and orientation, rows).
@@ -123,7 +120,7 @@ class JacobianMethod final : public Method {
       for (int col = 0; col < n; ++col) rho[static_cast<size_t>(col)] += glm::length(Vec3(J(r, col), J(r + 1, col), J(r + 2, col)));
     std::vector<Real> total(static_cast<size_t>(n), 0.0);
     for (size_t i = 0; i < d.sigma.size(); ++i) {
-      if (d.v[i].empty()) continue;
+      if (d.v[i].empty()) continue;  // σᵢ = 0: no response (Buss & Kim sum over σᵢ ≠ 0)
       const Real alpha = dot(d.u[i], e);
       Real N = 0.0;
       for (size_t r = 0; r + 2 < d.u[i].size(); r += 3) N += glm::length(Vec3(d.u[i][r], d.u[i][r + 1], d.u[i][r + 2]));
@@ -137,7 +134,6 @@ class JacobianMethod final : public Method {
       for (int col = 0; col < n; ++col) total[static_cast<size_t>(col)] += phi[static_cast<size_t>(col)];
     }
     clampMaxAbs(total, kSdlsGammaMax);
-    (void)c;
     return total;
   }
 
@@ -154,31 +150,33 @@ class JacobianMethod final : public Method {
     return any;
   }
 
-  void jacobianTransposeStep(Context& c, const Matrix& J, const std::vector<Real>& full, const std::vector<Real>& direction) {
-    // |J̃ᵀ r|² is the directional derivative's magnitude; Buss's α uses J̃ J̃ᵀ r.
-    std::vector<Real> g = multiplyTransposed(J, full);
-    const Real slope = dot(g, g);
-    if (!(slope > 0.0)) return;
+  // Buss 2004 §4: α = ⟨r, J Jᵀ r⟩ / |J Jᵀ r|², the minimiser of the linear model along Jᵀ r (J = J̃,
+  // r the full weighted error); *slope = ∇f·(Jᵀ r) = −|Jᵀ r|². False when Jᵀ r = 0 (stationary).
+  static bool transposeStepLength(const Matrix& J, const std::vector<Real>& full, Real* alpha, Real* slope) {
+    const std::vector<Real> g = multiplyTransposed(J, full);
+    const Real gg = dot(g, g);
+    if (!(gg > 0.0)) return false;
     const std::vector<Real> jjr = multiply(J, g);
     const Real denom = dot(jjr, jjr);
-    Real alpha = denom > 0.0 ? dot(full, jjr) / denom : 1.0;
-    const Real largest = maxAbs(direction);
-    if (largest * alpha > c.options.maxJointStep) alpha = c.options.maxJointStep / largest;
-    backtrack(c, direction, alpha, kArmijo * slope);
+    *alpha = denom > 0.0 ? dot(full, jjr) / denom : 1.0;
+    *slope = -gg;
+    return true;
   }
 
-  // Tries pose + α·direction (clamped to the limits), halving α until f decreases by at least
-  // α·armijoSlope (strictly, when armijoSlope is 0). Leaves the pose unchanged when no α works.
-  void backtrack(Context& c, const std::vector<Real>& direction, Real alpha, Real armijoSlope) {
+  // The line-search option (ours, SolveOptions::jacobianLineSearch): pose + α·delta, α halved until
+  // f decreases (by Armijo's amount when slope < 0). Near a stretched, unreachable pose the
+  // Gauss-Newton model of pinv/DLS/SDLS ignores the large residual's curvature term and can
+  // oscillate (Buss 2004 §6 notes the jitter). No acceptable α leaves the pose unchanged: the driver
+  // sees no progress and reports a stall.
+  void lineSearch(Context& c, const std::vector<Real>& delta, Real alpha, Real slope) {
     const Real f0 = objective(c, c.frames);
     const Pose start = c.pose;
-    std::vector<Real> trial(direction.size());
-    for (int h = 0; h < kMaxHalvings; ++h, alpha *= 0.5) {
-      for (size_t i = 0; i < trial.size(); ++i) trial[i] = alpha * direction[i];
-      const Real f = trialObjective(c, start, c.frames, layout_, trial, scratch_);
-      if (armijoSlope > 0.0 ? f <= f0 - alpha * armijoSlope : f < f0) return;
-    }
-    c.pose = start;  // no acceptable step: the driver sees no progress and reports a stall
+    std::vector<Real> trial(delta.size());
+    auto f = [&](Real a) {
+      for (size_t i = 0; i < trial.size(); ++i) trial[i] = a * delta[i];
+      return trialObjective(c, start, c.frames, layout_, trial, scratch_);
+    };
+    if (!backtrack(f, f0, alpha, slope)) c.pose = start;
   }
 
   SolverKind kind_;

@@ -19,7 +19,9 @@ LeastSquaresSystem leastSquaresSystem(const Context& c) {
   const Skeleton& s = c.skeleton;
   LeastSquaresSystem sys;
   sys.layout = planJacobian(s, c.pose, c.effectors, c.frames, c.orientationScale);
-  sys.J = jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale);
+  sys.J = c.options.jacobian == JacobianSource::Analytic
+              ? jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale)
+              : numericalJacobian(s, c.pose, c.effectors, sys.layout, c.orientationScale, kJacobianStep);
   Matrix& J = sys.J;
   const int m = J.rows, n = J.cols;
   sys.residual.assign(static_cast<size_t>(m), 0.0);
@@ -65,12 +67,16 @@ Real objective(const Context& c, const std::vector<Frame>& frames) {
   return 0.5 * f;
 }
 
+void projectOntoLimits(Context& c) {
+  if (!c.options.enforceLimits) return;
+  for (int j = 0; j < c.skeleton.jointCount(); ++j) clampJointToLimits(c.skeleton, c.pose, j);
+}
+
 Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& frames, const JacobianLayout& layout,
                     const std::vector<Real>& delta, std::vector<Frame>& scratch) {
   c.pose = start;
   applyStep(c.skeleton, c.pose, frames, layout, delta);
-  if (c.options.enforceLimits)
-    for (int j = 0; j < c.skeleton.jointCount(); ++j) clampJointToLimits(c.skeleton, c.pose, j);
+  projectOntoLimits(c);
   forwardKinematics(c.skeleton, c.pose, scratch);
   return objective(c, scratch);
 }
@@ -79,6 +85,12 @@ Real maxAbs(const std::vector<Real>& v) {
   Real largest = 0.0;
   for (Real x : v) largest = std::max(largest, std::abs(x));
   return largest;
+}
+
+void clampMaxAbs(std::vector<Real>& v, Real limit) {
+  const Real largest = maxAbs(v);
+  if (largest > limit)
+    for (Real& x : v) x *= limit / largest;
 }
 
 }  // namespace pba::ik::detail

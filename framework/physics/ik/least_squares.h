@@ -28,6 +28,10 @@ LeastSquaresSystem leastSquaresSystem(const Context& c);
 /// f at `frames` (see above).
 Real objective(const Context& c, const std::vector<Frame>& frames);
 
+/// Projects c.pose onto the box of the joint limits (IK-6's clamp on every joint) when they are
+/// enforced; otherwise leaves it alone.
+void projectOntoLimits(Context& c);
+
 /// Sets c.pose = start + Δθ (free joints turn about their column's axis in `layout`), projected onto
 /// the box of the joint limits when they are enforced, and returns f there. `frames` are those of
 /// `start`; `scratch` receives the trial pose's frames. c.frames is left alone.
@@ -36,5 +40,25 @@ Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& fra
 
 /// Largest |entry| of v.
 Real maxAbs(const std::vector<Real>& v);
+/// Scales v uniformly so that its largest |entry| is at most `limit` (Buss & Kim 2005, ClampMaxAbs).
+void clampMaxAbs(std::vector<Real>& v, Real limit);
+
+inline constexpr Real kArmijo = 1e-4;  ///< c₁ of Armijo's sufficient-decrease condition (Nocedal & Wright §3.1)
+inline constexpr int kMaxHalvings = 30;  ///< a backtracking search gives up after α has shrunk by 2³⁰
+
+/// Backtracking line search (Nocedal & Wright 2006, Algorithm 3.1): tries α, α/2, α/4, … and
+/// returns true at the first α with f(α) ≤ f0 + kArmijo α slope, where slope = ∇f·d < 0 is the
+/// directional derivative along the search direction; slope = 0 (no derivative at hand: the
+/// safeguard of pinv, DLS and SDLS) asks for a strict decrease f(α) < f0 instead. `f(α)` evaluates
+/// the trial pose and leaves it in place, so on success the pose is the accepted one; false after
+/// kMaxHalvings tries (the caller restores its start pose).
+template <typename F>
+bool backtrack(F&& f, Real f0, Real alpha, Real slope) {
+  for (int h = 0; h < kMaxHalvings; ++h, alpha *= 0.5) {
+    const Real value = f(alpha);
+    if (slope < 0.0 ? value <= f0 + kArmijo * alpha * slope : value < f0) return true;
+  }
+  return false;
+}
 
 }  // namespace pba::ik::detail

@@ -1,11 +1,8 @@
 #pragma once
-// Small dense linear algebra for the Jacobian IK methods: a row-major matrix, J Jᵀ, Cholesky solve and
-// the singular value decomposition of a wide matrix J (m × n, m ≤ n: m = 3 or 6 per effector).
-//
-// SVD route. With m small, J = U Σ Vᵀ is obtained from the symmetric eigenproblem J Jᵀ = U Σ² Uᵀ
-// (cyclic Jacobi rotations, unconditionally convergent for symmetric matrices), and vᵢ = Jᵀ uᵢ / σᵢ
-// for σᵢ > 0. Squaring doubles the condition number's exponent; singular values below
-// 1e-7 · σ_max are therefore reported as zero (their vᵢ are not formed), far below any cut-off used.
+// Small dense linear algebra for the Jacobian IK methods: a row-major matrix, products with vectors,
+// J Jᵀ, a Cholesky solve and the singular value decomposition. The factorisations come from Eigen 3.4
+// (docs/architecture.md §1: linear algebra that is not the lesson); the lesson, the damped least-squares step
+// of IK-4, is written on top of solveSpd.
 #include <vector>
 
 #include "physics/core/types.h"
@@ -28,15 +25,25 @@ std::vector<Real> multiply(const Matrix& J, const std::vector<Real>& x);
 std::vector<Real> multiplyTransposed(const Matrix& J, const std::vector<Real>& x);
 /// A = J Jᵀ (rows × rows, symmetric).
 Matrix gram(const Matrix& J);
-/// Solves A x = b for symmetric positive definite A by Cholesky. False (x untouched) when A is not
-/// numerically positive definite.
+
+/// Relative pivot below which solveSpd calls a matrix singular: a Cholesky pivot (L_ii²) under
+/// kSingularPivot × the largest diagonal entry of A. Such an A has a condition number ≳ 10¹³: a
+/// solve would lose all but three digits, and a singular J Jᵀ rounds to pivots of about 10⁻¹⁶ of
+/// its scale, never to exact zeros or negatives (an absolute test misses them).
+inline constexpr Real kSingularPivot = 1e-13;
+
+/// Solves A x = b for symmetric positive definite A by Cholesky (Eigen's LLT). False (x untouched)
+/// when A is not positive definite to working precision: a pivot ≤ kSingularPivot × max Aᵢᵢ (also
+/// A = 0, and any non-finite entry).
 bool solveSpd(const Matrix& A, const std::vector<Real>& b, std::vector<Real>& x);
 
-/// Thin SVD of J (rows ≤ cols expected): J = Σᵢ σᵢ uᵢ vᵢᵀ, σ sorted decreasing.
+/// Thin SVD of J (Eigen's two-sided Jacobi SVD): J = Σᵢ σᵢ uᵢ vᵢᵀ over min(rows, cols) terms,
+/// σ sorted decreasing. Singular values at or below max(rows, cols) · ε · σ_max (Eigen's rank
+/// threshold) are numerically zero: reported as exactly 0, with an empty vᵢ.
 struct Svd {
   std::vector<Real> sigma;            ///< singular values, decreasing, ≥ 0
   std::vector<std::vector<Real>> u;   ///< left singular vectors (J.rows entries each)
-  std::vector<std::vector<Real>> v;   ///< right singular vectors (J.cols entries each); empty where σ ≈ 0
+  std::vector<std::vector<Real>> v;   ///< right singular vectors (J.cols entries each); empty where σ = 0
 };
 Svd svd(const Matrix& J);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "physics/core/validate.h"
 
 namespace pba::ik {
@@ -34,19 +36,21 @@ Result<int> Skeleton::add(Joint j) {
   const std::string field = "joint[" + std::to_string(index) + "]" + (j.name.empty() ? "" : " '" + j.name + "'");
   if (j.parent < -1 || j.parent >= index) return Error{field + ".parent: must be -1 or an earlier joint, got " + std::to_string(j.parent)};
   if (Status s = checkFinite(field + ".offset", j.offset); !s) return Error{s.error()};
-  const Real axisLength = glm::length(j.axis);
-  if ((j.type == JointType::Hinge || j.type == JointType::Prismatic) && !(axisLength > 1e-12 && isFinite(axisLength)))
+  // Every test puts isFinite first: an ordered comparison with NaN raises the invalid-operation trap.
+  const Real axisLength = isFinite(j.axis) ? glm::length(j.axis) : 0.0;
+  if ((j.type == JointType::Hinge || j.type == JointType::Prismatic) && !(isFinite(axisLength) && axisLength > 1e-12))
     return Error{field + ".axis: must be a non-zero finite vector"};
-  if (axisLength > 1e-12 && isFinite(axisLength)) j.axis /= axisLength;
-  const Real qLength = glm::length(glm::dvec4(j.restRotation.x, j.restRotation.y, j.restRotation.z, j.restRotation.w));
-  if (!(qLength > 1e-12 && isFinite(qLength))) return Error{field + ".restRotation: must be a non-zero finite quaternion"};
+  if (isFinite(axisLength) && axisLength > 1e-12) j.axis /= axisLength;
+  const glm::dvec4 q(j.restRotation.x, j.restRotation.y, j.restRotation.z, j.restRotation.w);
+  const Real qLength = isFinite(q.w) && isFinite(Vec3(q.x, q.y, q.z)) ? glm::length(q) : 0.0;
+  if (!(isFinite(qLength) && qLength > 1e-12)) return Error{field + ".restRotation: must be a non-zero finite quaternion"};
   j.restRotation = Quat(j.restRotation.w / qLength, j.restRotation.x / qLength, j.restRotation.y / qLength, j.restRotation.z / qLength);
   for (int k = 0; k < ik::dofCount(j.type); ++k) {
     if (!isFinite(j.lo[k]) || !isFinite(j.hi[k]) || j.lo[k] > j.hi[k])
       return Error{field + ".limits[" + std::to_string(k) + "]: need finite lo <= hi"};
-    if (!(j.weight[k] > 0.0) || !isFinite(j.weight[k])) return Error{field + ".weight[" + std::to_string(k) + "]: must be > 0"};
+    if (!isFinite(j.weight[k]) || !(j.weight[k] > 0.0)) return Error{field + ".weight[" + std::to_string(k) + "]: must be > 0"};
   }
-  if (!(j.maxRotation >= 0.0) || j.maxRotation > kPi) return Error{field + ".maxRotation: must be in [0, pi]"};
+  if (!isFinite(j.maxRotation) || j.maxRotation < 0.0 || j.maxRotation > kPi) return Error{field + ".maxRotation: must be in [0, pi]"};
   j.firstDof = dofTotal_;
   for (int k = 0; k < ik::dofCount(j.type); ++k) dofJoint_.push_back(index);
   dofTotal_ += ik::dofCount(j.type);
@@ -184,20 +188,16 @@ Quat quatFromRotationVector(const Vec3& v) {
 }
 
 Quat shortestArc(const Vec3& u, const Vec3& v) {
-  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
-  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
-  const Real norms = std::sqrt(uu * vv), c = glm::dot(u, v);
-  if (c < (-1.0 + 1e-12) * norms) {
-    // Opposite: a half turn about any axis perpendicular to u.
-    const Vec3 a = u / std::sqrt(uu);
-    Vec3 axis = glm::cross(a, std::abs(a.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
-    axis /= glm::length(axis);
-    return Quat(0.0, axis.x, axis.y, axis.z);
-  }
-  // q = (|u||v| + u·v, u × v) normalised: the half-angle formula, no trigonometry, one division.
-  const Vec3 x = glm::cross(u, v);
-  Quat q(norms + c, x.x, x.y, x.z);
-  return q * (1.0 / std::sqrt(q.w * q.w + glm::dot(x, x)));
+  if (glm::dot(u, u) < 1e-24 || glm::dot(v, v) < 1e-24) return Quat(1, 0, 0, 0);
+  // Eigen handles the opposite case (a half turn about a perpendicular axis found by its SVD);
+  // renormalised, since near-opposite vectors leave Eigen's half-angle form a little off unit length.
+  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(u.x, u.y, u.z), Eigen::Vector3d(v.x, v.y, v.z));
+  return glm::normalize(Quat(q.w(), q.x(), q.y(), q.z()));
+}
+
+Vec3 anyPerpendicular(const Vec3& v) {
+  const Vec3 n = glm::cross(v, std::abs(v.x) < 0.9 * glm::length(v) ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+  return n / glm::length(n);
 }
 
 Real limitViolation(const Skeleton& s, const Pose& p) {

@@ -111,8 +111,10 @@ Vec3 rotationVector(const Quat& q);
 /// Unit quaternion of a rotation vector.
 Quat quatFromRotationVector(const Vec3& v);
 /// The shortest-arc rotation taking direction u onto direction v (identity when either is ~0;
-/// a half turn about a perpendicular axis when they are opposite).
+/// a half turn about a perpendicular axis when they are opposite). Eigen's two-vector quaternion.
 Quat shortestArc(const Vec3& u, const Vec3& v);
+/// A unit vector perpendicular to v ≠ 0: v × x̂, or v × ŷ when v is nearly along x̂.
+Vec3 anyPerpendicular(const Vec3& v);
 
 /// Largest amount by which any DOF (or Free joint angle) exceeds its limits [rad or m]; 0 when inside.
 Real limitViolation(const Skeleton& skeleton, const Pose& pose);

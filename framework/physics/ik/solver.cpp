@@ -9,34 +9,11 @@
 #include <limits>
 #include <tuple>
 
+#include "physics/core/validate.h"
 #include "physics/ik/exercises.h"
 #include "physics/ik/solver_internal.h"
 
 namespace pba::ik {
-
-namespace {
-constexpr const char* kNames[kSolverKindCount] = {"analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls", "gradient", "lbfgs"};
-constexpr const char* kLongNames[kSolverKindCount] = {"Analytic",          "Cyclic coordinate descent",
-                                                      "FABRIK",            "Jacobian transpose",
-                                                      "Pseudo-inverse (SVD)", "Damped least squares",
-                                                      "Selectively damped least squares", "Gradient descent",
-                                                      "L-BFGS (quasi-Newton)"};
-constexpr const char* kLineSearchNames[kLineSearchCount] = {"fixed", "backtracking", "golden"};
-}  // namespace
-
-std::vector<std::string> solverNames() { return {std::begin(kNames), std::end(kNames)}; }
-const char* lineSearchName(LineSearch s) { return kLineSearchNames[static_cast<int>(s)]; }
-
-const char* solverName(SolverKind k) { return kNames[static_cast<int>(k)]; }
-const char* solverLongName(SolverKind k) { return kLongNames[static_cast<int>(k)]; }
-bool solverFromName(const std::string& name, SolverKind* kind) {
-  for (int i = 0; i < kSolverKindCount; ++i)
-    if (name == kNames[i]) {
-      *kind = static_cast<SolverKind>(i);
-      return true;
-    }
-  return false;
-}
 
 const char* statusName(SolveStatus s) {
   switch (s) {
@@ -148,21 +125,15 @@ Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Eff
     const Effector& e = effectors[k];
     const std::string f = "effectors[" + std::to_string(k) + "]";
     if (e.joint < 0 || e.joint >= s.jointCount()) return Error{f + ".joint: no joint " + std::to_string(e.joint)};
-    if (!isFinite(e.localOffset) || !isFinite(e.targetPosition)) return Error{f + ": offset and target must be finite"};
-    if (!(e.weight > 0.0) || !isFinite(e.weight)) return Error{f + ".weight: must be > 0"};
+    if (Status st = checkFinite(f + ".localOffset", e.localOffset); !st) return st;
+    if (Status st = checkFinite(f + ".targetPosition", e.targetPosition); !st) return st;
+    if (Status st = checkPositive(f + ".weight", e.weight); !st) return st;
     const Quat& q = e.targetOrientation;
-    if (e.kind == EffectorKind::PositionOrientation && !(std::abs(glm::dot(q, q) - 1.0) < 1e-6))
-      return Error{f + ".targetOrientation: must be a unit quaternion"};
+    // isFinite first: an ordered comparison with NaN would raise the invalid-operation trap.
+    const bool unit = isFinite(q.w) && isFinite(Vec3(q.x, q.y, q.z)) && std::abs(glm::dot(q, q) - 1.0) < 1e-6;
+    if (e.kind == EffectorKind::PositionOrientation && !unit) return Error{f + ".targetOrientation: must be a unit quaternion"};
   }
-  if (!(o.tolerance > 0.0) || !(o.angleTolerance > 0.0)) return Error{"options.tolerance: must be > 0"};
-  if (o.maxIterations < 1) return Error{"options.maxIterations: must be >= 1"};
-  if (o.restarts < 0) return Error{"options.restarts: must be >= 0"};
-  if (!(o.damping >= 0.0) || !(o.singularCutoff >= 0.0) || !(o.maxJointStep > 0.0) || !(o.maxErrorStep >= 0.0) ||
-      !(o.orientationScale >= 0.0) || !(o.maxSeconds >= 0.0))
-    return Error{"options: damping, cut-off, step clamps, scale and time cap must be >= 0 (step clamp > 0)"};
-  if (!(o.gradientStep > 0.0) || !isFinite(o.gradientStep)) return Error{"options.gradientStep: must be > 0"};
-  if (o.lbfgsMemory < 1) return Error{"options.lbfgsMemory: must be >= 1"};
-  return Status::success();
+  return validate(o);
 }
 
 // The restart poses' generator: SplitMix64 (Steele, Lea & Flood 2014), fully specified, so that the
@@ -186,12 +157,11 @@ class RestartRng {
 // scalar DOFs uniform in [lo, hi], free joints a uniform axis and an angle in [0, maxRotation].
 void randomizeActiveJoints(detail::Context& c, RestartRng& rng) {
   const Skeleton& s = c.skeleton;
+  for (int i = 0; i < s.dofCount(); ++i)
+    if (c.active[static_cast<size_t>(s.dofJoint(i))]) c.pose.dofs[static_cast<size_t>(i)] = s.dofLo(i) + (s.dofHi(i) - s.dofLo(i)) * rng.uniform();
   for (int j = 0; j < s.jointCount(); ++j) {
-    if (!c.active[static_cast<size_t>(j)]) continue;
     const Joint& joint = s.joint(j);
-    for (int k = 0; k < dofCount(joint.type); ++k)
-      c.pose.dofs[static_cast<size_t>(joint.firstDof + k)] = joint.lo[k] + (joint.hi[k] - joint.lo[k]) * rng.uniform();
-    if (joint.type == JointType::Free) {
+    if (c.active[static_cast<size_t>(j)] && joint.type == JointType::Free) {
       const Real z = 2.0 * rng.uniform() - 1.0, phi = 2.0 * kPi * rng.uniform();
       const Real rxy = std::sqrt(std::max(0.0, 1.0 - z * z));
       c.pose.rotations[static_cast<size_t>(j)] = glm::angleAxis(joint.maxRotation * rng.uniform(), Vec3(rxy * std::cos(phi), rxy * std::sin(phi), z));

@@ -3,9 +3,11 @@
 // Aristidou & Lasenby 2011, Buss & Kim 2005). A solve moves a Pose so that the effectors reach their
 // goals, and reports how it stopped (IK slides, "Stopping"): success within tolerance, target
 // unreachable, stalled (no progress over k iterations: a local minimum), iteration cap or time cap.
+#include <span>
 #include <string>
 #include <vector>
 
+#include "physics/core/result.h"
 #include "physics/ik/effector.h"
 #include "physics/ik/skeleton.h"
 
@@ -15,16 +17,24 @@ enum class SolverKind {
   Analytic,            ///< single joint (dot & cross product) or two bones (law of cosines + pole)
   Ccd,                 ///< cyclic coordinate descent (Workbook §2.4, Algorithm 1)
   Fabrik,              ///< forward and backward reaching IK (Aristidou & Lasenby 2011), sub-bases for trees
-  JacobianTranspose,   ///< Δθ = α Jᵀ Δe with a backtracking line search that guarantees descent
+  JacobianTranspose,   ///< Δθ = α Jᵀ Δe, α by Buss 2004 §4
   PseudoInverse,       ///< Δθ = J⁺ Δe, J⁺ from the SVD with a singular-value cut-off (Workbook §2.5)
   DampedLeastSquares,  ///< Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe
-  SelectivelyDamped,   ///< Buss & Kim 2005: per-singular-vector damping
+  SelectivelyDamped,   ///< Buss & Kim 2005: per-singular-vector damping, clamped by γ_max = π/4
   GradientDescent,     ///< CMU asst4: descent on ½|g − e|², step by SolveOptions::lineSearch, projected on the limits
   Lbfgs,               ///< quasi-Newton L-BFGS (CMU asst4 extension; Nocedal & Wright Alg. 7.4), projected
 };
-inline constexpr int kSolverKindCount = 9;
-const char* solverName(SolverKind kind);          ///< "analytic", "ccd", "fabrik", "jt", "pinv", "dls", "sdls", "gradient", "lbfgs"
-const char* solverLongName(SolverKind kind);      ///< "Cyclic coordinate descent", …
+
+/// The one table of the methods' names, in SolverKind order: menus, command-line choices, metrics
+/// keys and tests all read it, so a new method is one row here (and one case in makeMethod).
+struct SolverInfo {
+  SolverKind kind;
+  const char* name;      ///< short name ("ccd", "dls", …): menus, --solver, metrics keys
+  const char* longName;  ///< "Cyclic coordinate descent", …
+};
+std::span<const SolverInfo> solverTable();
+const char* solverName(SolverKind kind);
+const char* solverLongName(SolverKind kind);
 bool solverFromName(const std::string& name, SolverKind* kind);
 /// Every solver's short name, in SolverKind order (for menus and command-line choices).
 std::vector<std::string> solverNames();
@@ -35,8 +45,9 @@ enum class LineSearch {
   Backtracking,   ///< halve α from the quadratic model's minimiser until Armijo's sufficient decrease holds
   GoldenSection,  ///< minimise f along the direction by golden-section search (an exact line search)
 };
-inline constexpr int kLineSearchCount = 3;
-const char* lineSearchName(LineSearch search);  ///< "fixed", "backtracking", "golden"
+/// "fixed", "backtracking", "golden", in LineSearch order.
+const std::vector<std::string>& lineSearchNames();
+const char* lineSearchName(LineSearch search);
 
 enum class SolveStatus {
   Success,       ///< every effector within tolerance
@@ -45,48 +56,76 @@ enum class SolveStatus {
   IterationCap,  ///< maxIterations reached
   TimeCap,       ///< maxSeconds reached
   NotApplicable, ///< the method cannot handle this skeleton (e.g. analytic on a 5-link chain)
-  InvalidInput,  ///< bad skeleton, pose or effector: see SolveResult::message
+  InvalidInput,  ///< bad skeleton, pose, effector or option: see SolveResult::message
 };
 const char* statusName(SolveStatus status);
 
 /// Joint limits in Jacobian methods (IK slides, "Joint limits"): clamp the pose after each step, or
 /// also zero the columns of DOFs sitting at a limit and pushed outward (one-sided derivative).
 enum class JacobianLimitMode { Clamp, ZeroColumns };
+/// "clamp", "zero_columns", in JacobianLimitMode order.
+const std::vector<std::string>& jacobianLimitModeNames();
 
+/// Where the Jacobian-family methods (JT, pinv, DLS, SDLS, gradient, L-BFGS) take J from.
+enum class JacobianSource {
+  Analytic,            ///< IK-3's columns a × (e − r) (jacobian.cpp): one pass over the joints
+  CentralDifferences,  ///< central differences of forward kinematics (numericalJacobian, h = kJacobianStep):
+                       ///< 2 FK per column, independent of IK-3 (tests grade the methods apart from it)
+};
+/// "analytic", "differences", in JacobianSource order.
+const std::vector<std::string>& jacobianSourceNames();
+inline constexpr Real kJacobianStep = 1e-6;  ///< [rad or m] h of JacobianSource::CentralDifferences
+
+/// The settings of one solve. Defaults are the methods as their sources state them; the options
+/// marked "departure" are safeguards of ours, off by default (docs/workbook/01-inverse-kinematics.md).
 struct SolveOptions {
   SolverKind solver = SolverKind::DampedLeastSquares;
-  Real tolerance = 1e-4;          ///< [m] success when every effector is this close
-  Real angleTolerance = 1e-3;     ///< [rad] and 6-DOF effectors are this well aligned
-  int maxIterations = 200;        ///< iteration cap (CCD/FABRIK: passes; Jacobian: steps)
-  Real maxSeconds = 0.0;          ///< [s] time cap; 0 = none (never used by tests: not deterministic)
-  int stallIterations = 20;       ///< k: stalled when the residual has not dropped by stallRatio in k iterations
-  Real stallRatio = 1e-3;         ///< relative progress that counts as progress
+  Real tolerance = 1e-4;          ///< [m] > 0: success when every effector is this close
+  Real angleTolerance = 1e-3;     ///< [rad] > 0: and 6-DOF effectors are this well aligned
+  int maxIterations = 200;        ///< ≥ 1: iteration cap (CCD/FABRIK: passes; Jacobian: steps)
+  Real maxSeconds = 0.0;          ///< [s] ≥ 0: time cap; 0 = none (never used by tests: not deterministic)
+  int stallIterations = 20;       ///< k ≥ 0: stalled when the residual has not dropped by stallRatio in k iterations; 0 = never
+  Real stallRatio = 1e-3;         ///< [1] in [0, 1): relative progress that counts as progress
   bool fromRest = false;          ///< repeatability (IK slides): start every solve from the rest pose
-  bool enforceLimits = true;      ///< clamp to joint limits (CCD/FABRIK/analytic) or per limitMode
+  bool enforceLimits = true;      ///< clamp to joint limits (IK-6; CCD/FABRIK/analytic) or per limitMode
   JacobianLimitMode limitMode = JacobianLimitMode::ZeroColumns;
-  Real damping = 0.05;            ///< λ of DLS [m]; typical 0.01–0.5 × the bone length
-  Real singularCutoff = 1e-3;     ///< pinv: singular values below cutoff · σ_max are dropped [1]
-  Real maxErrorStep = 0.0;        ///< [m] clamp of each effector's error per step; 0 = automatic (mean bone length)
-  Real maxJointStep = 0.5;        ///< [rad] clamp of the largest DOF change per Jacobian step (SDLS γ_max = π/4)
-  Real orientationScale = 0.0;    ///< [m/rad] weight of orientation rows; 0 = automatic (mean bone length)
-  bool usePole = false;            ///< analytic two-bone: bend toward polePoint (else keep the current bend plane)
-  Vec3 polePoint{0.0};            ///< [m] world point the elbow should point toward (the "pole target")
+  JacobianSource jacobian = JacobianSource::Analytic;
+  Real damping = 0.05;            ///< [m] ≥ 0: λ of DLS; typical 0.01–0.5 × the bone length
+  Real singularCutoff = 1e-3;     ///< [1] in [0, 1): pinv drops singular values below cutoff · σ_max
+  Real maxErrorStep = 0.0;        ///< [m] ≥ 0: clamp of each effector's error per step (Buss's D_max; Buss & Kim
+                                  ///< 2005 clamp the targets the same way); 0 = automatic (mean bone length)
+  /// Departure (ours): [rad] ≥ 0, clamp of the largest DOF change of one JT, pinv, DLS or SDLS step
+  /// (uniform scaling of the step); 0 = none, as published. SDLS always applies its own γ_max = π/4.
+  Real maxJointStep = 0.0;
+  /// Departure (ours): JT, pinv, DLS, SDLS halve each step until the objective decreases (JT: by
+  /// Armijo's amount, from Buss's α); no acceptable step leaves the pose unchanged (a stall).
+  bool jacobianLineSearch = false;
+  Real orientationScale = 0.0;    ///< [m/rad] ≥ 0: weight of orientation rows; 0 = automatic (mean bone length)
+  bool usePole = false;           ///< analytic two-bone: bend toward polePoint (else keep the current bend plane)
+  Vec3 polePoint{0.0};            ///< [m] finite: world point the elbow should point toward (the "pole target")
   bool recordHistory = false;     ///< keep the residual and effector position of every iteration
   LineSearch lineSearch = LineSearch::GoldenSection;  ///< gradient descent's step length
-  Real gradientStep = 0.2;        ///< [rad²/m²] α of LineSearch::Fixed: Δθ = −α ∇f, f in m²; stable below
+  Real gradientStep = 0.2;        ///< [rad²/m²] > 0: α of LineSearch::Fixed: Δθ = −α ∇f, f in m²; stable below
                                   ///< 2/λ_max(JᵀJ) (≈ 0.5 for a 1 m, 10-link chain); typical 0.05–0.5
-  int lbfgsMemory = 7;            ///< pairs (s, y) L-BFGS remembers; typical 5–10
-  /// Stall recovery (IK slides, "Stopping": when stuck, randomise the pose or switch algorithm). With
-  /// joint limits or one-sided hinges a method can stall in a local minimum short of a reachable goal,
-  /// or crawl toward it (CCD along a limit). On a stall, or a crawl too slow to finish within the cap,
-  /// the solve restarts the method from a random pose inside the limits of the joints that move the
-  /// effectors, at most `restarts` times, within the same maxIterations (and only while 2 ×
-  /// stallIterations of them remain), and returns the attempt with the smallest residual; never on
-  /// an unreachable goal or a closed-form method. The random poses come from `restartSeed` alone, so
-  /// a solve stays deterministic. SolveResult::restarts counts them. 0: a stall ends the solve.
-  int restarts = 10;
+  Real lineSearchMaxStep = 0.5;   ///< [rad] > 0: gradient descent and L-BFGS: the largest DOF change of one
+                                  ///< step (the golden-section bracket; caps fixed and backtracking steps)
+  int lbfgsMemory = 7;            ///< ≥ 1: pairs (s, y) L-BFGS remembers; typical 5–10
+  /// Departure (IK slides, "Stopping": when stuck, randomise the pose or switch algorithm), ≥ 0, off
+  /// by default. With joint limits or one-sided hinges a method can stall in a local minimum short
+  /// of a reachable goal, or crawl toward it (CCD along a limit). On a stall, or a crawl too slow to
+  /// finish within the cap, the solve restarts the method from a random pose inside the limits of
+  /// the joints that move the effectors, at most `restarts` times, within the same maxIterations
+  /// (and only while 2 × stallIterations of them remain), and returns the attempt with the smallest
+  /// residual; never on an unreachable goal or a closed-form method. The random poses come from
+  /// `restartSeed` alone, so a solve stays deterministic. SolveResult::restarts counts them.
+  /// 0: a stall ends the solve, as the methods are published.
+  int restarts = 0;
   unsigned long long restartSeed = 0x5EEDull;  ///< seed of the restart poses
 };
+
+/// Checks every field of the options at its boundary (ranges, finiteness, enum values); the message
+/// names the field: "options.damping: must be a finite number >= 0, got -1".
+Status validate(const SolveOptions& options);
 
 struct SolveResult {
   SolveStatus status = SolveStatus::InvalidInput;

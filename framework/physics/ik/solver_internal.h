@@ -94,6 +94,10 @@ std::unique_ptr<Method> makeDescentMethod(SolverKind kind);
 /// nullptr with *why set when the skeleton/effectors are not a single joint or a two-bone limb.
 std::unique_ptr<Method> makeAnalytic(const Context& c, std::string* why);
 
+/// The part of x perpendicular to the unit vector a: x − (x·a) a (the projection onto the plane
+/// normal to a, e.g. a hinge's plane of motion).
+inline Vec3 perpendicularPart(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
+
 /// Rotates/translates joint j (whose world pre-rotation and pivot are `frame`) to best carry the
 /// points `from[i]` (world, currently attached below j) onto `to[i]` with weights w[i]:
 /// minimises Σ wᵢ |T(fromᵢ) − toᵢ|² over the joint's DOFs, exactly for a hinge, prismatic or a single

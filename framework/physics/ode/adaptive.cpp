@@ -5,7 +5,11 @@
 // next step: "first same as last", 6 new evaluations per step).
 #include <algorithm>
 #include <cmath>
+#include <cassert>
 #include <cstddef>
+#include <string>
+
+#include "physics/core/format.h"
 
 #include "physics/ode/integrators.h"
 
@@ -28,7 +32,19 @@ constexpr Real e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17
 constexpr Real kSafety = 0.9, kMinFactor = 0.2, kMaxFactor = 5.0;
 }  // namespace
 
+Status validate(const AdaptiveSettings& s) {
+  if (!(std::isfinite(s.tolerance) && s.tolerance > 0.0)) {
+    return Error{"adaptive.tolerance: must be a finite number > 0, got " + formatExact(s.tolerance)};
+  }
+  if (!(std::isfinite(s.minStep) && s.minStep > 0.0)) {
+    return Error{"adaptive.minStep: must be a finite number > 0 [s], got " + formatExact(s.minStep)};
+  }
+  if (s.maxSubsteps < 1) return Error{"adaptive.maxSubsteps: must be at least 1, got " + std::to_string(s.maxSubsteps)};
+  return Status::success();
+}
+
 void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, AdaptiveState& st, Workspace& w) {
+  assert(validate(settings).ok());
   const std::size_t n = system.stateSize();
   Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2});
   std::vector<Real>& s = w.s;
@@ -45,7 +61,8 @@ void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, A
     system.derivative(tc, y, k);
     ++st.evaluations;
   };
-  for (int sub = 0; sub < settings.maxSubsteps && t < end; ++sub) {
+  bool reachedEnd = false;
+  for (int sub = 0; sub < settings.maxSubsteps; ++sub) {
     const Real remaining = end - t;
     // Take the remainder when it is close to the proposal, so that no sliver of a step is left.
     const bool last = delta >= remaining * (1.0 - 1e-12) || remaining - delta < settings.minStep;
@@ -67,16 +84,28 @@ void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, A
           },
           w.k7);
     Real errorNorm = 0.0;
+    bool finite = true;
     for (std::size_t i = 0; i < n; ++i) {
       err[i] = d * (e1 * w.k1[i] + e3 * w.k3[i] + e4 * w.k4[i] + e5 * w.k5[i] + e6 * w.k6[i] + e7 * w.k7[i]);
+      // A NaN or ±∞ anywhere (in the candidate or in its derivative, which the next substep starts
+      // from) makes the substep unusable, however small the other components' error.
+      finite = finite && std::isfinite(err[i]) && std::isfinite(y[i]) && std::isfinite(w.k7[i]);
+      if (!finite) break;
       const Real scale = std::max({1.0, std::abs(s[i]), std::abs(y[i])});
       errorNorm = std::max(errorNorm, std::abs(err[i]) / scale);
     }
+    if (!finite) {
+      // Never committed: retry at the smallest factor the controller allows, down to minStep.
+      ++st.rejected;
+      ++st.nonFiniteRejections;
+      if (d <= settings.minStep) break;  // it stays non-finite at the smallest step: stop here
+      delta = std::max(settings.minStep, kMinFactor * d);
+      continue;
+    }
     const Real allowed = settings.tolerance * d;  // error per unit step
-    const bool accept = errorNorm <= allowed || d <= settings.minStep || !std::isfinite(errorNorm);
+    const bool accept = errorNorm <= allowed || d <= settings.minStep;
     // Local error ∝ d⁵, so error per unit step ∝ d⁴: exponent 1/4.
-    const Real factor =
-        errorNorm > 0.0 && std::isfinite(errorNorm) ? kSafety * std::pow(allowed / errorNorm, 0.25) : kMaxFactor;
+    const Real factor = errorNorm > 0.0 ? kSafety * std::pow(allowed / errorNorm, 0.25) : kMaxFactor;
     const Real proposal = std::max(settings.minStep, d * std::clamp(factor, kMinFactor, kMaxFactor));
     if (accept) {
       ++st.accepted;
@@ -84,15 +113,19 @@ void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, A
       s.swap(y);
       w.k1.swap(w.k7);  // FSAL
       if (!last || proposal < delta) delta = proposal;
-      if (!std::isfinite(errorNorm)) break;  // the state blew up: let the caller's guard see it
+      if (last) {
+        reachedEnd = true;
+        break;
+      }
     } else {
       ++st.rejected;
       delta = proposal;
     }
   }
   st.nextStep = delta;
+  st.shortfall = reachedEnd ? 0.0 : end - t;
   system.setState(s);
-  system.setTime(end);
+  system.setTime(t);  // the time of the state: end, or the last accepted substep when cut short
 }
 
 }  // namespace pba::ode

@@ -1,46 +1,49 @@
 // Generic explicit methods on any OdeSystem: explicit Euler, midpoint (RK2), RK4 (Lobb notes, "ODE view").
+#include <algorithm>
 #include <cstddef>
+#include <span>
 
-#include "physics/ode/oscillator.h"
 #include "physics/exercises/not_implemented.h"
 #include "physics/ode/integrators.h"
+#include "physics/ode/oscillator.h"
+#include "physics/ode/step_helpers.h"
 
 namespace pba::ode {
+using detail::beginGenericStep;
+using detail::endGenericStep;
 
 void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   const std::size_t n = system.stateSize();
   Workspace::fit(n, {&w.s, &w.k1});
   // BEGIN SOLUTION
-  const Real t = system.time();
-  system.getState(w.s);
-  system.derivative(t, w.s, w.k1);
+  const Real t = beginGenericStep(system, w);  // s in w.s, f(s, t) in w.k1
   for (std::size_t i = 0; i < n; ++i) w.s[i] += h * w.k1[i];
-  system.setState(w.s);
-  system.setTime(t + h);
+  endGenericStep(system, w, t + h);
   // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-1");  // the state stays where it is
+  // STUB: exercises::markNotImplemented("PART-1");  // the state and the time stay where they are
 }
 
+namespace {
+// out = s + c k, component by component.
+void addScaled(std::span<Real> out, std::span<const Real> s, Real c, std::span<const Real> k) {
+  std::transform(s.begin(), s.end(), k.begin(), out.begin(), [c](Real si, Real ki) { return si + c * ki; });
+}
+}  // namespace
+
 void midpointStep(OdeSystem& system, Real h, Workspace& w) {
-  const std::size_t n = system.stateSize();
-  Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.tmp});
-  const Real t = system.time();
-  system.getState(w.s);
-  system.derivative(t, w.s, w.k1);
-  for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + 0.5 * h * w.k1[i];  // s + Δs/2
-  system.derivative(t + 0.5 * h, w.tmp, w.k2);                                  // g_mid
-  for (std::size_t i = 0; i < n; ++i) w.s[i] += h * w.k2[i];
-  system.setState(w.s);
-  system.setTime(t + h);
+  Workspace::fit(system.stateSize(), {&w.s, &w.k1, &w.k2, &w.tmp});
+  const Real start = beginGenericStep(system, w);
+  addScaled(w.tmp, w.s, 0.5 * h, w.k1);         // s + Δs/2
+  system.derivative(start + 0.5 * h, w.tmp, w.k2);  // g_mid
+  addScaled(w.s, w.s, h, w.k2);
+  endGenericStep(system, w, start + h);
 }
 
 void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   const std::size_t n = system.stateSize();
   Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.tmp});
   // BEGIN SOLUTION
-  const Real t = system.time();
-  system.getState(w.s);
-  system.derivative(t, w.s, w.k1);
+  const Real t = beginGenericStep(system, w);  // s in w.s, k1 = f(s, t) in w.k1
   for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + 0.5 * h * w.k1[i];
   system.derivative(t + 0.5 * h, w.tmp, w.k2);
   for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + 0.5 * h * w.k2[i];
@@ -48,10 +51,9 @@ void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + h * w.k3[i];
   system.derivative(t + h, w.tmp, w.k4);
   for (std::size_t i = 0; i < n; ++i) w.s[i] += (h / 6.0) * (w.k1[i] + 2.0 * w.k2[i] + 2.0 * w.k3[i] + w.k4[i]);
-  system.setState(w.s);
-  system.setTime(t + h);
+  endGenericStep(system, w, t + h);
   // END SOLUTION
-  // STUB: exercises::markNotImplemented("PART-3");  // the state stays where it is
+  // STUB: exercises::markNotImplemented("PART-3");  // the state and the time stay where they are
 }
 
 // Start-up probes: tell the lab whether PART-1 and PART-3 are still stubs.

@@ -11,10 +11,20 @@
 // backward Euler and multiplies the energy by 1/(1 + ω²h²) < 1 at any h.
 // Pinned coordinates (M⁻¹ = 0) are held by zeroing their entries of every CG vector (B&W §5.3's filter
 // S for a fully constrained particle), which solves the system restricted to the free coordinates.
+// Preconditioner (Baraff & Witkin §5.3 precondition with the diagonal of A; we take its 3×3 diagonal
+// blocks, "block Jacobi"): P⁻¹ = blockdiag(A_ii)⁻¹ with A_ii = M_i − h D_ii − h² K_ii, from the system's
+// forceJacobianDiagonalBlocks(). For a particle alone on a spring it is A itself (CG converges in one
+// iteration); for a network it removes the large per-particle stiffness that the mass diagonal ignores.
+// The blocks are SPD for the same reason A is (each is a principal submatrix of A).
+// Convergence is judged on the true residual b − A Δv, recomputed after the loop, not on CG's recursive
+// estimate (which drifts from it in floating point).
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
+#include <string>
 
+#include "physics/core/format.h"
 #include "physics/ode/integrators.h"
 
 namespace pba::ode {
@@ -24,55 +34,126 @@ Real dot(std::span<const Real> a, std::span<const Real> b) {
   for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
   return s;
 }
+
+/// A y = M y − (h D y + h² K y) = M y − forceDifferential(dq = h² y, dv = h y), filtered by S (pinned
+/// coordinates get 0). Scratch dq, dv from the workspace: no allocation.
+struct SystemMatrix {
+  SecondOrderSystem& system;
+  Real t, h;
+  std::span<const Real> q, v, invMass;
+  std::span<Real> dq, dv;
+  void apply(std::span<const Real> y, std::span<Real> out) const {
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      dq[i] = h * h * y[i];
+      dv[i] = h * y[i];
+    }
+    system.forceDifferential(t, q, v, dq, dv, out);
+    for (std::size_t i = 0; i < y.size(); ++i) out[i] = invMass[i] > 0.0 ? y[i] / invMass[i] - out[i] : 0.0;
+  }
+};
+
+/// The preconditioner z = P⁻¹ r: inverse diagonal blocks when the system gave them, else M⁻¹.
+struct Preconditioner {
+  std::span<const Mat3> inverseBlocks;  // empty: mass Jacobi
+  std::span<const Real> invMass;
+  void apply(std::span<const Real> r, std::span<Real> z) const {
+    if (inverseBlocks.empty()) {
+      for (std::size_t i = 0; i < r.size(); ++i) z[i] = invMass[i] * r[i];
+      return;
+    }
+    for (std::size_t b = 0; b < inverseBlocks.size(); ++b) {
+      const Vec3 zb = inverseBlocks[b] * Vec3(r[3 * b], r[3 * b + 1], r[3 * b + 2]);
+      for (std::size_t c = 0; c < 3; ++c) z[3 * b + c] = zb[static_cast<int>(c)];
+    }
+  }
+};
+
+/// Inverts A_ii = M_i − h D_ii − h² K_ii in place of K (blocks) given D (blocksD), restricted to the free
+/// coordinates of the block: a pinned coordinate's row and column become those of the identity before the
+/// inversion and 0 after it, so that P⁻¹ never moves a pinned coordinate.
+void invertDiagonalBlocks(std::span<Mat3> blocks, std::span<const Mat3> blocksD, std::span<const Real> invMass,
+                          Real h) {
+  for (std::size_t b = 0; b < blocks.size(); ++b) {
+    Mat3 a = -(h * blocksD[b]) - (h * h) * blocks[b];
+    bool free[3];
+    for (int c = 0; c < 3; ++c) {
+      const Real w = invMass[3 * b + static_cast<std::size_t>(c)];
+      free[c] = w > 0.0;
+      a[c][c] += free[c] ? 1.0 / w : 0.0;
+    }
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        if (!free[r] || !free[c]) a[c][r] = r == c ? 1.0 : 0.0;
+    Mat3 inverse = glm::inverse(a);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        if (!free[r] || !free[c]) inverse[c][r] = 0.0;
+    blocks[b] = inverse;
+  }
+}
 }  // namespace
+
+Status validate(const ImplicitEulerSettings& s) {
+  if (s.maxIterations < 1) {
+    return Error{"implicit.maxIterations: must be at least 1, got " + std::to_string(s.maxIterations)};
+  }
+  if (!(std::isfinite(s.relativeTolerance) && s.relativeTolerance > 0.0 && s.relativeTolerance < 1.0)) {
+    return Error{"implicit.relativeTolerance: must be in (0, 1), got " + formatExact(s.relativeTolerance)};
+  }
+  return Status::success();
+}
 
 ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const ImplicitEulerSettings& settings,
                                      Workspace& w) {
+  assert(validate(settings).ok());
   const std::size_t n = system.dofCount();
-  Workspace::fit(n, {&w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2});
-  std::vector<Real>& b = w.k1;   // right-hand side, then scratch
+  Workspace::fit(n, {&w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp});
+  std::vector<Real>& b = w.k1;   // right-hand side
   std::vector<Real>& x = w.k2;   // Δv
   std::vector<Real>& r = w.k3;   // residual
   std::vector<Real>& p = w.k4;   // search direction
   std::vector<Real>& Ap = w.k5;  // A p
   std::vector<Real>& z = w.tmp;  // preconditioned residual
-  std::vector<Real>& zero = w.tmp2;
-  std::vector<Real>& dq = w.k6;  // scratch of applyA
-  std::vector<Real>& dv = w.k7;
   const Real t = system.time();
   const std::span<Real> q = system.positions();
   const std::span<Real> v = system.velocities();
   const std::span<const Real> invMass = system.inverseMasses();
-  std::ranges::fill(zero, 0.0);
+  const SystemMatrix A{system, t, h, q, v, invMass, w.k6, w.k7};
 
-  // b = h f₀ + h² K v₀ = h f₀ + forceDifferential(dq = h² v₀, dv = 0).
+  // b = h f₀ + h² K v₀ = h f₀ + forceDifferential(dq = h² v₀, dv = 0), filtered.
   system.force(t, q, v, b);
-  for (std::size_t i = 0; i < n; ++i) dq[i] = h * h * v[i];
-  system.forceDifferential(t, q, v, dq, zero, Ap);
+  for (std::size_t i = 0; i < n; ++i) {
+    A.dq[i] = h * h * v[i];
+    A.dv[i] = 0.0;
+  }
+  system.forceDifferential(t, q, v, A.dq, A.dv, Ap);
   for (std::size_t i = 0; i < n; ++i) b[i] = invMass[i] > 0.0 ? h * b[i] + Ap[i] : 0.0;
 
-  // A y = M y − (h D y + h² K y) = M y − forceDifferential(dq = h² y, dv = h y), filtered.
-  auto applyA = [&](std::span<const Real> y, std::span<Real> out) {
-    for (std::size_t i = 0; i < n; ++i) {
-      dq[i] = h * h * y[i];
-      dv[i] = h * y[i];
+  ImplicitEulerStats stats;
+  Preconditioner P{{}, invMass};
+  if (n % 3 == 0) {
+    w.blocks.resize(n / 3);
+    w.blocks2.resize(n / 3);
+    if (system.forceJacobianDiagonalBlocks(t, q, v, w.blocks, w.blocks2)) {
+      invertDiagonalBlocks(w.blocks, w.blocks2, invMass, h);
+      P.inverseBlocks = w.blocks;
+      stats.blockPreconditioner = true;
     }
-    system.forceDifferential(t, q, v, dq, dv, out);
-    for (std::size_t i = 0; i < n; ++i) out[i] = invMass[i] > 0.0 ? y[i] / invMass[i] - out[i] : 0.0;
-  };
+  }
 
-  // Preconditioned CG, Jacobi preconditioner P⁻¹ = M⁻¹ (the mass dominates A for small h).
+  // Preconditioned conjugate gradients (Shewchuk 1994, "CG without the agonizing pain", §B3), x₀ = 0.
+  // CG's recursive residual drifts from b − A x in floating point: when it says "converged" and the true
+  // residual disagrees, CG restarts once from the current x with the true residual.
   std::ranges::fill(x, 0.0);
   r = b;
-  for (std::size_t i = 0; i < n; ++i) z[i] = invMass[i] * r[i];
-  p = z;
-  Real rz = dot(r, z);
   const Real bNorm = std::sqrt(dot(b, b));
-  ImplicitEulerStats stats;
-  if (bNorm > 0.0) {
-    for (int k = 0; k < settings.maxIterations; ++k) {
-      if (std::sqrt(dot(r, r)) <= settings.relativeTolerance * bNorm) break;
-      applyA(p, Ap);
+  const Real target = settings.relativeTolerance * bNorm;
+  for (int pass = 0; pass < 2 && bNorm > 0.0; ++pass) {
+    P.apply(r, z);
+    p = z;
+    Real rz = dot(r, z);
+    while (stats.iterations < settings.maxIterations && std::sqrt(dot(r, r)) > target) {
+      A.apply(p, Ap);
       const Real pAp = dot(p, Ap);
       if (!(pAp > 0.0)) break;  // not positive definite along p (should not happen): keep what we have
       const Real alpha = rz / pAp;
@@ -80,14 +161,18 @@ ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const Im
         x[i] += alpha * p[i];
         r[i] -= alpha * Ap[i];
       }
-      for (std::size_t i = 0; i < n; ++i) z[i] = invMass[i] * r[i];
+      P.apply(r, z);
       const Real rzNew = dot(r, z);
       const Real beta = rzNew / rz;
       rz = rzNew;
       for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
-      stats.iterations = k + 1;
+      ++stats.iterations;
     }
+    A.apply(x, Ap);  // the true residual of the Δv we return
+    for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - Ap[i];
     stats.relativeResidual = std::sqrt(dot(r, r)) / bNorm;
+    stats.converged = stats.relativeResidual <= settings.relativeTolerance;
+    if (stats.converged || stats.iterations >= settings.maxIterations) break;
   }
   for (std::size_t i = 0; i < n; ++i) {
     v[i] += x[i];

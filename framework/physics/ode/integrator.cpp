@@ -68,6 +68,18 @@ void Integrator::reset() {
   implicitStats_ = ImplicitEulerStats{};
 }
 
+Status Integrator::setImplicitSettings(const ImplicitEulerSettings& settings) {
+  if (Status s = validate(settings); !s) return s;
+  implicitSettings_ = settings;
+  return Status::success();
+}
+
+Status Integrator::setAdaptiveSettings(const AdaptiveSettings& settings) {
+  if (Status s = validate(settings); !s) return s;
+  adaptiveSettings_ = settings;
+  return Status::success();
+}
+
 void Integrator::step(SecondOrderSystem& system, Real h) {
   assert(h > 0.0);
   switch (kind_) {
@@ -77,8 +89,8 @@ void Integrator::step(SecondOrderSystem& system, Real h) {
     case IntegratorKind::Rk4: rk4Step(system, h, work_); break;
     case IntegratorKind::Verlet: verletStep(system, h, verlet_, work_); break;
     case IntegratorKind::VelocityVerlet: velocityVerletStep(system, h, work_); break;
-    case IntegratorKind::ImplicitEuler: implicitStats_ = implicitEulerStep(system, h, implicitSettings, work_); break;
-    case IntegratorKind::Adaptive: adaptiveStep(system, h, adaptiveSettings, adaptive_, work_); break;
+    case IntegratorKind::ImplicitEuler: implicitStats_ = implicitEulerStep(system, h, implicitSettings_, work_); break;
+    case IntegratorKind::Adaptive: adaptiveStep(system, h, adaptiveSettings_, adaptive_, work_); break;
   }
 }
 

@@ -24,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "physics/core/result.h"
 #include "physics/ode/ode_system.h"
 
 namespace pba::ode {
@@ -55,6 +56,7 @@ int integratorOrder(IntegratorKind kind);
 /// Scratch buffers of the integrators, reused between steps so that stepping never allocates.
 struct Workspace {
   std::vector<Real> s, k1, k2, k3, k4, k5, k6, k7, tmp, tmp2;
+  std::vector<Mat3> blocks, blocks2;  ///< implicit Euler: Jacobian diagonal blocks, then the preconditioner
 
   /// Makes each of `buffers` (members of a Workspace) n long; a buffer that changes size is zeroed,
   /// one that already fits is left alone (no allocation once sized).
@@ -72,6 +74,8 @@ struct Workspace {
 // (2) Evaluate the derivative at the START of the step: k = f(s, t).
 // (3) Move along it: s(t + h) = s(t) + h k, component by component.
 // (4) Write the state back (setState) and advance the system's time to t + h.
+// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() does steps (1)–(2)
+// into w.s and w.k1, endGenericStep() step (4).)
 // *****
 void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
 
@@ -83,7 +87,7 @@ void midpointStep(OdeSystem& system, Real h, Workspace& w);
 //     k1 = f(s, t);  k2 = f(s + (h/2) k1, t + h/2);  k3 = f(s + (h/2) k2, t + h/2);  k4 = f(s + h k3, t + h).
 //     (The notes scale each k by h; here k is the slope itself, so h multiplies at the end.)
 // (2) Combine with Simpson-like weights: s(t + h) = s + h (k1 + 2 k2 + 2 k3 + k4) / 6.
-// (3) Write the state back and advance the time to t + h.
+// (3) Write the state back and advance the time to t + h (beginGenericStep/endGenericStep as in PART-1).
 // *****
 void rk4Step(OdeSystem& system, Real h, Workspace& w);
 
@@ -95,7 +99,7 @@ void rk4Step(OdeSystem& system, Real h, Workspace& w);
 // (3) Update the position with the NEW velocity: q ← q + h v.
 //     (Using the old velocity here would be explicit Euler, whose energy grows every step.)
 // (4) Tell the system (stateChanged) and advance the time to t + h.
-// (second_order_methods.cpp has two helpers the other in-place methods use: startInPlace() does the
+// (ode/step_helpers.h has two helpers the other in-place methods use: startInPlace() does the
 // bookkeeping and step (1), finishInPlace() step (4).)
 // *****
 void symplecticEulerStep(SecondOrderSystem& system, Real h, Workspace& w);
@@ -114,7 +118,7 @@ struct VerletHistory {
 };
 
 // ***** PART-6: position Verlet (Ragdoll paper §2, after Jakobsen 2001) *****
-// The update (verletRecurrence in second_order_methods.cpp) receives q(t), the previous positions
+// The update (verletRecurrence in position_verlet.cpp) receives q(t), the previous positions
 // q(t − h) and a = M⁻¹ f at time t; it returns true once it has stepped.
 // (1) For every coordinate: q(t + h) = 2 q(t) − q(t − h) + h² a. No velocity is used.
 // (2) The velocity is implicit in the positions. Estimate it for the state (second order, exact under
@@ -124,35 +128,50 @@ struct VerletHistory {
 void verletStep(SecondOrderSystem& system, Real h, VerletHistory& history, Workspace& w);
 
 struct ImplicitEulerSettings {
-  int maxIterations = 200;      ///< conjugate-gradient iterations per step
-  Real relativeTolerance = 1e-10;  ///< stop when |r| ≤ tol·|b|
+  int maxIterations = 200;         ///< cap on conjugate-gradient iterations per step, ≥ 1
+  Real relativeTolerance = 1e-10;  ///< stop when |b − A Δv| ≤ tol·|b|; in (0, 1)
 };
+/// "implicit.maxIterations: …" when a setting is out of range (non-finite, tolerance ≤ 0 or ≥ 1, cap < 1).
+Status validate(const ImplicitEulerSettings& settings);
 struct ImplicitEulerStats {
-  int iterations = 0;
-  Real relativeResidual = 0.0;
+  int iterations = 0;          ///< CG iterations of the last step
+  Real relativeResidual = 0.0; ///< |b − A Δv| / |b| of the returned Δv (recomputed, not CG's recursive estimate)
+  bool converged = true;       ///< relativeResidual ≤ tolerance; false when the cap stopped CG first
+  bool blockPreconditioner = false;  ///< the system gave its Jacobian's diagonal blocks (else mass Jacobi)
 };
 /// Linearised backward Euler (Baraff & Witkin 1998, eq. 16–18): solve
 ///   (M − h ∂f/∂v − h² ∂f/∂q) Δv = h (f₀ + h (∂f/∂q) v₀),   v ← v₀ + Δv,  q ← q₀ + h v,
-/// by preconditioned conjugate gradients, matrix-free through forceDifferential(). Pinned coordinates
-/// (M⁻¹ = 0) are filtered out of the solve (Baraff & Witkin §5.3, the S projection): their Δv is 0.
+/// by preconditioned conjugate gradients, matrix-free through forceDifferential(). The preconditioner is
+/// block Jacobi: the inverse of A's 3×3 diagonal blocks M_i − h D_ii − h² K_ii, from the system's
+/// forceJacobianDiagonalBlocks() (the mass alone, M⁻¹, when it has none). Pinned coordinates (M⁻¹ = 0)
+/// are filtered out of the solve (Baraff & Witkin §5.3, the S projection): their Δv is 0.
+/// The settings must be valid (validate()); Integrator checks them when they are set.
 ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const ImplicitEulerSettings& settings,
                                      Workspace& w);
 
 struct AdaptiveSettings {
-  Real tolerance = 1e-6;   ///< local error per unit time, relative to max(1, |s_i|) [1/s]
-  Real minStep = 1e-9;     ///< [s]
-  int maxSubsteps = 100000;  ///< per call
+  Real tolerance = 1e-6;     ///< local error per unit time, relative to max(1, |s_i|) [1/s]; > 0
+  Real minStep = 1e-9;       ///< [s] > 0: a finite error estimate is accepted at this size whatever it is
+  int maxSubsteps = 100000;  ///< per call, ≥ 1 (accepted and rejected substeps together)
 };
+/// "adaptive.tolerance: …" when a setting is out of range (non-finite, ≤ 0, cap < 1).
+Status validate(const AdaptiveSettings& settings);
 struct AdaptiveState {
   Real nextStep = 0.0;  ///< step size proposed by the controller [s]; 0 = start with the full interval
   long accepted = 0, rejected = 0, evaluations = 0;  ///< running totals
+  long nonFiniteRejections = 0;  ///< running total of substeps rejected for a NaN or ±∞ error estimate
+  Real shortfall = 0.0;  ///< [s] of the last call's interval left undone (0 = reached its end; see adaptiveStep)
 };
-/// Advances exactly h with as many Dormand–Prince 5(4) substeps as the error control needs
+/// Advances h with as many Dormand–Prince 5(4) substeps as the error control needs
 /// (Dormand & Prince 1980; Hairer, Nørsett & Wanner, Solving ODEs I, §II.5). The embedded 4th-order
 /// solution estimates the local error e of each substep; a substep of size δ is accepted when
 /// e ≤ tolerance·δ ("error per unit step", so the global error stays ≲ tolerance × duration), and the
 /// next size is δ·clamp(0.9 (tolerance·δ/e)^(1/4), 0.2, 5). The notes' step doubling is the same idea
 /// with two half steps in place of the embedded pair.
+/// A substep whose error estimate is not finite (NaN or ±∞ in a stage) is rejected and retried at a fifth
+/// of its size; it is never committed. The call ends early, with the state and the system's time at the
+/// last accepted substep and `state.shortfall` = the time left, when maxSubsteps substeps were spent or
+/// a non-finite estimate persists down to minStep: state and clock always agree.
 void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, AdaptiveState& state, Workspace& w);
 
 /// A step of a fixed-step schedule: its size [s] and the time it ends at [s].
@@ -179,16 +198,25 @@ class Integrator {
   /// Forgets the per-method memory (call after a reset of the system).
   void reset();
 
-  /// Advances the system by h [s] and its time by h.
+  /// Advances the system by h [s] and its time by h (adaptive: by h − adaptiveState().shortfall, which is
+  /// 0 unless its substep cap or a persistent non-finite state stopped it; the time always matches the state).
   void step(SecondOrderSystem& system, Real h);
 
-  ImplicitEulerSettings implicitSettings;
-  AdaptiveSettings adaptiveSettings;
+  /// Settings of implicit Euler and of the adaptive method; an invalid one is refused with a message that
+  /// names the field, and the previous settings stay.
+  Status setImplicitSettings(const ImplicitEulerSettings& settings);
+  Status setAdaptiveSettings(const AdaptiveSettings& settings);
+  const ImplicitEulerSettings& implicitSettings() const { return implicitSettings_; }
+  const AdaptiveSettings& adaptiveSettings() const { return adaptiveSettings_; }
   const ImplicitEulerStats& lastImplicitStats() const { return implicitStats_; }
   const AdaptiveState& adaptiveState() const { return adaptive_; }
+  /// [s] of the last step's h left undone: adaptive's shortfall, 0 for every other method.
+  Real lastShortfall() const { return kind_ == IntegratorKind::Adaptive ? adaptive_.shortfall : 0.0; }
 
  private:
   IntegratorKind kind_;
+  ImplicitEulerSettings implicitSettings_;
+  AdaptiveSettings adaptiveSettings_;
   Workspace work_;
   VerletHistory verlet_;
   AdaptiveState adaptive_;

@@ -52,7 +52,10 @@ void SecondOrderSystem::forceDifferential(Real t, std::span<const Real> q, std::
     return;
   }
   const Real eps = 1e-6 * stateScale / dirScale;
-  std::vector<Real> qp(n), vp(n), qm(n), vm(n), fm(n);
+  if (differenceScratch_.size() != 5 * n) differenceScratch_.assign(5 * n, 0.0);
+  const std::span<Real> scratch(differenceScratch_);
+  const std::span<Real> qp = scratch.subspan(0, n), vp = scratch.subspan(n, n), qm = scratch.subspan(2 * n, n),
+                        vm = scratch.subspan(3 * n, n), fm = scratch.subspan(4 * n, n);
   for (std::size_t i = 0; i < n; ++i) {
     qp[i] = q[i] + eps * dq[i];
     vp[i] = v[i] + eps * dv[i];

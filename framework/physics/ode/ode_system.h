@@ -62,6 +62,14 @@ class SecondOrderSystem : public OdeSystem {
   /// force(); mass-spring systems override it with the analytic Jacobian.
   virtual void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
                                  std::span<const Real> dv, std::span<Real> out) const;
+  /// The 3×3 diagonal blocks of ∂f/∂q and ∂f/∂v, one per group of three coordinates (a particle:
+  /// coordinates 3i…3i+2), written to dfdq and dfdv (dofCount()/3 each): implicit Euler's block-Jacobi
+  /// preconditioner. Returns false when the system cannot give them (the default); implicit Euler then
+  /// preconditions with the masses alone.
+  virtual bool forceJacobianDiagonalBlocks(Real /*t*/, std::span<const Real> /*q*/, std::span<const Real> /*v*/,
+                                           std::span<Mat3> /*dfdq*/, std::span<Mat3> /*dfdv*/) const {
+    return false;
+  }
   /// Called by an integrator after it changed positions and velocities (e.g. to refresh caches).
   virtual void stateChanged() {}
 
@@ -73,6 +81,11 @@ class SecondOrderSystem : public OdeSystem {
   void getState(std::span<Real> out) const final;
   void setState(std::span<const Real> state) final;
   void derivative(Real t, std::span<const Real> state, std::span<Real> out) const final;
+
+ private:
+  /// Scratch of the default forceDifferential (perturbed q, v and the second force), sized on first use:
+  /// the finite difference allocates nothing per call. Not thread-safe, like the system it belongs to.
+  mutable std::vector<Real> differenceScratch_;
 };
 
 /// A SecondOrderSystem that owns its coordinates, velocities and inverse masses as three vectors of

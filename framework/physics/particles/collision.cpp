@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/core/validate.h"
 #include "physics/exercises/not_implemented.h"
 
 namespace pba::particles {
@@ -61,33 +62,11 @@ Vec3 contactVelocity(const Vec3& v, [[maybe_unused]] const Vec3& normal,
 namespace {
 void resolve(Particles& p, std::size_t i, const SurfacePoint& s, Real radius, const ContactMaterial& m,
              const ContactStep& step, CollisionStats& stats) {
-  const Real phi = s.distance - radius;
-  if (phi >= kContactSlop) return;
-  const Real depth = std::max(0.0, -phi);
-  if (phi < 0.0) {
-    p.position[i] += depth * s.normal;
-    stats.deepestPenetration = std::max(stats.deepestPenetration, depth);
-  }
-  Vec3& v = p.velocity[i];
-  const Real vn = glm::dot(v, s.normal);
-  if (vn >= 0.0) return;
-  ++stats.contacts;
-  // Steps 3–4 (collision.h): approach speed at the contact time, and the resting-contact test.
-  const Real inwardAcceleration = std::max(0.0, -glm::dot(step.acceleration, s.normal));
-  const Real speed = -vn;
-  const Real contactSpeed = std::sqrt(std::max(0.0, speed * speed - 2.0 * inwardAcceleration * depth));
-  if (contactSpeed <= m.restingSpeed + inwardAcceleration * step.dt) {
-    ContactMaterial resting = m;
-    resting.restitution = 0.0;
-    v = contactVelocity(v, s.normal, resting);
-  } else {
-    v += (speed - contactSpeed) * s.normal;  // the normal speed it had at the contact time
-    v = contactVelocity(v, s.normal, m);
-  }
-  // Safety net (a no-op for a correct PART-5): never leave a touching particle moving inward, so that
-  // the scenes stay sane while the exercise is a stub.
-  const Real vnAfter = glm::dot(v, s.normal);
-  if (vnAfter < 0.0) v -= vnAfter * s.normal;
+  const ContactResult r = resolveContact(p.position[i], p.velocity[i], s.normal, s.distance - radius, m, step);
+  stats.deepestPenetration = std::max(stats.deepestPenetration, r.depth);
+  stats.contacts += r.kind != ContactKind::None;
+  stats.impacts += r.kind == ContactKind::Impact;
+  stats.heldBySafetyNet += r.heldBySafetyNet;
 }
 }  // namespace
 
@@ -101,6 +80,37 @@ CollisionStats collideWithObstacles(Particles& p, const Obstacles& o, Real radiu
     for (const BoxObstacle& b : o.boxes) resolve(p, i, closestSurface(b, p.position[i]), radius, m, step, stats);
   }
   return stats;
+}
+
+Status validate(const ContactMaterial& m) {
+  for (Status s : {checkRange("material.restitution", m.restitution, 0.0, 1.0),
+                   checkRange("material.staticFriction", m.staticFriction, 0.0, 1e3),
+                   checkRange("material.kineticFriction", m.kineticFriction, 0.0, 1e3),
+                   checkRange("material.restingSpeed", m.restingSpeed, 0.0, 1e3)}) {
+    if (!s) return s;
+  }
+  return Status::success();
+}
+
+Status validate(const Obstacles& o) {
+  for (const PlaneObstacle& plane : o.planes) {
+    if (Status s = checkFinite("planes.point", plane.point); !s) return s;
+    if (!(isFinite(plane.normal) && std::abs(glm::length(plane.normal) - 1.0) <= 1e-9)) {
+      return Error{"planes.normal: must be a unit vector"};
+    }
+  }
+  for (const SphereObstacle& sphere : o.spheres) {
+    if (Status s = checkFinite("spheres.center", sphere.center); !s) return s;
+    if (Status s = checkPositive("spheres.radius", sphere.radius); !s) return s;
+  }
+  for (const BoxObstacle& box : o.boxes) {
+    if (Status s = checkFinite("boxes.center", box.center); !s) return s;
+    for (int a = 0; a < 3; ++a) {
+      if (Status s = checkPositive("boxes.halfExtents", box.halfExtents[a]); !s) return s;
+    }
+    if (!(std::abs(glm::length(box.orientation) - 1.0) <= 1e-9)) return Error{"boxes.orientation: must be a unit quaternion"};
+  }
+  return validate(o.material);
 }
 
 // Start-up probe: tells the lab whether PART-5 is still a stub.

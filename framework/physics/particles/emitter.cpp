@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/core/basis.h"
 #include "physics/core/validate.h"
 
 namespace pba::particles {
@@ -26,9 +27,8 @@ Vec3 Emitter::sampleCone(const Vec3& axis, Real spread) {
   const Real sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
   const Real phi = 2.0 * kPi * u(rng_);
   const Vec3 a = glm::normalize(axis);
-  const Vec3 t = glm::normalize(glm::cross(a, std::abs(a.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 0, 1)));
-  const Vec3 b = glm::cross(a, t);
-  return cosTheta * a + sinTheta * (std::cos(phi) * t + std::sin(phi) * b);
+  const Basis around = orthonormalBasis(a);
+  return cosTheta * a + sinTheta * (std::cos(phi) * around.tangent + std::sin(phi) * around.bitangent);
 }
 
 Color colorOverLife(const EmitterDesc& d, Real age, Real lifetime) {

@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "physics/core/result.h"
 #include "physics/core/types.h"
 
 namespace pba::particles {
@@ -58,6 +59,12 @@ void accumulateFieldForces(const ForceDesc& desc, Real t, std::span<const Vec3> 
 ///   linear: −c₁ dv;  quadratic: −c₂ (|u| dv + u (u·dv)/|u|).
 void accumulateDragDifferential(const ForceDesc& desc, Real t, std::span<const Vec3> x, std::span<const Vec3> v,
                                 std::span<const Real> inverseMass, std::span<const Vec3> dv, std::span<Vec3> df);
+/// Adds the drag's diagonal Jacobian blocks ∂f_i/∂v_i to dfdv (implicit Euler's preconditioner).
+void accumulateDragJacobianDiagonal(const ForceDesc& desc, Real t, std::span<const Vec3> x, std::span<const Vec3> v,
+                                    std::span<const Real> inverseMass, std::span<Mat3> dfdv);
+/// Checks every field (finite; drag coefficients ≥ 0, "negative damping" is refused; positive softening, core
+/// radius and wavelength; unit vortex axes); the message names the field ("forces.drag.linear: …").
+Status validate(const ForceDesc& desc);
 /// Potential energy of gravity and attractors [J] (drag, wind and vortex are not conservative).
 Real fieldPotentialEnergy(const ForceDesc& desc, std::span<const Vec3> x, std::span<const Real> inverseMass);
 

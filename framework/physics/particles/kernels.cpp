@@ -1,48 +1,34 @@
 #include "physics/particles/kernels.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace pba::particles {
 
 void stepGravityDragPlane(std::span<Vec3> x, std::span<Vec3> v, const FusedStepDesc& d, Real h) {
   const Vec3 n = d.ground.normal;
   const Real offset = glm::dot(n, d.ground.point) + d.radius;  // contact when n·x < offset
-  const Vec3 dv = h * d.gravity;
-  const Real keep = 1.0 - h * d.dragRate;
+  const Vec3 halfKick = 0.5 * h * d.gravity;
+  const Real keep = 1.0 - 0.5 * h * d.dragRate;  // each half kick (kernels.h)
+  const ContactStep contactStep{d.gravity, h};
   const std::size_t count = x.size();
   Vec3* __restrict xs = x.data();
   Vec3* __restrict vs = v.data();
   for (std::size_t i = 0; i < count; ++i) {
-    Vec3 vi = keep * vs[i] + dv;
-    Vec3 xi = xs[i] + h * vi;
+    const Vec3 half = keep * vs[i] + halfKick;
+    Vec3 xi = xs[i] + h * half;
+    Vec3 vi = keep * half + halfKick;
     const Real phi = glm::dot(n, xi) - offset;
     if (phi < kContactSlop) [[unlikely]] {
-      if (phi < 0.0) xi -= phi * n;
-      if (glm::dot(vi, n) < 0.0) {
-        vi = contactVelocity(vi, n, d.material);
-        const Real vn = glm::dot(vi, n);
-        if (vn < 0.0) vi -= vn * n;
-      }
+      resolveContact(xi, vi, n, phi, d.material, contactStep);
     }
     xs[i] = xi;
     vs[i] = vi;
   }
 }
-
-namespace {
-// collision.cpp's resolve() for one particle (projection, then PART-5's response and the safety net).
-inline bool contact(Vec3& x, Vec3& v, const Vec3& n, Real phi, const ContactMaterial& m) {
-  if (phi >= kContactSlop) return false;
-  if (phi < 0.0) x -= phi * n;
-  if (glm::dot(v, n) >= 0.0) return false;
-  v = contactVelocity(v, n, m);
-  const Real vn = glm::dot(v, n);
-  if (vn < 0.0) v -= vn * n;
-  return true;
-}
-}  // namespace
 
 namespace {
 // The obstacles as the fountain kernel tests them, precomputed once per step.
@@ -55,42 +41,73 @@ struct SphereTest {
   Real surface;  // sphere radius + particle radius
   Real reach2;   // (surface + slop)²: nothing to do when |x − c|² ≥ reach2
 };
-constexpr std::size_t kMaxFusedObstacles = 16;  // per kind; more are ignored (the fountain has 1 + 3)
-constexpr std::size_t kBlock = 256;             // particles per block: a block's x and v stay in L1
+constexpr std::size_t kBlock = 256;  // particles per block: a block's x and v stay in L1
+
+/// A table of n precomputed obstacle tests: on the stack for the usual few, on the heap beyond that (no
+/// cap on the number of obstacles, and no allocation for scenes like the fountain's 1 + 3).
+template <typename T>
+class ObstacleTable {
+ public:
+  explicit ObstacleTable(std::size_t n) : items_(n <= kInline ? std::span<T>(local_.data(), n) : heapOf(n)) {}
+  std::span<T> items() const { return items_; }
+
+ private:
+  static constexpr std::size_t kInline = 16;
+  std::span<T> heapOf(std::size_t n) {
+    heap_.resize(n);
+    return heap_;
+  }
+  std::array<T, kInline> local_{};
+  std::vector<T> heap_;
+  std::span<T> items_;
+};
+
+// The swirl's velocity change over half a step, (h/2) S (ŷ × r⊥)/(|r⊥|² + r_c²) with ŷ × (rx, 0, rz) =
+// (rz, 0, −rx); halfSwirl = (h/2) S.
+inline Vec3 swirlKick(const Vec3& x, Real cx, Real cz, Real halfSwirl, Real core2) {
+  const Real rx = x.x - cx, rz = x.z - cz;
+  const Real s = halfSwirl / (rx * rx + rz * rz + core2);
+  return Vec3(s * rz, 0.0, -s * rx);
+}
 }  // namespace
 
 FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h) {
-  const Real keep = 1.0 - h * d.dragRate;
-  const Vec3 dv = h * (d.gravity + d.dragRate * d.wind);
+  const Real keep = 1.0 - 0.5 * h * d.dragRate;                    // each half kick (kernels.h)
+  const Vec3 halfKick = 0.5 * h * (d.gravity + d.dragRate * d.wind);  // (h/2) G
   const Vec3 g = d.gravity;
-  const Real swirl = h * d.vortexStrength, core2 = d.vortexCore * d.vortexCore;
+  const Real halfSwirl = 0.5 * h * d.vortexStrength, core2 = d.vortexCore * d.vortexCore;
   const Real cx = d.vortexCenter.x, cz = d.vortexCenter.z;
   const ContactMaterial material = d.material;
-  PlaneTest planes[kMaxFusedObstacles];
-  SphereTest spheres[kMaxFusedObstacles];
-  const std::size_t nPlanes = std::min(d.planes.size(), kMaxFusedObstacles);
-  const std::size_t nSpheres = std::min(d.spheres.size(), kMaxFusedObstacles);
-  for (std::size_t k = 0; k < nPlanes; ++k) {
+  const ContactStep contactStep{d.gravity, h};
+  ObstacleTable<PlaneTest> planeTable(d.planes.size());
+  ObstacleTable<SphereTest> sphereTable(d.spheres.size());
+  const std::span<PlaneTest> planes = planeTable.items();
+  const std::span<SphereTest> spheres = sphereTable.items();
+  for (std::size_t k = 0; k < planes.size(); ++k) {
     planes[k] = {d.planes[k].normal, glm::dot(d.planes[k].normal, d.planes[k].point) + d.radius};
   }
-  for (std::size_t k = 0; k < nSpheres; ++k) {
+  for (std::size_t k = 0; k < spheres.size(); ++k) {
     const Real surface = d.spheres[k].radius + d.radius, reach = surface + kContactSlop;
     spheres[k] = {d.spheres[k].center, surface, reach * reach};
   }
-  // One obstacle pass for one particle, in the order of collideWithObstacles (planes, then spheres).
+  std::size_t contacts = 0, held = 0;
+  // One obstacle pass for one particle, in the order of collideWithObstacles (planes, then spheres), with
+  // the library's contact model.
   auto resolveContacts = [&](Vec3& x, Vec3& v) {
-    std::size_t n = 0;
-    for (std::size_t k = 0; k < nPlanes; ++k) {
-      n += contact(x, v, planes[k].normal, glm::dot(planes[k].normal, x) - planes[k].offset, material);
+    auto count = [&](const ContactResult& r) {
+      contacts += r.kind != ContactKind::None;
+      held += r.heldBySafetyNet;
+    };
+    for (const PlaneTest& plane : planes) {
+      count(resolveContact(x, v, plane.normal, glm::dot(plane.normal, x) - plane.offset, material, contactStep));
     }
-    for (std::size_t k = 0; k < nSpheres; ++k) {
-      const Vec3 r = x - spheres[k].center;
+    for (const SphereTest& sphere : spheres) {
+      const Vec3 r = x - sphere.center;
       const Real l2 = glm::dot(r, r);
-      if (l2 >= spheres[k].reach2 || l2 <= 0.0) continue;  // far: no square root
+      if (l2 >= sphere.reach2 || l2 <= 0.0) continue;  // far: no square root
       const Real l = std::sqrt(l2);
-      n += contact(x, v, r / l, l - spheres[k].surface, material);
+      count(resolveContact(x, v, r / l, l - sphere.surface, material, contactStep));
     }
-    return n;
   };
 
   const std::size_t count = p.size();
@@ -100,7 +117,7 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
   Real* __restrict lifetimes = p.lifetime.data();
   Real* __restrict inverseMasses = p.inverseMass.data();
   Color* __restrict colors = p.color.data();
-  std::size_t kept = 0, contacts = 0;
+  std::size_t kept = 0;
   Real speed2 = 0.0, height = 0.0;
   std::uint32_t touching[kBlock];  // survivors of the block that reach an obstacle (offsets from its start)
   for (std::size_t begin = 0; begin < count; begin += kBlock) {
@@ -112,18 +129,14 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
     for (std::size_t i = begin; i < end; ++i) {
       const Real age = ages[i] + h;
       if (age >= lifetimes[i]) [[unlikely]] continue;  // expired: not kept
-      Vec3 xi = xs[i];
-      const Real rx = xi.x - cx, rz = xi.z - cz;
-      const Real s = swirl / (rx * rx + rz * rz + core2);  // ŷ × (rx, 0, rz) = (rz, 0, −rx)
-      const Vec3 vi = keep * vs[i] + dv + Vec3(s * rz, 0.0, -s * rx);
-      xi += h * vi;
+      const Vec3 half = keep * vs[i] + halfKick + swirlKick(xs[i], cx, cz, halfSwirl, core2);
+      const Vec3 xi = xs[i] + h * half;
+      const Vec3 vi = keep * half + halfKick + swirlKick(xi, cx, cz, halfSwirl, core2);
       bool touches = false;
-      for (std::size_t k = 0; k < nPlanes; ++k) {
-        touches |= glm::dot(planes[k].normal, xi) - planes[k].offset < kContactSlop;
-      }
-      for (std::size_t k = 0; k < nSpheres; ++k) {
-        const Vec3 r = xi - spheres[k].center;
-        touches |= glm::dot(r, r) < spheres[k].reach2;
+      for (const PlaneTest& plane : planes) touches |= glm::dot(plane.normal, xi) - plane.offset < kContactSlop;
+      for (const SphereTest& sphere : spheres) {
+        const Vec3 r = xi - sphere.center;
+        touches |= glm::dot(r, r) < sphere.reach2;
       }
       touching[nTouching] = static_cast<std::uint32_t>(kept - first);
       nTouching += touches;
@@ -139,9 +152,7 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
       ++kept;
     }
     // Pass 2: the contact model for the flagged particles, while the block is in cache.
-    for (std::size_t n = 0; n < nTouching; ++n) {
-      contacts += resolveContacts(xs[first + touching[n]], vs[first + touching[n]]);
-    }
+    for (std::size_t n = 0; n < nTouching; ++n) resolveContacts(xs[first + touching[n]], vs[first + touching[n]]);
     // Pass 3: the energy sums. A NaN or ±∞ anywhere in x or v makes them non-finite (0·∞ is NaN
     // too), so they are also the guard's finiteness test.
     for (std::size_t i = first; i < kept; ++i) {
@@ -152,6 +163,7 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
   p.truncate(kept);
   FountainStepStats stats;
   stats.contacts = contacts;
+  stats.heldBySafetyNet = held;
   stats.expired = count - kept;
   stats.nonFinite = !(std::isfinite(speed2) && std::isfinite(height));
   stats.kineticPerMass = 0.5 * speed2;

@@ -38,4 +38,13 @@ void ParticleSystem::forceDifferential(Real t, std::span<const Real> q, std::spa
   accumulateDragDifferential(forces, t, asVec3(q), asVec3(v), particles.inverseMass, asVec3(dv), df);
 }
 
+bool ParticleSystem::forceJacobianDiagonalBlocks(Real t, std::span<const Real> q, std::span<const Real> v,
+                                                 std::span<Mat3> dfdq, std::span<Mat3> dfdv) const {
+  std::fill(dfdq.begin(), dfdq.end(), Mat3(0.0));
+  std::fill(dfdv.begin(), dfdv.end(), Mat3(0.0));
+  springs::accumulateSpringJacobianDiagonal(springs, asVec3(q), dfdq, dfdv);
+  accumulateDragJacobianDiagonal(forces, t, asVec3(q), asVec3(v), particles.inverseMass, dfdv);
+  return true;
+}
+
 }  // namespace pba::particles

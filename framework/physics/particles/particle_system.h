@@ -35,6 +35,10 @@ class ParticleSystem final : public ode::SecondOrderSystem {
   void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
   void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
                          std::span<const Real> dv, std::span<Real> out) const override;
+  /// Springs (−K_s, −K_d at both ends) and drag; gravity and the position fields add nothing (their small
+  /// ∂f/∂x is left out of the differential too).
+  bool forceJacobianDiagonalBlocks(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Mat3> dfdq,
+                                   std::span<Mat3> dfdv) const override;
 
  private:
   std::vector<Real> dofInverseMass_;

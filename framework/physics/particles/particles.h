@@ -1,5 +1,5 @@
 #pragma once
-// Particles as a structure of arrays (DESIGN.md §2): one array per field, so that a kernel touching
+// Particles as a structure of arrays (docs/architecture.md §2): one array per field, so that a kernel touching
 // positions and velocities streams exactly those. A particle is {m, x, v} (Lobb notes, "Particle");
 // inverse mass 0 marks a pinned particle (it ignores forces; kinematic when moved by hand).
 #include <cstddef>

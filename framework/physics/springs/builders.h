@@ -1,5 +1,5 @@
 #pragma once
-// Scene builders for mass-spring systems (DESIGN.md §1: used by the lab, the tests and the benchmarks).
+// Scene builders for mass-spring systems (docs/architecture.md §1: used by the lab, the tests and the benchmarks).
 // Each takes a description with documented defaults, validates it and appends particles and springs to
 // a ParticleSystem (so a scene can hold a rope and a chain side by side).
 #include "physics/core/result.h"

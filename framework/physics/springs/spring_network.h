@@ -44,6 +44,10 @@ void accumulateSpringForces(std::span<const Spring> springs, std::span<const Vec
 /// Adds the springs' force differential K dx + D dv (Jacobian above) to df.
 void accumulateSpringDifferential(std::span<const Spring> springs, std::span<const Vec3> x, std::span<const Vec3> dx,
                                   std::span<const Vec3> dv, std::span<Vec3> df);
+/// Adds every spring's part of the Jacobian's diagonal blocks, ∂F_i/∂x_i = −K_s and ∂F_i/∂v_i = −K_d at
+/// both ends, to dfdx and dfdv (one 3×3 block per particle): implicit Euler's preconditioner.
+void accumulateSpringJacobianDiagonal(std::span<const Spring> springs, std::span<const Vec3> x,
+                                      std::span<Mat3> dfdx, std::span<Mat3> dfdv);
 /// Σ k (l − L)² / 2 [J].
 Real springPotentialEnergy(std::span<const Spring> springs, std::span<const Vec3> x);
 /// Largest |l − L| / L over the springs (a measure of how far a stiff network is from rest).

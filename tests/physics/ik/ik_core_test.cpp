@@ -1,7 +1,10 @@
 // Tests of the IK library that use no exercise code: skeleton and forward kinematics, rotations,
 // linear algebra, the two-bone geometry, builders and input validation.
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -70,6 +73,37 @@ TEST(IkSkeleton, AddRejectsBadParentsAxesAndLimitsNamingTheField) {
   EXPECT_NE(s.add(j).error().find("limits"), std::string::npos);
 }
 
+// Non-finite values never reach a comparison (the test main traps invalid operations): each is
+// reported with the field that holds it.
+TEST(IkSkeleton, AddRejectsNonFiniteValuesNamingTheField) {
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  const std::vector<std::pair<const char*, std::function<void(Joint&)>>> cases = {
+      {"offset", [nan](Joint& j) { j.offset.y = nan; }},       {"axis", [nan](Joint& j) { j.axis.x = nan; }},
+      {"restRotation", [nan](Joint& j) { j.restRotation.w = nan; }}, {"limits[0]", [nan](Joint& j) { j.lo[0] = nan; }},
+      {"weight[0]", [nan](Joint& j) { j.weight[0] = nan; }},   {"maxRotation", [nan](Joint& j) { j.type = JointType::Free, j.maxRotation = nan; }},
+  };
+  for (const auto& [field, spoil] : cases) {
+    Skeleton s;
+    Joint j;
+    spoil(j);
+    const Result<int> r = s.add(j);
+    ASSERT_FALSE(r.ok()) << field;
+    EXPECT_NE(r.error().find(std::string(".") + field + ":"), std::string::npos) << r.error();
+  }
+  Rig rig = buildIkChain(ChainDesc{}).value();
+  for (int k = 0; k < 3; ++k) {
+    std::vector<Effector> effectors = rig.effectors;
+    const char* field = k == 0 ? "effectors[0].weight" : k == 1 ? "effectors[0].targetPosition" : "effectors[0].targetOrientation";
+    if (k == 0) effectors[0].weight = nan;
+    if (k == 1) effectors[0].targetPosition.z = nan;
+    if (k == 2) effectors[0].kind = EffectorKind::PositionOrientation, effectors[0].targetOrientation.x = nan;
+    Pose pose = rig.skeleton.restPose();
+    const SolveResult r = solve(rig.skeleton, pose, effectors, SolveOptions{});
+    EXPECT_EQ(r.status, SolveStatus::InvalidInput) << field;
+    EXPECT_EQ(r.message.rfind(field, 0), 0u) << r.message;
+  }
+}
+
 TEST(IkLinalg, SvdReconstructsAWideMatrixWithOrthonormalFactors) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<Real> u(-1.0, 1.0);
@@ -110,6 +144,38 @@ TEST(IkLinalg, CholeskySolvesASymmetricPositiveDefiniteSystemAndRejectsASingular
   Matrix S(2, 2);
   S(0, 0) = S(0, 1) = S(1, 0) = S(1, 1) = 1.0;
   EXPECT_FALSE(solveSpd(S, {1, 2}, x));
+}
+
+// A singular J Jᵀ (λ = 0, two equal rows of J; or a row that is a combination of the others) rounds
+// to a tiny positive pivot, never to an exact zero: the relative pivot test must report it, at
+// every scale of J. With damping λ² I added the same matrix solves, to 1e-12 relative.
+TEST(IkLinalg, SolveSpdReportsASingularGramMatrixWithoutDampingAtAnyScale) {
+  std::mt19937_64 rng(6);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  for (Real scale : {1e-6, 1.0, 1e6})
+    for (int trial = 0; trial < 20; ++trial) {
+      Matrix J(3, 7);
+      for (int c = 0; c < 7; ++c) {
+        J(0, c) = scale * u(rng);
+        J(1, c) = scale * u(rng);
+        J(2, c) = trial % 2 ? J(0, c) : 0.3 * J(0, c) - 1.7 * J(1, c);  // rank 2
+      }
+      std::vector<Real> x;
+      EXPECT_FALSE(solveSpd(gram(J), {1.0, 2.0, 3.0}, x)) << "scale " << scale << " trial " << trial;
+      Matrix A = gram(J);
+      const Real lambda2 = 1e-2 * scale * scale;
+      for (int i = 0; i < 3; ++i) A(i, i) += lambda2;
+      const std::vector<Real> b = {1.0, 2.0, 3.0};
+      ASSERT_TRUE(solveSpd(A, b, x)) << "scale " << scale;
+      for (int r = 0; r < 3; ++r) {
+        Real Ax = 0.0, size = 0.0;
+        for (int c = 0; c < 3; ++c) Ax += A(r, c) * x[size_t(c)], size += std::abs(A(r, c) * x[size_t(c)]);
+        EXPECT_NEAR(Ax, b[size_t(r)], 1e-12 * (size + 1.0));
+      }
+    }
+  Matrix zero(2, 2);
+  std::vector<Real> x;
+  EXPECT_FALSE(solveSpd(zero, {1.0, 1.0}, x));
 }
 
 TEST(IkTwoBone, GeometryPutsTheWristOnTheTargetAndTheElbowInThePolePlane) {
@@ -171,7 +237,84 @@ TEST(IkSolve, AnalyticSolverRefusesLongChainsWithNotApplicable) {
   EXPECT_FALSE(r.message.empty());
 }
 
-// Solver names: IkSolverNames.RoundTripEverySolverAndListThemInOrder (ik_descent_test.cpp).
+// One table drives every name: the short names round-trip, the table lists the methods in
+// SolverKind order without a gap, and the lists the lab's menus read match their enums' order.
+TEST(IkSolverNames, RoundTripEverySolverAndListThemInOrder) {
+  const std::vector<std::string> names = solverNames();
+  ASSERT_EQ(names.size(), solverTable().size());
+  for (size_t k = 0; k < names.size(); ++k) {
+    EXPECT_EQ(static_cast<size_t>(solverTable()[k].kind), k);
+    SolverKind kind{};
+    ASSERT_TRUE(solverFromName(names[k], &kind)) << names[k];
+    EXPECT_EQ(static_cast<size_t>(kind), k);
+    EXPECT_EQ(names[k], solverName(kind));
+    EXPECT_FALSE(std::string(solverLongName(kind)).empty());
+  }
+  SolverKind kind{};
+  EXPECT_FALSE(solverFromName("newton", &kind));
+  EXPECT_EQ(lineSearchNames().size(), 3u);
+  EXPECT_STREQ(lineSearchName(LineSearch::GoldenSection), "golden");
+  EXPECT_EQ(jacobianLimitModeNames()[static_cast<size_t>(JacobianLimitMode::ZeroColumns)], "zero_columns");
+  EXPECT_EQ(jacobianSourceNames()[static_cast<size_t>(JacobianSource::CentralDifferences)], "differences");
+}
+
+// Every setting of SolveOptions at its boundary: the value just outside the valid range (zero
+// iteration caps, negative damping, tolerance ≤ 0, non-finite values, enum values out of range)
+// gives InvalidInput with a message naming the field; the value on the boundary is accepted.
+TEST(IkSolveOptions, EveryFieldIsValidatedAtItsBoundaryNamingTheField) {
+  const Real nan = std::numeric_limits<Real>::quiet_NaN(), inf = std::numeric_limits<Real>::infinity();
+  struct Case {
+    const char* field;
+    std::function<void(SolveOptions&)> bad;
+    std::function<void(SolveOptions&)> edge;  // valid boundary value (nullptr: none to try)
+  };
+  const std::vector<Case> cases = {
+      {"options.solver", [](SolveOptions& o) { o.solver = static_cast<SolverKind>(99); }, nullptr},
+      {"options.tolerance", [](SolveOptions& o) { o.tolerance = 0.0; }, [](SolveOptions& o) { o.tolerance = 1e-300; }},
+      {"options.tolerance", [nan](SolveOptions& o) { o.tolerance = nan; }, nullptr},
+      {"options.angleTolerance", [](SolveOptions& o) { o.angleTolerance = -1e-3; }, nullptr},
+      {"options.angleTolerance", [inf](SolveOptions& o) { o.angleTolerance = inf; }, nullptr},
+      {"options.maxIterations", [](SolveOptions& o) { o.maxIterations = 0; }, [](SolveOptions& o) { o.maxIterations = 1; }},
+      {"options.maxSeconds", [](SolveOptions& o) { o.maxSeconds = -1e-9; }, [](SolveOptions& o) { o.maxSeconds = 0.0; }},
+      {"options.maxSeconds", [nan](SolveOptions& o) { o.maxSeconds = nan; }, nullptr},
+      {"options.stallIterations", [](SolveOptions& o) { o.stallIterations = -1; }, [](SolveOptions& o) { o.stallIterations = 0; }},
+      {"options.stallRatio", [](SolveOptions& o) { o.stallRatio = 1.0; }, [](SolveOptions& o) { o.stallRatio = 0.0; }},
+      {"options.stallRatio", [](SolveOptions& o) { o.stallRatio = -0.1; }, nullptr},
+      {"options.limitMode", [](SolveOptions& o) { o.limitMode = static_cast<JacobianLimitMode>(7); }, nullptr},
+      {"options.jacobian", [](SolveOptions& o) { o.jacobian = static_cast<JacobianSource>(-1); }, nullptr},
+      {"options.damping", [](SolveOptions& o) { o.damping = -1e-9; }, [](SolveOptions& o) { o.damping = 0.0; }},
+      {"options.damping", [inf](SolveOptions& o) { o.damping = inf; }, nullptr},
+      {"options.singularCutoff", [](SolveOptions& o) { o.singularCutoff = 1.0; }, [](SolveOptions& o) { o.singularCutoff = 0.0; }},
+      {"options.singularCutoff", [nan](SolveOptions& o) { o.singularCutoff = nan; }, nullptr},
+      {"options.maxErrorStep", [](SolveOptions& o) { o.maxErrorStep = -0.1; }, [](SolveOptions& o) { o.maxErrorStep = 0.0; }},
+      {"options.maxJointStep", [](SolveOptions& o) { o.maxJointStep = -0.1; }, [](SolveOptions& o) { o.maxJointStep = 0.0; }},
+      {"options.maxJointStep", [nan](SolveOptions& o) { o.maxJointStep = nan; }, nullptr},
+      {"options.orientationScale", [](SolveOptions& o) { o.orientationScale = -1.0; }, [](SolveOptions& o) { o.orientationScale = 0.0; }},
+      {"options.polePoint", [nan](SolveOptions& o) { o.polePoint = Vec3(0.0, nan, 0.0); }, nullptr},
+      {"options.lineSearch", [](SolveOptions& o) { o.lineSearch = static_cast<LineSearch>(3); }, nullptr},
+      {"options.gradientStep", [](SolveOptions& o) { o.gradientStep = 0.0; }, nullptr},
+      {"options.lineSearchMaxStep", [](SolveOptions& o) { o.lineSearchMaxStep = 0.0; }, nullptr},
+      {"options.lbfgsMemory", [](SolveOptions& o) { o.lbfgsMemory = 0; }, [](SolveOptions& o) { o.lbfgsMemory = 1; }},
+      {"options.restarts", [](SolveOptions& o) { o.restarts = -1; }, [](SolveOptions& o) { o.restarts = 0; }},
+  };
+  ChainDesc d;
+  d.links = 2;
+  const Rig rig = buildIkChain(d).value();
+  for (const Case& c : cases) {
+    SolveOptions o;
+    c.bad(o);
+    Pose pose = rig.skeleton.restPose();
+    const SolveResult r = solve(rig.skeleton, pose, rig.effectors, o);
+    EXPECT_EQ(r.status, SolveStatus::InvalidInput) << c.field;
+    EXPECT_EQ(r.message.rfind(std::string(c.field) + ":", 0), 0u) << c.field << " → " << r.message;
+    EXPECT_EQ(pose.dofs, rig.skeleton.restPose().dofs) << "an invalid solve leaves the pose alone";
+    if (!c.edge) continue;
+    SolveOptions edge;
+    c.edge(edge);
+    EXPECT_TRUE(validate(edge).ok()) << c.field << ": " << validate(edge).error();
+  }
+  EXPECT_TRUE(validate(SolveOptions{}).ok());
+}
 
 // Horn's fit (FABRIK's sub-bases): exact for a rotated point set; with the points leaving a rotation
 // free (one point, or coincident points) the member of the optimal family nearest the reference.

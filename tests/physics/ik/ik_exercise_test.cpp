@@ -1,9 +1,10 @@
 // Unit tests of the IK exercises' functions in isolation (suite names carry the tag: IK_1_… IK_6_…).
-// Expected values come from independent references computed here (rotations applied by glm,
-// finite differences, the SVD formula of the damped step).
+// Expected values come from independent references computed here (rotations applied by glm, angles
+// by acos, finite differences, the SVD formula of the damped step with Eigen's SVD).
 #include <cmath>
 #include <random>
 
+#include <Eigen/SVD>
 #include <gtest/gtest.h>
 
 #include "physics/ik/builders.h"
@@ -27,6 +28,11 @@ TEST(IK_1_AnalyticSingleJoint, TurnsTheBoneOntoTheTargetDirection) {
     EXPECT_NEAR(glm::length(r.axis), 1.0, 1e-12);
     // Rotating b by the answer points it along t: 1e-12 (unit vectors, a few roundings).
     EXPECT_VEC3_NEAR(glm::angleAxis(r.angle, r.axis) * glm::normalize(b), glm::normalize(t), 1e-12);
+    // The shortest such rotation: its axis is normal to both, its angle the one between them
+    // (acos of the normalised dot product, accurate away from 0 and π: 1e-9 rad).
+    EXPECT_NEAR(glm::dot(r.axis, glm::normalize(b)), 0.0, 1e-12);
+    EXPECT_NEAR(glm::dot(r.axis, glm::normalize(t)), 0.0, 1e-12);
+    EXPECT_NEAR(r.angle, std::acos(glm::dot(glm::normalize(b), glm::normalize(t))), 1e-9);
   }
 }
 
@@ -50,6 +56,11 @@ TEST(IK_2_CcdJointUpdate, RotatesTheEffectorOntoTheRayToTheTarget) {
     // Same distance from the pivot, and on the ray pivot → target.
     EXPECT_NEAR(glm::length(moved - p), glm::length(e - p), 1e-12);
     EXPECT_VEC3_NEAR(glm::normalize(moved - p), glm::normalize(t - p), 1e-12);
+    // The shortest arc: a unit quaternion turning about V1 × V2 by the angle between V1 and V2
+    // (acos of the normalised dot product: 1e-9 rad), not a rotation with a twist added.
+    EXPECT_NEAR(glm::length(glm::dvec4(q.w, q.x, q.y, q.z)), 1.0, 1e-12);
+    const Vec3 n1 = glm::normalize(e - p), n2 = glm::normalize(t - p);
+    EXPECT_VEC3_NEAR(rotationVector(q), std::acos(glm::dot(n1, n2)) * glm::normalize(glm::cross(n1, n2)), 1e-9);
   }
 }
 
@@ -119,15 +130,19 @@ TEST(IK_4_DampedLeastSquaresStep, EqualsTheSingularValueFormula) {
     for (Real& x : J.data) x = u(rng);
     const std::vector<Real> e = {u(rng), u(rng), u(rng)};
     const std::vector<Real> step = dampedLeastSquaresStep(J, e, lambda);
-    // Reference: Σ σ/(σ² + λ²) (u·e) v from the SVD.
-    const Svd d = svd(J);
-    std::vector<Real> expected(7, 0.0);
-    for (size_t i = 0; i < d.sigma.size(); ++i) {
-      const Real c = d.sigma[i] / (d.sigma[i] * d.sigma[i] + lambda * lambda) * dot(d.u[i], e);
-      for (size_t k = 0; k < 7; ++k) expected[k] += c * d.v[i][k];
+    // Reference: Σ σ/(σ² + λ²) (u·e) v from Eigen's SVD of J (not the normal equations the step solves).
+    Eigen::MatrixXd Je(3, 7);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 7; ++c) Je(r, c) = J(r, c);
+    const Eigen::JacobiSVD<Eigen::MatrixXd> d(Je, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const Eigen::Vector3d ee(e[0], e[1], e[2]);
+    Eigen::VectorXd expected = Eigen::VectorXd::Zero(7);
+    for (int i = 0; i < 3; ++i) {
+      const Real s = d.singularValues()(i);
+      expected += s / (s * s + lambda * lambda) * d.matrixU().col(i).dot(ee) * d.matrixV().col(i);
     }
     ASSERT_EQ(step.size(), 7u);
-    for (size_t k = 0; k < 7; ++k) EXPECT_NEAR(step[k], expected[k], 1e-10) << "lambda " << lambda;
+    for (size_t k = 0; k < 7; ++k) EXPECT_NEAR(step[k], expected(Eigen::Index(k)), 1e-10) << "lambda " << lambda;
   }
 }
 
@@ -142,6 +157,8 @@ TEST(IK_4_DampedLeastSquaresStep, IsFiniteForASingularJacobian) {
   // and Jᵀ of that is (1/2.01, 1/2.01). Equivalently σ = √2, u = x, v = (1, 1)/√2 in the SVD formula.
   EXPECT_NEAR(step[0], 1.0 / 2.01, 1e-12);
   EXPECT_NEAR(step[1], 1.0 / 2.01, 1e-12);
+  // λ = 0 on the same J: J Jᵀ is singular and no step is defined; step (3) returns zeros.
+  for (Real x : dampedLeastSquaresStep(J, {1.0, 1.0, 0.0}, 0.0)) EXPECT_EQ(x, 0.0);
 }
 
 TEST(IK_5_FabrikPasses, KeepTheSegmentLengthsAndPinTheEnds) {

@@ -7,7 +7,10 @@
 #include <random>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "physics/ik/builders.h"
+#include "physics/ik/jacobian.h"
 #include "physics/ik/solver.h"
 
 namespace pba::ik::testing {
@@ -19,6 +22,30 @@ inline Rig chain(JointType joint, int links = 10, Real limitDegrees = 120.0) {
   d.links = links;
   d.limit = degToRad(limitDegrees);
   return buildIkChain(d).value();
+}
+
+/// Options of a solver test: the method as published (SolveOptions' defaults: no restarts, no step
+/// clamp, no line search of the Jacobian methods), iteration cap 1,000, joint limits off. An exercise
+/// test of IK-n must not depend on IK-6's clamp (one exercise, one grade): limits are IK-6's tests'
+/// business (ik_limits_test.cpp). `jacobian`: CentralDifferences keeps IK-3 out of a method's test.
+inline SolveOptions unlimited(SolverKind kind, JacobianSource jacobian = JacobianSource::Analytic) {
+  SolveOptions o;
+  o.solver = kind;
+  o.maxIterations = 1000;
+  o.enforceLimits = false;
+  o.jacobian = jacobian;
+  return o;
+}
+
+/// J at `pose` by central differences of forward kinematics (orientation scale 1 m/rad), as an Eigen
+/// matrix for reference computations (Eigen's SVD) independent of IK-3 and of linalg.cpp.
+inline Eigen::MatrixXd centralDifferenceJacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors) {
+  const JacobianLayout layout = planJacobian(s, pose, effectors, forwardKinematics(s, pose), 1.0);
+  const Matrix J = numericalJacobian(s, pose, effectors, layout, 1.0, kJacobianStep);
+  Eigen::MatrixXd out(J.rows, J.cols);
+  for (int r = 0; r < J.rows; ++r)
+    for (int c = 0; c < J.cols; ++c) out(r, c) = J(r, c);
+  return out;
 }
 
 struct BatchStats {

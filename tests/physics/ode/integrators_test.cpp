@@ -1,12 +1,14 @@
 // Tests of the integrators that are not exercises: midpoint, velocity Verlet, implicit Euler, adaptive,
 // the name table and the finite-difference Jacobian. Expected values come from closed forms.
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "oscillator_support.h"
+#include "support/fp_traps.h"
 
 namespace pba::ode {
 namespace {
@@ -71,7 +73,7 @@ TEST(Adaptive, MeetsItsToleranceWithFewerStepsThanAFixedStepOfEqualAccuracy) {
     SCOPED_TRACE(::testing::Message() << "tolerance " << tolerance);
     HarmonicOscillator osc;
     Integrator adaptive(IntegratorKind::Adaptive);
-    adaptive.adaptiveSettings.tolerance = tolerance;
+    ASSERT_TRUE(adaptive.setAdaptiveSettings({.tolerance = tolerance}).ok());
     adaptive.step(osc, T);  // one call: the controller chooses every substep
     const Real error = std::hypot(osc.positions()[0] - osc.exactPosition(T), osc.velocities()[0] - osc.exactVelocity(T));
     // Error per unit step ≤ tolerance ⇒ global error ≲ tolerance × T on this non-expanding system.
@@ -106,7 +108,7 @@ TEST(Adaptive, ShrinksTheStepNearPericentreOfAnEccentricOrbit) {
   desc.velocity = Vec3(0.0, 0.0, -0.5);  // start at apocentre of an e ≈ 0.75 orbit
   KeplerOrbit orbit(desc);
   Integrator adaptive(IntegratorKind::Adaptive);
-  adaptive.adaptiveSettings.tolerance = 1e-8;
+  ASSERT_TRUE(adaptive.setAdaptiveSettings({.tolerance = 1e-8}).ok());
   const Real e0 = orbit.energy();
   const Real T = orbit.period();
   const int frames = 200;
@@ -120,6 +122,115 @@ TEST(IntegratorNames, RoundTripAndRejectUnknownNames) {
   for (IntegratorKind k : kAllIntegrators) EXPECT_EQ(parseIntegrator(integratorName(k)), k);
   EXPECT_FALSE(parseIntegrator("leapfrog").has_value());
   EXPECT_EQ(integratorNames().size(), kAllIntegrators.size());
+}
+
+/// ẏ = −y, but the derivative is NaN below y = 0.3: a model of a force that overflows outside its domain.
+/// From y = 1 the solution e^(−t) stays above 0.3 up to t = 1.2, yet one DOPRI step of 1 s puts the
+/// fourth stage at y ≈ 0.11 (the tableau's large coefficients) and the sixth stage's derivative is NaN.
+class FragileDecay final : public OdeSystem {
+ public:
+  Real y = 1.0;
+  std::size_t stateSize() const override { return 1; }
+  void getState(std::span<Real> out) const override { out[0] = y; }
+  void setState(std::span<const Real> s) override { y = s[0]; }
+  void derivative(Real, std::span<const Real> s, std::span<Real> out) const override {
+    out[0] = s[0] > 0.3 ? -s[0] : std::numeric_limits<Real>::quiet_NaN();
+  }
+};
+
+TEST(Adaptive, RejectsASubstepWithANonFiniteErrorEstimateAndRetriesItSmaller) {
+  pba::testing::FloatingPointTrapsOff trapsOff;  // the oversized substep produces NaN on purpose
+  FragileDecay system;
+  AdaptiveState state;
+  Workspace w;
+  adaptiveStep(system, 1.0, {.tolerance = 1e-8}, state, w);
+  ASSERT_TRUE(std::isfinite(system.y)) << "a NaN substep was committed";
+  EXPECT_GE(state.nonFiniteRejections, 1);
+  EXPECT_EQ(state.shortfall, 0.0);
+  EXPECT_EQ(system.time(), 1.0);
+  EXPECT_NEAR(system.y, std::exp(-1.0), 1e-8);  // error per unit step ≤ tol over 1 s
+}
+
+TEST(Adaptive, AStateThatStaysNonFiniteIsNeverCommittedAndTheClockStaysWithIt) {
+  pba::testing::FloatingPointTrapsOff trapsOff;
+  FragileDecay system;
+  system.y = 0.2;  // below the domain: every derivative is NaN
+  AdaptiveState state;
+  Workspace w;
+  adaptiveStep(system, 0.5, {}, state, w);
+  EXPECT_EQ(system.y, 0.2);
+  EXPECT_EQ(system.time(), 0.0);
+  EXPECT_EQ(state.shortfall, 0.5);
+  EXPECT_EQ(state.accepted, 0);
+  EXPECT_GE(state.nonFiniteRejections, 1);
+}
+
+TEST(Adaptive, WhenTheSubstepCapStopsItTheStateAndTheClockAgreeAndTheShortfallIsReported) {
+  // Five substeps at tolerance 1e-12 cannot cover 10 s of the oscillator (the controller grows the step
+  // by at most 5× per substep from its first guess). The state must be the solution at the time the
+  // system reports, not at the end of the interval.
+  HarmonicOscillator osc;
+  Integrator integrator(IntegratorKind::Adaptive);
+  ASSERT_TRUE(integrator.setAdaptiveSettings({.tolerance = 1e-12, .minStep = 1e-9, .maxSubsteps = 5}).ok());
+  integrator.step(osc, 10.0);
+  const Real shortfall = integrator.adaptiveState().shortfall;
+  EXPECT_GT(shortfall, 0.0);
+  EXPECT_EQ(integrator.lastShortfall(), shortfall);
+  EXPECT_NEAR(osc.time(), 10.0 - shortfall, 1e-12);
+  EXPECT_LT(osc.time(), 10.0);
+  // Accepted substeps meet the tolerance per unit step: error ≤ 1e-12 × elapsed time (and a margin).
+  EXPECT_NEAR(osc.positions()[0], osc.exactPosition(osc.time()), 1e-10);
+  EXPECT_NEAR(osc.velocities()[0], osc.exactVelocity(osc.time()), 1e-10);
+}
+
+TEST(IntegratorSettings, InvalidValuesAreRefusedWithTheFieldNamedAndTheOldSettingsKept) {
+  Integrator integrator(IntegratorKind::ImplicitEuler);
+  const Real nan = std::numeric_limits<Real>::quiet_NaN(), inf = std::numeric_limits<Real>::infinity();
+  struct ImplicitCase {
+    ImplicitEulerSettings settings;
+    const char* field;
+  };
+  for (const ImplicitCase& c : {ImplicitCase{{.maxIterations = 0}, "implicit.maxIterations"},
+                                ImplicitCase{{.maxIterations = -3}, "implicit.maxIterations"},
+                                ImplicitCase{{.relativeTolerance = 0.0}, "implicit.relativeTolerance"},
+                                ImplicitCase{{.relativeTolerance = -1e-8}, "implicit.relativeTolerance"},
+                                ImplicitCase{{.relativeTolerance = 1.0}, "implicit.relativeTolerance"},
+                                ImplicitCase{{.relativeTolerance = nan}, "implicit.relativeTolerance"}}) {
+    const Status s = integrator.setImplicitSettings(c.settings);
+    ASSERT_FALSE(s.ok()) << c.field;
+    EXPECT_EQ(s.error().rfind(c.field, 0), 0u) << s.error();
+  }
+  EXPECT_EQ(integrator.implicitSettings().maxIterations, ImplicitEulerSettings{}.maxIterations);
+  struct AdaptiveCase {
+    AdaptiveSettings settings;
+    const char* field;
+  };
+  for (const AdaptiveCase& c : {AdaptiveCase{{.tolerance = 0.0}, "adaptive.tolerance"},
+                                AdaptiveCase{{.tolerance = -1e-6}, "adaptive.tolerance"},
+                                AdaptiveCase{{.tolerance = inf}, "adaptive.tolerance"},
+                                AdaptiveCase{{.minStep = 0.0}, "adaptive.minStep"},
+                                AdaptiveCase{{.minStep = nan}, "adaptive.minStep"},
+                                AdaptiveCase{{.maxSubsteps = 0}, "adaptive.maxSubsteps"}}) {
+    const Status s = integrator.setAdaptiveSettings(c.settings);
+    ASSERT_FALSE(s.ok()) << c.field;
+    EXPECT_EQ(s.error().rfind(c.field, 0), 0u) << s.error();
+  }
+  EXPECT_EQ(integrator.adaptiveSettings().tolerance, AdaptiveSettings{}.tolerance);
+  // The smallest valid values are accepted.
+  EXPECT_TRUE(integrator.setImplicitSettings({.maxIterations = 1, .relativeTolerance = 1e-300}).ok());
+  EXPECT_TRUE(integrator.setAdaptiveSettings({.tolerance = 1e-300, .minStep = 1e-300, .maxSubsteps = 1}).ok());
+}
+
+TEST(Integrator, EveryMethodAdvancesTheStateAndTheTimeTogetherOrNeither) {
+  // A method either steps (the state moves and the clock advances by h) or, as an exercise stub, does
+  // nothing at all: a stub that advanced the clock would make the state lie about its time.
+  for (IntegratorKind k : kAllIntegrators) {
+    HarmonicOscillator osc;
+    Integrator integrator(k);
+    integrator.step(osc, 0.05);
+    const bool moved = osc.positions()[0] != 1.0 || osc.velocities()[0] != 0.0;
+    EXPECT_EQ(osc.time(), moved ? 0.05 : 0.0) << integratorName(k);
+  }
 }
 
 TEST(Integrator, AdvancesTheSystemTimeByTheStep) {

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "physics/ode/integrators.h"
+#include "physics/particles/collision.h"
 #include "physics/particles/emitter.h"
+#include "physics/particles/forces.h"
 #include "physics/particles/particle_system.h"
 #include "support/expect_helpers.h"
 #include "support/fp_traps.h"
@@ -21,7 +23,7 @@ TEST(ParticleForces, LinearDragApproachesTerminalVelocityExponentially) {
   sys.particles.add(Vec3(0.0, 100.0, 0.0), Vec3(3.0, 0.0, 0.0), m);
   sys.syncMasses();
   ode::Integrator integrator(ode::IntegratorKind::Adaptive);  // not an exercise
-  integrator.adaptiveSettings.tolerance = 1e-12;
+  ASSERT_TRUE(integrator.setAdaptiveSettings({.tolerance = 1e-12}).ok());
   const Real T = 1.0;
   for (int i = 0; i < 1000; ++i) integrator.step(sys, 1e-3);
   const Vec3 terminal = m * sys.forces.gravity / 0.5;
@@ -37,7 +39,7 @@ TEST(ParticleForces, QuadraticDragReachesItsTerminalSpeed) {
   sys.particles.add(Vec3(0.0), Vec3(0.0), m);
   sys.syncMasses();
   ode::Integrator integrator(ode::IntegratorKind::Adaptive);
-  integrator.adaptiveSettings.tolerance = 1e-12;
+  ASSERT_TRUE(integrator.setAdaptiveSettings({.tolerance = 1e-12}).ok());
   for (int i = 0; i < 100; ++i) integrator.step(sys, 0.1);
   EXPECT_NEAR(-sys.particles.velocity[0].y, std::sqrt(m * kStandardGravity / 0.02), 1e-6);
 }
@@ -124,6 +126,53 @@ TEST(NonFiniteGuard, ANanInjectedIntoOneParticleIsNamedAfterOneStep) {
   sys.particles.position[7] = Vec3(0.0);
   sys.particles.velocity[7] = Vec3(0.0, std::numeric_limits<Real>::infinity(), 0.0);
   EXPECT_EQ(*describeNonFinite(sys.particles), "particle 7 velocity is infinite");
+}
+
+TEST(Validation, ForcesMaterialsAndObstaclesNameTheOffendingField) {
+  const Real nan = std::numeric_limits<Real>::quiet_NaN();
+  auto names = [](const Status& s, const char* field) {
+    return !s.ok() && s.error().rfind(field, 0) == 0 ? ::testing::AssertionSuccess()
+                                                      : ::testing::AssertionFailure() << "got: " << s.error();
+  };
+  EXPECT_TRUE(validate(ForceDesc{}).ok());
+  ForceDesc forces;
+  forces.drag.linear = -0.1;  // negative damping would feed energy in
+  EXPECT_TRUE(names(validate(forces), "forces.drag.linear"));
+  forces = ForceDesc{};
+  forces.drag.quadratic = nan;
+  EXPECT_TRUE(names(validate(forces), "forces.drag.quadratic"));
+  forces = ForceDesc{};
+  forces.gravity.y = std::numeric_limits<Real>::infinity();
+  EXPECT_TRUE(names(validate(forces), "forces.gravity"));
+  forces = ForceDesc{};
+  forces.vortices.push_back({Vec3(0.0), Vec3(0.0, 2.0, 0.0), 1.0, 0.5});
+  EXPECT_TRUE(names(validate(forces), "forces.vortices.axis"));
+  forces.vortices.back() = {Vec3(0.0), kUp, 1.0, 0.0};
+  EXPECT_TRUE(names(validate(forces), "forces.vortices.coreRadius"));
+
+  EXPECT_TRUE(validate(ContactMaterial{}).ok());
+  EXPECT_TRUE(validate(ContactMaterial{1.0, 0.0, 0.0, 0.0}).ok());  // the boundaries themselves
+  EXPECT_TRUE(names(validate(ContactMaterial{1.5, 0.6, 0.4, 0.1}), "material.restitution"));
+  EXPECT_TRUE(names(validate(ContactMaterial{0.5, -0.1, 0.4, 0.1}), "material.staticFriction"));
+  EXPECT_TRUE(names(validate(ContactMaterial{0.5, 0.6, -0.4, 0.1}), "material.kineticFriction"));
+  EXPECT_TRUE(names(validate(ContactMaterial{0.5, 0.6, 0.4, nan}), "material.restingSpeed"));
+
+  Obstacles o;
+  o.planes.push_back({});
+  o.spheres.push_back({Vec3(0.0), 1.0});
+  o.boxes.push_back({});
+  EXPECT_TRUE(validate(o).ok());
+  o.planes[0].normal = Vec3(0.0, 2.0, 0.0);
+  EXPECT_TRUE(names(validate(o), "planes.normal"));
+  o.planes[0].normal = kUp;
+  o.spheres[0].radius = 0.0;
+  EXPECT_TRUE(names(validate(o), "spheres.radius"));
+  o.spheres[0].radius = 1.0;
+  o.boxes[0].halfExtents.z = -1.0;
+  EXPECT_TRUE(names(validate(o), "boxes.halfExtents"));
+  o.boxes[0].halfExtents.z = 0.5;
+  o.material.restitution = -0.1;
+  EXPECT_TRUE(names(validate(o), "material.restitution"));
 }
 
 }  // namespace

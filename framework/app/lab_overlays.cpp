@@ -1,0 +1,123 @@
+// The windows of drawLabUi that are not the control panel: live plots (lower right), the scene's
+// legend (lower left of the free area, kept while Tab hides the panels), short notices (top centre)
+// and the banners of the instability guard and of exercise stubs.
+#include <algorithm>
+#include <cfloat>
+
+#include <imgui.h>
+
+#include "app/lab_ui.h"
+#include "physics/exercises/not_implemented.h"
+
+namespace pba::app::detail {
+namespace {
+
+constexpr float kMargin = 8.0f;  // [px] between windows and the window's edge
+
+/// A line plot of `series` filling `size`, 2 px wide (3 in lecture mode): ImGui's PlotLines draws 1 px,
+/// which a projector loses. The caption (plotCaption) says what the vertical range is.
+void plotSeries(const std::string& name, const std::vector<double>& series, ImVec2 size, bool lecture) {
+  const PlotScale scale = plotScale(series);
+  const ImVec2 o = ImGui::GetCursorScreenPos();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), ImGui::GetColorU32(ImGuiCol_FrameBg), ImGui::GetStyle().FrameRounding);
+  const float pad = 0.2f * ImGui::GetFontSize();
+  std::vector<ImVec2> points;
+  points.reserve(series.size());
+  const double n = static_cast<double>(std::max<size_t>(series.size() - 1, 1));
+  for (size_t i = 0; i < series.size(); ++i) {
+    const double y = (series[i] - scale.offset - scale.lo) / (scale.hi - scale.lo);
+    points.emplace_back(o.x + pad + (size.x - 2.0f * pad) * static_cast<float>(static_cast<double>(i) / n),
+                        o.y + size.y - pad - (size.y - 2.0f * pad - 1.8f * ImGui::GetFontSize()) * static_cast<float>(std::clamp(y, 0.0, 1.0)));
+  }
+  if (points.size() >= 2)
+    draw->AddPolyline(points.data(), static_cast<int>(points.size()), ImGui::GetColorU32(ImGuiCol_PlotLines), 0, lecture ? 3.0f : 2.0f);
+  // The caption on two lines, so a narrow (lecture) plot never cuts the range off: "name = value" on
+  // top, the range (and the mean of a deviation plot) below it in a smaller size.
+  const std::string caption = plotCaption(name, series, scale);
+  const size_t split = caption.find("  ");
+  const float font = ImGui::GetFontSize();
+  draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text), caption.substr(0, split).c_str());
+  if (split != std::string::npos)
+    draw->AddText(ImGui::GetFont(), 0.8f * font, ImVec2(o.x + pad, o.y + 0.5f * pad + font), ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                  caption.substr(split + 2).c_str());
+  ImGui::Dummy(size);
+}
+
+}  // namespace
+
+float plotPanel(LabSession& session, const UiState& ui) {
+  // Only the chosen metrics this scene has (a plotted metric of another scene is kept, not shown).
+  std::vector<std::pair<std::string, std::vector<double>>> shown;
+  for (const std::string& name : session.settings().plotted) {
+    std::vector<double> series = session.plots().series(name);
+    if (!series.empty()) shown.emplace_back(name, std::move(series));
+  }
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (shown.empty()) return display.y;
+  // Lecture mode: lower and narrower plots, the scene keeps the room.
+  const float height = std::min(ImGui::GetFontSize() * (ui.lecture ? 3.6f : 5.0f), display.y * 0.16f);
+  ImGui::SetNextWindowPos(ImVec2(display.x - kMargin, display.y - kMargin), ImGuiCond_Always, ImVec2(1, 1));
+  // An explicit size: an auto-fitted axis set every frame would hide the window's contents.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float windowHeight = static_cast<float>(shown.size()) * (height + style.ItemSpacing.y) +
+                             ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y;
+  ImGui::SetNextWindowSize(ImVec2(display.x * (ui.lecture ? 0.28f : 0.38f), windowHeight), ImGuiCond_Always);
+  ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  for (const auto& [name, series] : shown) plotSeries(name, series, ImVec2(ImGui::GetContentRegionAvail().x, height), ui.lecture);
+  ImGui::End();
+  return display.y - kMargin - windowHeight;
+}
+
+void legendWindow(const Scene& scene, float left) {
+  const std::vector<LegendEntry> entries = scene.legend();
+  if (entries.empty()) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(left, display.y - kMargin), ImGuiCond_Always, ImVec2(0, 1));
+  ImGui::SetNextWindowBgAlpha(0.85f);
+  ImGui::Begin("##legend", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  for (const LegendEntry& e : entries) {
+    ImGui::TextColored(ImVec4(e.color.r, e.color.g, e.color.b, 1.0f), "■");
+    ImGui::SameLine();
+    ImGui::TextUnformatted(e.text.c_str());
+  }
+  ImGui::End();
+}
+
+void noticeWindow(const UiState& ui) {
+  if (!ui.noticeVisible(ImGui::GetTime())) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0.5f * display.x, display.y * 0.12f), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  ImGui::Begin("##notice", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
+  ImGui::TextUnformatted(ui.notice.c_str());
+  ImGui::End();
+}
+
+void banners(LabSession& session) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  std::string text;
+  ImVec4 colour = kAlertRed;
+  if (const auto& guard = session.runner().guardMessage()) {
+    text = *guard;
+  } else if (const auto stubs = exercises::notImplementedTags(); !stubs.empty()) {
+    for (const std::string& tag : stubs) text += (text.empty() ? "" : ", ") + tag;
+    text += " not implemented: this lab runs with a stub. Complete the starred TODO block, then ./pba grade.";
+    colour = kWarnOrange;
+  }
+  if (text.empty()) return;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f + 100, 10), ImGuiCond_Always, ImVec2(0.5f, 0));
+  ImGui::SetNextWindowSize(ImVec2(std::min(display.x * 0.55f, 900.0f), 0), ImGuiCond_Always);
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
+  ImGui::Begin("##banner", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::End();
+  ImGui::PopStyleColor(2);
+}
+
+}  // namespace pba::app::detail

@@ -1,0 +1,125 @@
+#include "physics/collision/broad_phase.h"
+
+#include <algorithm>
+
+namespace pba::collision {
+
+std::vector<std::string> broadPhaseNames() { return {"tree", "sap", "brute-force"}; }
+
+BroadPhase::BroadPhase(BroadPhaseKind kind, Real margin) : kind_(kind), margin_(margin) {}
+
+int BroadPhase::add(const Aabb& aabb, int userData, bool isStatic) {
+  int id;
+  if (!freeProxies_.empty()) {
+    id = freeProxies_.back();
+    freeProxies_.pop_back();
+  } else {
+    id = static_cast<int>(proxies_.size());
+    proxies_.emplace_back();
+  }
+  Proxy& p = proxies_[id];
+  p.fat = isStatic ? aabb : aabb.fattened(margin_);
+  p.userData = userData;
+  p.isStatic = isStatic;
+  p.alive = true;
+  p.leaf = trees_[isStatic ? 1 : 0].createProxy(p.fat, id);
+  sorted_.push_back(id);
+  ++live_;
+  return id;
+}
+
+void BroadPhase::remove(int proxy) {
+  Proxy& p = proxies_[proxy];
+  trees_[p.isStatic ? 1 : 0].destroyProxy(p.leaf);
+  p.alive = false;
+  sorted_.erase(std::find(sorted_.begin(), sorted_.end(), proxy));
+  freeProxies_.push_back(proxy);
+  --live_;
+}
+
+void BroadPhase::move(int proxy, const Aabb& aabb) {
+  Proxy& p = proxies_[proxy];
+  if (p.fat.contains(aabb)) return;
+  p.fat = aabb.fattened(margin_);
+  trees_[p.isStatic ? 1 : 0].resetProxy(p.leaf, p.fat);
+}
+
+void BroadPhase::findPairs(std::vector<std::pair<int, int>>& pairs) {
+  pairs.clear();
+  switch (kind_) {
+    case BroadPhaseKind::Tree: pairsFromTree(pairs); break;
+    case BroadPhaseKind::SweepAndPrune: pairsFromSweep(pairs); break;
+    case BroadPhaseKind::BruteForce: pairsBruteForce(pairs); break;
+  }
+  for (auto& [a, b] : pairs)
+    if (a > b) std::swap(a, b);
+  std::sort(pairs.begin(), pairs.end());
+}
+
+void BroadPhase::pairsFromTree(std::vector<std::pair<int, int>>& pairs) const {
+  // Each moving proxy queries the moving tree (keeping a pair found from both sides once, by proxy id)
+  // and the static tree.
+  for (std::size_t i = 0; i < proxies_.size(); ++i) {
+    const Proxy& p = proxies_[i];
+    if (!p.alive || p.isStatic) continue;
+    const int self = static_cast<int>(i);
+    trees_[0].query(p.fat, [&](int leaf) {
+      const int j = trees_[0].userData(leaf);
+      if (j > self) pairs.emplace_back(p.userData, proxies_[j].userData);
+      return true;
+    });
+    trees_[1].query(p.fat, [&](int leaf) {
+      pairs.emplace_back(p.userData, proxies_[trees_[1].userData(leaf)].userData);
+      return true;
+    });
+  }
+}
+
+void BroadPhase::pairsFromSweep(std::vector<std::pair<int, int>>& pairs) {
+  // Axis of largest spread of the box centres (Ericson §7.5.2), re-chosen every call.
+  Vec3 sum(0.0), sum2(0.0);
+  int dynamicCount = 0;
+  for (int id : sorted_) {
+    if (proxies_[id].isStatic) continue;
+    const Vec3 c = proxies_[id].fat.center();
+    sum += c, sum2 += c * c, ++dynamicCount;
+  }
+  if (dynamicCount > 0) {
+    const Vec3 variance = sum2 / static_cast<Real>(dynamicCount) - (sum * sum) / static_cast<Real>(dynamicCount * dynamicCount);
+    axis_ = variance.x >= variance.y ? (variance.x >= variance.z ? 0 : 2) : (variance.y >= variance.z ? 1 : 2);
+  }
+  const int k = axis_;
+  // Insertion sort: nearly linear when the order changed little since the last step.
+  for (std::size_t i = 1; i < sorted_.size(); ++i) {
+    const int id = sorted_[i];
+    const Real key = proxies_[id].fat.min[k];
+    std::size_t j = i;
+    while (j > 0 && proxies_[sorted_[j - 1]].fat.min[k] > key) {
+      sorted_[j] = sorted_[j - 1];
+      --j;
+    }
+    sorted_[j] = id;
+  }
+  for (std::size_t i = 0; i < sorted_.size(); ++i) {
+    const Proxy& a = proxies_[sorted_[i]];
+    const Real end = a.fat.max[k];
+    for (std::size_t j = i + 1; j < sorted_.size(); ++j) {
+      const Proxy& b = proxies_[sorted_[j]];
+      if (b.fat.min[k] > end) break;
+      if (a.isStatic && b.isStatic) continue;
+      if (overlaps(a.fat, b.fat)) pairs.emplace_back(a.userData, b.userData);
+    }
+  }
+}
+
+void BroadPhase::pairsBruteForce(std::vector<std::pair<int, int>>& pairs) const {
+  for (std::size_t i = 0; i < proxies_.size(); ++i) {
+    if (!proxies_[i].alive) continue;
+    for (std::size_t j = i + 1; j < proxies_.size(); ++j) {
+      if (!proxies_[j].alive || (proxies_[i].isStatic && proxies_[j].isStatic)) continue;
+      if (overlaps(proxies_[i].fat, proxies_[j].fat)) pairs.emplace_back(proxies_[i].userData, proxies_[j].userData);
+    }
+  }
+}
+
+}  // namespace pba::collision

@@ -1,0 +1,207 @@
+// Polytope pairs by the separating axis test (Ericson §4.4 for boxes; Gregorius, "The Separating Axis
+// Test between Convex Polyhedra", GDC 2013, for hulls). For convex polytopes the candidate axes are the
+// face normals of both and the cross products of edge pairs; the axis of largest separation is the
+// minimum translation direction, so its separation equals the penetration depth EPA finds.
+//
+// Separation along a unit axis L (oriented from A to B) is measured through support points:
+//   s(L) = L·(c_B − c_A) − ext_A(L) − ext_B(−L),   ext_X(d) = d·(support_X(d) − c_X),
+// i.e. the gap between the extreme points of A along L and of B along −L.
+//
+// Faces are preferred over edges, and A's faces over B's, unless the other is clearly better (by
+// kAxisTolerance): that keeps the chosen feature from flickering between frames (Box2D v3 prefers
+// faces the same way in b2CollidePolygons).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "physics/collision/narrow_phase.h"
+#include "physics/collision/polytope_contact.h"
+
+namespace pba::collision {
+namespace {
+
+using detail::clipAgainstFace;
+using detail::edgeContact;
+using detail::facePolygon;
+using detail::incidentFace;
+
+constexpr Real kAxisTolerance = 5e-4;  // [m] (a tenth of Box2D's linear slop)
+
+// ext(d) of a box with rotation columns r and half extents h: d · (the corner that maximises d·x).
+Real boxExtent(const Mat3& r, const Vec3& h, const Vec3& d) {
+  Vec3 corner(0.0);
+  for (int k = 0; k < 3; ++k) corner += (glm::dot(r[k], d) >= 0.0 ? h[k] : -h[k]) * r[k];
+  return glm::dot(d, corner);
+}
+
+}  // namespace
+
+Manifold collideBoxes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
+  const Mat3 ra = glm::mat3_cast(pa.rotation), rb = glm::mat3_cast(pb.rotation);
+  const Vec3& ha = a.halfExtents;
+  const Vec3& hb = b.halfExtents;
+  const Vec3 d = pb.position - pa.position;
+  Manifold none;
+  // Face axes of A and of B.
+  Real sepA = -std::numeric_limits<Real>::max(), sepB = sepA, sepE = sepA;
+  int faceA = 0, faceB = 0, edgeI = 0, edgeJ = 0;
+  Vec3 edgeAxis(0.0);
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 n = glm::dot(ra[i], d) >= 0.0 ? ra[i] : -ra[i];
+    const Real s = glm::dot(n, d) - boxExtent(ra, ha, n) - boxExtent(rb, hb, -n);
+    if (s > margin) return none;
+    if (s > sepA) sepA = s, faceA = 2 * i + (glm::dot(ra[i], d) >= 0.0 ? 0 : 1);
+  }
+  for (int j = 0; j < 3; ++j) {
+    const Vec3 n = glm::dot(rb[j], -d) >= 0.0 ? rb[j] : -rb[j];  // B's face normal toward A
+    const Real s = glm::dot(n, -d) - boxExtent(rb, hb, n) - boxExtent(ra, ha, -n);
+    if (s > margin) return none;
+    if (s > sepB) sepB = s, faceB = 2 * j + (glm::dot(rb[j], -d) >= 0.0 ? 0 : 1);
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      Vec3 l = glm::cross(ra[i], rb[j]);
+      const Real len = glm::length(l);
+      if (len < 1e-6) continue;  // parallel edges: covered by the face axes
+      l /= len;
+      if (glm::dot(l, d) < 0.0) l = -l;
+      const Real s = glm::dot(l, d) - boxExtent(ra, ha, l) - boxExtent(rb, hb, -l);
+      if (s > margin) return none;
+      if (s > sepE) sepE = s, edgeI = i, edgeJ = j, edgeAxis = l;
+    }
+  }
+  const Real bestFace = std::max(sepA, sepB);
+  // Apart but within the margin (a speculative contact): the axis separation is only a lower bound of
+  // the distance and the nearest features need not overlap in the face's plane, so the exact distance
+  // and closest features come from GJK (Box2D v3's b2CollidePolygons switches to segment distance the
+  // same way when the polygons are apart).
+  if (std::max(bestFace, sepE) > 0.0) return collideConvex(a, pa, b, pb, margin);
+  if (sepE > bestFace + kAxisTolerance) {
+    // Edge–edge: the edge of A along axis i nearest B, and the edge of B along j nearest A.
+    Vec3 ca = pa.position, cb = pb.position;
+    for (int k = 0; k < 3; ++k) {
+      if (k != edgeI) ca += (glm::dot(ra[k], edgeAxis) >= 0.0 ? ha[k] : -ha[k]) * ra[k];
+      if (k != edgeJ) cb += (glm::dot(rb[k], -edgeAxis) >= 0.0 ? hb[k] : -hb[k]) * rb[k];
+    }
+    const Vec3 ea = ha[edgeI] * ra[edgeI], eb = hb[edgeJ] * rb[edgeJ];
+    Manifold m = edgeContact(ca - ea, ca + ea, cb - eb, cb + eb, edgeAxis, margin, detail::edgeContactId(edgeI, edgeJ));
+    m.separation = sepE;
+    return m;
+  }
+  const bool flip = sepB > sepA + kAxisTolerance;
+  const Shape& ref = flip ? b : a;
+  const Shape& inc = flip ? a : b;
+  const Transform& pr = flip ? pb : pa;
+  const Transform& pi = flip ? pa : pb;
+  const int refFace = flip ? faceB : faceA;
+  const Vec3 n = pr.rotate(ref.hull->faces[refFace].normal);
+  const int incFace = incidentFace(*inc.hull, pi, n);
+  Manifold m = clipAgainstFace(*ref.hull, pr, refFace, facePolygon(*inc.hull, pi, incFace), 0.0, flip, margin, incFace);
+  // A face preferred within the tolerance over the true axis may not hold the deepest point in its
+  // prism, and clipping can then leave nothing: the general query still finds the contact.
+  if (m.count == 0) return collideConvex(a, pa, b, pb, margin);
+  m.separation = flip ? sepB : sepA;
+  return m;
+}
+
+namespace {
+
+// Gregorius (GDC 2013): edges A (faces a, b) and B (faces c, d) build a face of the Minkowski difference
+// iff the arcs a–b and (−c)–(−d) cross on the Gauss map. Arguments: a, b, and c = −n_c, d = −n_d.
+bool isMinkowskiFace(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  const Vec3 bxa = glm::cross(b, a), dxc = glm::cross(d, c);
+  const Real cba = glm::dot(c, bxa), dba = glm::dot(d, bxa), adc = glm::dot(a, dxc), bdc = glm::dot(b, dxc);
+  return cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0;
+}
+
+struct WorldHull {
+  std::vector<Vec3> vertices, normals;
+  std::vector<Real> offsets;
+  Vec3 centroid{0.0};
+};
+
+void toWorld(const ConvexHull& h, const Transform& pose, WorldHull& out) {
+  out.vertices.resize(h.vertices.size());
+  out.normals.resize(h.faces.size());
+  out.offsets.resize(h.faces.size());
+  out.centroid = Vec3(0.0);
+  for (std::size_t i = 0; i < h.vertices.size(); ++i) out.centroid += out.vertices[i] = pose.apply(h.vertices[i]);
+  out.centroid /= static_cast<Real>(h.vertices.size());
+  for (std::size_t f = 0; f < h.faces.size(); ++f) {
+    out.normals[f] = pose.rotate(h.faces[f].normal);
+    out.offsets[f] = glm::dot(out.normals[f], out.vertices[h.faces[f].vertices[0]]);
+  }
+}
+
+// Largest separation of B from any face plane of A: n·(B's support along −n) − offset.
+Real queryFaces(const WorldHull& a, const WorldHull& b, int& bestFace) {
+  Real best = -std::numeric_limits<Real>::max();
+  for (std::size_t f = 0; f < a.normals.size(); ++f) {
+    Real lowest = std::numeric_limits<Real>::max();
+    for (const Vec3& v : b.vertices) lowest = std::min(lowest, glm::dot(a.normals[f], v));
+    const Real s = lowest - a.offsets[f];
+    if (s > best) best = s, bestFace = static_cast<int>(f);
+  }
+  return best;
+}
+
+}  // namespace
+
+Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
+  if (a.kind == ShapeKind::Box && b.kind == ShapeKind::Box) return collideBoxes(a, pa, b, pb, margin);
+  thread_local WorldHull wa, wb;
+  const ConvexHull& ha = *a.hull;
+  const ConvexHull& hb = *b.hull;
+  toWorld(ha, pa, wa);
+  toWorld(hb, pb, wb);
+  Manifold none;
+  int faceA = 0, faceB = 0;
+  const Real sepA = queryFaces(wa, wb, faceA);
+  if (sepA > margin) return none;
+  const Real sepB = queryFaces(wb, wa, faceB);
+  if (sepB > margin) return none;
+  Real sepE = -std::numeric_limits<Real>::max();
+  int edgeA = -1, edgeB = -1;
+  Vec3 edgeAxis(0.0);
+  for (std::size_t i = 0; i < ha.edges.size(); ++i) {
+    const HullEdge& ea = ha.edges[i];
+    const Vec3 pa0 = wa.vertices[ea.a], da = wa.vertices[ea.b] - pa0;
+    const Vec3 &na = wa.normals[ea.faceA], &nb = wa.normals[ea.faceB];
+    for (std::size_t j = 0; j < hb.edges.size(); ++j) {
+      const HullEdge& eb = hb.edges[j];
+      if (!isMinkowskiFace(na, nb, -wb.normals[eb.faceA], -wb.normals[eb.faceB])) continue;
+      const Vec3 pb0 = wb.vertices[eb.a], db = wb.vertices[eb.b] - pb0;
+      Vec3 l = glm::cross(da, db);
+      const Real len = glm::length(l);
+      if (len < 1e-6 * glm::length(da) * glm::length(db)) continue;  // parallel: a face axis covers it
+      l /= len;
+      if (glm::dot(l, pa0 - wa.centroid) < 0.0) l = -l;  // outward from A
+      const Real s = glm::dot(l, pb0 - pa0);
+      if (s > margin) return none;
+      if (s > sepE) sepE = s, edgeA = static_cast<int>(i), edgeB = static_cast<int>(j), edgeAxis = l;
+    }
+  }
+  if (std::max({sepA, sepB, sepE}) > 0.0) return collideConvex(a, pa, b, pb, margin);  // apart: as for boxes
+  if (edgeA >= 0 && sepE > std::max(sepA, sepB) + kAxisTolerance) {
+    const HullEdge& ea = ha.edges[edgeA];
+    const HullEdge& eb = hb.edges[edgeB];
+    Manifold m = edgeContact(wa.vertices[ea.a], wa.vertices[ea.b], wb.vertices[eb.a], wb.vertices[eb.b], edgeAxis, margin,
+                             detail::edgeContactId(edgeA, edgeB));
+    m.separation = sepE;
+    return m;
+  }
+  const bool flip = sepB > sepA + kAxisTolerance;
+  const ConvexHull& ref = flip ? hb : ha;
+  const ConvexHull& inc = flip ? ha : hb;
+  const Transform& pr = flip ? pb : pa;
+  const Transform& pi = flip ? pa : pb;
+  const int refFace = flip ? faceB : faceA;
+  const int incFace = detail::incidentFaceAtSupport(inc, pi, pr.rotate(ref.faces[refFace].normal));
+  Manifold m = clipAgainstFace(ref, pr, refFace, facePolygon(inc, pi, incFace), 0.0, flip, margin, incFace);
+  if (m.count == 0) return collideConvex(a, pa, b, pb, margin);  // as for boxes
+  m.separation = flip ? sepB : sepA;
+  return m;
+}
+
+}  // namespace pba::collision

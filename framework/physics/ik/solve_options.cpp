@@ -1,0 +1,117 @@
+// The IK methods' name tables and the validation of SolveOptions (solver.h).
+#include <array>
+#include <limits>
+#include <string>
+
+#include "physics/core/format.h"
+#include "physics/core/validate.h"
+#include "physics/ik/solver.h"
+
+namespace pba::ik {
+
+namespace {
+
+constexpr std::array<SolverInfo, 9> kSolvers = {{
+    {SolverKind::Analytic, "analytic", "Analytic"},
+    {SolverKind::Ccd, "ccd", "Cyclic coordinate descent"},
+    {SolverKind::Fabrik, "fabrik", "FABRIK"},
+    {SolverKind::JacobianTranspose, "jt", "Jacobian transpose"},
+    {SolverKind::PseudoInverse, "pinv", "Pseudo-inverse (SVD)"},
+    {SolverKind::DampedLeastSquares, "dls", "Damped least squares"},
+    {SolverKind::SelectivelyDamped, "sdls", "Selectively damped least squares"},
+    {SolverKind::GradientDescent, "gradient", "Gradient descent"},
+    {SolverKind::Lbfgs, "lbfgs", "L-BFGS (quasi-Newton)"},
+}};
+
+constexpr bool tableInEnumOrder() {
+  for (size_t i = 0; i < kSolvers.size(); ++i)
+    if (static_cast<size_t>(kSolvers[i].kind) != i) return false;
+  return true;
+}
+static_assert(tableInEnumOrder(), "kSolvers must list the methods in SolverKind order");
+
+template <typename Enum>
+bool inTable(Enum e, const std::vector<std::string>& names) {
+  return static_cast<size_t>(e) < names.size();  // a negative value wraps to a huge one
+}
+
+constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
+
+Status checkNonNegative(const char* field, Real value) { return checkRange(field, value, 0.0, kInfinity); }
+
+Status checkBelowOne(const char* field, Real value) {
+  if (isFinite(value) && value >= 0.0 && value < 1.0) return Status::success();
+  return Error{std::string(field) + ": must be in [0, 1), got " + formatExact(value)};
+}
+
+Status checkAtLeast(const char* field, long long value, long long lowest) {
+  if (value >= lowest) return Status::success();
+  return Error{std::string(field) + ": must be >= " + std::to_string(lowest) + ", got " + std::to_string(value)};
+}
+
+}  // namespace
+
+std::span<const SolverInfo> solverTable() { return kSolvers; }
+const char* solverName(SolverKind k) { return kSolvers[static_cast<size_t>(k)].name; }
+const char* solverLongName(SolverKind k) { return kSolvers[static_cast<size_t>(k)].longName; }
+
+bool solverFromName(const std::string& name, SolverKind* kind) {
+  for (const SolverInfo& s : kSolvers)
+    if (name == s.name) {
+      *kind = s.kind;
+      return true;
+    }
+  return false;
+}
+
+std::vector<std::string> solverNames() {
+  std::vector<std::string> names;
+  for (const SolverInfo& s : kSolvers) names.emplace_back(s.name);
+  return names;
+}
+
+const std::vector<std::string>& lineSearchNames() {
+  static const std::vector<std::string> names = {"fixed", "backtracking", "golden"};
+  return names;
+}
+const char* lineSearchName(LineSearch s) { return lineSearchNames()[static_cast<size_t>(s)].c_str(); }
+
+const std::vector<std::string>& jacobianLimitModeNames() {
+  static const std::vector<std::string> names = {"clamp", "zero_columns"};
+  return names;
+}
+
+const std::vector<std::string>& jacobianSourceNames() {
+  static const std::vector<std::string> names = {"analytic", "differences"};
+  return names;
+}
+
+Status validate(const SolveOptions& o) {
+  const Status checks[] = {
+      static_cast<size_t>(o.solver) < kSolvers.size() ? Status::success() : Status(Error{"options.solver: no such method"}),
+      checkPositive("options.tolerance", o.tolerance),
+      checkPositive("options.angleTolerance", o.angleTolerance),
+      checkAtLeast("options.maxIterations", o.maxIterations, 1),
+      checkNonNegative("options.maxSeconds", o.maxSeconds),
+      checkAtLeast("options.stallIterations", o.stallIterations, 0),
+      checkBelowOne("options.stallRatio", o.stallRatio),
+      inTable(o.limitMode, jacobianLimitModeNames()) ? Status::success() : Status(Error{"options.limitMode: no such mode"}),
+      inTable(o.jacobian, jacobianSourceNames()) ? Status::success() : Status(Error{"options.jacobian: no such source"}),
+      checkNonNegative("options.damping", o.damping),
+      checkBelowOne("options.singularCutoff", o.singularCutoff),
+      checkNonNegative("options.maxErrorStep", o.maxErrorStep),
+      checkNonNegative("options.maxJointStep", o.maxJointStep),
+      checkNonNegative("options.orientationScale", o.orientationScale),
+      checkFinite("options.polePoint", o.polePoint),
+      inTable(o.lineSearch, lineSearchNames()) ? Status::success() : Status(Error{"options.lineSearch: no such line search"}),
+      checkPositive("options.gradientStep", o.gradientStep),
+      checkPositive("options.lineSearchMaxStep", o.lineSearchMaxStep),
+      checkAtLeast("options.lbfgsMemory", o.lbfgsMemory, 1),
+      checkAtLeast("options.restarts", o.restarts, 0),
+  };
+  for (const Status& s : checks)
+    if (!s) return s;
+  return Status::success();
+}
+
+}  // namespace pba::ik

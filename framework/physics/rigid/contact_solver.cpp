@@ -1,0 +1,164 @@
+#include "physics/rigid/contact_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pba::rigid {
+
+void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
+  const Vec3 a = glm::abs(n);
+  const Vec3 axis = a.x <= a.y && a.x <= a.z ? Vec3(1, 0, 0) : (a.y <= a.z ? Vec3(0, 1, 0) : Vec3(0, 0, 1));
+  t1 = glm::normalize(glm::cross(axis, n));
+  t2 = glm::cross(n, t1);
+}
+
+// Separation during the substeps (Box2D v3 contact_solver.c): the normal is held fixed and the anchors
+// move with their bodies, s = s₀ + n·(Δc_B + Δθ_B × r_B − Δc_A − Δθ_A × r_A)
+//                          = s₀ + n·(Δc_B − Δc_A) + Δθ_B·(r_B × n) − Δθ_A·(r_A × n),
+// with Δc and Δθ the displacement and the rotation vector (Σ ω h) of each body since the step began.
+
+void prepareContact(ContactConstraint& c, const std::vector<SolverBody>& bodies) {
+  const SolverBody& a = bodies[c.bodyA];
+  const SolverBody& b = bodies[c.bodyB];
+  c.againstStatic = a.invMass == 0.0 || b.invMass == 0.0;
+  c.normal = c.manifold.normal;
+  c.invMassA = a.invMass;
+  c.invMassB = b.invMass;
+  tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
+  c.count = c.manifold.count;
+  const Vec3 directions[3] = {c.normal, c.tangent[0], c.tangent[1]};
+  for (int i = 0; i < c.count; ++i) {
+    ContactPoint& p = c.points[i];
+    const collision::ManifoldPoint& mp = c.manifold.points[i];
+    p.rA = mp.point - a.c;
+    p.rB = mp.point - b.c;
+    p.separation = mp.separation;
+    p.id = mp.id;
+    Real k[3];
+    for (int d = 0; d < 3; ++d) {
+      p.rAxD[d] = glm::cross(p.rA, directions[d]);
+      p.rBxD[d] = glm::cross(p.rB, directions[d]);
+      p.iArAxD[d] = a.invI * p.rAxD[d];
+      p.iBrBxD[d] = b.invI * p.rBxD[d];
+      // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d).
+      k[d] = a.invMass + b.invMass + glm::dot(p.rAxD[d], p.iArAxD[d]) + glm::dot(p.rBxD[d], p.iBrBxD[d]);
+    }
+    p.normalMass = k[0] > 0.0 ? 1.0 / k[0] : 0.0;
+    p.tangentMass[0] = k[1] > 0.0 ? 1.0 / k[1] : 0.0;
+    p.tangentMass[1] = k[2] > 0.0 ? 1.0 / k[2] : 0.0;
+    p.relativeVelocity = glm::dot(c.normal, b.v - a.v) + glm::dot(b.w, p.rBxD[0]) - glm::dot(a.w, p.rAxD[0]);
+    p.maxNormalImpulse = 0.0;
+  }
+}
+
+namespace {
+// Relative velocity along direction d (index into the point's Jacobian pieces): J v.
+inline Real rowVelocity(const ContactPoint& p, int d, const Vec3& dir, const Vec3& vA, const Vec3& wA, const Vec3& vB,
+                        const Vec3& wB) {
+  return glm::dot(dir, vB - vA) + glm::dot(wB, p.rBxD[d]) - glm::dot(wA, p.rAxD[d]);
+}
+// Applies impulse λ along direction d.
+inline void applyRow(const ContactConstraint& c, const ContactPoint& p, int d, const Vec3& dir, Real lambda, Vec3& vA,
+                     Vec3& wA, Vec3& vB, Vec3& wB) {
+  vA -= (c.invMassA * lambda) * dir;
+  wA -= lambda * p.iArAxD[d];
+  vB += (c.invMassB * lambda) * dir;
+  wB += lambda * p.iBrBxD[d];
+}
+}  // namespace
+
+void warmStartContact(const ContactConstraint& c, std::vector<SolverBody>& bodies) {
+  SolverBody& a = bodies[c.bodyA];
+  SolverBody& b = bodies[c.bodyB];
+  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
+  for (int i = 0; i < c.count; ++i) {
+    const ContactPoint& p = c.points[i];
+    applyRow(c, p, 0, c.normal, p.normalImpulse, vA, wA, vB, wB);
+    applyRow(c, p, 1, c.tangent[0], p.tangentImpulse[0], vA, wA, vB, wB);
+    applyRow(c, p, 2, c.tangent[1], p.tangentImpulse[1], vA, wA, vB, wB);
+  }
+  a.v = vA, a.w = wA, b.v = vB, b.w = wB;
+}
+
+void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias) {
+  SolverBody& a = bodies[c.bodyA];
+  SolverBody& b = bodies[c.bodyB];
+  const WorldSettings& s = *step.settings;
+  const Real inv_h = 1.0 / step.h;
+  const Softness& soft = c.againstStatic ? step.staticSoft : step.soft;
+  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
+  const Real dc = glm::dot(c.normal, b.dp - a.dp);
+  for (int i = 0; i < c.count; ++i) {
+    ContactPoint& p = c.points[i];
+    const Real sep = p.separation + dc + glm::dot(b.dtheta, p.rBxD[0]) - glm::dot(a.dtheta, p.rAxD[0]);
+    Real bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+    if (sep > 0.0) {
+      bias = sep * inv_h;  // speculative: close the gap exactly, no more
+    } else if (useBias) {
+      switch (s.positionCorrection) {
+        case PositionCorrection::Soft:
+          bias = std::max(soft.biasRate * sep, -s.contactPushSpeed);
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+          break;
+        case PositionCorrection::Baumgarte:
+          bias = std::max(s.baumgarte * inv_h * std::min(0.0, sep + s.linearSlop), -s.contactPushSpeed);
+          break;
+        case PositionCorrection::None: break;
+      }
+    }
+    const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);
+    const Real impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
+    const Real total = std::max(p.normalImpulse + impulse, 0.0);
+    const Real applied = total - p.normalImpulse;
+    p.normalImpulse = total;
+    p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
+    applyRow(c, p, 0, c.normal, applied, vA, wA, vB, wB);
+  }
+  // Friction, bounded by μ times this point's normal impulse: each tangent row with its own mass, then the
+  // pair clamped to the disk |λ_t| ≤ μλ_n (cone; Jolt does the same) or each row to ±μλ_n (pyramid).
+  for (int i = 0; i < c.count; ++i) {
+    ContactPoint& p = c.points[i];
+    const Real limit = c.friction * p.normalImpulse;
+    Real next[2];
+    for (int k = 0; k < 2; ++k)
+      next[k] = p.tangentImpulse[k] - p.tangentMass[k] * rowVelocity(p, k + 1, c.tangent[k], vA, wA, vB, wB);
+    if (s.friction == FrictionModel::Cone) {
+      const Real len2 = next[0] * next[0] + next[1] * next[1];
+      if (len2 > limit * limit) {
+        const Real scale = limit / std::sqrt(len2);
+        next[0] *= scale, next[1] *= scale;
+      }
+    } else {
+      for (Real& x : next) x = std::clamp(x, -limit, limit);
+    }
+    for (int k = 0; k < 2; ++k) {
+      applyRow(c, p, k + 1, c.tangent[k], next[k] - p.tangentImpulse[k], vA, wA, vB, wB);
+      p.tangentImpulse[k] = next[k];
+    }
+  }
+  if (a.invMass > 0.0) a.v = vA, a.w = wA;
+  if (b.invMass > 0.0) b.v = vB, b.w = wB;
+}
+
+void applyRestitution(ContactConstraint& c, std::vector<SolverBody>& bodies, const WorldSettings& settings) {
+  if (c.restitution == 0.0) return;
+  SolverBody& a = bodies[c.bodyA];
+  SolverBody& b = bodies[c.bodyB];
+  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
+  for (int i = 0; i < c.count; ++i) {
+    ContactPoint& p = c.points[i];
+    if (p.relativeVelocity > -settings.restitutionThreshold || p.maxNormalImpulse == 0.0) continue;
+    const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);
+    const Real impulse = -p.normalMass * (vn + c.restitution * p.relativeVelocity);
+    const Real total = std::max(p.normalImpulse + impulse, 0.0);
+    const Real applied = total - p.normalImpulse;
+    p.normalImpulse = total;
+    p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
+    applyRow(c, p, 0, c.normal, applied, vA, wA, vB, wB);
+  }
+  if (a.invMass > 0.0) a.v = vA, a.w = wA;
+  if (b.invMass > 0.0) b.v = vB, b.w = wB;
+}
+
+}  // namespace pba::rigid

@@ -1,0 +1,79 @@
+#pragma once
+// Contact constraints solved by sequential impulses (Catto, "Fast and Simple Physics using Sequential
+// Impulses", GDC 2006; "Modeling and Solving Constraints", GDC 2009; Box2D v3 src/contact_solver.c).
+//
+// Non-penetration at a contact point with normal n (A → B) and arms r_A, r_B:
+//   C = separation ≥ 0,   Ċ = n·(v_B + ω_B × r_B − v_A − ω_A × r_A) = J v,
+//   J = [−nᵀ, −(r_A × n)ᵀ, nᵀ, (r_B × n)ᵀ],  m_eff = 1/(J M⁻¹ Jᵀ).
+// Each iteration applies λ = −m_eff (Ċ + bias) and clamps the accumulated impulse to ≥ 0 (the impulse
+// may push, never pull). Friction rows along the tangents t₁, t₂ are clamped to the Coulomb cone
+// |λ_t| ≤ μ λ_n (or the pyramid |λ_tᵢ| ≤ μ λ_n). The bias: speculative (C > 0: allow the approach
+// that closes the gap in this substep, C/h), soft (b2MakeSoft: biasRate·C, with massScale and
+// impulseScale) or Baumgarte (β/h·min(0, C + slop)). Restitution runs once after the substeps on points
+// that approached faster than the threshold: target n·v_rel' = −e·(n·v_rel before the step).
+#include <cstdint>
+#include <vector>
+
+#include "physics/collision/manifold.h"
+#include "physics/collision/transform.h"
+#include "physics/rigid/settings.h"
+#include "physics/rigid/softness.h"
+#include "physics/rigid/solver_body.h"
+
+namespace pba::rigid {
+
+struct ContactPoint {
+  Vec3 rA{0.0}, rB{0.0};          ///< anchors relative to the centres of mass, world axes, fixed for the step
+  // Jacobian pieces fixed for the step: r × d and I⁻¹(r × d) for d = n, t₁, t₂ (index 0, 1, 2).
+  Vec3 rAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, rBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+  Vec3 iArAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, iBrBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+  Real separation = 0.0;          ///< [m] at the start of the step
+  Real normalMass = 0.0;
+  Real tangentMass[2] = {0.0, 0.0};  ///< 1/K of each tangent row
+  Real normalImpulse = 0.0;       ///< [N·s] accumulated
+  Real tangentImpulse[2] = {0.0, 0.0};
+  Real maxNormalImpulse = 0.0;    ///< largest normal impulse of the step (restitution needs > 0)
+  Real relativeVelocity = 0.0;    ///< [m/s] n·v_rel at the start of the step
+  std::uint32_t id = 0;
+};
+
+struct ContactConstraint {
+  int bodyA = -1, bodyB = -1;
+  bool againstStatic = false;  ///< one side cannot move (set when prepared)
+  std::uint32_t key = 0;      ///< manifold key (mesh triangle)
+  Vec3 normal{0.0};
+  Vec3 tangent[2]{Vec3(0.0), Vec3(0.0)};
+  Real friction = 0.0, restitution = 0.0;
+  Real invMassA = 0.0, invMassB = 0.0;
+  int count = 0;
+  ContactPoint points[4];
+  collision::Manifold manifold;  ///< as the narrow phase made it (debug draw)
+  // For the contact cache: B's pose relative to A when the manifold was made, the normal in A's frame and
+  // each point's two surface points, on A in A's frame and on B in B's frame (Bullet's persistent
+  // manifold keeps the same pair to refresh its points).
+  collision::Transform relativePose;
+  Vec3 localNormal{0.0};
+  Vec3 surfaceA[4]{Vec3(0.0), Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+  Vec3 surfaceB[4]{Vec3(0.0), Vec3(0.0), Vec3(0.0), Vec3(0.0)};
+};
+
+/// Per-substep solver inputs.
+struct ContactSolverStep {
+  const WorldSettings* settings = nullptr;
+  Real h = 0.0;               ///< [s] substep
+  Softness soft;              ///< contact softness between two moving bodies at this substep
+  Softness staticSoft;        ///< against static bodies: twice the frequency (Box2D v3's staticSoftness)
+};
+
+/// Builds the solver data of `c` from its manifold and the bodies at the start of the step. Impulses
+/// already in c.points (carried over by feature id) are kept for warm starting.
+void prepareContact(ContactConstraint& c, const std::vector<SolverBody>& bodies);
+void warmStartContact(const ContactConstraint& c, std::vector<SolverBody>& bodies);
+void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias);
+void applyRestitution(ContactConstraint& c, std::vector<SolverBody>& bodies, const WorldSettings& settings);
+
+/// Tangent basis (t₁, t₂) of unit n: stable under small changes of n, so friction impulses can be warm
+/// started (t₁ from the world axis least aligned with n).
+void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2);
+
+}  // namespace pba::rigid

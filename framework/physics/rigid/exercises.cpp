@@ -1,0 +1,112 @@
+#include "physics/rigid/exercises.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "physics/exercises/not_implemented.h"
+
+namespace pba::rigid {
+
+// ***** RIGID-1: Box inertia tensor and its world transform (Baraff & Witkin 2001, "Rigid Body
+// Dynamics I", §2.9–2.10) *****
+// (1) A solid box of full side lengths (a, b, c) = 2h has, about its centre and its own axes, a
+//     diagonal tensor: each diagonal entry is m/12 times the sum of the squares of the two OTHER sides.
+// (2) Return it as a Mat3 (glm is column-major; off-diagonal entries are 0).
+// *****
+Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents) {
+  // BEGIN SOLUTION
+  const Vec3 side = 2.0 * halfExtents;
+  const Vec3 s2 = side * side;
+  Mat3 inertia(0.0);
+  inertia[0][0] = mass / 12.0 * (s2.y + s2.z);
+  inertia[1][1] = mass / 12.0 * (s2.z + s2.x);
+  inertia[2][2] = mass / 12.0 * (s2.x + s2.y);
+  return inertia;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RIGID-1", Mat3(mass), halfExtents);
+}
+
+// ***** RIGID-1 (continued): the world-space tensor *****
+// (1) Turn the quaternion into its rotation matrix R (body axes → world axes).
+// (2) The tensor seen in world axes is R I_body Rᵀ (rotate into the body frame, apply, rotate back).
+// *****
+Mat3 worldInertiaTensor(const Mat3& bodyInertia, const Quat& q) {
+  // BEGIN SOLUTION
+  const Mat3 r = glm::mat3_cast(q);
+  return r * bodyInertia * glm::transpose(r);
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RIGID-1", bodyInertia, q);
+}
+
+// ***** RIGID-2: Quaternion integration of the orientation (Baraff & Witkin 2001, §4.2) *****
+// (1) Write ω as the pure quaternion (0, ω).
+// (2) The derivative of q is half of that pure quaternion multiplied by q (on the LEFT, since ω is in
+//     world axes).
+// (3) Take one explicit Euler step of length h, then renormalise: the step leaves the unit sphere.
+// *****
+Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h) {
+  // BEGIN SOLUTION
+  const Quat w(0.0, omega.x, omega.y, omega.z);
+  const Quat dq = 0.5 * h * (w * q);
+  return glm::normalize(q + dq);
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RIGID-2", q, omega, h);
+}
+
+// ***** RIGID-3: The collision impulse with restitution (Baraff & Witkin 2001, "Rigid Body Dynamics
+// II", §8.3) *****
+// (1) Arms r_A, r_B from each centre of mass to the contact point; v_rel = n·(v_A(p) − v_B(p)).
+// (2) Not approaching (v_rel ≥ 0): no impulse.
+// (3) The denominator: both inverse masses plus, for each body, n · ((I⁻¹ (r × n)) × r).
+// (4) j = −(1 + e) v_rel / denominator.
+// *****
+Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real restitution) {
+  // BEGIN SOLUTION
+  const Vec3 ra = point - a.position, rb = point - b.position;
+  const Real vrel = glm::dot(normal, a.velocityAt(point) - b.velocityAt(point));
+  if (vrel >= 0.0) return 0.0;
+  const Real denominator = a.inverseMass + b.inverseMass +
+                           glm::dot(normal, glm::cross(a.inverseInertia * glm::cross(ra, normal), ra)) +
+                           glm::dot(normal, glm::cross(b.inverseInertia * glm::cross(rb, normal), rb));
+  if (!(denominator > 0.0)) return 0.0;
+  return -(1.0 + restitution) * vrel / denominator;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RIGID-3", 0.0, a, b, point, normal, restitution);
+}
+
+// ***** RIGID-4: The friction impulse clamped to μ·j (Coulomb's law for impulses; Mirtich 1996, §3.3) *****
+// (1) The tangential part of the relative velocity v_A(p) − v_B(p) (remove the normal component); no
+//     tangential motion: no friction.
+// (2) t = its direction. The impulse along −t that would stop it has size |v_t| / k_t, with k_t built
+//     like RIGID-3's denominator but with t in place of n.
+// (3) Coulomb: the friction impulse can be at most μ times the normal impulse; clamp its size.
+// (4) Return it as a vector acting on A (it points against the sliding).
+// *****
+Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real normalImpulse,
+                     Real friction) {
+  // BEGIN SOLUTION
+  const Vec3 ra = point - a.position, rb = point - b.position;
+  const Vec3 vr = a.velocityAt(point) - b.velocityAt(point);
+  const Vec3 vt = vr - glm::dot(vr, normal) * normal;
+  const Real speed = glm::length(vt);
+  if (speed <= 1e-12) return Vec3(0.0);
+  const Vec3 t = vt / speed;
+  const Real kt = a.inverseMass + b.inverseMass + glm::dot(t, glm::cross(a.inverseInertia * glm::cross(ra, t), ra)) +
+                  glm::dot(t, glm::cross(b.inverseInertia * glm::cross(rb, t), rb));
+  if (!(kt > 0.0)) return Vec3(0.0);
+  const Real stop = speed / kt;
+  return -std::min(stop, friction * normalImpulse) * t;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RIGID-4", Vec3(0.0), a, b, point, normal, normalImpulse, friction);
+}
+
+// Start-up probes: tell the lab which exercises are still stubs.
+PBA_EXERCISE_PROBE(boxInertiaTensor(1.0, Vec3(0.5)));
+PBA_EXERCISE_PROBE(worldInertiaTensor(Mat3(1.0), Quat(1, 0, 0, 0)));
+PBA_EXERCISE_PROBE(integrateOrientation(Quat(1, 0, 0, 0), Vec3(0.0, 1.0, 0.0), 0.01));
+PBA_EXERCISE_PROBE(collisionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(0.0, -1.0, 0.0), Vec3(0.0)}, ImpulseBody{},
+                                    Vec3(0.0), kUp, 0.5));
+PBA_EXERCISE_PROBE(frictionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(1.0, -1.0, 0.0), Vec3(0.0)}, ImpulseBody{},
+                                   Vec3(0.0), kUp, 1.0, 0.5));
+
+}  // namespace pba::rigid

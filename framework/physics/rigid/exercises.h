@@ -1,0 +1,47 @@
+#pragma once
+// The rigid-body exercises (docs/architecture.md, "Exercises") and the course's single-impulse collision response built from
+// them (the `tumble` scene). The world's solver (world.h) does not use these: it reaches the same
+// physics by its own routes (Mirtich's integrals, the exponential map, sequential impulses), so that each
+// exercise is graded alone.
+//
+// Conventions of this file (Baraff & Witkin 2001, "Rigid Body Dynamics II", §8): a contact between
+// bodies A and B at world point p with unit normal n pointing from B toward A; arms r = p − x; the
+// relative normal velocity v_rel = n·(v_A(p) − v_B(p)) is negative while they approach. An impulse
+// j n is applied to A and −j n to B.
+#include "physics/core/types.h"
+
+namespace pba::rigid {
+
+// RIGID-1
+/// Inertia tensor of a solid box of mass m [kg] and half extents h [m] about its centre, body axes
+/// [kg·m²].
+Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents);
+/// The tensor in world axes for orientation q: I_world = R I_body Rᵀ.
+Mat3 worldInertiaTensor(const Mat3& bodyInertia, const Quat& q);
+
+// RIGID-2
+/// One explicit step of the orientation: q̇ = ½ (0, ω) q with ω in world axes [rad/s], then renormalise.
+Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h);
+
+/// What the impulse formulas need of a body.
+struct ImpulseBody {
+  Real inverseMass = 0.0;          ///< [1/kg], 0 for static
+  Mat3 inverseInertia{0.0};        ///< [1/(kg·m²)] world axes
+  Vec3 position{0.0};              ///< [m] centre of mass
+  Vec3 velocity{0.0};              ///< [m/s]
+  Vec3 angularVelocity{0.0};       ///< [rad/s]
+  Vec3 velocityAt(const Vec3& p) const { return velocity + glm::cross(angularVelocity, p - position); }
+};
+
+// RIGID-3
+/// Magnitude j ≥ 0 of the collision impulse with restitution e (0 when not approaching):
+///   j = −(1 + e) v_rel / (1/m_A + 1/m_B + n·((I_A⁻¹(r_A × n)) × r_A) + n·((I_B⁻¹(r_B × n)) × r_B)).
+Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real restitution);
+
+// RIGID-4
+/// The Coulomb friction impulse on A (−it on B) that accompanies a normal impulse j: it opposes the
+/// tangential relative velocity, stops it if that takes at most μ j, and is clamped to μ j otherwise.
+Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real normalImpulse,
+                     Real friction);
+
+}  // namespace pba::rigid

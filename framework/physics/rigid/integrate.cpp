@@ -1,0 +1,53 @@
+#include "physics/rigid/integrate.h"
+
+#include <cmath>
+
+namespace pba::rigid {
+
+Quat rotateByAngularVelocity(const Quat& q, const Vec3& omega, Real h) {
+  const Real angle = glm::length(omega) * h;
+  if (angle < 1e-300) return q;
+  // Half-angle form; for tiny angles sin(x/2)/x → 1/2 keeps the axis well defined.
+  const Real half = 0.5 * angle;
+  const Real s = angle > 1e-8 ? std::sin(half) / glm::length(omega) : 0.5 * h;
+  const Quat dq(std::cos(half), s * omega.x, s * omega.y, s * omega.z);
+  return glm::normalize(dq * q);
+}
+
+namespace {
+Mat3 skew(const Vec3& v) {
+  // [v]× with [v]× u = v × u (glm is column-major).
+  return Mat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0);
+}
+}  // namespace
+
+Vec3 gyroscopicImplicitStep(const Quat& q, const Mat3& inertia, const Vec3& omega, Real h) {
+  const Vec3 wb = glm::conjugate(q) * omega;
+  const Vec3 iw = inertia * wb;
+  const Vec3 f = h * glm::cross(wb, iw);
+  const Mat3 jacobian = inertia + h * (skew(wb) * inertia - skew(iw));
+  const Vec3 wb2 = wb - glm::inverse(jacobian) * f;
+  return q * wb2;
+}
+
+void midpointFreeRotation(Quat& q, Vec3& omega, const Mat3& inertia, const Mat3& inverseInertia, Real h) {
+  const Vec3 lb = inertia * (glm::conjugate(q) * omega);
+  const Real scale = glm::length(lb);
+  if (scale == 0.0) return;
+  // Fixed point for L' = L + h L_mid × I⁻¹ L_mid; a contraction with factor ~h|ω|/2.
+  Vec3 l1 = lb;
+  for (int k = 0; k < 50; ++k) {
+    const Vec3 mid = 0.5 * (lb + l1);
+    const Vec3 next = lb + h * glm::cross(mid, inverseInertia * mid);
+    const Real change = glm::length(next - l1);
+    l1 = next;
+    if (change <= 1e-16 * scale) break;
+  }
+  const Vec3 wMid = inverseInertia * (0.5 * (lb + l1));
+  const Quat c = glm::normalize(Quat(1.0, 0.5 * h * wMid.x, 0.5 * h * wMid.y, 0.5 * h * wMid.z));
+  const Vec3 lbNext = glm::conjugate(c) * lb;  // Cᵀ L_b exactly, so R' L_b' = R L_b
+  q = glm::normalize(q * c);
+  omega = q * (inverseInertia * lbNext);
+}
+
+}  // namespace pba::rigid

@@ -1,0 +1,190 @@
+// Narrow phase against the general query: every special pair test must find the same normal and
+// separation as GJK (cores apart) / EPA (cores overlapping) on the same shapes, over 10,000 random poses
+// per pair. "Where both apply": round pairs always (both compute the exact signed distance); polytope
+// pairs when they penetrate (a separating-axis value is the distance only when overlapping). The
+// separating axis test prefers faces over edges and A's faces over B's within kAxisTolerance = 0.5 mm,
+// so a polytope pair may report a separation at most that much deeper than EPA; those cases are counted
+// and must stay rare (under 5 %).
+#include <cmath>
+#include <functional>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "physics/collision/gjk.h"
+#include "physics/collision/narrow_phase.h"
+#include "support/expect_helpers.h"
+
+namespace pba::collision {
+namespace {
+
+using PairFn = std::function<Manifold(const Shape&, const Transform&, const Shape&, const Transform&, Real)>;
+
+struct Agreement {
+  int cases = 0, compared = 0, exact = 0, preferredFace = 0;
+};
+
+Transform randomPose(std::mt19937_64& rng, Real spread) {
+  std::uniform_real_distribution<Real> u(-spread, spread);
+  std::normal_distribution<Real> n(0.0, 1.0);
+  return {Vec3(u(rng), u(rng), u(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)))};
+}
+
+std::vector<Vec3> randomHullPoints(std::mt19937_64& rng, Real size) {
+  std::normal_distribution<Real> n(0.0, 1.0);
+  std::vector<Vec3> p;
+  for (int i = 0; i < 12; ++i) p.push_back(size * glm::normalize(Vec3(n(rng), n(rng), n(rng))) * (0.6 + 0.4 * std::abs(n(rng))));
+  return p;
+}
+
+Agreement compareWithGjk(const Shape& a, const Shape& b, const PairFn& pair, bool polytopes, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const Real margin = 0.5;
+  Agreement r;
+  for (int i = 0; i < 10000; ++i) {
+    const Transform pa = randomPose(rng, 0.3), pb = randomPose(rng, 0.9);
+    const SignedDistance ref = signedDistance(makeProxy(a), pa, makeProxy(b), pb);
+    const Manifold m = pair(a, pa, b, pb, margin);
+    ++r.cases;
+    if (ref.separation < margin - 1e-9) {
+      EXPECT_GT(m.count, 0) << "seed " << seed << " case " << i << ": GJK separation " << ref.separation;
+    }
+    if (m.count == 0 || (polytopes && ref.separation >= 0.0)) continue;
+    ++r.compared;
+    const Real ds = m.separation - ref.separation;
+    const Real dn = glm::length(m.normal - ref.normal);
+    if (std::abs(ds) <= 1e-6 && dn <= 1e-6) {
+      ++r.exact;
+    } else if (polytopes && ds <= 0.0 && ds >= -5e-4 - 1e-9) {
+      ++r.preferredFace;
+    } else {
+      ADD_FAILURE() << "seed " << seed << " case " << i << ": separation " << m.separation << " vs " << ref.separation
+                    << ", normal differs by " << dn;
+      if (r.compared - r.exact - r.preferredFace > 5) break;
+    }
+    // No contact point is deeper than the pair. Clipped points measure their depth along the reference
+    // face's normal, which may differ from the pair's normal by up to 2.6° (a feature counts as flat
+    // within that angle), hence the tolerance.
+    for (int k = 0; k < m.count; ++k) EXPECT_GE(m.points[k].separation, m.separation - 1e-3 * std::abs(m.separation) - 1e-9);
+  }
+  return r;
+}
+
+void expectMostlyExact(const Agreement& r, const char* name) {
+  std::printf("%s: %d poses, %d compared, %d within 1e-6, %d preferred a face within 0.5 mm\n", name, r.cases,
+              r.compared, r.exact, r.preferredFace);
+  EXPECT_GT(r.compared, 1000) << name;
+  EXPECT_GE(r.exact, 0.95 * r.compared) << name;
+}
+
+const PairFn kDispatch = [](const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
+  std::vector<Manifold> out;
+  collide(a, pa, b, pb, margin, out);
+  return out.empty() ? Manifold{} : out[0];
+};
+
+TEST(NarrowPhaseAgreesWithGjkEpa, SphereSphere) {
+  expectMostlyExact(compareWithGjk(makeSphere(0.4).value(), makeSphere(0.25).value(), collideSpheres, false, 1), "sphere-sphere");
+}
+TEST(NarrowPhaseAgreesWithGjkEpa, SphereCapsule) {
+  expectMostlyExact(compareWithGjk(makeSphere(0.3).value(), makeCapsule(0.5, 0.2).value(), collideSphereCapsule, false, 2),
+                    "sphere-capsule");
+}
+TEST(NarrowPhaseAgreesWithGjkEpa, CapsuleCapsule) {
+  expectMostlyExact(compareWithGjk(makeCapsule(0.4, 0.15).value(), makeCapsule(0.6, 0.2).value(), collideCapsules, false, 3),
+                    "capsule-capsule");
+}
+TEST(NarrowPhaseAgreesWithGjkEpa, SphereBox) {
+  expectMostlyExact(compareWithGjk(makeSphere(0.3).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideSphereBox, false, 4),
+                    "sphere-box");
+}
+TEST(NarrowPhaseAgreesWithGjkEpa, CapsuleBox) {
+  expectMostlyExact(compareWithGjk(makeCapsule(0.4, 0.15).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideConvex, false, 5),
+                    "capsule-box");
+}
+TEST(NarrowPhaseAgreesWithGjkEpa, BoxBox) {
+  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.5, 0.2)).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideBoxes, true, 6),
+                    "box-box");
+}
+TEST(NarrowPhaseAgreesWithGjkEpa, BoxHullAndHullHull) {
+  std::mt19937_64 rng(7);
+  const Shape hullA = makeHull(randomHullPoints(rng, 0.4)).value();
+  const Shape hullB = makeHull(randomHullPoints(rng, 0.5)).value();
+  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.5, 0.2)).value(), hullA, collidePolytopes, true, 8), "box-hull");
+  expectMostlyExact(compareWithGjk(hullA, hullB, collidePolytopes, true, 9), "hull-hull");
+}
+TEST(NarrowPhaseAgreesWithGjkEpa, RoundShapesAgainstHullsThroughTheDispatcher) {
+  std::mt19937_64 rng(10);
+  const Shape hull = makeHull(randomHullPoints(rng, 0.5)).value();
+  expectMostlyExact(compareWithGjk(makeSphere(0.3).value(), hull, kDispatch, false, 11), "sphere-hull");
+  expectMostlyExact(compareWithGjk(hull, makeCapsule(0.3, 0.2).value(), kDispatch, false, 12), "hull-capsule");
+  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.3, 0.1)).value(), makeSphere(0.3).value(), kDispatch, false, 13), "box-sphere");
+}
+
+TEST(BoxBoxManifold, ABoxRestingFlatOnABoxHasFourPointsAtItsCorners) {
+  const Shape ground = makeBox(Vec3(5.0, 0.5, 5.0)).value();
+  const Shape crate = makeBox(Vec3(0.5, 0.25, 0.5)).value();
+  const Transform pg{Vec3(0.0, -0.5, 0.0), Quat(1, 0, 0, 0)};
+  const Real gap = -0.01;  // 1 cm penetration
+  const Transform pc{Vec3(0.0, 0.25 + gap, 0.0), glm::angleAxis(0.3, kUp)};
+  const Manifold m = collideBoxes(ground, pg, crate, pc, 0.02);
+  ASSERT_EQ(m.count, 4);
+  EXPECT_VEC3_NEAR(m.normal, kUp, 1e-12);
+  EXPECT_NEAR(m.separation, gap, 1e-12);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_NEAR(m.points[i].separation, gap, 1e-12);
+    EXPECT_NEAR(m.points[i].point.y, 0.5 * gap, 1e-12);  // midway between the surfaces
+    const Vec3 local = pc.applyInverse(m.points[i].point);
+    EXPECT_NEAR(std::abs(local.x), 0.5, 1e-9);
+    EXPECT_NEAR(std::abs(local.z), 0.5, 1e-9);
+  }
+  // The ids stay the same when the crate moves a little (warm starting relies on it).
+  const Manifold moved = collideBoxes(ground, pg, crate, {pc.position + Vec3(0.01, 0.0, 0.0), pc.rotation}, 0.02);
+  ASSERT_EQ(moved.count, 4);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(moved.points[i].id, m.points[i].id);
+}
+
+TEST(PlaneManifold, HoldsTheDeepestVerticesOfATiltedBoxAndTheSphereBottom) {
+  const Shape box = makeBox(Vec3(0.5, 0.5, 0.5)).value();
+  const Transform tilted{Vec3(0.0, 0.6, 0.0), glm::angleAxis(0.4, Vec3(0, 0, 1)) * glm::angleAxis(0.3, Vec3(1, 0, 0))};
+  const Manifold m = collideConvexPlane(box, tilted, Transform{}, 10.0);
+  // Reference: heights of all 8 corners.
+  Real lowest = 1e9;
+  for (int i = 0; i < 8; ++i) lowest = std::min(lowest, tilted.apply(Vec3(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5)).y);
+  EXPECT_EQ(m.count, 4);
+  EXPECT_NEAR(m.separation, lowest, 1e-12);
+  EXPECT_NEAR(m.deepest(), lowest, 1e-12);
+  EXPECT_VEC3_NEAR(m.normal, -kUp, 0.0);  // from the box (A) to the plane (B)
+  const Manifold s = collideConvexPlane(makeSphere(0.3).value(), {Vec3(1.0, 0.25, 2.0), Quat(1, 0, 0, 0)}, Transform{}, 0.1);
+  ASSERT_EQ(s.count, 1);
+  EXPECT_NEAR(s.separation, -0.05, 1e-15);
+  EXPECT_VEC3_NEAR(s.points[0].point, Vec3(1.0, -0.025, 2.0), 1e-15);
+}
+
+TEST(MeshManifold, ABoxOnATwoTriangleFloorMatchesThePlane) {
+  TriangleMesh mesh = buildTriangleMesh({{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}}, {{0, 2, 1}, {0, 3, 2}}).value();
+  const Shape floor = makeMesh(std::move(mesh));
+  const Shape box = makeBox(Vec3(0.4, 0.3, 0.2)).value();
+  const Transform pose{Vec3(0.3, 0.29, -0.2), glm::angleAxis(0.2, kUp)};
+  std::vector<Manifold> out;
+  collide(box, pose, floor, Transform{}, 0.02, out);
+  ASSERT_FALSE(out.empty());
+  int points = 0;
+  for (const Manifold& m : out) {
+    EXPECT_VEC3_NEAR(m.normal, -kUp, 1e-9);
+    for (int i = 0; i < m.count; ++i) {
+      EXPECT_NEAR(m.points[i].separation, -0.01, 1e-9);
+      ++points;
+    }
+  }
+  EXPECT_GE(points, 4);  // the box straddles the diagonal: each triangle holds some of its corners
+}
+
+TEST(MeshManifold, RejectsBadTrianglesNamingTheField) {
+  EXPECT_NE(buildTriangleMesh({{0, 0, 0}, {1, 0, 0}}, {{0, 1, 2}}, "terrain").error().find("terrain.triangles[0]: index 2"),
+            std::string::npos);
+  EXPECT_NE(buildTriangleMesh({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 2}}).error().find("degenerate"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace pba::collision
