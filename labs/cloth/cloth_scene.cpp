@@ -197,16 +197,27 @@ std::optional<Real> rayTriangle(const app::Ray& ray, const Vec3& a, const Vec3& 
 }  // namespace
 
 std::optional<app::PickHit> ClothScene::pick(const app::Ray& ray) const {
-  std::optional<app::PickHit> best;
+  // The front-most triangle the ray hits, then the particle nearest to the ray among those no deeper than
+  // that hit plus one edge length: at grazing views the vertex nearest to the hit point can be a
+  // neighbour of the one under the cursor, the one nearest to the ray is not.
+  std::optional<Real> front;
   for (const Triangle& tri : cloth_.triangles) {
     const std::optional<Real> t = rayTriangle(ray, cloth_.position[tri[0]], cloth_.position[tri[1]], cloth_.position[tri[2]]);
-    if (!t || (best && *t >= best->distance)) continue;
-    const Vec3 hit = pointAt(ray, *t);
-    std::uint32_t nearest = tri[0];
-    for (std::uint32_t v : tri) {
-      if (glm::length(cloth_.position[v] - hit) < glm::length(cloth_.position[nearest] - hit)) nearest = v;
+    if (t && (!front || *t < *front)) front = t;
+  }
+  if (!front) return std::nullopt;
+  Real spacing = std::numeric_limits<Real>::max();
+  for (const Link& l : cloth_.constraints) spacing = std::min(spacing, l.restLength);
+  std::optional<app::PickHit> best;
+  Real bestOffset = std::numeric_limits<Real>::max();
+  for (std::size_t i = 0; i < cloth_.size(); ++i) {
+    const Real t = glm::dot(cloth_.position[i] - ray.origin, ray.direction);
+    if (t < 0.0 || t > *front + spacing) continue;
+    const Real offset = glm::length(cloth_.position[i] - pointAt(ray, t));
+    if (offset < bestOffset) {
+      bestOffset = offset;
+      best = app::PickHit{static_cast<int>(i), t, cloth_.position[i]};
     }
-    best = app::PickHit{static_cast<int>(nearest), *t, cloth_.position[nearest]};
   }
   return best;
 }
@@ -221,6 +232,8 @@ void ClothScene::drag(int handle, const Vec3& target) {
     draggedWasPinned_ = p ? std::optional<Pin>(*p) : std::nullopt;
   }
   pin(cloth_, i, target);  // kinematic while held: every solver moves it onto the cursor
+  cloth_.position[i] = target;  // at once, so that a paused scene shows it
+  cloth_.velocity[i] = Vec3(0.0);
 }
 
 void ClothScene::release(int handle) {
@@ -233,6 +246,37 @@ void ClothScene::release(int handle) {
   }
   dragged_ = -1;
   draggedWasPinned_.reset();
+}
+
+std::vector<app::DragHandle> ClothScene::dragHandles() const {
+  std::vector<app::DragHandle> handles;
+  const std::size_t stride = std::max<std::size_t>(1, cloth_.size() / 25);
+  for (std::size_t i = stride / 2; i < cloth_.size(); i += stride) {
+    // Free particles, and the one being dragged (held as a pin while the mouse holds it).
+    if (cloth_.inverseMass[i] > 0.0 || static_cast<int>(i) == dragged_) {
+      handles.push_back({static_cast<int>(i), cloth_.position[i]});
+    }
+  }
+  if (dragged_ >= 0 && (static_cast<std::size_t>(dragged_) - stride / 2) % stride != 0) {
+    handles.push_back({dragged_, cloth_.position[static_cast<std::size_t>(dragged_)]});
+  }
+  return handles;
+}
+
+std::vector<app::LegendEntry> ClothScene::legend() const {
+  std::vector<app::LegendEntry> entries;
+  if (strainColors_) {
+    entries = {{colors::kBlue, "stretch < 0.5 %"}, {colors::kGreen, "< 2 %"}, {colors::kYellow, "< 5 %"},
+               {colors::kOrange, "< 10 %"}, {colors::kRed, "≥ 10 %"}};
+  }
+  entries.push_back({colors::kRed, "pinned particle"});
+  entries.push_back({colors::kYellow, "the particle being dragged"});
+  if (showLinks_) {
+    entries.push_back({colors::kBlue, "stretch links"});
+    entries.push_back({colors::kGreen, "shear links"});
+    entries.push_back({colors::kOrange, "bend links"});
+  }
+  return entries;
 }
 
 bool ClothScene::nudge(const Vec3& delta) {

@@ -35,6 +35,10 @@ class ClothScene : public app::Scene {
   void drag(int handle, const Vec3& target) override;
   void release(int handle) override;
   bool nudge(const Vec3& delta) override;
+  /// A sample of free particles (about 25, spread over the particle indices) and the one being dragged:
+  /// what the UI checks drag.
+  std::vector<app::DragHandle> dragHandles() const override;
+  std::vector<app::LegendEntry> legend() const override;
 
  protected:
   /// Builds the cloth (grid_ and material_ are set from the parameters) and fills colliders_.

@@ -84,6 +84,7 @@ class ComparisonScene final : public ClothScene {
   }
   std::vector<app::Preset> presets() const override { return {}; }
   std::optional<app::PickHit> pick(const app::Ray&) const override { return std::nullopt; }
+  std::vector<app::DragHandle> dragHandles() const override { return {}; }
 
  protected:
   Result<Cloth> build() override {

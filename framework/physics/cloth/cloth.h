@@ -2,7 +2,7 @@
 // A cloth: a triangle mesh of particles (docs/architecture.md §2: a description with documented defaults, separate
 // from the runtime object it builds). Two models live on the same particles and can be switched live:
 //   mass-spring   Provot 1995: structural, shear and bend springs (links), forces and their Jacobians;
-//   constraints   Müller et al. 2006 (PBD), Macklin et al. 2016 (XPBD): a distance constraint on every mesh
+//   constraints   Müller et al. 2007 (PBD), Macklin et al. 2016 (XPBD): a distance constraint on every mesh
 //                 edge plus isometric bending (Bergou et al. 2006) on every pair of triangles sharing an edge.
 // Pinned particles have inverse mass 0 (docs/architecture.md §2); a pin may move (a curtain rail) through its target.
 //

@@ -2,7 +2,7 @@
 // One object that steps a cloth with the solver chosen by name, live (the models share the particles):
 //   explicit   symplectic Euler on the mass-spring model with substeps; stable only for h < 2/ω_max
 //   implicit   Baraff & Witkin 1998 backward Euler, one Newton step per step, filtered PCG (implicit.h)
-//   pbd        Müller et al. 2006: distance constraints on the edges + isometric bending, stiffness per
+//   pbd        Müller et al. 2007: distance constraints on the edges + isometric bending, stiffness per
 //              iteration (its effective stiffness depends on iterations and step)
 //   xpbd       Macklin et al. 2016 with compliance; substeps × iterations, Macklin et al. 2019 "Small
 //              steps": many substeps of one iteration beat many iterations of one step

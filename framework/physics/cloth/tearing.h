@@ -9,7 +9,7 @@
 // then on), so the solvers and the renderer see one consistent mesh. A split whose one side would be
 // empty (a vertex with all its triangles on one side) is not made.
 // (Tearing of cloth meshes in the same spirit: O'Brien & Hodgins 1999 split nodes along a fracture plane;
-// Müller et al. 2006's PBD tears by duplicating vertices of overstretched edges.)
+// Müller et al. 2007's PBD tears by duplicating vertices of overstretched edges.)
 #include <cstddef>
 
 #include "physics/cloth/cloth.h"

@@ -9,7 +9,7 @@
 //   Δλ = (−C − α̃ λ) / (Σ_k w_k |∇_k C|² + α̃)          (eq. 18)
 //   Δx_k = w_k ∇_k C Δλ                                (eq. 17)
 // The converged state satisfies C + α̃ λ = 0: the constraint force λ∇C/h² balances the other forces with
-// the stiffness 1/α, whatever the number of iterations or substeps. PBD (Müller et al. 2006 §3.3) is the
+// the stiffness 1/α, whatever the number of iterations or substeps. PBD (Müller et al. 2007 §3.3) is the
 // same projection with α̃ = 0 and no λ, scaled by a stiffness s ∈ [0, 1]: its effective stiffness then
 // depends on the iteration count and the step.
 #include <array>
@@ -48,7 +48,7 @@ DistanceCorrection xpbdDistanceCorrection(const Vec3& xi, const Vec3& xj, Real w
 void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::span<const Real> w, Real compliance,
                              Real h, Vec3& lambda);
 /// How a Gauss–Seidel sweep treats its constraints: XPBD (compliance by kind, λ accumulated) or PBD
-/// (Müller et al. 2006 §3.3: the exact projection, compliance 0, scaled by a stiffness ∈ [0, 1]).
+/// (Müller et al. 2007 §3.3: the exact projection, compliance 0, scaled by a stiffness ∈ [0, 1]).
 struct SweepMode {
   bool xpbd = true;
   Real pbdStiffness = 1.0;

@@ -25,9 +25,13 @@ TEST(CLOTH_3_Aerodynamics, FaceOnWindPushesWithTheFullDragAndNoLift) {
   EXPECT_VEC3_NEAR(f, Vec3(0.0, 0.0, -kCd * 0.5 * kRho * 25.0 * 0.5), 1e-12);
 }
 
-TEST(ClothAerodynamics, EdgeOnWindAndStillAirExertNothing) {
+TEST(CLOTH_3_Aerodynamics, EdgeOnWindAndStillAirExertNothingButATiltedFlowDoes) {
   EXPECT_VEC3_NEAR(force(Vec3(3.0, -2.0, 0.0)), Vec3(0.0), 1e-12);  // flow in the plate's plane
   EXPECT_VEC3_NEAR(force(Vec3(0.0)), Vec3(0.0), 0.0);
+  // Tilted by 10° out of the plane: cos θ = sin 10°, so the drag along the flow is −C_D q A sin 10°.
+  const Vec3 flow(std::cos(degToRad(10.0)), 0.0, std::sin(degToRad(10.0)));
+  const Vec3 f = force(-4.0 * flow);
+  EXPECT_NEAR(glm::dot(f, flow), -kCd * 0.5 * kRho * 16.0 * 0.5 * std::sin(degToRad(10.0)), 1e-12);
 }
 
 TEST(CLOTH_3_Aerodynamics, AtFortyFiveDegreesDragAndLiftFollowTheProjectedArea) {

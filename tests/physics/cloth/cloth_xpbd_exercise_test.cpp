@@ -57,11 +57,15 @@ TEST(CLOTH_2_XpbdDistance, ComplianceSoftensTheCorrectionByTheScaledComplianceAn
   EXPECT_NEAR(C, 0.1 * 10.0 / 11.0, 1e-12);  // the fixed point: C = C₀ α̃/(w + α̃)
 }
 
-TEST(ClothXpbdDistance, DoesNothingForCoincidentOrPinnedPairs) {
+TEST(CLOTH_2_XpbdDistance, MovesOnlyTheFreeEndAndNothingForCoincidentOrPinnedPairs) {
   const DistanceCorrection same = xpbdDistanceCorrection(Vec3(1.0), Vec3(1.0), 1.0, 1.0, 0.5, 0.0, 0.01, 0.0);
   EXPECT_EQ(same.deltaI, Vec3(0.0));
   const DistanceCorrection pinned = xpbdDistanceCorrection(Vec3(0.0), Vec3(2.0, 0.0, 0.0), 0.0, 0.0, 1.0, 0.0, 0.01, 0.0);
   EXPECT_EQ(pinned.deltaJ, Vec3(0.0));
+  // i pinned, j free and compressed to 0.5 m of a 1 m rest length: j alone moves the whole 0.5 m out.
+  const DistanceCorrection one = xpbdDistanceCorrection(Vec3(0.0), Vec3(0.0, 0.5, 0.0), 0.0, 2.0, 1.0, 0.0, 0.01, 0.0);
+  EXPECT_EQ(one.deltaI, Vec3(0.0));
+  EXPECT_VEC3_NEAR(one.deltaJ, Vec3(0.0, 0.5, 0.0), 1e-15);
 }
 
 /// Extension of every link of a hanging XPBD chain at rest, for one solver setting.
