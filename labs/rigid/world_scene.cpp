@@ -1,5 +1,6 @@
 #include "world_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pba::lab {
@@ -101,6 +102,22 @@ void WorldScene::drag(int handle, const Vec3& target) {
   } else {
     world_.dragTo(target);
   }
+}
+
+std::vector<app::DragHandle> WorldScene::dragHandles() const {
+  constexpr std::size_t kMaxHandles = 8;
+  std::vector<int> dynamic;
+  for (int i = 0; i < world_.bodyCount(); ++i)
+    if (world_.body(i).isDynamic()) dynamic.push_back(i);
+  const auto higher = [this](int a, int b) { return world_.body(a).position.y > world_.body(b).position.y; };
+  const std::size_t n = std::min(kMaxHandles, dynamic.size());
+  std::partial_sort(dynamic.begin(), dynamic.begin() + static_cast<std::ptrdiff_t>(n), dynamic.end(), higher);
+  dynamic.resize(n);
+  const int dragged = world_.draggedBody();
+  if (dragged >= 0 && std::find(dynamic.begin(), dynamic.end(), dragged) == dynamic.end()) dynamic.push_back(dragged);
+  std::vector<app::DragHandle> out;
+  for (int i : dynamic) out.push_back({i, world_.body(i).position});
+  return out;
 }
 
 void WorldScene::release(int /*handle*/) {

@@ -25,6 +25,10 @@ class WorldScene : public app::Scene {
   std::optional<app::PickHit> pick(const Ray& ray) const override;
   void drag(int handle, const Vec3& target) override;
   void release(int handle) override;
+  /// Paused: the dragged body is placed under the cursor at once (running, the mouse spring pulls it).
+  void refresh() override { world_.placeDragged(); }
+  /// The highest dynamic bodies (those least likely hidden behind others) and the dragged one.
+  std::vector<app::DragHandle> dragHandles() const override;
 
  protected:
   /// Declares the shared parameters; call from the scene's constructor after setting defaults in

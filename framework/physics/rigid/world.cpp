@@ -69,6 +69,15 @@ void World::updateBroadPhase() {
     if (b.type != BodyType::Static && !b.sleeping) broadPhase_.move(b.proxy, bodyAabb(b, settings_.speculativeDistance));
 }
 
+void World::placeDragged() {
+  if (!mouse_ || drag_ < 0) return;
+  Body& b = bodies_[drag_];
+  b.position += mouse_->target - (b.position + b.orientation * mouse_->localB);
+  b.linearVelocity = Vec3(0.0);
+  b.angularVelocity = Vec3(0.0);
+  broadPhase_.move(b.proxy, bodyAabb(b, settings_.speculativeDistance));
+}
+
 void World::loadSolverBodies() {
   const std::size_t n = bodies_.size();
   solverBodies_.assign(n + 1, SolverBody{});

@@ -95,6 +95,9 @@ class World {
   void beginDrag(int body, const Vec3& worldPoint);
   void dragTo(const Vec3& target);
   void endDrag();
+  /// Places the dragged body so that its grabbed point sits on the drag target at once, at rest (a
+  /// paused world shows the drag; the mouse spring needs steps to pull). Nothing when nothing is dragged.
+  void placeDragged();
   int draggedBody() const { return drag_; }
 
   const collision::BroadPhase& broadPhase() const { return broadPhase_; }

@@ -189,5 +189,24 @@ TEST(Dragging, TheMouseConstraintPullsTheBodyPointToTheTarget) {
   EXPECT_EQ(w.draggedBody(), -1);
 }
 
+TEST(Dragging, PlacingPutsTheGrabbedPointOnTheTargetAtRestAndRayCastsFindItThere) {
+  World w;
+  addGround(w);
+  const int box = addBox(w, Vec3(0.2), Vec3(0.0, 0.2, 0.0), Quat(1, 0, 0, 0), 500.0, 0.5, colors::kRed);
+  w.placeDragged();  // nothing dragged: nothing moves
+  EXPECT_EQ(w.body(box).position, Vec3(0.0, 0.2, 0.0));
+  w.beginDrag(box, Vec3(0.1, 0.4, 0.0));  // a point on the top face, off the centre
+  w.dragTo(Vec3(2.1, 1.4, -1.0));
+  w.placeDragged();
+  const Body& b = w.body(box);
+  EXPECT_VEC3_NEAR(b.position, Vec3(2.0, 1.2, -1.0), 1e-12);  // translated by target − grabbed point
+  EXPECT_EQ(b.linearVelocity, Vec3(0.0));
+  EXPECT_EQ(b.angularVelocity, Vec3(0.0));
+  const std::optional<WorldRayHit> hit = w.rayCast(Ray{Vec3(2.0, 5.0, -1.0), Vec3(0.0, -1.0, 0.0)}, 100.0, true);
+  ASSERT_TRUE(hit.has_value());
+  EXPECT_EQ(hit->body, box);
+  EXPECT_NEAR(hit->hit.point.y, 1.4, 1e-9);
+}
+
 }  // namespace
 }  // namespace pba::rigid
