@@ -1,0 +1,118 @@
+#include "physics/animation/clip.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pba::animation {
+
+const char* rootMotionName(RootMotion mode) {
+  switch (mode) {
+    case RootMotion::AsRecorded: return "as-recorded";
+    case RootMotion::Accumulate: return "accumulate";
+    case RootMotion::InPlace: return "in-place";
+  }
+  return "?";
+}
+
+Status validate(const Clip& clip, const Skeleton& skeleton, const std::string& source) {
+  const std::string where = source.empty() ? std::string() : source + ": ";
+  if (clip.tracks.size() != skeleton.names.size())
+    return Error{where + "clip '" + clip.name + "' has " + std::to_string(clip.tracks.size()) + " tracks for a skeleton of " +
+                 std::to_string(skeleton.names.size()) + " joints (a clip of another skeleton?)"};
+  if (!(clip.duration > 0.0) || !std::isfinite(clip.duration))
+    return Error{where + "clip '" + clip.name + "'.duration: must be a positive number of seconds"};
+  for (size_t j = 0; j < clip.tracks.size(); ++j) {
+    const std::string field = where + "tracks[" + std::to_string(j) + "] (" + skeleton.names[j] + ")";
+    const JointTrack& track = clip.tracks[j];
+    if (Status s = detail::checkIncreasing(track.translation.times(), field + ".translation"); !s.ok()) return s;
+    if (Status s = detail::checkIncreasing(track.rotation.times(), field + ".rotation"); !s.ok()) return s;
+    for (const Vec3& v : track.translation.values())
+      if (!isFinite(v)) return Error{field + ".translation: a key is not finite"};
+  }
+  return Status::success();
+}
+
+Vec3 rootDisplacement(const Clip& clip, const Skeleton& skeleton) {
+  if (clip.tracks.empty() || clip.tracks[0].translation.empty()) return Vec3(0.0);
+  static_cast<void>(skeleton);
+  const Channel<Vec3>& c = clip.tracks[0].translation;
+  const Vec3 d = c.valueAt(clip.duration) - c.valueAt(0.0);
+  return {d.x, 0.0, d.z};
+}
+
+void samplePose(const Skeleton& skeleton, const Clip& clip, Real t, Pose& pose) {
+  const size_t n = skeleton.names.size();
+  pose.translations.resize(n);
+  pose.rotations.resize(n);
+  const Real tc = std::clamp(t, 0.0, clip.duration);
+  for (size_t j = 0; j < n; ++j) {
+    const JointTrack* track = j < clip.tracks.size() ? &clip.tracks[j] : nullptr;
+    pose.translations[j] = track && !track->translation.empty() ? track->translation.valueAt(tc) : skeleton.restTranslations[j];
+    pose.rotations[j] = track && !track->rotation.empty() ? track->rotation.valueAt(tc) : skeleton.restRotations[j];
+  }
+}
+
+void playPose(const Skeleton& skeleton, const Clip& clip, Real t, const Playback& playback, Pose& pose) {
+  Real cycles = 0.0;
+  Real tc = t;
+  if (playback.loop && clip.duration > 0.0) {
+    cycles = std::floor(t / clip.duration);
+    tc = t - cycles * clip.duration;
+  }
+  samplePose(skeleton, clip, tc, pose);
+  if (pose.translations.empty()) return;
+  switch (playback.rootMotion) {
+    case RootMotion::AsRecorded: break;
+    case RootMotion::Accumulate: pose.translations[0] += cycles * rootDisplacement(clip, skeleton); break;
+    case RootMotion::InPlace: {
+      const Vec3 start = clip.tracks.empty() || clip.tracks[0].translation.empty()
+                             ? skeleton.restTranslations[0]
+                             : clip.tracks[0].translation.valueAt(0.0);
+      pose.translations[0].x = start.x;
+      pose.translations[0].z = start.z;
+      break;
+    }
+  }
+}
+
+Real TimeWarp::operator()(Real t) const {
+  const int n = map.size();
+  if (n == 0) return t;
+  if (n == 1) return map.value(0) + (t - map.time(0));
+  if (t < map.time(0)) {
+    const Real slope = (map.value(1) - map.value(0)) / (map.time(1) - map.time(0));
+    return map.value(0) + slope * (t - map.time(0));
+  }
+  if (t > map.time(n - 1)) {
+    const Real slope = (map.value(n - 1) - map.value(n - 2)) / (map.time(n - 1) - map.time(n - 2));
+    return map.value(n - 1) + slope * (t - map.time(n - 1));
+  }
+  return map.valueAt(t);
+}
+
+Status validate(const TimeWarp& warp) {
+  if (Status s = detail::checkIncreasing(warp.map.times(), "time warp"); !s.ok()) return s;
+  for (int k = 1; k < warp.map.size(); ++k)
+    if (warp.map.value(k) < warp.map.value(k - 1))
+      return Error{"time warp: key " + std::to_string(k) + " goes back in clip time"};
+  return Status::success();
+}
+
+BlendWeights crossFadeWeights(Real t, Real start, Real duration) {
+  Real x = duration > 0.0 ? (t - start) / duration : (t >= start ? 1.0 : 0.0);
+  x = std::clamp(x, 0.0, 1.0);
+  const Real w = x * x * (3.0 - 2.0 * x);
+  return {1.0 - w, w};
+}
+
+void blendPoses(const Pose& a, const Pose& b, Real w, Pose& out) {
+  const size_t n = std::min(a.rotations.size(), b.rotations.size());
+  out.translations.resize(n);
+  out.rotations.resize(n);
+  for (size_t j = 0; j < n; ++j) {
+    out.translations[j] = w <= 0.0 ? a.translations[j] : w >= 1.0 ? b.translations[j] : glm::mix(a.translations[j], b.translations[j], w);
+    out.rotations[j] = w <= 0.0 ? a.rotations[j] : w >= 1.0 ? b.rotations[j] : slerp(a.rotations[j], b.rotations[j], w);
+  }
+}
+
+}  // namespace pba::animation
