@@ -81,7 +81,9 @@ GaitDesc runGait() {
 Clip buildGaitClip(const Skeleton& s, const GaitDesc& g, const std::string& name) {
   Clip c = emptyClip(s, name, g.period);
   constexpr int kKeys = 8;
-  for (int k = 0; k <= kKeys; ++k) {
+  // One key beyond each end (k = −1 and k = 9): the spline tangents at 0 and at the period then come
+  // from the cycle's own neighbours, so a looping cycle is C¹ across the loop too (no velocity jump).
+  for (int k = -1; k <= kKeys + 1; ++k) {
     const Real t = g.period * k / kKeys;
     const Real phase = 2.0 * kPi * k / kKeys;
     const Real s1 = std::sin(phase);

@@ -85,7 +85,11 @@ void PendulumChain::step(const Vec3& pivot, const PendulumDrive& drive, Real dt)
 Real PendulumChain::energy(const Vec3& pivot, const PendulumDrive& drive) const {
   static_cast<void>(pivot);
   Real e = 0.0;
-  for (size_t k = 0; k < links.size() && k < states.size(); ++k) e += pendulumEnergy(links[k], states[k], drive);
+  PendulumDrive d = drive;
+  for (size_t k = 0; k < links.size() && k < states.size(); ++k) {
+    e += pendulumEnergy(links[k], states[k], d);
+    d.restDirection = states[k].direction;  // link k + 1's spring pulls toward link k (as in step)
+  }
   return e;
 }
 

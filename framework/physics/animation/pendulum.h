@@ -65,7 +65,8 @@ struct PendulumChain {
   void step(const Vec3& pivot, const PendulumDrive& drive, Real dt);
   /// Puts every link along the rest direction at rest.
   void rest(const Vec3& pivot, const Vec3& restDirection);
-  Real energy(const Vec3& pivot, const PendulumDrive& drive) const;  ///< [J] sum over the links, kinetic in the pivot frame
+  /// [J] sum of pendulumEnergy over the links, each with its own rest direction and pivot frame.
+  Real energy(const Vec3& pivot, const PendulumDrive& drive) const;
 };
 
 }  // namespace pba::animation

@@ -1,0 +1,78 @@
+#include "clip_import.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include "graphics/model.h"
+#include "graphics/skinning.h"
+
+namespace pba::labs::animation {
+
+namespace an = pba::animation;
+
+std::string resolveResourcePath(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
+  const fs::path fromRoot = fs::path(PBA_RESOURCE_DIR).parent_path() / path;
+  return fs::exists(fromRoot, ec) ? fromRoot.string() : path;
+}
+
+namespace {
+
+Quat rotationOf(const glm::mat4& m) {
+  glm::dmat3 r(m);
+  for (int c = 0; c < 3; ++c) r[c] = glm::normalize(r[c]);  // drop the scale
+  return glm::normalize(glm::quat_cast(r));
+}
+
+/// Largest extent of the rest pose's joint positions [file units].
+Real restExtent(const graphics::Model& model) {
+  const std::vector<glm::mat4> g = graphics::globalTransforms(model, graphics::restPose(model));
+  Vec3 lo(1e300), hi(-1e300);
+  for (const glm::mat4& m : g) {
+    const Vec3 p(m[3]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+}
+
+}  // namespace
+
+Result<ImportedClip> importClip(const std::string& file, Real height, const std::string& field) {
+  if (!(height > 0.0)) return Error{"height: must be > 0"};
+  const std::string path = resolveResourcePath(file);
+  if (path.empty()) return Error{field + ": no file given"};
+  std::string error;
+  const std::optional<graphics::Model> model = graphics::loadModel(path, &error);
+  if (!model) return Error{field + ": " + error};
+  if (model->nodes.empty()) return Error{field + ": " + path + ": has no joints"};
+  if (model->animations.empty() || model->animations[0].channels.empty() || !(model->animations[0].duration > 0.0f))
+    return Error{field + ": " + path + ": has no animation (a clip needs keyframes)"};
+  ImportedClip out;
+  out.path = path;
+  const Real extent = restExtent(*model);
+  out.scale = extent > 1e-9 ? height / extent : 1.0;
+  for (const graphics::ModelNode& n : model->nodes)
+    out.skeleton.add(n.name, n.parent, out.scale * Vec3(n.local[3]), rotationOf(n.local));
+  const graphics::Animation& a = model->animations[0];
+  an::Clip& clip = out.clip;
+  clip.name = a.name.empty() ? "clip" : a.name;
+  clip.duration = a.duration;
+  clip.tracks.resize(model->nodes.size());
+  for (const graphics::NodeChannel& c : a.channels) {
+    if (c.node < 0 || c.node >= static_cast<int>(clip.tracks.size())) continue;
+    an::JointTrack& t = clip.tracks[static_cast<size_t>(c.node)];
+    const std::string where = field + ": " + path + ": channel of " + model->nodes[static_cast<size_t>(c.node)].name;
+    for (const auto& k : c.positions)
+      if (const Result<int> r = t.translation.insert(k.time, out.scale * Vec3(k.value)); !r.ok()) return Error{where + ": " + r.error()};
+    for (const auto& k : c.rotations)
+      if (const Result<int> r = t.rotation.insert(k.time, glm::normalize(Quat(k.value))); !r.ok()) return Error{where + ": " + r.error()};
+    clip.frames = std::max({clip.frames, static_cast<int>(c.positions.size()), static_cast<int>(c.rotations.size())});
+  }
+  if (Status s = an::validate(clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};
+  return out;
+}
+
+}  // namespace pba::labs::animation

@@ -1,0 +1,31 @@
+#pragma once
+// The animation lab's bridge from an imported model (graphics/model.h: BVH, FBX, COLLADA, glTF
+// through Assimp) to the physics library's Skeleton and Clip (the library never sees Assimp).
+//
+// Every node becomes a joint, parents first, with its rest local transform split into translation
+// and rotation (scale dropped). The file's first animation becomes the clip: position keys → the
+// joint's translation channel (linear), rotation keys → its rotation channel (slerp), times in
+// seconds. The whole character is scaled by `height` / (the rest pose's largest extent), so files in
+// centimetres, inches or metres all play at human size; no other offset is applied.
+#include <string>
+
+#include "physics/animation/clip.h"
+#include "physics/core/result.h"
+
+namespace pba::labs::animation {
+
+struct ImportedClip {
+  pba::animation::Skeleton skeleton;
+  pba::animation::Clip clip;
+  Real scale = 1.0;  ///< [m per file unit]
+  std::string path;  ///< the file as opened
+};
+
+/// The path as given when it exists, else relative to the repository root (PBA_RESOURCE_DIR/..).
+std::string resolveResourcePath(const std::string& path);
+
+/// Errors name the field and the file: "skeleton: x.bvh: <Assimp's message>", "skeleton: x.obj: has
+/// no animation (a clip needs keyframes)", "height: must be > 0".
+Result<ImportedClip> importClip(const std::string& path, Real height, const std::string& field = "skeleton");
+
+}  // namespace pba::labs::animation

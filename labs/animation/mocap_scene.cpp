@@ -1,0 +1,108 @@
+// Animation lab, scene "mocap": plays a motion-capture clip imported through Assimp (default: the
+// project's humanoid, resources/models/humanoid.bvh; any BVH/FBX/glTF with an animation through
+// --skeleton, e.g. Debian assimp-testmodels' CMU 01_01.bvh), with the trajectory of one joint drawn
+// over the whole clip (Workbook §2.7, advanced: "load an animated skeleton").
+#include <imgui.h>
+
+#include "anim_scene.h"
+#include "clip_import.h"
+
+PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "motion file Assimp reads (BVH, FBX, COLLADA, glTF) with an animation", "mocap", 1);
+
+namespace pba::labs::animation {
+namespace {
+
+class MocapScene final : public AnimScene {
+ public:
+  MocapScene() {
+    params_.text("skeleton", &file_, "Motion file with an animation (BVH, FBX, glTF, …). Relative paths are also tried from the repository root.")
+        .needsReset();
+    params_.real("height", &height_, 0.2, 5.0, "m", "The character is scaled so its rest pose is this tall. Typical 1.7 m.").needsReset();
+    params_.text("trail_joint", &trailJoint_, "Joint whose path over the clip is drawn (empty: none). Typical LeftHand.").needsReset();
+    params_.choiceEnum("rotation", &rotationMode_, {"step", "slerp", "squad"}, "Interpolation of the rotations between the file's frames.");
+  }
+  std::string description() const override {
+    return "A motion-capture clip played on its own skeleton; the teal line is one joint's path over the whole clip.";
+  }
+  Status validate() override {
+    const Result<ImportedClip> r = importClip(file_, height_);
+    return r ? Status::success() : Status(Error{r.error()});
+  }
+  void reset() override {
+    Result<ImportedClip> r = importClip(file_, height_);
+    if (r) {
+      data_ = std::move(r).value();
+      error_.clear();
+    } else {
+      error_ = r.error();  // the window keeps the clip it has
+    }
+    skeleton_ = data_.skeleton;
+    clipFrames_ = data_.clip.frames;
+    for (an::JointTrack& t : data_.clip.tracks) t.rotation.setMode(rotationMode_);
+    trail_.clear();
+    const int j = skeleton_.find(trailJoint_);
+    if (j >= 0 && data_.clip.duration > 0.0) {
+      an::Pose p;
+      for (int s = 0; s <= kTrailSamples; ++s) {
+        an::samplePose(skeleton_, data_.clip, data_.clip.duration * s / kTrailSamples, p);
+        trail_.push_back(an::forwardKinematics(skeleton_, p)[static_cast<size_t>(j)].position);
+      }
+    }
+    resetClock();
+  }
+  void draw(DebugDraw& d) const override {
+    if (world_.empty()) return;
+    drawCharacter(d, skeleton_, world_);
+    for (size_t s = 1; s < trail_.size(); ++s) d.line(trail_[s - 1], trail_[s], colors::kTeal);
+    const int j = skeleton_.find(trailJoint_);
+    if (j >= 0) d.sphere(world_[static_cast<size_t>(j)].position, 0.05, colors::kTeal);
+  }
+  std::vector<app::LegendEntry> legend() const override {
+    return {{colors::kBlue, "left side"}, {colors::kOrange, "right side"}, {colors::kTeal, "path of " + trailJoint_}};
+  }
+  void ui() override {
+    if (!error_.empty()) ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous clip kept)", error_.c_str());
+    ImGui::Text("%s: %d frames, %.2f s, %d joints", data_.path.c_str(), clipFrames_, data_.clip.duration, skeleton_.size());
+    AnimScene::ui();
+  }
+  std::vector<app::Preset> presets() const override {
+    return {{"humanoid", {{"skeleton", "resources/models/humanoid.bvh"}}},
+            {"cmu 01_01", {{"skeleton", "/usr/share/assimp/models/BVH/01_01.bvh"}, {"trail_joint", "LeftHand"}}},
+            {"boxing", {{"skeleton", "/usr/share/assimp/models/BVH/Boxing_Toes.bvh"}, {"trail_joint", ""}}},
+            {"step", {{"rotation", "step"}}},
+            {"squad", {{"rotation", "squad"}}}};
+  }
+
+ protected:
+  Real duration() const override { return data_.clip.duration; }
+  std::vector<Real> keyTimes() const override {
+    // One marker per frame would fill the bar: the keys of the busiest channel, at most 200.
+    std::vector<Real> keys;
+    for (const an::JointTrack& t : data_.clip.tracks)
+      if (t.rotation.times().size() > keys.size()) keys = t.rotation.times();
+    if (keys.size() > 200) keys.clear();
+    return keys;
+  }
+  void evaluate() override {
+    if (skeleton_.size() == 0) return;
+    an::samplePose(skeleton_, data_.clip, time(), pose_);
+    world_ = an::forwardKinematics(skeleton_, pose_);
+    continuity_ = 0.0;  // a captured clip is only C⁰ (linear/slerp between frames)
+  }
+  void addMetrics(nlohmann::json& m) const override { m["file"] = data_.path; }
+
+ private:
+  static constexpr int kTrailSamples = 240;
+  std::string file_ = "resources/models/humanoid.bvh";
+  Real height_ = 1.7;
+  std::string trailJoint_ = "LeftHand";
+  an::RotationInterpolation rotationMode_ = an::RotationInterpolation::Slerp;
+  ImportedClip data_;
+  std::string error_;
+  std::vector<Vec3> trail_;
+};
+
+}  // namespace
+}  // namespace pba::labs::animation
+
+PBA_REGISTER_SCENE("Motion", "mocap", pba::labs::animation::MocapScene);
