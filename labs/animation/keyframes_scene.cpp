@@ -168,4 +168,4 @@ class KeyframesScene final : public AnimScene {
 }  // namespace
 }  // namespace pba::labs::animation
 
-PBA_REGISTER_SCENE("Characters", "keyframes", pba::labs::animation::KeyframesScene);
+PBA_REGISTER_SCENE("Keyframing", "keyframes", pba::labs::animation::KeyframesScene);
