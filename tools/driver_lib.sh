@@ -3,7 +3,7 @@
 
 PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-dev libimgui-dev
   libassimp-dev nlohmann-json3-dev libstb-dev libeigen3-dev googletest libgtest-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels fonts-dejavu-core python3 ccache xdotool)
+  xvfb xauth assimp-testmodels fonts-dejavu-core python3 ccache xdotool clang-format)
 PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 pba_say() {

@@ -42,8 +42,7 @@ long LabOptions::frameCount() const {
 }
 
 bool looksLikeSceneFile(const std::string& scene) {
-  return scene.find('/') != std::string::npos ||
-         (scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0);
+  return scene.find('/') != std::string::npos || (scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0);
 }
 
 Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
@@ -73,17 +72,29 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     };
     std::string v;
     Status s;
-    if (arg == "--help" || arg == "-h") { s = flagOnly(); o.help = true; }
-    else if (arg == "--headless") { s = flagOnly(); o.headless = true; }
-    else if (arg == "--lecture") { s = flagOnly(); o.lecture = true; }
-    else if (arg == "--list-scenes") { s = flagOnly(); o.listScenes = true; }
-    else if (arg == "--scene") { s = next(o.scene); }
-    else if (arg == "--screenshot") { s = next(o.screenshot); }
-    else if (arg == "--metrics") { s = next(o.metrics); }
-    else if (arg == "--frames") {
+    if (arg == "--help" || arg == "-h") {
+      s = flagOnly();
+      o.help = true;
+    } else if (arg == "--headless") {
+      s = flagOnly();
+      o.headless = true;
+    } else if (arg == "--lecture") {
+      s = flagOnly();
+      o.lecture = true;
+    } else if (arg == "--list-scenes") {
+      s = flagOnly();
+      o.listScenes = true;
+    } else if (arg == "--scene") {
+      s = next(o.scene);
+    } else if (arg == "--screenshot") {
+      s = next(o.screenshot);
+    } else if (arg == "--metrics") {
+      s = next(o.metrics);
+    } else if (arg == "--frames") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
-      if (!r || r.value() > kMaxFrames) return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
+      if (!r || r.value() > kMaxFrames)
+        return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
       o.frames = r.value();
     } else if (arg == "--seconds") {
       if (!(s = next(v))) return Error{s.error()};
@@ -95,17 +106,21 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       auto r = parsePositive(arg, v);
       if (!r) return Error{r.error()};
       if (r.value() < kMinDt || r.value() > kMaxDt)
-        return Error{"--dt: must be in [" + std::to_string(kMinDt) + ", " + std::to_string(kMaxDt) + "] s, got '" + v + "'"};
+        return Error{"--dt: must be in [" + std::to_string(kMinDt) + ", " + std::to_string(kMaxDt) + "] s, got '" + v +
+                     "'"};
       o.dt = r.value();
     } else if (arg == "--substeps") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
-      if (!r || r.value() > kMaxSubsteps) return Error{"--substeps: expected a whole number in [1, " + std::to_string(kMaxSubsteps) + "], got '" + v + "'"};
+      if (!r || r.value() > kMaxSubsteps)
+        return Error{"--substeps: expected a whole number in [1, " + std::to_string(kMaxSubsteps) + "], got '" + v +
+                     "'"};
       o.substeps = static_cast<int>(r.value());
     } else if (arg == "--time-scale") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parsePositive(arg, v);
-      if (!r || r.value() < kMinTimeScale || r.value() > kMaxTimeScale) return Error{"--time-scale: expected a number in [0.1, 4], got '" + v + "'"};
+      if (!r || r.value() < kMinTimeScale || r.value() > kMaxTimeScale)
+        return Error{"--time-scale: expected a number in [0.1, 4], got '" + v + "'"};
       o.timeScale = r.value();
     } else if (arg == "--seed") {
       if (!(s = next(v))) return Error{s.error()};
@@ -130,7 +145,8 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     if (!s) return Error{s.error()};
   }
   if (o.frames && o.seconds) return Error{"--frames and --seconds: give one or the other"};
-  if (o.headless && !o.screenshot.empty()) return Error{"--screenshot needs a window: drop --headless (use xvfb-run without a display)"};
+  if (o.headless && !o.screenshot.empty())
+    return Error{"--screenshot needs a window: drop --headless (use xvfb-run without a display)"};
   return o;
 }
 
@@ -141,30 +157,31 @@ std::string overrideError(const ParamOverride& o, const std::string& error) {
 }
 
 std::string usage(const std::string& lab) {
-  std::string text =
-      "Usage: pba-" + lab + " [options]\n"
-      "\n"
-      "  --scene NAME|FILE.json  scene to start (default: the first; see --list-scenes)\n"
-      "  --headless              no window and no OpenGL: step the scene and exit\n"
-      "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
-      "                          (default 300 headless, 120 for --screenshot)\n"
-      "  --seconds T             simulated seconds instead of --frames (at most 100000)\n"
-      "  --dt H                  fixed time step in seconds (default: the scene's)\n"
-      "  --substeps N            split each step into N substeps (1-64)\n"
-      "  --time-scale S          slow motion or fast forward, 0.1-4\n"
-      "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
-      "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
-      "  --seed N                random seed (default 1)\n"
-      "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
-      "  --lecture               large fonts, high contrast (key L toggles)\n"
-      "  --list-scenes           print the scenes and exit\n"
-      "  --help                  this text\n";
+  std::string text = "Usage: pba-" + lab +
+                     " [options]\n"
+                     "\n"
+                     "  --scene NAME|FILE.json  scene to start (default: the first; see --list-scenes)\n"
+                     "  --headless              no window and no OpenGL: step the scene and exit\n"
+                     "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
+                     "                          (default 300 headless, 120 for --screenshot)\n"
+                     "  --seconds T             simulated seconds instead of --frames (at most 100000)\n"
+                     "  --dt H                  fixed time step in seconds (default: the scene's)\n"
+                     "  --substeps N            split each step into N substeps (1-64)\n"
+                     "  --time-scale S          slow motion or fast forward, 0.1-4\n"
+                     "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
+                     "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
+                     "  --seed N                random seed (default 1)\n"
+                     "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
+                     "  --lecture               large fonts, high contrast (key L toggles)\n"
+                     "  --list-scenes           print the scenes and exit\n"
+                     "  --help                  this text\n";
   if (!labFlags().empty()) {
     text += "\nLab options:\n";
     for (const LabFlag& f : labFlags()) {
       const std::string option = "--" + f.flag + " VALUE";
-      text += "  " + option + std::string(option.size() < 24 ? 24 - option.size() : 1, ' ') + f.help + " (parameter '" + f.param +
-              "'" + (f.impliesScene.empty() ? std::string() : "; selects scene '" + f.impliesScene + "'") + ")\n";
+      text += "  " + option + std::string(option.size() < 24 ? 24 - option.size() : 1, ' ') + f.help + " (parameter '" +
+              f.param + "'" + (f.impliesScene.empty() ? std::string() : "; selects scene '" + f.impliesScene + "'") +
+              ")\n";
     }
   }
   text +=

@@ -28,15 +28,15 @@ struct ParamOverride {
 };
 
 struct LabOptions {
-  std::string scene;                 ///< scene name or path of a .json scene file; empty = first scene
+  std::string scene;  ///< scene name or path of a .json scene file; empty = first scene
   bool headless = false;
-  std::optional<long> frames;        ///< displayed frames of 1/60 s each
-  std::optional<double> seconds;     ///< alternatively: simulated seconds
-  std::optional<double> dt;          ///< fixed step [s]
+  std::optional<long> frames;     ///< displayed frames of 1/60 s each
+  std::optional<double> seconds;  ///< alternatively: simulated seconds
+  std::optional<double> dt;       ///< fixed step [s]
   std::optional<int> substeps;
   std::optional<double> timeScale;
-  std::string screenshot;            ///< PNG path: render this many frames in a window, save, exit
-  std::string metrics;               ///< JSON path or "-" for stdout
+  std::string screenshot;  ///< PNG path: render this many frames in a window, save, exit
+  std::string metrics;     ///< JSON path or "-" for stdout
   std::uint64_t seed = 1;
   bool lecture = false;
   bool listScenes = false;

@@ -32,7 +32,7 @@
 namespace pba::app {
 namespace {
 
-constexpr int kMaxStepsPerFrame = 2000;  // bounds one frame's physics so the window stays responsive
+constexpr int kMaxStepsPerFrame = 2000;   // bounds one frame's physics so the window stays responsive
 constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame (dragging the window) never jumps far
 constexpr float kMinFramedPitch = 0.12f;  // [rad] F keeps a pitch in this range, else restores the default
 constexpr float kMaxFramedPitch = 1.35f;  // [rad]
@@ -69,9 +69,10 @@ void drawLabels(const graphics::DebugRenderer& debug, const graphics::OrbitCamer
     if (!label.visible) continue;
     const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
     const LabelBox box = placeLabel(label.pixel.x, label.pixel.y, size.x, size.y, gap, area);
-    list->AddRectFilled(ImVec2(box.x0 - halo, box.y0 - halo), ImVec2(box.x1 + halo, box.y1 + halo), IM_COL32(255, 255, 255, 190),
-                        halo);
-    const ImU32 colour = ImGui::ColorConvertFloat4ToU32(ImVec4(label.color.r, label.color.g, label.color.b, label.color.a));
+    list->AddRectFilled(ImVec2(box.x0 - halo, box.y0 - halo), ImVec2(box.x1 + halo, box.y1 + halo),
+                        IM_COL32(255, 255, 255, 190), halo);
+    const ImU32 colour =
+        ImGui::ColorConvertFloat4ToU32(ImVec4(label.color.r, label.color.g, label.color.b, label.color.a));
     list->AddText(ImVec2(box.x0, box.y0), colour, label.text.c_str());
   }
 }
@@ -107,7 +108,8 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
     lo.y = std::min(lo.y, 0.0f);  // keep the ground in view
     // F always recovers a view: a camera left looking along the ground or from far overhead gets the
     // default elevation back (frame() keeps yaw and pitch).
-    if (!(camera.pitch >= kMinFramedPitch && camera.pitch <= kMaxFramedPitch)) camera.pitch = graphics::OrbitCamera{}.pitch;
+    if (!(camera.pitch >= kMinFramedPitch && camera.pitch <= kMaxFramedPitch))
+      camera.pitch = graphics::OrbitCamera{}.pitch;
     camera.frame(lo, hi, aspect);
     camera.zoom(-2.0f);  // a margin around the scene: room to move
     camera.pan(0.5f * (panelPixels - overlayPixels), plotsShown ? -0.12f * viewport.y : 0.0f, viewport);
@@ -140,7 +142,8 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     std::cerr << "pba-" << lab << ": " << error << '\n';
     return kExitInternal;
   }
-  std::unique_ptr<graphics::Renderer> renderer = graphics::Renderer::create(std::string(PBA_RESOURCE_DIR) + "/shaders", &error);
+  std::unique_ptr<graphics::Renderer> renderer =
+      graphics::Renderer::create(std::string(PBA_RESOURCE_DIR) + "/shaders", &error);
   if (!renderer) {
     std::cerr << "pba-" << lab << ": " << error << '\n';
     return kExitInternal;
@@ -188,10 +191,12 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     const float panelPixels = ui.hideUi ? 0.0f : panelWidthPixels(ui);
     const float overlayPixels = ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(ui);
     if (session.takeFrameRequest() || ui.frameRequested) {
-      frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels, !ui.hideUi && !session.settings().plotted.empty());
+      frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels,
+                  !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }
-    runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds), capture ? -1 : kMaxStepsPerFrame);
+    runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds),
+                        capture ? -1 : kMaxStepsPerFrame);
     if (!runner.paused() || input.dragging()) session.recordPlots();  // a paused plot stays still
 
     renderer->beginFrame(camera, fb.x, fb.y);

@@ -16,8 +16,9 @@ namespace pba::graphics {
 
 bool saveScreenshot(const std::string& path, int width, int height, std::string* error) {
   if (width <= 0 || height <= 0) {
-    if (error) *error = path + ": cannot capture an empty framebuffer (" + std::to_string(width) + "x" +
-                        std::to_string(height) + ")";
+    if (error)
+      *error =
+          path + ": cannot capture an empty framebuffer (" + std::to_string(width) + "x" + std::to_string(height) + ")";
     return false;
   }
   const auto w = static_cast<std::size_t>(width), h = static_cast<std::size_t>(height);
@@ -50,7 +51,8 @@ bool imageStats(const std::string& path, ImageStats* stats, std::string* error) 
   int w = 0, h = 0, channels = 0;
   unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &channels, 3);
   if (!pixels) {
-    if (error) *error = path + ": cannot read image (" + std::string(stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
+    if (error)
+      *error = path + ": cannot read image (" + std::string(stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
     return false;
   }
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
