@@ -26,7 +26,8 @@ Mocap makeMocap(int joints, Real seconds) {
   std::mt19937_64 rng(31);
   std::uniform_real_distribution<Real> u(-1.0, 1.0);
   m.skeleton.add("root", -1, Vec3(0.0, 1.0, 0.0));
-  for (int j = 1; j < joints; ++j) m.skeleton.add("j" + std::to_string(j), (j - 1) / 2, Vec3(0.05 * u(rng), -0.12, 0.05 * u(rng)));
+  for (int j = 1; j < joints; ++j)
+    m.skeleton.add("j" + std::to_string(j), (j - 1) / 2, Vec3(0.05 * u(rng), -0.12, 0.05 * u(rng)));
   m.clip.name = "mocap";
   m.clip.duration = seconds;
   m.clip.tracks.resize(static_cast<size_t>(joints));
@@ -36,7 +37,8 @@ Mocap makeMocap(int joints, Real seconds) {
     const Real t = f / 120.0;
     static_cast<void>(m.clip.tracks[0].translation.insert(t, Vec3(0.5 * std::sin(t), 1.0, 0.3 * t)));
     for (int j = 0; j < joints; ++j)
-      static_cast<void>(m.clip.tracks[static_cast<size_t>(j)].rotation.insert(t, glm::angleAxis(0.5 * std::sin(3.0 * t + j), glm::normalize(Vec3(1.0, 0.3 * j, 0.2)))));
+      static_cast<void>(m.clip.tracks[static_cast<size_t>(j)].rotation.insert(
+          t, glm::angleAxis(0.5 * std::sin(3.0 * t + j), glm::normalize(Vec3(1.0, 0.3 * j, 0.2)))));
   }
   return m;
 }

@@ -10,7 +10,8 @@
 namespace pba::labs::animation {
 
 AnimScene::AnimScene() {
-  params_.real("speed", &speed_, 0.0, 3.0, "", "Playback speed (1 = real time). The timeline keys move the clock by frames of 1/30 s.");
+  params_.real("speed", &speed_, 0.0, 3.0, "",
+               "Playback speed (1 = real time). The timeline keys move the clock by frames of 1/30 s.");
   params_.flag("loop", &loop_, "Loop the clip; off, the clock stops at its end.");
   params_.text("pose_json", &poseJson_,
                "File that receives the world position of every joint, by name, when the scene ends (--pose-json).");
@@ -102,12 +103,13 @@ std::optional<app::PickHit> AnimScene::pickJoint(const app::Ray& ray, Real radiu
   return best;
 }
 
-void AnimScene::drawCharacter(DebugDraw& d, const an::Skeleton& s, const std::vector<an::JointWorld>& world, float alpha) const {
+void AnimScene::drawCharacter(DebugDraw& d, const an::Skeleton& s, const std::vector<an::JointWorld>& world,
+                              float alpha) const {
   auto side = [&](size_t j) {
     const std::string& n = s.names[j];
-    Color c = n.rfind("Left", 0) == 0 || n.rfind("l", 0) == 0 ? colors::kBlue
+    Color c = n.rfind("Left", 0) == 0 || n.rfind("l", 0) == 0    ? colors::kBlue
               : n.rfind("Right", 0) == 0 || n.rfind("r", 0) == 0 ? colors::kOrange
-                                                                   : colors::kGrey;
+                                                                 : colors::kGrey;
     c.a = alpha;
     return c;
   };
@@ -124,7 +126,8 @@ void AnimScene::drawCharacter(DebugDraw& d, const an::Skeleton& s, const std::ve
   joint.a = alpha;
   for (size_t j = 0; j < world.size(); ++j) d.sphere(world[j].position, 1.25 * r, joint);
   const int head = s.find("Head");
-  if (head >= 0) d.sphere(toWorld(world[static_cast<size_t>(head)], Vec3(0.0, 0.09, 0.0)), 0.1, Color{0.93f, 0.76f, 0.62f, alpha});
+  if (head >= 0)
+    d.sphere(toWorld(world[static_cast<size_t>(head)], Vec3(0.0, 0.09, 0.0)), 0.1, Color{0.93f, 0.76f, 0.62f, alpha});
 }
 
 void AnimScene::ui() {
@@ -146,12 +149,15 @@ void AnimScene::timelineKeys() {
   };
   for (int dir : {-1, +1}) {
     if (!ImGui::IsKeyPressed(ImGui::GetKeyIndex(dir < 0 ? ImGuiKey_LeftArrow : ImGuiKey_RightArrow))) continue;
-    if (io.KeyAlt) jumpKey(dir);
-    else seek(time_ + dir * (io.KeyShift ? 10.0 : 1.0) * frame);
+    if (io.KeyAlt)
+      jumpKey(dir);
+    else
+      seek(time_ + dir * (io.KeyShift ? 10.0 : 1.0) * frame);
   }
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) seek(0.0);
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End))) seek(duration());
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete)) && selectedKey_ >= 0 && deleteKey(selectedKey_)) selectedKey_ = -1;
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete)) && selectedKey_ >= 0 && deleteKey(selectedKey_))
+    selectedKey_ = -1;
 }
 
 void AnimScene::timelineBar() {
@@ -169,11 +175,13 @@ void AnimScene::timelineBar() {
   for (size_t k = 0; k < keys.size(); ++k) {
     const float x = origin.x + width * static_cast<float>(keys[k] / d);
     const bool selected = static_cast<int>(k) == selectedKey_;
-    draw->AddRectFilled(ImVec2(x - (selected ? 3.0f : 1.5f), origin.y), ImVec2(x + (selected ? 3.0f : 1.5f), origin.y + height),
+    draw->AddRectFilled(ImVec2(x - (selected ? 3.0f : 1.5f), origin.y),
+                        ImVec2(x + (selected ? 3.0f : 1.5f), origin.y + height),
                         selected ? IM_COL32(220, 50, 45, 255) : IM_COL32(40, 42, 48, 255));
   }
   const float cursor = origin.x + width * static_cast<float>(time_ / d);
-  draw->AddLine(ImVec2(cursor, origin.y - 2.0f), ImVec2(cursor, origin.y + height + 2.0f), IM_COL32(40, 105, 220, 255), 2.0f);
+  draw->AddLine(ImVec2(cursor, origin.y - 2.0f), ImVec2(cursor, origin.y + height + 2.0f), IM_COL32(40, 105, 220, 255),
+                2.0f);
   ImGui::InvisibleButton("##keys", ImVec2(width, height));
   if (ImGui::IsItemClicked() && !keys.empty()) {
     const Real clicked = d * (ImGui::GetIO().MousePos.x - origin.x) / width;

@@ -54,7 +54,8 @@ class AnimScene : public app::Scene {
   void seek(Real t);
   Real time() const { return time_; }
   /// Draws the character's bones (capsules parent → child), joints and head.
-  void drawCharacter(DebugDraw& d, const an::Skeleton& s, const std::vector<an::JointWorld>& world, float alpha = 1.0f) const;
+  void drawCharacter(DebugDraw& d, const an::Skeleton& s, const std::vector<an::JointWorld>& world,
+                     float alpha = 1.0f) const;
   /// Largest jump of value and velocity across the interior keys of a channel (0 for a C¹ curve).
   static Real continuityError(const an::Channel<Vec3>& c);
   /// Drag handles and picking on the joints of world_ (handle = joint index).
@@ -63,21 +64,21 @@ class AnimScene : public app::Scene {
   an::Skeleton skeleton_;
   an::Pose pose_;
   std::vector<an::JointWorld> world_;
-  int clipFrames_ = 0;            ///< samples of a captured clip
-  Real continuity_ = 0.0;         ///< see continuityError
-  Real pendulumEnergy_ = 0.0;     ///< [J]
-  Real speed_ = 1.0;              ///< [1] playback speed
+  int clipFrames_ = 0;         ///< samples of a captured clip
+  Real continuity_ = 0.0;      ///< see continuityError
+  Real pendulumEnergy_ = 0.0;  ///< [J]
+  Real speed_ = 1.0;           ///< [1] playback speed
   bool loop_ = true;
   int selectedKey_ = -1;
-  std::string poseJson_;          ///< --pose-json FILE: world joint positions at the end of the run
+  std::string poseJson_;  ///< --pose-json FILE: world joint positions at the end of the run
 
  private:
   void measureVelocity(Real dt);
   void timelineKeys();
   void timelineBar();
-  Real time_ = 0.0;               ///< [s] clip time
-  std::vector<Vec3> previous_;    ///< world joint positions at the last step
-  Real maxVelocity_ = 0.0;        ///< [m/s] fastest joint at the last step
+  Real time_ = 0.0;             ///< [s] clip time
+  std::vector<Vec3> previous_;  ///< world joint positions at the last step
+  Real maxVelocity_ = 0.0;      ///< [m/s] fastest joint at the last step
 };
 
 }  // namespace pba::labs::animation

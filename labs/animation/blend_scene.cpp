@@ -16,12 +16,15 @@ enum class WeightSource { Timeline, Slider };
 class BlendScene final : public AnimScene {
  public:
   BlendScene() {
-    params_.choiceEnum("weight_from", &source_, {"timeline", "slider"}, "Where the blend weight comes from: the weight timeline (walk 2 s, fade 2 s, run 2 s, fade back 2 s) or the slider below.");
+    params_.choiceEnum("weight_from", &source_, {"timeline", "slider"},
+                       "Where the blend weight comes from: the weight timeline (walk 2 s, fade 2 s, run 2 s, fade back "
+                       "2 s) or the slider below.");
     params_.real("weight", &manualWeight_, 0.0, 1.0, "", "Blend weight w of the run (slider mode): 0 walk, 1 run.");
     params_.real("fade", &fade_, 0.1, 4.0, "s", "Length of each cross-fade on the timeline. Typical 2 s.");
   }
   std::string description() const override {
-    return "Walk and run cross-faded at the same phase of their cycles: weights (1 − w, w), lerp translations, slerp rotations.";
+    return "Walk and run cross-faded at the same phase of their cycles: weights (1 − w, w), lerp translations, slerp "
+           "rotations.";
   }
   void reset() override {
     skeleton_ = an::buildHumanoid();
@@ -38,7 +41,9 @@ class BlendScene final : public AnimScene {
     d.text(Vec3(-1.2, 2.0, 0), "walk " + std::to_string(weights_.first).substr(0, 4), colors::kDark);
     d.text(Vec3(1.2, 2.0, 0), "run " + std::to_string(weights_.second).substr(0, 4), colors::kDark);
   }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 0.9, 0.0), 5.5, 0.9, 0.2}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 0.9, 0.0), 5.5, 0.9, 0.2};
+  }
   std::vector<std::string> defaultPlots() const override { return {"blend_weight"}; }
   std::vector<app::Preset> presets() const override {
     return {{"timeline", {{"weight_from", "timeline"}}},

@@ -66,9 +66,11 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
     an::JointTrack& t = clip.tracks[static_cast<size_t>(c.node)];
     const std::string where = field + ": " + path + ": channel of " + model->nodes[static_cast<size_t>(c.node)].name;
     for (const auto& k : c.positions)
-      if (const Result<int> r = t.translation.insert(k.time, out.scale * Vec3(k.value)); !r.ok()) return Error{where + ": " + r.error()};
+      if (const Result<int> r = t.translation.insert(k.time, out.scale * Vec3(k.value)); !r.ok())
+        return Error{where + ": " + r.error()};
     for (const auto& k : c.rotations)
-      if (const Result<int> r = t.rotation.insert(k.time, glm::normalize(Quat(k.value))); !r.ok()) return Error{where + ": " + r.error()};
+      if (const Result<int> r = t.rotation.insert(k.time, glm::normalize(Quat(k.value))); !r.ok())
+        return Error{where + ": " + r.error()};
     clip.frames = std::max({clip.frames, static_cast<int>(c.positions.size()), static_cast<int>(c.rotations.size())});
   }
   if (Status s = an::validate(clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};

@@ -19,7 +19,9 @@ namespace {
 class KeyframesScene final : public AnimScene {
  public:
   KeyframesScene() {
-    params_.choiceEnum("rotation", &rotationMode_, {"step", "slerp", "squad"}, "How joint rotations interpolate between keys: squad is C¹, slerp turns at a corner at each key.");
+    params_.choiceEnum(
+        "rotation", &rotationMode_, {"step", "slerp", "squad"},
+        "How joint rotations interpolate between keys: squad is C¹, slerp turns at a corner at each key.");
   }
   std::string description() const override {
     return "Keyframe the humanoid: drag the hips, hands or feet (IK) to key a pose, then play and scrub the timeline.";
@@ -29,8 +31,10 @@ class KeyframesScene final : public AnimScene {
     clip_ = an::buildWaveClip(skeleton_);
     clip_.name = "keyframes";
     applyRotationMode();
-    limbs_ = {findLimb(skeleton_, "LeftArm", "LeftForeArm", "LeftHand"), findLimb(skeleton_, "RightArm", "RightForeArm", "RightHand"),
-              findLimb(skeleton_, "LeftUpLeg", "LeftLeg", "LeftFoot"), findLimb(skeleton_, "RightUpLeg", "RightLeg", "RightFoot")};
+    limbs_ = {findLimb(skeleton_, "LeftArm", "LeftForeArm", "LeftHand"),
+              findLimb(skeleton_, "RightArm", "RightForeArm", "RightHand"),
+              findLimb(skeleton_, "LeftUpLeg", "LeftLeg", "LeftFoot"),
+              findLimb(skeleton_, "RightUpLeg", "RightLeg", "RightFoot")};
     selectedKey_ = -1;
     resetClock();
   }
@@ -70,7 +74,8 @@ class KeyframesScene final : public AnimScene {
         if (l.end != handle) continue;
         const Vec3 forward = world_[0].rotation * Vec3(0, 0, 1);
         const bool leg = skeleton_.names[static_cast<size_t>(l.root)].find("Leg") != std::string::npos;
-        const Vec3 pole = world_[static_cast<size_t>(l.mid)].position + (leg ? 0.5 : -0.5) * forward - (leg ? 0.0 : 0.3) * kUp;
+        const Vec3 pole =
+            world_[static_cast<size_t>(l.mid)].position + (leg ? 0.5 : -0.5) * forward - (leg ? 0.0 : 0.3) * kUp;
         reachWithLimb(skeleton_, pose_, world_, l, target, pole);
         setRotationKey(l.root, t);
         setRotationKey(l.mid, t);
@@ -79,9 +84,13 @@ class KeyframesScene final : public AnimScene {
     evaluate();
   }
   void refresh() override { evaluate(); }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 0.9, 0.0), 4.2, 0.5, 0.25}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 0.9, 0.0), 4.2, 0.5, 0.25};
+  }
   std::vector<app::Preset> presets() const override {
-    return {{"squad", {{"rotation", "squad"}}}, {"slerp", {{"rotation", "slerp"}}}, {"step", {{"rotation", "step"}}},
+    return {{"squad", {{"rotation", "squad"}}},
+            {"slerp", {{"rotation", "slerp"}}},
+            {"step", {{"rotation", "step"}}},
             {"slow motion", {{"speed", 0.25}}}};
   }
 
@@ -123,12 +132,15 @@ class KeyframesScene final : public AnimScene {
     const std::vector<Real> keys = keyTimes();
     if (selectedKey_ >= 0 && selectedKey_ < static_cast<int>(keys.size())) {
       float t = static_cast<float>(keys[static_cast<size_t>(selectedKey_)]);
-      if (ImGui::SliderFloat("move key", &t, 0.0f, static_cast<float>(clip_.duration), "%.3f s")) moveKey(keys[static_cast<size_t>(selectedKey_)], t);
+      if (ImGui::SliderFloat("move key", &t, 0.0f, static_cast<float>(clip_.duration), "%.3f s"))
+        moveKey(keys[static_cast<size_t>(selectedKey_)], t);
     }
     float d = static_cast<float>(clip_.duration);
     if (ImGui::SliderFloat("clip length", &d, 0.5f, 10.0f, "%.2f s")) clip_.duration = d;
   }
-  void addMetrics(nlohmann::json& m) const override { m["rotation_interpolation"] = kModes[static_cast<int>(rotationMode_)]; }
+  void addMetrics(nlohmann::json& m) const override {
+    m["rotation_interpolation"] = kModes[static_cast<int>(rotationMode_)];
+  }
 
  private:
   static constexpr const char* kModes[] = {"step", "slerp", "squad"};

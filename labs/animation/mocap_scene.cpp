@@ -7,7 +7,8 @@
 #include "anim_scene.h"
 #include "clip_import.h"
 
-PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "motion file Assimp reads (BVH, FBX, COLLADA, glTF) with an animation", "mocap", 1);
+PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "motion file Assimp reads (BVH, FBX, COLLADA, glTF) with an animation",
+                      "mocap", 1);
 
 namespace pba::labs::animation {
 namespace {
@@ -15,11 +16,20 @@ namespace {
 class MocapScene final : public AnimScene {
  public:
   MocapScene() {
-    params_.text("skeleton", &file_, "Motion file with an animation (BVH, FBX, glTF, …). Relative paths are also tried from the repository root.")
+    params_
+        .text("skeleton", &file_,
+              "Motion file with an animation (BVH, FBX, glTF, …). Relative paths are also tried from the repository "
+              "root.")
         .needsReset();
-    params_.real("height", &height_, 0.2, 5.0, "m", "The character is scaled so its rest pose is this tall. Typical 1.7 m.").needsReset();
-    params_.text("trail_joint", &trailJoint_, "Joint whose path over the clip is drawn (empty: none). Typical LeftHand.").needsReset();
-    params_.choiceEnum("rotation", &rotationMode_, {"step", "slerp", "squad"}, "Interpolation of the rotations between the file's frames.");
+    params_
+        .real("height", &height_, 0.2, 5.0, "m",
+              "The character is scaled so its rest pose is this tall. Typical 1.7 m.")
+        .needsReset();
+    params_
+        .text("trail_joint", &trailJoint_, "Joint whose path over the clip is drawn (empty: none). Typical LeftHand.")
+        .needsReset();
+    params_.choiceEnum("rotation", &rotationMode_, {"step", "slerp", "squad"},
+                       "Interpolation of the rotations between the file's frames.");
   }
   std::string description() const override {
     return "A motion-capture clip played on its own skeleton; the teal line is one joint's path over the whole clip.";
@@ -61,8 +71,10 @@ class MocapScene final : public AnimScene {
     return {{colors::kBlue, "left side"}, {colors::kOrange, "right side"}, {colors::kTeal, "path of " + trailJoint_}};
   }
   void ui() override {
-    if (!error_.empty()) ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous clip kept)", error_.c_str());
-    ImGui::Text("%s: %d frames, %.2f s, %d joints", data_.path.c_str(), clipFrames_, data_.clip.duration, skeleton_.size());
+    if (!error_.empty())
+      ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous clip kept)", error_.c_str());
+    ImGui::Text("%s: %d frames, %.2f s, %d joints", data_.path.c_str(), clipFrames_, data_.clip.duration,
+                skeleton_.size());
     AnimScene::ui();
   }
   std::vector<app::Preset> presets() const override {

@@ -7,7 +7,8 @@ namespace pba::labs::animation {
 
 namespace an = pba::animation;
 
-void aimBone(const an::Skeleton& s, an::Pose& pose, std::vector<an::JointWorld>& world, int joint, int child, const Vec3& target) {
+void aimBone(const an::Skeleton& s, an::Pose& pose, std::vector<an::JointWorld>& world, int joint, int child,
+             const Vec3& target) {
   const an::JointWorld& j = world[static_cast<size_t>(joint)];
   const Vec3 now = world[static_cast<size_t>(child)].position - j.position;
   const Vec3 want = target - j.position;
@@ -24,12 +25,13 @@ Limb findLimb(const an::Skeleton& s, const std::string& root, const std::string&
   return {s.find(root), s.find(mid), s.find(end)};
 }
 
-bool reachWithLimb(const an::Skeleton& s, an::Pose& pose, std::vector<an::JointWorld>& world, const Limb& limb, const Vec3& goal,
-                   const Vec3& pole) {
+bool reachWithLimb(const an::Skeleton& s, an::Pose& pose, std::vector<an::JointWorld>& world, const Limb& limb,
+                   const Vec3& goal, const Vec3& pole) {
   if (!limb.valid() || world.size() != s.names.size()) return false;
   const Vec3 a = world[static_cast<size_t>(limb.root)].position;
   const Real upper = glm::length(world[static_cast<size_t>(limb.mid)].position - a);
-  const Real lower = glm::length(world[static_cast<size_t>(limb.end)].position - world[static_cast<size_t>(limb.mid)].position);
+  const Real lower =
+      glm::length(world[static_cast<size_t>(limb.end)].position - world[static_cast<size_t>(limb.mid)].position);
   const pba::ik::TwoBonePose solved = pba::ik::twoBoneGeometry(a, upper, lower, goal, pole);
   aimBone(s, pose, world, limb.root, limb.mid, solved.elbow);
   aimBone(s, pose, world, limb.mid, limb.end, solved.wrist);

@@ -17,19 +17,25 @@ namespace {
 class ReachScene final : public AnimScene {
  public:
   ReachScene() {
-    params_.angle("slope", &slope_, -20.0, 20.0, "Ramp angle: the ground rises this much toward +z (the walking direction). Typical 12 deg.");
-    params_.real("reach", &reach_, 0.0, 1.0, "", "Weight of the reaching arm over the clip's arm (slerp of the two poses). 1: the hand goes to the goal.");
+    params_.angle("slope", &slope_, -20.0, 20.0,
+                  "Ramp angle: the ground rises this much toward +z (the walking direction). Typical 12 deg.");
+    params_.real(
+        "reach", &reach_, 0.0, 1.0, "",
+        "Weight of the reaching arm over the clip's arm (slerp of the two poses). 1: the hand goes to the goal.");
     params_.flag("feet_ik", &feetIk_, "Solve the legs so the feet follow the ramp; off, they pass through it.");
-    params_.flag("moving_goal", &movingGoal_, "Move the goal on a circle in front of the character (dragging it stops the motion).");
+    params_.flag("moving_goal", &movingGoal_,
+                 "Move the goal on a circle in front of the character (dragging it stops the motion).");
   }
   std::string description() const override {
-    return "A walk cycle with IK on top: the right hand reaches for the draggable goal while the legs keep the feet on the ramp.";
+    return "A walk cycle with IK on top: the right hand reaches for the draggable goal while the legs keep the feet on "
+           "the ramp.";
   }
   void reset() override {
     skeleton_ = an::buildHumanoid();
     clip_ = an::buildGaitClip(skeleton_, {}, "walk");
     arm_ = findLimb(skeleton_, "RightArm", "RightForeArm", "RightHand");
-    legs_ = {findLimb(skeleton_, "LeftUpLeg", "LeftLeg", "LeftFoot"), findLimb(skeleton_, "RightUpLeg", "RightLeg", "RightFoot")};
+    legs_ = {findLimb(skeleton_, "LeftUpLeg", "LeftLeg", "LeftFoot"),
+             findLimb(skeleton_, "RightUpLeg", "RightLeg", "RightFoot")};
     goal_ = goalCentre();
     dragged_ = false;
     resetClock();
@@ -37,12 +43,14 @@ class ReachScene final : public AnimScene {
   void draw(DebugDraw& d) const override {
     drawCharacter(d, skeleton_, world_);
     const Real c = std::cos(slope_);
-    d.box(Vec3(0.0, -0.03 / c, 0.0), Vec3(0.7, 0.03, 1.4), glm::angleAxis(-slope_, Vec3(1, 0, 0)), Color{0.62f, 0.64f, 0.68f, 1.0f});
+    d.box(Vec3(0.0, -0.03 / c, 0.0), Vec3(0.7, 0.03, 1.4), glm::angleAxis(-slope_, Vec3(1, 0, 0)),
+          Color{0.62f, 0.64f, 0.68f, 1.0f});
     d.sphere(goal_, 0.06, colors::kRed);
     d.line(world_[static_cast<size_t>(arm_.end)].position, goal_, colors::kRed);
   }
   std::vector<app::LegendEntry> legend() const override {
-    return {{colors::kRed, "goal of the right hand (drag it)"}, {Color{0.62f, 0.64f, 0.68f, 1.0f}, "ramp: the feet follow it by IK"}};
+    return {{colors::kRed, "goal of the right hand (drag it)"},
+            {Color{0.62f, 0.64f, 0.68f, 1.0f}, "ramp: the feet follow it by IK"}};
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override { return app::pickSphere(ray, goal_, 0.1, 0); }
   void drag(int, const Vec3& target) override {
@@ -51,7 +59,9 @@ class ReachScene final : public AnimScene {
   }
   void refresh() override { evaluate(); }
   std::vector<app::DragHandle> dragHandles() const override { return {{0, goal_}}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 0.9, 0.0), 4.0, 0.9, 0.25}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 0.9, 0.0), 4.0, 0.9, 0.25};
+  }
   std::vector<app::Preset> presets() const override {
     return {{"reach", {{"reach", 1.0}}},
             {"clip only", {{"reach", 0.0}, {"feet_ik", false}}},
@@ -99,7 +109,8 @@ class ReachScene final : public AnimScene {
     const Vec3 forward = world_[0].rotation * Vec3(0, 0, 1);
     for (int k = 0; k < 2; ++k) {
       const Limb& leg = legs_[static_cast<size_t>(k)];
-      reachWithLimb(skeleton_, pose_, world_, leg, target[k], world_[static_cast<size_t>(leg.mid)].position + 0.5 * forward);
+      reachWithLimb(skeleton_, pose_, world_, leg, target[k],
+                    world_[static_cast<size_t>(leg.mid)].position + 0.5 * forward);
       footError_ = std::max(footError_, glm::length(world_[static_cast<size_t>(leg.end)].position - target[k]));
     }
   }
@@ -107,10 +118,12 @@ class ReachScene final : public AnimScene {
     if (reach_ <= 0.0) return;
     const an::Pose clipPose = pose_;
     const Vec3 back = world_[0].rotation * Vec3(0, 0, -1);
-    reachWithLimb(skeleton_, pose_, world_, arm_, goal_, world_[static_cast<size_t>(arm_.mid)].position + 0.4 * back - 0.3 * kUp);
+    reachWithLimb(skeleton_, pose_, world_, arm_, goal_,
+                  world_[static_cast<size_t>(arm_.mid)].position + 0.4 * back - 0.3 * kUp);
     if (reach_ < 1.0) {
       for (int j : {arm_.root, arm_.mid})
-        pose_.rotations[static_cast<size_t>(j)] = an::slerp(clipPose.rotations[static_cast<size_t>(j)], pose_.rotations[static_cast<size_t>(j)], reach_);
+        pose_.rotations[static_cast<size_t>(j)] =
+            an::slerp(clipPose.rotations[static_cast<size_t>(j)], pose_.rotations[static_cast<size_t>(j)], reach_);
       world_ = an::forwardKinematics(skeleton_, pose_);
     }
   }

@@ -28,24 +28,37 @@ class SecondaryScene final : public AnimScene {
  public:
   SecondaryScene() {
     params_.choiceEnum("gait", &gait_, {"walk", "run"}, "The keyframed clip that drives the character.").needsReset();
-    params_.flag("reaction", &reaction_, "Include the reaction term (the pivot's acceleration) in the pendulum equation; off, only gravity and the pivot's position act.");
+    params_.flag("reaction", &reaction_,
+                 "Include the reaction term (the pivot's acceleration) in the pendulum equation; off, only gravity and "
+                 "the pivot's position act.");
     params_.flag("ghosts", &ghosts_, "Draw grey ghosts of the chains stepped without the reaction term.");
-    params_.real("damping", &damping_, 0.0, 5.0, "1/s", "c in ω ← ω exp(−c dt) for every link (spring links at least their natural frequency √(k/I), see the code). Typical 0.8.").needsReset();
-    params_.real("stiffness", &stiffness_, 0.0, 2.0, "N m/rad", "Angular stiffness of the antennae's spring joints (the tail's is 6 times it). Typical 0.15.").needsReset();
+    params_
+        .real("damping", &damping_, 0.0, 5.0, "1/s",
+              "c in ω ← ω exp(−c dt) for every link (spring links at least their natural frequency √(k/I), see the "
+              "code). Typical 0.8.")
+        .needsReset();
+    params_
+        .real("stiffness", &stiffness_, 0.0, 2.0, "N m/rad",
+              "Angular stiffness of the antennae's spring joints (the tail's is 6 times it). Typical 0.15.")
+        .needsReset();
     params_.integer("tail_links", &tailLinks_, 1, 8, "", "Links of the tail chain. Typical 4.").needsReset();
   }
   std::string description() const override {
-    return "A walking character with a spring tail and antennae and a pendulum ponytail driven by its keyframed motion; grey ghosts ignore the reaction term.";
+    return "A walking character with a spring tail and antennae and a pendulum ponytail driven by its keyframed "
+           "motion; grey ghosts ignore the reaction term.";
   }
   Real defaultDt() const override { return 1.0 / 240.0; }
   void reset() override {
     skeleton_ = an::buildHumanoid();
-    clip_ = gait_ == Gait::Walk ? an::buildGaitClip(skeleton_, {}, "walk") : an::buildGaitClip(skeleton_, an::runGait(), "run");
+    clip_ = gait_ == Gait::Walk ? an::buildGaitClip(skeleton_, {}, "walk")
+                                : an::buildGaitClip(skeleton_, an::runGait(), "run");
     parts_.clear();
     // A stiff tail and antennae (spring joints), a ponytail (pendulum joints: gravity only).
-    addPart("Hips", Vec3(0, 0.02, -0.12), glm::normalize(Vec3(0, -0.3, -1)), tailLinks_, 6.0 * stiffness_, 0.12, colors::kGreen);
+    addPart("Hips", Vec3(0, 0.02, -0.12), glm::normalize(Vec3(0, -0.3, -1)), tailLinks_, 6.0 * stiffness_, 0.12,
+            colors::kGreen);
     addPart("Head", Vec3(0.05, 0.17, 0.02), glm::normalize(Vec3(0.35, 1, 0.15)), 2, stiffness_, 0.14, colors::kPurple);
-    addPart("Head", Vec3(-0.05, 0.17, 0.02), glm::normalize(Vec3(-0.35, 1, 0.15)), 2, stiffness_, 0.14, colors::kPurple);
+    addPart("Head", Vec3(-0.05, 0.17, 0.02), glm::normalize(Vec3(-0.35, 1, 0.15)), 2, stiffness_, 0.14,
+            colors::kPurple);
     addPart("Head", Vec3(0.0, 0.12, -0.1), glm::normalize(Vec3(0, -1, -0.3)), 4, 0.0, 0.09, colors::kPink);
     resetClock();
     for (Appendage& a : parts_) {
@@ -63,12 +76,16 @@ class SecondaryScene final : public AnimScene {
     }
   }
   std::vector<app::LegendEntry> legend() const override {
-    return {{colors::kGreen, "tail: spring joints"}, {colors::kPurple, "antennae: spring joints"},
-            {colors::kPink, "ponytail: pendulum joints"}, {colors::kGrey, "ghosts: no reaction term"}};
+    return {{colors::kGreen, "tail: spring joints"},
+            {colors::kPurple, "antennae: spring joints"},
+            {colors::kPink, "ponytail: pendulum joints"},
+            {colors::kGrey, "ghosts: no reaction term"}};
   }
   // From behind and left: the tail and the ponytail in view.
   // From behind and left: the tail and the ponytail in view.
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 1.0, 0.0), 3.6, 2.3, 0.2}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 1.0, 0.0), 3.6, 2.3, 0.2};
+  }
   std::optional<Real> energy() const override { return std::nullopt; }
   std::vector<std::string> defaultPlots() const override { return {"pendulum_energy_J"}; }
   std::vector<app::Preset> presets() const override {
@@ -116,7 +133,8 @@ class SecondaryScene final : public AnimScene {
   static constexpr an::Playback kInPlace{true, an::RootMotion::InPlace};
   static constexpr Real kDifference = 2e-3;  // [s] clip-time step of the central difference
 
-  void addPart(const char* joint, const Vec3& pivot, const Vec3& rest, int links, Real stiffness, Real length, const Color& c) {
+  void addPart(const char* joint, const Vec3& pivot, const Vec3& rest, int links, Real stiffness, Real length,
+               const Color& c) {
     Appendage a;
     a.joint = skeleton_.find(joint);
     a.pivotLocal = pivot;

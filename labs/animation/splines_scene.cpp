@@ -19,19 +19,25 @@ class SplinesScene final : public AnimScene {
   SplinesScene() {
     params_.choiceEnum("follow", &follow_, {"catmull-rom", "hermite", "natural-cubic", "linear"},
                        "The curve the ball follows (its arrows show that curve's velocity and acceleration).");
-    params_.real("tension", &tension_, 0.0, 1.0, "", "Hermite curve: tangents = (1 − tension) × Catmull-Rom's. 0 is Catmull-Rom, 1 stops at every knot. Typical 0.5.");
-    params_.flag("uniform_times", &uniform_, "Knots at equal time steps (1 s) instead of the non-uniform default.").needsReset();
+    params_.real("tension", &tension_, 0.0, 1.0, "",
+                 "Hermite curve: tangents = (1 − tension) × Catmull-Rom's. 0 is Catmull-Rom, 1 stops at every knot. "
+                 "Typical 0.5.");
+    params_.flag("uniform_times", &uniform_, "Knots at equal time steps (1 s) instead of the non-uniform default.")
+        .needsReset();
     params_.flag("show_catmull_rom", &show_[0], "Draw the Catmull-Rom curve (blue).");
     params_.flag("show_hermite", &show_[1], "Draw the Hermite (cardinal) curve (purple).");
     params_.flag("show_natural_cubic", &show_[2], "Draw the natural cubic spline (green).");
     params_.flag("show_linear", &show_[3], "Draw the piecewise-linear curve (grey).");
-    params_.real("arrow_scale", &arrowScale_, 0.01, 1.0, "s", "Velocity arrows are v × this, acceleration arrows a × this². Typical 0.25 s.");
+    params_.real("arrow_scale", &arrowScale_, 0.01, 1.0, "s",
+                 "Velocity arrows are v × this, acceleration arrows a × this². Typical 0.25 s.");
   }
   std::string description() const override {
-    return "Four interpolants through the same draggable knots; the ball's blue and red arrows are the chosen curve's velocity and acceleration.";
+    return "Four interpolants through the same draggable knots; the ball's blue and red arrows are the chosen curve's "
+           "velocity and acceleration.";
   }
   void reset() override {
-    const Vec3 knots[] = {{-2.4, 0.6, 0.0}, {-1.4, 1.9, 0.6}, {-0.3, 0.9, -0.4}, {0.7, 2.2, 0.2}, {1.6, 1.1, 0.8}, {2.5, 1.8, -0.2}};
+    const Vec3 knots[] = {{-2.4, 0.6, 0.0}, {-1.4, 1.9, 0.6}, {-0.3, 0.9, -0.4},
+                          {0.7, 2.2, 0.2},  {1.6, 1.1, 0.8},  {2.5, 1.8, -0.2}};
     const Real times[] = {0.0, 0.6, 1.0, 2.2, 2.6, 3.6};  // [s] non-uniform on purpose
     knots_.assign(std::begin(knots), std::end(knots));
     times_.clear();
@@ -60,8 +66,10 @@ class SplinesScene final : public AnimScene {
     d.text(ball_ + Vec3(0.0, 0.25, 0.0), "t = " + std::to_string(time()).substr(0, 4) + " s", colors::kDark);
   }
   std::vector<app::LegendEntry> legend() const override {
-    return {{colors::kBlue, "Catmull-Rom (C¹)"},   {colors::kPurple, "Hermite, tangents × (1 − tension)"},
-            {colors::kGreen, "natural cubic (C²)"}, {colors::kGrey, "linear (C⁰)"},
+    return {{colors::kBlue, "Catmull-Rom (C¹)"},
+            {colors::kPurple, "Hermite, tangents × (1 − tension)"},
+            {colors::kGreen, "natural cubic (C²)"},
+            {colors::kGrey, "linear (C⁰)"},
             {colors::kYellow, "ball: velocity blue, acceleration red"}};
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
@@ -73,7 +81,8 @@ class SplinesScene final : public AnimScene {
     return best;
   }
   void drag(int handle, const Vec3& target) override {
-    if (handle >= 0 && handle < static_cast<int>(knots_.size())) knots_[static_cast<size_t>(handle)] = glm::max(target, Vec3(-10, 0.05, -10));
+    if (handle >= 0 && handle < static_cast<int>(knots_.size()))
+      knots_[static_cast<size_t>(handle)] = glm::max(target, Vec3(-10, 0.05, -10));
   }
   void refresh() override { evaluate(); }
   std::vector<app::DragHandle> dragHandles() const override {
@@ -81,7 +90,9 @@ class SplinesScene final : public AnimScene {
     for (size_t k = 0; k < knots_.size(); ++k) h.push_back({static_cast<int>(k), knots_[k]});
     return h;
   }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 1.3, 0.0), 7.5, 0.25, 0.3}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 1.3, 0.0), 7.5, 0.25, 0.3};
+  }
   std::vector<app::Preset> presets() const override {
     return {{"catmull-rom", {{"follow", "catmull-rom"}}},
             {"hermite tension 0.8", {{"follow", "hermite"}, {"tension", 0.8}}},
@@ -123,13 +134,16 @@ class SplinesScene final : public AnimScene {
 
   Vec3 at(Curve c, Real t, int derivative) const {
     switch (c) {
-      case Curve::CatmullRom: return an::catmullRom(std::span<const Real>(times_), knots_, t, derivative);
-      case Curve::Hermite: return hermiteAt(t, derivative);
+      case Curve::CatmullRom:
+        return an::catmullRom(std::span<const Real>(times_), knots_, t, derivative);
+      case Curve::Hermite:
+        return hermiteAt(t, derivative);
       case Curve::NaturalCubic: {
         const auto m = an::cubicSplineMoments<Vec3>(times_, knots_, an::CubicEnds::Natural, Vec3(0.0), Vec3(0.0));
         return an::cubicSplineEvaluate<Vec3>(times_, knots_, m, t, derivative);
       }
-      case Curve::Linear: return an::linearInterpolate<Vec3>(times_, knots_, t, derivative);
+      case Curve::Linear:
+        return an::linearInterpolate<Vec3>(times_, knots_, t, derivative);
     }
     return Vec3(0.0);
   }
@@ -137,10 +151,13 @@ class SplinesScene final : public AnimScene {
   Vec3 hermiteAt(Real t, int derivative) const {
     const an::CatmullRomSegment s = an::catmullRomSegment(times_, t);
     if (s.region == an::SegmentRegion::Empty) return Vec3(0.0);
-    if (s.region == an::SegmentRegion::Constant) return derivative == 0 ? knots_[static_cast<size_t>(s.key)] : Vec3(0.0);
+    if (s.region == an::SegmentRegion::Constant)
+      return derivative == 0 ? knots_[static_cast<size_t>(s.key)] : Vec3(0.0);
     const Real k = 1.0 - tension_;
-    const Vec3 m1 = k * an::weightedKnots(knots_, s.key, s.startTangent), m2 = k * an::weightedKnots(knots_, s.key, s.endTangent);
-    return std::pow(s.length, -derivative) * an::hermite(knots_[static_cast<size_t>(s.key)], m1, knots_[static_cast<size_t>(s.key) + 1], m2, s.u, derivative);
+    const Vec3 m1 = k * an::weightedKnots(knots_, s.key, s.startTangent),
+               m2 = k * an::weightedKnots(knots_, s.key, s.endTangent);
+    return std::pow(s.length, -derivative) * an::hermite(knots_[static_cast<size_t>(s.key)], m1,
+                                                         knots_[static_cast<size_t>(s.key) + 1], m2, s.u, derivative);
   }
 
   std::vector<Vec3> knots_;

@@ -49,7 +49,10 @@ Bvh readBvh(const std::string& path) {
       BvhJoint j;
       in >> j.name;
       for (auto it = open.rbegin(); it != open.rend(); ++it)
-        if (*it >= 0) { j.parent = *it; break; }
+        if (*it >= 0) {
+          j.parent = *it;
+          break;
+        }
       pending = static_cast<int>(b.joints.size());
       b.joints.push_back(j);
     } else if (w == "End") {
@@ -143,7 +146,8 @@ TEST(ANIM_3_MocapPlayback, HumanoidBvhJointsMatchAnIndependentForwardKinematicsO
 
 TEST(ANIM_3_MocapPlayback, CmuBvhOfAssimpTestModelsMatchesAnIndependentForwardKinematics) {
   const std::string path = "/usr/share/assimp/models/BVH/01_01.bvh";  // Debian assimp-testmodels
-  ASSERT_TRUE(std::ifstream(path).good()) << path << " missing: install the Debian package assimp-testmodels (./pba installs it)";
+  ASSERT_TRUE(std::ifstream(path).good())
+      << path << " missing: install the Debian package assimp-testmodels (./pba installs it)";
   // The graphics import stores keys in float (relative error 6e-8): on a 1.7 m character, a chain of
   // up to 8 rotations below a root that wanders ~2 m from the origin sums to about 2e-6 m (measured
   // worst: 2.3e-6 m), so this file is checked at 4e-6 m; the humanoid, with round numbers, at 1e-6 m.

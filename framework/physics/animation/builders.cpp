@@ -104,7 +104,8 @@ Clip buildGaitClip(const Skeleton& s, const GaitDesc& g, const std::string& name
     key(c, s, "Chest", t, axisAngle(kY, -0.2 * s1));
     key(c, s, "Hips", t, axisAngle(kY, -0.08 * s1) * axisAngle(kZ, 0.04 * std::cos(phase)));
     const Real dropForKnees = 0.95 - 0.02 - 0.01 * g.kneeFlex;
-    static_cast<void>(c.tracks[0].translation.insert(t, Vec3(0.0, dropForKnees + g.bounce * std::cos(2.0 * phase), g.speed * t)));
+    static_cast<void>(
+        c.tracks[0].translation.insert(t, Vec3(0.0, dropForKnees + g.bounce * std::cos(2.0 * phase), g.speed * t)));
   }
   return c;
 }

@@ -39,6 +39,7 @@ struct JointMotion {
   Vec3 acceleration{0.0};  ///< [m/s²]
   Quat rotation{1, 0, 0, 0};
 };
-JointMotion jointMotion(const Skeleton& skeleton, const Clip& clip, const Playback& playback, int joint, Real t, Real h = 1e-3);
+JointMotion jointMotion(const Skeleton& skeleton, const Clip& clip, const Playback& playback, int joint, Real t,
+                        Real h = 1e-3);
 
 }  // namespace pba::animation

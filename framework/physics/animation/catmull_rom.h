@@ -65,7 +65,8 @@ T catmullRom(std::span<const Real> times, const std::vector<T>& values, Real t, 
   if (s.region == SegmentRegion::Constant) return derivative == 0 ? values[static_cast<size_t>(s.key)] : zero;
   const T m1 = weightedKnots(values, s.key, s.startTangent);
   const T m2 = weightedKnots(values, s.key, s.endTangent);
-  const T d = hermite(values[static_cast<size_t>(s.key)], m1, values[static_cast<size_t>(s.key + 1)], m2, s.u, derivative);
+  const T d =
+      hermite(values[static_cast<size_t>(s.key)], m1, values[static_cast<size_t>(s.key + 1)], m2, s.u, derivative);
   Real scale = 1.0;
   for (int k = 0; k < derivative; ++k) scale /= s.length;
   return scale * d;

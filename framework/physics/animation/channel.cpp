@@ -11,10 +11,14 @@ constexpr Real kSameTime = 1e-9;  // [s] two keys closer than this are "at equal
 
 const char* interpolationName(Interpolation mode) {
   switch (mode) {
-    case Interpolation::Step: return "step";
-    case Interpolation::Linear: return "linear";
-    case Interpolation::CatmullRom: return "catmull-rom";
-    case Interpolation::NaturalCubic: return "natural-cubic";
+    case Interpolation::Step:
+      return "step";
+    case Interpolation::Linear:
+      return "linear";
+    case Interpolation::CatmullRom:
+      return "catmull-rom";
+    case Interpolation::NaturalCubic:
+      return "natural-cubic";
   }
   return "?";
 }

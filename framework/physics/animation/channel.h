@@ -78,9 +78,12 @@ class Channel {
   T evaluate(Real t, int derivative) const {
     const std::span<const Real> ts(times_);
     switch (mode_) {
-      case Interpolation::Step: return derivative == 0 ? stepInterpolate(ts, values_, t, default_) : default_ * 0.0;
-      case Interpolation::Linear: return linearInterpolate(ts, values_, t, derivative, default_);
-      case Interpolation::CatmullRom: return catmullRom(ts, values_, t, derivative, default_);
+      case Interpolation::Step:
+        return derivative == 0 ? stepInterpolate(ts, values_, t, default_) : default_ * 0.0;
+      case Interpolation::Linear:
+        return linearInterpolate(ts, values_, t, derivative, default_);
+      case Interpolation::CatmullRom:
+        return catmullRom(ts, values_, t, derivative, default_);
       case Interpolation::NaturalCubic: {
         const std::vector<T> m = cubicSplineMoments(ts, values_, CubicEnds::Natural, default_ * 0.0, default_ * 0.0);
         return cubicSplineEvaluate(ts, values_, m, t, derivative, default_);

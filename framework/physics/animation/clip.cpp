@@ -7,9 +7,12 @@ namespace pba::animation {
 
 const char* rootMotionName(RootMotion mode) {
   switch (mode) {
-    case RootMotion::AsRecorded: return "as-recorded";
-    case RootMotion::Accumulate: return "accumulate";
-    case RootMotion::InPlace: return "in-place";
+    case RootMotion::AsRecorded:
+      return "as-recorded";
+    case RootMotion::Accumulate:
+      return "accumulate";
+    case RootMotion::InPlace:
+      return "in-place";
   }
   return "?";
 }
@@ -17,8 +20,9 @@ const char* rootMotionName(RootMotion mode) {
 Status validate(const Clip& clip, const Skeleton& skeleton, const std::string& source) {
   const std::string where = source.empty() ? std::string() : source + ": ";
   if (clip.tracks.size() != skeleton.names.size())
-    return Error{where + "clip '" + clip.name + "' has " + std::to_string(clip.tracks.size()) + " tracks for a skeleton of " +
-                 std::to_string(skeleton.names.size()) + " joints (a clip of another skeleton?)"};
+    return Error{where + "clip '" + clip.name + "' has " + std::to_string(clip.tracks.size()) +
+                 " tracks for a skeleton of " + std::to_string(skeleton.names.size()) +
+                 " joints (a clip of another skeleton?)"};
   if (!(clip.duration > 0.0) || !std::isfinite(clip.duration))
     return Error{where + "clip '" + clip.name + "'.duration: must be a positive number of seconds"};
   for (size_t j = 0; j < clip.tracks.size(); ++j) {
@@ -47,7 +51,8 @@ void samplePose(const Skeleton& skeleton, const Clip& clip, Real t, Pose& pose) 
   const Real tc = std::clamp(t, 0.0, clip.duration);
   for (size_t j = 0; j < n; ++j) {
     const JointTrack* track = j < clip.tracks.size() ? &clip.tracks[j] : nullptr;
-    pose.translations[j] = track && !track->translation.empty() ? track->translation.valueAt(tc) : skeleton.restTranslations[j];
+    pose.translations[j] =
+        track && !track->translation.empty() ? track->translation.valueAt(tc) : skeleton.restTranslations[j];
     pose.rotations[j] = track && !track->rotation.empty() ? track->rotation.valueAt(tc) : skeleton.restRotations[j];
   }
 }
@@ -62,8 +67,11 @@ void playPose(const Skeleton& skeleton, const Clip& clip, Real t, const Playback
   samplePose(skeleton, clip, tc, pose);
   if (pose.translations.empty()) return;
   switch (playback.rootMotion) {
-    case RootMotion::AsRecorded: break;
-    case RootMotion::Accumulate: pose.translations[0] += cycles * rootDisplacement(clip, skeleton); break;
+    case RootMotion::AsRecorded:
+      break;
+    case RootMotion::Accumulate:
+      pose.translations[0] += cycles * rootDisplacement(clip, skeleton);
+      break;
     case RootMotion::InPlace: {
       const Vec3 start = clip.tracks.empty() || clip.tracks[0].translation.empty()
                              ? skeleton.restTranslations[0]
@@ -110,7 +118,9 @@ void blendPoses(const Pose& a, const Pose& b, Real w, Pose& out) {
   out.translations.resize(n);
   out.rotations.resize(n);
   for (size_t j = 0; j < n; ++j) {
-    out.translations[j] = w <= 0.0 ? a.translations[j] : w >= 1.0 ? b.translations[j] : glm::mix(a.translations[j], b.translations[j], w);
+    out.translations[j] = w <= 0.0   ? a.translations[j]
+                          : w >= 1.0 ? b.translations[j]
+                                     : glm::mix(a.translations[j], b.translations[j], w);
     out.rotations[j] = w <= 0.0 ? a.rotations[j] : w >= 1.0 ? b.rotations[j] : slerp(a.rotations[j], b.rotations[j], w);
   }
 }

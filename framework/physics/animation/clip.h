@@ -19,15 +19,15 @@
 namespace pba::animation {
 
 struct JointTrack {
-  Channel<Vec3> translation{Interpolation::Linear};  ///< [m]; empty: the rest translation
+  Channel<Vec3> translation{Interpolation::Linear};        ///< [m]; empty: the rest translation
   RotationChannel rotation{RotationInterpolation::Slerp};  ///< empty: the rest rotation
 };
 
 struct Clip {
   std::string name;
-  Real duration = 0.0;            ///< [s] > 0
-  std::vector<JointTrack> tracks; ///< one per joint of the skeleton
-  int frames = 0;                 ///< [1] sample count of a captured clip (0 for a keyframed one)
+  Real duration = 0.0;             ///< [s] > 0
+  std::vector<JointTrack> tracks;  ///< one per joint of the skeleton
+  int frames = 0;                  ///< [1] sample count of a captured clip (0 for a keyframed one)
 };
 
 /// Errors name the source and the field: "walk.bvh: clip 'walk' has 24 tracks for a skeleton of 31

@@ -97,8 +97,8 @@ std::vector<T> cubicSplineMoments(std::span<const Real> times, const std::vector
 
 /// Value (0), velocity (1) or acceleration (2) of the cubic spline with precomputed moments.
 template <typename T>
-T cubicSplineEvaluate(std::span<const Real> times, const std::vector<T>& values, const std::vector<T>& moments,
-                      Real t, int derivative = 0, const T& defaultValue = T(0.0)) {
+T cubicSplineEvaluate(std::span<const Real> times, const std::vector<T>& values, const std::vector<T>& moments, Real t,
+                      int derivative = 0, const T& defaultValue = T(0.0)) {
   const T zero = defaultValue * 0.0;
   if (times.empty()) return derivative == 0 ? defaultValue : zero;
   if (times.size() == 1 || t <= times.front()) return derivative == 0 ? values.front() : zero;
@@ -111,10 +111,14 @@ T cubicSplineEvaluate(std::span<const Real> times, const std::vector<T>& values,
   const T c0 = (1.0 / h) * values[i] - (h / 6.0) * m0;
   const T c1 = (1.0 / h) * values[i + 1] - (h / 6.0) * m1;
   switch (derivative) {
-    case 0: return (a * a * a / (6.0 * h)) * m0 + (b * b * b / (6.0 * h)) * m1 + a * c0 + b * c1;
-    case 1: return (-a * a / (2.0 * h)) * m0 + (b * b / (2.0 * h)) * m1 - c0 + c1;
-    case 2: return (a / h) * m0 + (b / h) * m1;
-    default: return zero;
+    case 0:
+      return (a * a * a / (6.0 * h)) * m0 + (b * b * b / (6.0 * h)) * m1 + a * c0 + b * c1;
+    case 1:
+      return (-a * a / (2.0 * h)) * m0 + (b * b / (2.0 * h)) * m1 - c0 + c1;
+    case 2:
+      return (a / h) * m0 + (b / h) * m1;
+    default:
+      return zero;
   }
 }
 

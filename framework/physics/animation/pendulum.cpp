@@ -76,7 +76,8 @@ void PendulumChain::step(const Vec3& pivot, const PendulumDrive& drive, Real dt)
     // The tip's acceleration drives the next link: a + ω̇ × r + ω × (ω × r), r = L d.
     const Vec3 r = links[k].length * states[k].direction;
     const Vec3 omegaDot = (states[k].omega - before.omega) / dt;
-    d.pivotAcceleration = d.pivotAcceleration + glm::cross(omegaDot, r) + glm::cross(states[k].omega, glm::cross(states[k].omega, r));
+    d.pivotAcceleration =
+        d.pivotAcceleration + glm::cross(omegaDot, r) + glm::cross(states[k].omega, glm::cross(states[k].omega, r));
     d.restDirection = states[k].direction;
     tips[k] = p = p + r;
   }

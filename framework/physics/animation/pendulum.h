@@ -22,11 +22,11 @@
 namespace pba::animation {
 
 struct PendulumDesc {
-  Real mass = 0.3;        ///< [kg] m > 0
-  Real length = 0.25;     ///< [m] L > 0: pivot to centre of mass
-  Real inertia = 0.0;     ///< [kg m²] I about the pivot; 0: a point mass, m L²
-  Real damping = 0.5;     ///< [1/s] c ≥ 0 in ω ← ω exp(−c dt)
-  Real stiffness = 0.0;   ///< [N m/rad] k ≥ 0: 0 is a pendulum joint, > 0 a spring joint
+  Real mass = 0.3;       ///< [kg] m > 0
+  Real length = 0.25;    ///< [m] L > 0: pivot to centre of mass
+  Real inertia = 0.0;    ///< [kg m²] I about the pivot; 0: a point mass, m L²
+  Real damping = 0.5;    ///< [1/s] c ≥ 0 in ω ← ω exp(−c dt)
+  Real stiffness = 0.0;  ///< [N m/rad] k ≥ 0: 0 is a pendulum joint, > 0 a spring joint
   Real momentOfInertia() const { return inertia > 0.0 ? inertia : mass * length * length; }
 };
 
@@ -59,7 +59,8 @@ Vec3 rotateByVector(const Vec3& d, const Vec3& phi);
 struct PendulumChain {
   std::vector<PendulumDesc> links;
   std::vector<PendulumState> states;
-  std::vector<Vec3> tips;  ///< [m] world tip of each link after the last step (tip = centre of mass · 2 for a rod; here L)
+  std::vector<Vec3>
+      tips;  ///< [m] world tip of each link after the last step (tip = centre of mass · 2 for a rod; here L)
 
   /// Steps every link; `pivot` [m] and its acceleration [m/s²] come from the character.
   void step(const Vec3& pivot, const PendulumDrive& drive, Real dt);

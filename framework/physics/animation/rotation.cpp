@@ -46,7 +46,8 @@ Quat squad(const Quat& q0, const Quat& q1, const Quat& s0, const Quat& s1, Real 
   return glm::normalize(slerp(slerp(q0, q1, u), slerp(s0, s1, u), 2.0 * u * (1.0 - u)));
 }
 
-Quat interpolateRotation(std::span<const Real> times, const std::vector<Quat>& keys, Real t, RotationInterpolation mode) {
+Quat interpolateRotation(std::span<const Real> times, const std::vector<Quat>& keys, Real t,
+                         RotationInterpolation mode) {
   const size_t n = times.size();
   if (n == 0) return Quat(1.0, 0.0, 0.0, 0.0);
   if (n == 1 || t <= times.front()) return keys.front();

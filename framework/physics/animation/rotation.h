@@ -34,7 +34,8 @@ enum class RotationInterpolation {
 
 /// Rotation at t through keys at strictly increasing times (neighbouring keys are brought to the same
 /// hemisphere first). No key → identity; outside the keys → the nearest end key.
-Quat interpolateRotation(std::span<const Real> times, const std::vector<Quat>& keys, Real t, RotationInterpolation mode);
+Quat interpolateRotation(std::span<const Real> times, const std::vector<Quat>& keys, Real t,
+                         RotationInterpolation mode);
 
 /// Angle [rad] of the rotation between two unit quaternions (0 to π).
 Real rotationAngle(const Quat& a, const Quat& b);

@@ -28,7 +28,8 @@ Status validate(const Skeleton& s) {
   for (size_t i = 0; i < n; ++i) {
     const std::string field = "skeleton.joints[" + std::to_string(i) + "] (" + s.names[i] + ")";
     const int p = s.parents[i];
-    if ((i == 0) != (p < 0) || p >= static_cast<int>(i)) return Error{field + ": parent must precede the joint (only joint 0 is the root)"};
+    if ((i == 0) != (p < 0) || p >= static_cast<int>(i))
+      return Error{field + ": parent must precede the joint (only joint 0 is the root)"};
     if (!isFinite(s.restTranslations[i])) return Error{field + ": rest translation is not finite"};
     const Quat& q = s.restRotations[i];
     if (!std::isfinite(q.w) || !isFinite(Vec3(q.x, q.y, q.z)) || std::abs(glm::length(q) - 1.0) > 1e-6)

@@ -18,9 +18,9 @@ namespace pba::animation {
 
 struct Skeleton {
   std::vector<std::string> names;
-  std::vector<int> parents;              ///< −1 for the root; parents[i] < i
-  std::vector<Vec3> restTranslations;    ///< [m] c_i of the rest pose, in the parent's frame
-  std::vector<Quat> restRotations;       ///< q_i of the rest pose
+  std::vector<int> parents;            ///< −1 for the root; parents[i] < i
+  std::vector<Vec3> restTranslations;  ///< [m] c_i of the rest pose, in the parent's frame
+  std::vector<Quat> restRotations;     ///< q_i of the rest pose
 
   int size() const { return static_cast<int>(names.size()); }
   int find(const std::string& name) const;  ///< −1 when absent
@@ -39,7 +39,7 @@ struct Pose {
 
 /// World pivot and orientation of one joint.
 struct JointWorld {
-  Vec3 position{0.0};             ///< [m] p_i
+  Vec3 position{0.0};                 ///< [m] p_i
   Quat rotation{1.0, 0.0, 0.0, 0.0};  ///< R_i
 };
 

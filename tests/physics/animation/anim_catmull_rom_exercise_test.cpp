@@ -51,7 +51,8 @@ TEST(ANIM_2_CatmullRom, IsC1AcrossEveryInteriorKnot) {
     ASSERT_EQ(before.key + 1, static_cast<int>(k));
     ASSERT_EQ(after.key, static_cast<int>(k));
     EXPECT_NEAR(after.u, 0.0, 1e-15) << "a knot is the start of its interval, so the curve passes through it";
-    EXPECT_NEAR(tangentPerSecond(before, before.endTangent), tangentPerSecond(after, after.startTangent), 1e-12) << "knot " << k;
+    EXPECT_NEAR(tangentPerSecond(before, before.endTangent), tangentPerSecond(after, after.startTangent), 1e-12)
+        << "knot " << k;
   }
 }
 

@@ -114,7 +114,8 @@ TEST(Humanoid, MatchesTheBvhHierarchyAndItsGaitClipsAreValid) {
   EXPECT_EQ(s.size(), 21);
   EXPECT_EQ(s.parents[static_cast<size_t>(s.find("LeftForeArm"))], s.find("LeftArm"));
   EXPECT_VEC3_NEAR(s.restTranslations[0], Vec3(0.0, 0.95, 0.0), 1e-15);
-  for (const an::Clip& c : {an::buildGaitClip(s, {}), an::buildGaitClip(s, an::runGait(), "run"), an::buildWaveClip(s)}) {
+  for (const an::Clip& c :
+       {an::buildGaitClip(s, {}), an::buildGaitClip(s, an::runGait(), "run"), an::buildWaveClip(s)}) {
     const pba::Status st = an::validate(c, s, c.name);
     EXPECT_TRUE(st.ok()) << st.error();
   }

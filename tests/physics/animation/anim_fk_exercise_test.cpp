@@ -39,7 +39,8 @@ TEST(ANIM_3_ForwardKinematics, RandomTreesMatchHomogeneousMatrixProducts) {
     ASSERT_EQ(world.size(), 25u);
     std::vector<glm::dmat4> g(25);
     for (size_t j = 0; j < 25; ++j) {
-      const glm::dmat4 local = glm::translate(glm::dmat4(1.0), pose.translations[j]) * glm::mat4_cast(pose.rotations[j]);
+      const glm::dmat4 local =
+          glm::translate(glm::dmat4(1.0), pose.translations[j]) * glm::mat4_cast(pose.rotations[j]);
       g[j] = s.parents[j] < 0 ? local : g[static_cast<size_t>(s.parents[j])] * local;
       // Tolerance: 25 products of unit rotations and sub-metre offsets, ~1e-15 each.
       EXPECT_VEC3_NEAR(world[j].position, Vec3(g[j][3]), 1e-12);
@@ -61,7 +62,9 @@ TEST(ANIM_3_ForwardKinematics, PlanarTwoLinkArmMatchesTheClosedForm) {
   pose.rotations[1] = glm::angleAxis(b, Vec3(0, 0, 1));
   const std::vector<an::JointWorld> w = an::forwardKinematics(s, pose);
   EXPECT_VEC3_NEAR(w[1].position, Vec3(0.6 * std::cos(a), 1.0 + 0.6 * std::sin(a), 0.0), 1e-14);
-  EXPECT_VEC3_NEAR(w[2].position, Vec3(0.6 * std::cos(a) + 0.5 * std::cos(a + b), 1.0 + 0.6 * std::sin(a) + 0.5 * std::sin(a + b), 0.0), 1e-14);
+  EXPECT_VEC3_NEAR(
+      w[2].position,
+      Vec3(0.6 * std::cos(a) + 0.5 * std::cos(a + b), 1.0 + 0.6 * std::sin(a) + 0.5 * std::sin(a + b), 0.0), 1e-14);
 }
 
 TEST(ANIM_3_ForwardKinematics, RootTranslationMovesTheWholeBodyRigidly) {

@@ -20,9 +20,12 @@ struct Cubic {
   Vec3 a, b, c, d;
   Vec3 at(Real t, int derivative) const {
     switch (derivative) {
-      case 0: return a + t * b + t * t * c + t * t * t * d;
-      case 1: return b + 2.0 * t * c + 3.0 * t * t * d;
-      default: return 2.0 * c + 6.0 * t * d;
+      case 0:
+        return a + t * b + t * t * c + t * t * t * d;
+      case 1:
+        return b + 2.0 * t * c + 3.0 * t * t * d;
+      default:
+        return 2.0 * c + 6.0 * t * d;
     }
   }
 };
@@ -32,7 +35,9 @@ TEST(ANIM_1_HermiteBasis, SegmentWithACubicsEndValuesAndSlopesIsThatCubic) {
   std::uniform_real_distribution<Real> coef(-2.0, 2.0);
   for (int trial = 0; trial < 20; ++trial) {
     SCOPED_TRACE("seed 11, trial " + std::to_string(trial));
-    const Cubic f{{coef(rng), coef(rng), coef(rng)}, {coef(rng), coef(rng), coef(rng)}, {coef(rng), coef(rng), coef(rng)},
+    const Cubic f{{coef(rng), coef(rng), coef(rng)},
+                  {coef(rng), coef(rng), coef(rng)},
+                  {coef(rng), coef(rng), coef(rng)},
                   {coef(rng), coef(rng), coef(rng)}};
     const Real t1 = coef(rng), h = 0.1 + std::abs(coef(rng));
     const Vec3 p0 = f.at(t1, 0), p1 = f.at(t1 + h, 0);

@@ -42,7 +42,8 @@ TEST(ANIM_4_Pendulum, SmallAnglePeriodMatchesTheCompoundPendulum) {
     desc.length = 0.3;
     desc.inertia = inertia;
     desc.damping = 0.0;
-    const Real expected = 2.0 * kPi * std::sqrt(desc.momentOfInertia() / (desc.mass * pba::kStandardGravity * desc.length));
+    const Real expected =
+        2.0 * kPi * std::sqrt(desc.momentOfInertia() / (desc.mass * pba::kStandardGravity * desc.length));
     // 0.02 rad amplitude: the finite-amplitude correction θ²/16 is 2.5e-5; symplectic Euler's period
     // error is O((ω dt)²) ≈ 1e-6 at dt = 1e-4 s.
     EXPECT_NEAR(measuredPeriod(desc, 1e-4, 10.0 * expected) / expected, 1.0, 1e-4) << "inertia " << inertia;
@@ -106,7 +107,10 @@ TEST(ANIM_4_Pendulum, SpringJointOscillatesAtSqrtKOverIWithoutGravity) {
   for (int k = 0; t < 5.25 * period; ++k, t += dt) {
     const an::PendulumState next = an::stepPendulum(desc, s, drive, dt);
     if (s.direction.x > 0.0 && next.direction.x <= 0.0) {
-      if (firstCrossing < 0.0) firstCrossing = t; else ++crossings;
+      if (firstCrossing < 0.0)
+        firstCrossing = t;
+      else
+        ++crossings;
       if (crossings == 5) {
         EXPECT_NEAR((t - firstCrossing) / 5.0 / period, 1.0, 1e-3);
         return;

@@ -58,7 +58,8 @@ TEST(Squad, PassesThroughTheKeysStaysUnitAndIsC1AtInteriorKeys) {
   std::mt19937_64 rng(9);
   const std::vector<Real> times{0.0, 0.5, 1.3, 2.0, 2.4};
   std::vector<Quat> keys{Quat(1, 0, 0, 0)};
-  for (size_t k = 1; k < times.size(); ++k) keys.push_back(glm::normalize(keys.back() * glm::angleAxis(0.7, glm::normalize(Vec3(1, 2, 0.5 * k)))));
+  for (size_t k = 1; k < times.size(); ++k)
+    keys.push_back(glm::normalize(keys.back() * glm::angleAxis(0.7, glm::normalize(Vec3(1, 2, 0.5 * k)))));
   static_cast<void>(rng);
   for (size_t k = 0; k < times.size(); ++k)
     expectSameRotation(an::interpolateRotation(times, keys, times[k], an::RotationInterpolation::Squad), keys[k], 1e-7);
@@ -78,10 +79,13 @@ TEST(Squad, PassesThroughTheKeysStaysUnitAndIsC1AtInteriorKeys) {
 
 TEST(Slerp, ChannelTurnsAtTheChordSpeedAndStepHoldsTheKey) {
   const std::vector<Real> times{0.0, 1.0, 2.0};
-  const std::vector<Quat> keys{Quat(1, 0, 0, 0), glm::angleAxis(0.5, Vec3(0, 1, 0)), glm::angleAxis(0.5, Vec3(1, 0, 0))};
+  const std::vector<Quat> keys{Quat(1, 0, 0, 0), glm::angleAxis(0.5, Vec3(0, 1, 0)),
+                               glm::angleAxis(0.5, Vec3(1, 0, 0))};
   auto speed = [&](an::RotationInterpolation mode, Real t) {
     const Real e = 1e-5;
-    return an::rotationAngle(an::interpolateRotation(times, keys, t, mode), an::interpolateRotation(times, keys, t + e, mode)) / e;
+    return an::rotationAngle(an::interpolateRotation(times, keys, t, mode),
+                             an::interpolateRotation(times, keys, t + e, mode)) /
+           e;
   };
   // Slerp between keys 0 and 1 (0.5 rad in 1 s) turns at 0.5 rad/s.
   EXPECT_NEAR(speed(an::RotationInterpolation::Slerp, 0.5), 0.5, 1e-6);

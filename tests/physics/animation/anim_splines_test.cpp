@@ -70,9 +70,13 @@ TEST(CubicSpline, DerivativesMatchCentralDifferences) {
   const auto m = an::cubicSplineMoments<Real>(kTimes, v, an::CubicEnds::Natural, 0.0, 0.0);
   const Real e = 1e-6;
   for (Real t = 0.05; t < 2.95; t += 0.1) {
-    const Real c = (an::cubicSplineEvaluate<Real>(kTimes, v, m, t + e, 0) - an::cubicSplineEvaluate<Real>(kTimes, v, m, t - e, 0)) / (2 * e);
+    const Real c = (an::cubicSplineEvaluate<Real>(kTimes, v, m, t + e, 0) -
+                    an::cubicSplineEvaluate<Real>(kTimes, v, m, t - e, 0)) /
+                   (2 * e);
     EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kTimes, v, m, t, 1), c, 1e-7) << "t " << t;
-    const Real c2 = (an::cubicSplineEvaluate<Real>(kTimes, v, m, t + e, 1) - an::cubicSplineEvaluate<Real>(kTimes, v, m, t - e, 1)) / (2 * e);
+    const Real c2 = (an::cubicSplineEvaluate<Real>(kTimes, v, m, t + e, 1) -
+                     an::cubicSplineEvaluate<Real>(kTimes, v, m, t - e, 1)) /
+                    (2 * e);
     EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kTimes, v, m, t, 2), c2, 1e-6) << "t " << t;
   }
 }
@@ -110,7 +114,8 @@ TEST(Channel, InsertDeleteAndMoveKeepKeysSortedAndRefuseEqualTimes) {
 
 TEST(Channel, NaturalCubicModeGivesVelocityAndAccelerationAtAnyTime) {
   an::Channel<Vec3> c(an::Interpolation::NaturalCubic, Vec3(0.0));
-  for (size_t k = 0; k < kTimes.size(); ++k) ASSERT_TRUE(c.insert(kTimes[k], Vec3(std::sin(kTimes[k]), kTimes[k], 1.0)).ok());
+  for (size_t k = 0; k < kTimes.size(); ++k)
+    ASSERT_TRUE(c.insert(kTimes[k], Vec3(std::sin(kTimes[k]), kTimes[k], 1.0)).ok());
   const Real e = 1e-6;
   for (Real t = 0.1; t < 2.9; t += 0.3) {
     EXPECT_VEC3_NEAR(c.velocityAt(t), (c.valueAt(t + e) - c.valueAt(t - e)) / (2 * e), 1e-6);
