@@ -145,9 +145,11 @@ class SecondaryScene final : public AnimScene {
       d.mass = 0.05;
       d.length = length;
       d.stiffness = stiffness;
-      // A chain of stiff links driven one way (pendulum.h) amplifies each link's motion by its quality
-      // factor Q = ω0/c at resonance: spring links get at least c = ω0 (Q ≤ 1) so the chain stays calm.
-      d.damping = stiffness > 0.0 ? std::max(damping_, std::sqrt(stiffness / d.momentOfInertia())) : damping_;
+      // A chain of equal links driven one way (pendulum.h) amplifies each link's motion by its quality
+      // factor Q = ω0/c at resonance: every link gets c ≥ 0.7 ω0 (Q ≤ 1.4), with ω0 = √((k + m g L)/I)
+      // its small-swing frequency, so the chain stays calm.
+      const Real omega0 = std::sqrt((stiffness + d.mass * kStandardGravity * d.length) / d.momentOfInertia());
+      d.damping = std::max(damping_, 0.7 * omega0);
       a.chain.links.push_back(d);
     }
     parts_.push_back(a);
