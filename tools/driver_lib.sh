@@ -3,7 +3,7 @@
 
 PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-dev libimgui-dev
   libassimp-dev nlohmann-json3-dev libstb-dev libeigen3-dev googletest libgtest-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels fonts-dejavu-core python3 python3-matplotlib ccache xdotool clang-format)
+  xvfb xauth assimp-testmodels fonts-dejavu-core python3 python3-matplotlib ccache xdotool clang-format ffmpeg)
 PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 pba_say() {
