@@ -6,6 +6,7 @@
 
 #include "app/scene_registry.h"
 #include "app/scene_runner.h"
+#include "graphics/frame_recorder.h"
 
 namespace pba::app {
 namespace {
@@ -38,6 +39,7 @@ const LabFlag* findLabFlag(const std::string& flag) {
 long LabOptions::frameCount() const {
   if (frames) return *frames;
   if (seconds) return static_cast<long>(std::ceil(*seconds / kDisplayFrame - 1e-9));
+  if (!record.empty()) return kDefaultRecordFrames;
   return screenshot.empty() ? kDefaultHeadlessFrames : kDefaultScreenshotFrames;
 }
 
@@ -88,6 +90,14 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       s = next(o.scene);
     } else if (arg == "--screenshot") {
       s = next(o.screenshot);
+    } else if (arg == "--record") {
+      if (!(s = next(o.record))) return Error{s.error()};
+      if (!graphics::recordFormatOf(o.record))
+        return Error{"--record: expected FILE.mp4, FILE.gif or DIR/ (PNG files), got '" + o.record + "'"};
+    } else if (arg == "--record-ui") {
+      if (!(s = next(v))) return Error{s.error()};
+      if (v != "on" && v != "off") return Error{"--record-ui: expected on or off, got '" + v + "'"};
+      o.recordUi = v == "on";
     } else if (arg == "--metrics") {
       s = next(o.metrics);
     } else if (arg == "--frames") {
@@ -147,6 +157,9 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
   if (o.frames && o.seconds) return Error{"--frames and --seconds: give one or the other"};
   if (o.headless && !o.screenshot.empty())
     return Error{"--screenshot needs a window: drop --headless (use xvfb-run without a display)"};
+  if (o.headless && !o.record.empty())
+    return Error{"--record needs a window: drop --headless (use xvfb-run without a display)"};
+  if (!o.record.empty() && !o.screenshot.empty()) return Error{"--record and --screenshot: give one or the other"};
   return o;
 }
 
@@ -169,6 +182,10 @@ std::string usage(const std::string& lab) {
                      "  --substeps N            split each step into N substeps (1-64)\n"
                      "  --time-scale S          slow motion or fast forward, 0.1-4\n"
                      "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
+                     "  --record FILE.mp4|FILE.gif|DIR/\n"
+                     "                          record --frames (default 300) or --seconds of simulated time at 60\n"
+                     "                          frames/s, then exit: MP4 and GIF through ffmpeg, PNG files into DIR/\n"
+                     "  --record-ui on|off      the panels in the recording, or the scene alone (default off)\n"
                      "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
                      "  --seed N                random seed (default 1)\n"
                      "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
@@ -185,7 +202,7 @@ std::string usage(const std::string& lab) {
     }
   }
   text +=
-      "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot\n"
+      "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot  F9 record\n"
       "      L lecture mode  Tab hide UI  F frame scene.  Arrows nudge the target in the view plane,\n"
       "      PageUp/PageDown or Shift+Up/Down away/toward the camera, Ctrl for a fine step.\n"
       "      Mouse: left drag picks, right drag orbits, middle or Shift+right drag pans, wheel zooms.\n"

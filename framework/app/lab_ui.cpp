@@ -33,6 +33,7 @@ const char* const kKeys[][2] = {
     {"1 - 9", "scene presets"},
     {"F1 / H", "this help"},
     {"F12", "screenshot (PNG in the working folder)"},
+    {"F9", "start / stop recording (MP4 with ffmpeg, else PNG files; 60 frames/s of simulated time)"},
     {"L", "lecture mode (large fonts, high contrast)"},
     {"Tab", "hide or show the panels"},
     {"F", "frame the scene"},
@@ -307,6 +308,11 @@ void mainPanel(LabSession& session, UiState& ui) {
     if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
     sameLineIfFits("Help (F1)");
     if (ImGui::Button("Help (F1)")) ui.showHelp = !ui.showHelp;
+    if (ImGui::Button(ui.recording.empty() ? "Record (F9)" : "Stop recording (F9)")) ui.recordRequested = true;
+    if (!ui.recording.empty()) {
+      ImGui::SameLine();
+      ImGui::TextColored(detail::kAlertRed, "%s", ui.recording.c_str());
+    }
   }
   if (!session.message().empty()) ImGui::TextDisabled("%s", session.message().c_str());
   ImGui::PopItemWidth();

@@ -27,6 +27,8 @@ struct UiState {
   bool hideUi = false;
   bool lecture = false;
   bool screenshotRequested = false;
+  bool recordRequested = false;  ///< F9 or the Record button: start or stop a recording
+  std::string recording;         ///< while recording: "REC 3.2 s (192 frames)", else empty
   bool frameRequested = false;
   /// Set when the layout changed between frames (lecture mode): panels take their new size once.
   bool relayout = true;

@@ -107,6 +107,7 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
           {"guard", runner.guardMessage() ? *runner.guardMessage() : std::string()},
           {"notice", noticeShown ? ui.notice : std::string()},
           {"last_screenshot", ui.lastScreenshot},
+          {"recording", ui.recording},
           {"viewport", {f.viewport.x, f.viewport.y}},
           {"font_px", ImGui::GetFontSize()},
           {"camera", cameraJson(camera)},

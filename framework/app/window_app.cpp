@@ -24,6 +24,7 @@
 #include "app/ui_status.h"
 #include "app/ui_style.h"
 #include "app/window_input.h"
+#include "app/window_recording.h"
 #include "graphics/debug_renderer.h"
 #include "graphics/renderer.h"
 #include "graphics/screenshot.h"
@@ -119,7 +120,8 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
 }  // namespace
 
 int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner) {
-  const bool capture = !options.screenshot.empty();
+  const bool recordCli = !options.record.empty();
+  const bool capture = !options.screenshot.empty() || recordCli;
   const std::string settingsDir = capture ? std::string() : settingsDirectory(lab);
   LabSession session(lab, runner, options.seed);
   session.settings() = loadLabSettings(settingsDir);
@@ -162,6 +164,16 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   WindowInput input;
   input.install(window->handle());
   const long captureFrames = options.frameCount();
+  WindowRecording recording;
+  if (recordCli) {
+    const glm::ivec2 fb = window->framebufferSize();
+    if (Status s = recording.start(options.record, fb.x, fb.y, captureFrames); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+    ui.hideUi = !options.recordUi;
+  }
+  std::string title = desc.title;
   std::string statusPath = uiStatusPath();  // tests/ui: the machine-readable status of every frame
   long frame = 0;
   auto last = std::chrono::steady_clock::now();
@@ -195,8 +207,10 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
                   !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }
-    runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds),
-                        capture ? -1 : kMaxStepsPerFrame);
+    // Captures and recordings advance exactly one display frame of simulated time per frame.
+    const bool fixedFrames = capture || recording.active();
+    runner.advanceFrame(fixedFrames ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds),
+                        fixedFrames ? -1 : kMaxStepsPerFrame);
     if (!runner.paused() || input.dragging()) session.recordPlots();  // a paused plot stays still
 
     renderer->beginFrame(camera, fb.x, fb.y);
@@ -215,7 +229,32 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
 
     ++frame;
     const bool captureNow = capture && frame >= captureFrames;
-    if (ui.screenshotRequested || captureNow) {
+    if (recording.active()) {
+      if (Status s = recording.capture(fb.x, fb.y); !s) {
+        std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+        static_cast<void>(recording.finish());
+        if (recordCli) {
+          exitCode = kExitBadInput;
+          break;
+        }
+        session.setMessage(s.error());
+      }
+    }
+    // F9 takes effect after this frame's capture: a recording holds whole frames of fixed steps.
+    if (ui.recordRequested) {
+      ui.recordRequested = false;
+      if (!capture) {
+        const std::string said = recording.toggle(lab, runner.sceneName(), fb.x, fb.y);
+        session.setMessage(said);
+        ui.showNotice(said, ImGui::GetTime());
+      }
+    }
+    ui.recording = recording.statusText();
+    if (const std::string t = desc.title + (ui.recording.empty() ? "" : "  -  " + ui.recording); t != title) {
+      window->setTitle(t);
+      title = t;
+    }
+    if (ui.screenshotRequested || (captureNow && !recordCli)) {
       const std::string path = captureNow ? options.screenshot : timestampedScreenshotName(lab, runner.sceneName());
       if (!graphics::saveScreenshot(path, fb.x, fb.y, &error)) {
         std::cerr << "pba-" << lab << ": " << error << '\n';
@@ -237,9 +276,21 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     if (captureNow) break;
   }
 
+  nlohmann::json recorded = nullptr;
+  if (recording.active()) {
+    const long frames = recording.frames();
+    if (Result<std::string> done = recording.finish(); !done) {
+      std::cerr << "pba-" << lab << ": " << done.error() << '\n';
+      if (recordCli) exitCode = kExitBadInput;
+    } else {
+      std::cerr << "pba-" << lab << ": " << done.value() << '\n';
+      if (recordCli) recorded = {{"path", options.record}, {"frames", frames}};
+    }
+  }
   if (capture && !options.metrics.empty()) {
     nlohmann::json report = metricsReport(lab, runner, frame);
     report["gl_renderer"] = window->glRenderer();
+    if (!recorded.is_null()) report["recording"] = recorded;
     if (Status s = writeMetrics(report, options.metrics); !s) {
       std::cerr << "pba-" << lab << ": " << s.error() << '\n';
       return kExitBadInput;

@@ -75,6 +75,9 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
       case GLFW_KEY_F12:
         ui.screenshotRequested = true;
         break;
+      case GLFW_KEY_F9:
+        ui.recordRequested = true;
+        break;
       // Mode changes wait for the end of the frame (UiState::applyPending).
       case GLFW_KEY_L:
         ui.request(UiChange::ToggleLecture);

@@ -177,6 +177,42 @@ void checkScreenshot(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
+// F9 starts a recording (MP4 with ffmpeg, else PNG files) and F9 stops it: every recorded frame is
+// exactly one display frame (1/60 s) of simulated time, so the clock advanced by frames / 60 while it
+// ran, whatever the wall clock did; the file is named on screen and exists.
+void checkRecord(const std::string& exe, const std::string& work) {
+  LabWindow lab(exe, {}, work);
+  lab.frames(2);
+  lab.key("F9");
+  const json started =
+      lab.waitFor([](const json& st) { return !st["recording"].get<std::string>().empty(); }, "F9 to start recording");
+  const json later = lab.waitFor(
+      [&](const json& st) { return st["frame"].get<long>() >= started["frame"].get<long>() + 20; }, "20 frames");
+  lab.key("F9");
+  const json stopped = lab.waitFor(
+      [](const json& st) { return st["message"].get<std::string>().rfind("Recorded ", 0) == 0; }, "F9 to stop");
+  expect(stopped["recording"].get<std::string>().empty(), "the recording indicator stayed on");
+  const std::string message = stopped["message"];
+  long frames = 0;
+  char path[512] = {};
+  expect(std::sscanf(message.c_str(), "Recorded %ld frames (%*f s at %*d frames/s) to %511s", &frames, path) == 2,
+         "the message does not name the frames and the file: " + message);
+  expect(frames >= 20, "only " + std::to_string(frames) + " frames recorded in 20 displayed frames");
+  const fs::path file = fs::path(work) / path;
+  expect(fs::exists(file) && (fs::is_directory(file) ? !fs::is_empty(file) : fs::file_size(file) > 0),
+         file.string() + " was not written");
+  // Every recorded frame advanced the clock by exactly one display frame (1/60 s), whatever the wall
+  // clock did: the simulated time between the status that showed the recording start and the one that
+  // showed it stopped is frames / 60.
+  const double recorded = stopped["sim_time_s"].get<double>() - started["sim_time_s"].get<double>();
+  expect(std::abs(recorded - static_cast<double>(frames) / 60.0) < 1e-9,
+         "the clock advanced " + std::to_string(recorded) + " s while " + std::to_string(frames) +
+             " frames were recorded (expected frames / 60 s)");
+  expect(later["sim_time_s"].get<double>() > started["sim_time_s"].get<double>(),
+         "the scene did not run while recording");
+  expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
 json setLecture(LabWindow& lab, const std::string& how, bool want) {
   if (how == "key")
     lab.key("l");
@@ -481,6 +517,7 @@ const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"presets", checkPresets},
                                               {"help", checkHelp},
                                               {"screenshot", checkScreenshot},
+                                              {"record", checkRecord},
                                               {"lecture", checkLecture},
                                               {"tab", checkTab},
                                               {"frame", checkFrame},
