@@ -27,7 +27,7 @@ Mocap makeMocap(int joints, Real seconds) {
   std::uniform_real_distribution<Real> u(-1.0, 1.0);
   m.skeleton.add("root", -1, Vec3(0.0, 1.0, 0.0));
   for (int j = 1; j < joints; ++j)
-    m.skeleton.add("j" + std::to_string(j), (j - 1) / 2, Vec3(0.05 * u(rng), -0.12, 0.05 * u(rng)));
+    m.skeleton.add(std::string("j") + std::to_string(j), (j - 1) / 2, Vec3(0.05 * u(rng), -0.12, 0.05 * u(rng)));
   m.clip.name = "mocap";
   m.clip.duration = seconds;
   m.clip.tracks.resize(static_cast<size_t>(joints));

@@ -38,8 +38,8 @@ class BlendScene final : public AnimScene {
     // The two inputs, faint, beside the blend.
     drawCharacter(d, skeleton_, shifted(walkWorld_, Vec3(-1.2, 0, 0)), 0.35f);
     drawCharacter(d, skeleton_, shifted(runWorld_, Vec3(1.2, 0, 0)), 0.35f);
-    d.text(Vec3(-1.2, 2.0, 0), "walk " + std::to_string(weights_.first).substr(0, 4), colors::kDark);
-    d.text(Vec3(1.2, 2.0, 0), "run " + std::to_string(weights_.second).substr(0, 4), colors::kDark);
+    d.text(Vec3(-1.2, 2.0, 0), std::string("walk ") + std::to_string(weights_.first).substr(0, 4), colors::kDark);
+    d.text(Vec3(1.2, 2.0, 0), std::string("run ") + std::to_string(weights_.second).substr(0, 4), colors::kDark);
   }
   std::optional<app::CameraView> preferredView() const override {
     return app::CameraView{Vec3(0.0, 0.9, 0.0), 5.5, 0.9, 0.2};

@@ -63,7 +63,8 @@ class SplinesScene final : public AnimScene {
     d.sphere(ball_, 0.13, colors::kYellow);
     d.arrow(ball_, ball_ + arrowScale_ * velocity_, colors::kBlue);
     d.arrow(ball_, ball_ + arrowScale_ * arrowScale_ * acceleration_, colors::kRed);
-    d.text(ball_ + Vec3(0.0, 0.25, 0.0), "t = " + std::to_string(time()).substr(0, 4) + " s", colors::kDark);
+    d.text(ball_ + Vec3(0.0, 0.25, 0.0), std::string("t = ") + std::to_string(time()).substr(0, 4) + " s",
+           colors::kDark);
   }
   std::vector<app::LegendEntry> legend() const override {
     return {{colors::kBlue, "Catmull-Rom (C¹)"},

@@ -20,13 +20,13 @@ const char* rootMotionName(RootMotion mode) {
 Status validate(const Clip& clip, const Skeleton& skeleton, const std::string& source) {
   const std::string where = source.empty() ? std::string() : source + ": ";
   if (clip.tracks.size() != skeleton.names.size())
-    return Error{where + "clip '" + clip.name + "' has " + std::to_string(clip.tracks.size()) +
-                 " tracks for a skeleton of " + std::to_string(skeleton.names.size()) +
+    return Error{where + "clip '" + clip.name + std::string("' has ") + std::to_string(clip.tracks.size()) +
+                 std::string(" tracks for a skeleton of ") + std::to_string(skeleton.names.size()) +
                  " joints (a clip of another skeleton?)"};
   if (!(clip.duration > 0.0) || !std::isfinite(clip.duration))
     return Error{where + "clip '" + clip.name + "'.duration: must be a positive number of seconds"};
   for (size_t j = 0; j < clip.tracks.size(); ++j) {
-    const std::string field = where + "tracks[" + std::to_string(j) + "] (" + skeleton.names[j] + ")";
+    const std::string field = where + std::string("tracks[") + std::to_string(j) + "] (" + skeleton.names[j] + ")";
     const JointTrack& track = clip.tracks[j];
     if (Status s = detail::checkIncreasing(track.translation.times(), field + ".translation"); !s.ok()) return s;
     if (Status s = detail::checkIncreasing(track.rotation.times(), field + ".rotation"); !s.ok()) return s;
@@ -102,7 +102,7 @@ Status validate(const TimeWarp& warp) {
   if (Status s = detail::checkIncreasing(warp.map.times(), "time warp"); !s.ok()) return s;
   for (int k = 1; k < warp.map.size(); ++k)
     if (warp.map.value(k) < warp.map.value(k - 1))
-      return Error{"time warp: key " + std::to_string(k) + " goes back in clip time"};
+      return Error{std::string("time warp: key ") + std::to_string(k) + " goes back in clip time"};
   return Status::success();
 }
 

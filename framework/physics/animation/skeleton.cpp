@@ -26,7 +26,7 @@ Status validate(const Skeleton& s) {
   if (s.parents.size() != n || s.restTranslations.size() != n || s.restRotations.size() != n)
     return Error{"skeleton: names, parents, rest translations and rest rotations differ in size"};
   for (size_t i = 0; i < n; ++i) {
-    const std::string field = "skeleton.joints[" + std::to_string(i) + "] (" + s.names[i] + ")";
+    const std::string field = std::string("skeleton.joints[") + std::to_string(i) + "] (" + s.names[i] + ")";
     const int p = s.parents[i];
     if ((i == 0) != (p < 0) || p >= static_cast<int>(i))
       return Error{field + ": parent must precede the joint (only joint 0 is the root)"};

@@ -27,11 +27,11 @@ TEST(ANIM_3_ForwardKinematics, RandomTreesMatchHomogeneousMatrixProducts) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<Real> len(-0.5, 0.5);
   for (int trial = 0; trial < 10; ++trial) {
-    SCOPED_TRACE("seed 3, trial " + std::to_string(trial));
+    SCOPED_TRACE(std::string("seed 3, trial ") + std::to_string(trial));
     an::Skeleton s;
     for (int j = 0; j < 25; ++j) {
       const int parent = j == 0 ? -1 : static_cast<int>(rng() % static_cast<unsigned>(j));
-      s.add("j" + std::to_string(j), parent, Vec3(len(rng), len(rng), len(rng)), randomRotation(rng));
+      s.add(std::string("j") + std::to_string(j), parent, Vec3(len(rng), len(rng), len(rng)), randomRotation(rng));
     }
     an::Pose pose = an::restPose(s);
     for (Quat& q : pose.rotations) q = randomRotation(rng);

@@ -34,7 +34,7 @@ TEST(ANIM_1_HermiteBasis, SegmentWithACubicsEndValuesAndSlopesIsThatCubic) {
   std::mt19937_64 rng(11);  // seed printed by SCOPED_TRACE below
   std::uniform_real_distribution<Real> coef(-2.0, 2.0);
   for (int trial = 0; trial < 20; ++trial) {
-    SCOPED_TRACE("seed 11, trial " + std::to_string(trial));
+    SCOPED_TRACE(std::string("seed 11, trial ") + std::to_string(trial));
     const Cubic f{{coef(rng), coef(rng), coef(rng)},
                   {coef(rng), coef(rng), coef(rng)},
                   {coef(rng), coef(rng), coef(rng)},

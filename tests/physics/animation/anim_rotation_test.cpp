@@ -25,7 +25,7 @@ void expectSameRotation(const Quat& a, const Quat& b, Real tol) { EXPECT_LT(an::
 TEST(Slerp, IsUnitExactAtTheEndsAndTurnsAtConstantAngularSpeed) {
   std::mt19937_64 rng(7);
   for (int trial = 0; trial < 50; ++trial) {
-    SCOPED_TRACE("seed 7, trial " + std::to_string(trial));
+    SCOPED_TRACE(std::string("seed 7, trial ") + std::to_string(trial));
     const Quat a = randomRotation(rng), b = randomRotation(rng);
     expectSameRotation(an::slerp(a, b, 0.0), a, 1e-7);
     expectSameRotation(an::slerp(a, b, 1.0), b, 1e-7);
