@@ -18,7 +18,8 @@ BoneDesc box(const std::string& name, const Vec3& center, const Vec3& halfExtent
   return b;
 }
 
-JointDesc joint(JointKind kind, int a, int b, const Vec3& anchor, const Vec3& axis, Real lowerOrCone, Real upper = 0.0) {
+JointDesc joint(JointKind kind, int a, int b, const Vec3& anchor, const Vec3& axis, Real lowerOrCone,
+                Real upper = 0.0) {
   JointDesc j;
   j.kind = kind;
   j.boneA = a, j.boneB = b;
@@ -45,9 +46,9 @@ Quat rotationFromX(const Vec3& direction) {
 }  // namespace
 
 const std::vector<std::string>& humanBoneNames() {
-  static const std::vector<std::string> names = {"head",      "neck",      "chest",     "hip",       "upper arm.l", "upper arm.r",
-                                                 "forearm.l", "forearm.r", "fist.l",    "fist.r",    "thigh.l",     "thigh.r",
-                                                 "calf.l",    "calf.r",    "foot.l",    "foot.r"};
+  static const std::vector<std::string> names = {
+      "head",   "neck",   "chest",   "hip",     "upper arm.l", "upper arm.r", "forearm.l", "forearm.r",
+      "fist.l", "fist.r", "thigh.l", "thigh.r", "calf.l",      "calf.r",      "foot.l",    "foot.r"};
   return names;
 }
 
@@ -57,15 +58,14 @@ RagdollDesc buildHumanRagdoll(const HumanDesc& h) {
   struct Part {
     Vec3 size, center;
   };
-  const std::vector<Part> parts = {
-      {{15.7, 20.0, 20.0}, {0.0, 173.3, 0.0}},   {{10.9, 12.3, 10.9}, {0.0, 157.15, 0.0}},
-      {{39.2, 40.9, 25.0}, {0.0, 130.55, 0.0}},  {{35.8, 14.5, 14.3}, {0.0, 102.85, 0.0}},
-      {{36.6, 8.8, 8.8}, {37.9, 146.6, 0.0}},    {{36.6, 8.8, 8.8}, {-37.9, 146.6, 0.0}},
-      {{28.8, 8.5, 8.5}, {70.6, 146.6, 0.0}},    {{28.8, 8.5, 8.5}, {-70.6, 146.6, 0.0}},
-      {{8.9, 8.9, 8.9}, {89.45, 146.6, 0.0}},    {{8.9, 8.9, 8.9}, {-89.45, 146.6, 0.0}},
-      {{16.9, 51.2, 16.9}, {9.45, 70.0, 0.0}},   {{16.9, 51.2, 16.9}, {-9.45, 70.0, 0.0}},
-      {{10.6, 30.5, 10.6}, {9.45, 29.15, 0.0}},  {{10.6, 30.5, 10.6}, {-9.45, 29.15, 0.0}},
-      {{9.9, 13.9, 27.3}, {9.45, 6.95, 8.35}},   {{9.9, 13.9, 27.3}, {-9.45, 6.95, 8.35}}};
+  const std::vector<Part> parts = {{{15.7, 20.0, 20.0}, {0.0, 173.3, 0.0}},  {{10.9, 12.3, 10.9}, {0.0, 157.15, 0.0}},
+                                   {{39.2, 40.9, 25.0}, {0.0, 130.55, 0.0}}, {{35.8, 14.5, 14.3}, {0.0, 102.85, 0.0}},
+                                   {{36.6, 8.8, 8.8}, {37.9, 146.6, 0.0}},   {{36.6, 8.8, 8.8}, {-37.9, 146.6, 0.0}},
+                                   {{28.8, 8.5, 8.5}, {70.6, 146.6, 0.0}},   {{28.8, 8.5, 8.5}, {-70.6, 146.6, 0.0}},
+                                   {{8.9, 8.9, 8.9}, {89.45, 146.6, 0.0}},   {{8.9, 8.9, 8.9}, {-89.45, 146.6, 0.0}},
+                                   {{16.9, 51.2, 16.9}, {9.45, 70.0, 0.0}},  {{16.9, 51.2, 16.9}, {-9.45, 70.0, 0.0}},
+                                   {{10.6, 30.5, 10.6}, {9.45, 29.15, 0.0}}, {{10.6, 30.5, 10.6}, {-9.45, 29.15, 0.0}},
+                                   {{9.9, 13.9, 27.3}, {9.45, 6.95, 8.35}},  {{9.9, 13.9, 27.3}, {-9.45, 6.95, 8.35}}};
   Real volume = 0.0;
   for (const Part& p : parts) volume += p.size.x * p.size.y * p.size.z;
   const Real s = h.scale * kCm;
@@ -78,19 +78,22 @@ RagdollDesc buildHumanRagdoll(const HumanDesc& h) {
   const Real deg = kPi / 180.0;
   using K = JointKind;
   d.joints.push_back(joint(K::Hinge, 1, 0, at(0, 163.3, 0), {1, 0, 0}, -45 * deg, 45 * deg));  // head–neck
-  d.joints.push_back(joint(K::Ball, 2, 1, at(0, 151.0, 0), {0, 1, 0}, 45 * deg));               // neck–chest
-  d.joints.push_back(joint(K::Ball, 2, 3, at(0, 110.1, 0), {0, -1, 0}, 45 * deg));              // chest–hip
+  d.joints.push_back(joint(K::Ball, 2, 1, at(0, 151.0, 0), {0, 1, 0}, 45 * deg));              // neck–chest
+  d.joints.push_back(joint(K::Ball, 2, 3, at(0, 110.1, 0), {0, -1, 0}, 45 * deg));             // chest–hip
   for (int side = 0; side < 2; ++side) {
     const Real x = side == 0 ? 1.0 : -1.0;  // left is +x
     // Elbows and wrists bend the forearm and fist to the front (+z): about −y on the left, +y on the right.
     const Vec3 flex(0.0, -x, 0.0);
-    d.joints.push_back(joint(K::Ball, 2, 4 + side, at(x * 19.6, 146.6, 0), {x, 0, 0}, 90 * deg));  // shoulder
+    d.joints.push_back(joint(K::Ball, 2, 4 + side, at(x * 19.6, 146.6, 0), {x, 0, 0}, 90 * deg));           // shoulder
     d.joints.push_back(joint(K::Hinge, 4 + side, 6 + side, at(x * 56.2, 146.6, 0), flex, 0.0, 135 * deg));  // elbow
-    d.joints.push_back(joint(K::Hinge, 6 + side, 8 + side, at(x * 85.0, 146.6, 0), flex, -90 * deg, 90 * deg));  // wrist
+    d.joints.push_back(
+        joint(K::Hinge, 6 + side, 8 + side, at(x * 85.0, 146.6, 0), flex, -90 * deg, 90 * deg));    // wrist
     d.joints.push_back(joint(K::Ball, 3, 10 + side, at(x * 9.45, 95.6, 0), {0, -1, 0}, 45 * deg));  // hip
     // Knees bend the calf backwards and ankles turn the toes down: both positive about +x.
-    d.joints.push_back(joint(K::Hinge, 10 + side, 12 + side, at(x * 9.45, 44.4, 0), {1, 0, 0}, 0.0, 135 * deg));  // knee
-    d.joints.push_back(joint(K::Hinge, 12 + side, 14 + side, at(x * 9.45, 13.9, 0), {1, 0, 0}, 0.0, 90 * deg));  // ankle
+    d.joints.push_back(
+        joint(K::Hinge, 10 + side, 12 + side, at(x * 9.45, 44.4, 0), {1, 0, 0}, 0.0, 135 * deg));  // knee
+    d.joints.push_back(
+        joint(K::Hinge, 12 + side, 14 + side, at(x * 9.45, 13.9, 0), {1, 0, 0}, 0.0, 90 * deg));  // ankle
   }
   if (!h.limits)
     for (JointDesc& j : d.joints) j.limited = false;
@@ -181,7 +184,8 @@ RagdollDesc buildSpider(const SpiderDesc& s) {
     d.bones.push_back(box("upper leg " + std::to_string(k), hip + upper * u, half, massOf(half)));
     const Vec3 knee = hip + 2.0 * upper * u;
     const Vec3 lowerHalf(thick, lower, thick);
-    d.bones.push_back(box("lower leg " + std::to_string(k), knee + Vec3(0.0, -lower, 0.0) + thick * u, lowerHalf, massOf(lowerHalf)));
+    d.bones.push_back(
+        box("lower leg " + std::to_string(k), knee + Vec3(0.0, -lower, 0.0) + thick * u, lowerHalf, massOf(lowerHalf)));
     const int up = static_cast<int>(d.bones.size()) - 2;
     d.joints.push_back(joint(JointKind::Ball, 0, up, hip, u, degToRad(45.0)));
     d.joints.push_back(joint(JointKind::Hinge, up, up + 1, knee, glm::cross(kUp, u), -degToRad(60.0), degToRad(60.0)));
@@ -193,7 +197,8 @@ RagdollDesc buildStairs(int steps, Real rise, Real run, Real width) {
   RagdollDesc d;
   for (int i = 0; i < steps; ++i) {
     const Real height = rise * (i + 1);
-    BoneDesc b = box("step " + std::to_string(i), Vec3(-(i + 0.5) * run, 0.5 * height, 0.0), Vec3(0.5 * run, 0.5 * height, 0.5 * width), 1.0);
+    BoneDesc b = box("step " + std::to_string(i), Vec3(-(i + 0.5) * run, 0.5 * height, 0.0),
+                     Vec3(0.5 * run, 0.5 * height, 0.5 * width), 1.0);
     b.fixed = true;
     d.bones.push_back(b);
   }

@@ -11,11 +11,11 @@
 namespace pba::ragdoll {
 
 struct HumanDesc {
-  Vec3 position{0.0};              ///< [m] the point between the feet on the ground
-  Quat orientation{1, 0, 0, 0};    ///< of the whole figure about `position`
-  Real totalMass = 75.0;           ///< [kg] shared by volume (mass ∝ volume, paper §5)
-  Real scale = 1.0;                ///< 1: the table's sizes (1.83 m tall)
-  bool limits = true;              ///< the paper's hinge and cone limits
+  Vec3 position{0.0};            ///< [m] the point between the feet on the ground
+  Quat orientation{1, 0, 0, 0};  ///< of the whole figure about `position`
+  Real totalMass = 75.0;         ///< [kg] shared by volume (mass ∝ volume, paper §5)
+  Real scale = 1.0;              ///< 1: the table's sizes (1.83 m tall)
+  bool limits = true;            ///< the paper's hinge and cone limits
 };
 /// The paper's 16-bone human (sizes H × W × D in cm of its table; joints centred on the smaller part):
 /// head–neck hinge (±45°), neck–chest ball (45°), chest–hip ball (45°), shoulders ball (90°), elbows
@@ -26,13 +26,13 @@ RagdollDesc buildHumanRagdoll(const HumanDesc& desc = {});
 const std::vector<std::string>& humanBoneNames();
 
 struct ChainDesc {
-  int links = 6;                   ///< boxes, the first fixed when `fixedTop`
+  int links = 6;  ///< boxes, the first fixed when `fixedTop`
   JointKind joint = JointKind::Ball;
-  Vec3 start{0.0, 2.5, 0.0};       ///< [m] centre of the first box
-  Vec3 direction{1.0, 0.0, 0.0};   ///< unit, along the chain (horizontal: it starts raised and swings down)
-  Vec3 hingeAxis{0.0, 0.0, 1.0};   ///< unit, ⟂ direction
+  Vec3 start{0.0, 2.5, 0.0};               ///< [m] centre of the first box
+  Vec3 direction{1.0, 0.0, 0.0};           ///< unit, along the chain (horizontal: it starts raised and swings down)
+  Vec3 hingeAxis{0.0, 0.0, 1.0};           ///< unit, ⟂ direction
   Vec3 linkHalfExtents{0.15, 0.06, 0.06};  ///< [m] along direction first
-  Real density = 500.0;            ///< [kg/m³]
+  Real density = 500.0;                    ///< [kg/m³]
   bool fixedTop = true;
 };
 /// Boxes joined end to end (paper tests 2 and 3; the performance tests' chains).
@@ -52,9 +52,9 @@ RagdollDesc buildLimitsTest(JointKind joint);
 std::vector<Real> limitsTestAngles();
 
 struct SpiderDesc {
-  Vec3 position{0.0, 1.2, 0.0};    ///< [m] centre of the body
-  Real bodyHalfSize = 0.2;         ///< [m]
-  Real density = 500.0;            ///< [kg/m³]
+  Vec3 position{0.0, 1.2, 0.0};  ///< [m] centre of the body
+  Real bodyHalfSize = 0.2;       ///< [m]
+  Real density = 500.0;          ///< [kg/m³]
 };
 /// Test 7: a central cube with four ball-jointed upper legs (cone 45°) and hinged lower legs (±60°).
 RagdollDesc buildSpider(const SpiderDesc& desc = {});

@@ -58,7 +58,8 @@ Result<ConstraintRagdoll> ConstraintRagdoll::addTo(rigid::World& world, const Ra
   }
   for (std::size_t k = 0; k < desc.joints.size(); ++k) {
     const JointDesc& j = desc.joints[k];
-    Result<int> id = world.addJoint(rigidJoint(j, r.bodies_[j.boneA], r.bodies_[j.boneB]), "ragdoll.joints[" + std::to_string(k) + "]");
+    Result<int> id = world.addJoint(rigidJoint(j, r.bodies_[j.boneA], r.bodies_[j.boneB]),
+                                    "ragdoll.joints[" + std::to_string(k) + "]");
     if (!id) return Error{id.error()};
     r.joints_.push_back(id.value());
   }
@@ -112,10 +113,32 @@ ConstraintStats ConstraintRagdoll::stats() const {
     const JointDesc& j = desc_[k];
     if (!j.limited) continue;
     const Real a = jointAngle(static_cast<int>(k));
-    const Real beyond = j.kind == JointKind::Hinge ? std::max({0.0, a - j.upper, j.lower - a}) : std::max(0.0, a - j.coneAngle);
+    const Real beyond =
+        j.kind == JointKind::Hinge ? std::max({0.0, a - j.upper, j.lower - a}) : std::max(0.0, a - j.coneAngle);
     s.maxLimitViolation = std::max(s.maxLimitViolation, beyond);
   }
   return s;
+}
+
+}  // namespace pba::ragdoll
+
+namespace pba::ragdoll {
+
+void ConstraintRagdoll::drawJoints(DebugDraw& d) const {
+  for (std::size_t k = 0; k < joints_.size(); ++k) {
+    const rigid::Joint& j = world_.joints()[joints_[k]];
+    const rigid::Body& a = world_.body(j.desc.bodyA);
+    const rigid::Body& b = world_.body(j.desc.bodyB);
+    const Vec3 anchor = a.position + a.orientation * j.localA;
+    d.point(anchor, 7.0f, colors::kYellow);
+    const Real reach = 0.8 * std::min(glm::length(a.shape.halfExtents), glm::length(b.shape.halfExtents));
+    const Vec3 axis = a.orientation * j.axisA;
+    if (desc_[k].kind == JointKind::Hinge) {
+      d.line(anchor - 0.5 * reach * axis, anchor + 0.5 * reach * axis, colors::kOrange);
+    } else if (desc_[k].limited) {
+      d.cone(anchor, axis, std::min(desc_[k].coneAngle, 0.5 * kPi), 0.6 * reach, colors::kOrange);
+    }
+  }
 }
 
 }  // namespace pba::ragdoll

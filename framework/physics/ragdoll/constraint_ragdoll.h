@@ -22,7 +22,7 @@ rigid::WorldSettings ragdollWorldSettings();
 
 struct ConstraintSettings {
   rigid::WorldSettings world = ragdollWorldSettings();  ///< gravity, substeps, iterations, sleeping, …
-  bool ground = true;            ///< a static plane y = 0
+  bool ground = true;                                   ///< a static plane y = 0
 };
 
 struct ConstraintStats {
@@ -50,11 +50,13 @@ class ConstraintRagdoll {
   /// Hinge angle of B about the axis, or the swing angle of a ball joint [rad].
   Real jointAngle(int joint) const;
   ConstraintStats stats() const;
+  /// Joint points (yellow) and hinge axes (orange), drawn like the particle ragdoll's.
+  void drawJoints(DebugDraw& d) const;
 
  private:
   rigid::World world_;
-  std::vector<int> bodies_;   // per bone
-  std::vector<int> joints_;   // per desc joint, the world joint
+  std::vector<int> bodies_;  // per bone
+  std::vector<int> joints_;  // per desc joint, the world joint
   std::vector<JointDesc> desc_;
 };
 

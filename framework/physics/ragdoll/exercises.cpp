@@ -50,7 +50,8 @@ LimitCorrection hingeLimit(const HingeFrame& frame, const Vec3& p, Real lower, R
   const auto direction = [&](Real t) { return std::cos(t) * frame.zero + std::sin(t) * side; };
   const Real aboveLower = glm::dot(q, direction(lower + 0.5 * kPi));
   const Real belowUpper = -glm::dot(q, direction(upper + 0.5 * kPi));
-  const bool inside = upper - lower <= kPi ? (aboveLower >= 0.0 && belowUpper >= 0.0) : (aboveLower >= 0.0 || belowUpper >= 0.0);
+  const bool inside =
+      upper - lower <= kPi ? (aboveLower >= 0.0 && belowUpper >= 0.0) : (aboveLower >= 0.0 || belowUpper >= 0.0);
   if (inside) return {LimitSide::Inside, p};
   const Real middle = 0.5 * (lower + upper) + kPi;
   const bool nearerLower = glm::dot(q, direction(middle + 0.5 * kPi)) >= 0.0;

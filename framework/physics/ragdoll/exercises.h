@@ -18,7 +18,7 @@ void projectStick(Vec3& a, Vec3& b, Real wa, Real wb, Real rest);
 enum class LimitSide { Inside, Lower, Upper };
 struct LimitCorrection {
   LimitSide side = LimitSide::Inside;
-  Vec3 target{0.0};                ///< [m] where the reference point must go (its position when inside)
+  Vec3 target{0.0};  ///< [m] where the reference point must go (its position when inside)
 };
 
 // RAG-2
@@ -40,7 +40,7 @@ LimitCorrection coneLimit(const Vec3& apex, const Vec3& axis, const Vec3& p, Rea
 struct ContactSide {
   std::array<Vec3, 4>* particles = nullptr;  ///< null: the static ground (it does not move)
   std::array<Real, 4> weights{0.25, 0.25, 0.25, 0.25};
-  Real mass = 1.0;                           ///< [kg]
+  Real mass = 1.0;  ///< [kg]
 };
 
 // RAG-4

@@ -4,7 +4,8 @@
 
 namespace pba::ragdoll {
 
-bool projectAlongGradient(std::vector<Vec3>& x, const std::vector<Real>& w, std::span<const Term> terms, const Vec3& n, Real c) {
+bool projectAlongGradient(std::vector<Vec3>& x, const std::vector<Real>& w, std::span<const Term> terms, const Vec3& n,
+                          Real c) {
   Real denominator = 0.0;
   for (const Term& t : terms) denominator += w[t.particle] * t.coefficient * t.coefficient;
   if (!(denominator > 1e-300)) return false;

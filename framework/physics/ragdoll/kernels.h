@@ -24,14 +24,15 @@ struct Term {
 };
 
 /// The projection above; false when nothing can move (Σ w a² = 0).
-bool projectAlongGradient(std::vector<Vec3>& x, const std::vector<Real>& w, std::span<const Term> terms, const Vec3& n, Real c);
+bool projectAlongGradient(std::vector<Vec3>& x, const std::vector<Real>& w, std::span<const Term> terms, const Vec3& n,
+                          Real c);
 
 /// A hinge of the particle ragdoll seen from bone A: the axis through `origin`, and the direction of
 /// angle 0 (unit, ⟂ axis). Angles about the axis by the right-hand rule.
 struct HingeFrame {
-  Vec3 origin{0.0};                ///< [m] a point of the axis
-  Vec3 axis{1.0, 0.0, 0.0};        ///< unit
-  Vec3 zero{0.0, 1.0, 0.0};        ///< unit, ⟂ axis
+  Vec3 origin{0.0};          ///< [m] a point of the axis
+  Vec3 axis{1.0, 0.0, 0.0};  ///< unit
+  Vec3 zero{0.0, 1.0, 0.0};  ///< unit, ⟂ axis
 };
 
 /// Angle of p about the hinge axis from `zero`, in (−π, π] (0 when p is on the axis).

@@ -29,7 +29,8 @@ void ParticleRagdoll::draw(DebugDraw& d, const ParticleDrawOptions& o, const Col
         }
       } else if (j.limited) {
         const Vec3 apex = pointOf(j.a, j.origin);
-        d.cone(apex, glm::normalize(pointOf(j.a, j.axisEnd) - apex), std::min(j.cone, 0.5 * kPi), 0.6 * reach, colors::kOrange);
+        d.cone(apex, glm::normalize(pointOf(j.a, j.axisEnd) - apex), std::min(j.cone, 0.5 * kPi), 0.6 * reach,
+               colors::kOrange);
       }
     }
   if (o.contacts)

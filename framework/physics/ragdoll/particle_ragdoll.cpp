@@ -57,12 +57,19 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
     const Bone& B = r.bones_[j.b];
     // Lengths of the embedded offsets: the smaller bone's size, so that the points stay near both.
     const Real reach = std::min(glm::length(A.halfExtents), glm::length(B.halfExtents));
+    // The hinge's two points: at the faces of the thinner bone along the axis (not beyond them, where
+    // large barycentric weights would turn small joint corrections into large deformations).
+    const auto extentAlong = [&](int bone, const Vec3& u) {
+      const Vec3 local = glm::conjugate(desc.bones[bone].orientation) * u;
+      return glm::dot(glm::abs(local), desc.bones[bone].halfExtents);
+    };
+    const Real axisHalf = std::min(extentAlong(j.a, axis), extentAlong(j.b, axis));
     const auto pairAt = [&](const Vec3& p) { return PointPair{r.weightsOf(j.a, p), r.weightsOf(j.b, p)}; };
     if (j.kind == JointKind::Ball) {
       j.points.push_back(pairAt(jd.anchor));
     } else {
-      j.points.push_back(pairAt(jd.anchor - 0.5 * reach * axis));
-      j.points.push_back(pairAt(jd.anchor + 0.5 * reach * axis));
+      j.points.push_back(pairAt(jd.anchor - axisHalf * axis));
+      j.points.push_back(pairAt(jd.anchor + axisHalf * axis));
     }
     j.origin = r.weightsOf(j.a, jd.anchor);
     j.axisEnd = r.weightsOf(j.a, jd.anchor + reach * axis);
@@ -87,7 +94,9 @@ std::array<Vec3, 4> ParticleRagdoll::particlesOf(int bone) const {
   return {x_[f], x_[f + 1], x_[f + 2], x_[f + 3]};
 }
 
-collision::Transform ParticleRagdoll::boneFrame(int bone) const { return fitFrame(particlesOf(bone), bones_[bone].restInverse); }
+collision::Transform ParticleRagdoll::boneFrame(int bone) const {
+  return fitFrame(particlesOf(bone), bones_[bone].restInverse);
+}
 
 void ParticleRagdoll::integrate(Real dt) {
   if (!started_) {  // the initial velocities need the step: x_old = x − v h
@@ -111,6 +120,7 @@ void ParticleRagdoll::step(Real dt) {
   findPairs(dt);
   for (int it = 0; it < settings_.iterations; ++it) {
     relax();
+    if (it + 1 == settings_.iterations) strainAfterRelaxation_ = stickStrain();
     solveJoints();
     solveLimits();
     solveDrag();
@@ -163,7 +173,8 @@ void ParticleRagdoll::findPairs(Real dt) {
   // Sweep and prune on x.
   std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) { return p.box.min.x < q.box.min.x; });
   for (std::size_t i = 0; i < entries.size(); ++i)
-    for (std::size_t k = i + 1; k < entries.size() && entries[k].box.min.x <= entries[i].box.max.x; ++k) consider(entries[i], entries[k]);
+    for (std::size_t k = i + 1; k < entries.size() && entries[k].box.min.x <= entries[i].box.max.x; ++k)
+      consider(entries[i], entries[k]);
   std::sort(pairs_.begin(), pairs_.end());
 }
 
@@ -214,17 +225,17 @@ void ParticleRagdoll::measure(Real dt) {
     if (w_[i] > 0.0) s.potentialEnergy -= m_[i] * glm::dot(settings_.gravity, x_[i]);
   }
   if (!started_) s.kineticEnergy = 0.0;
-  for (const Stick& st : sticks_)
-    s.maxStickStrain = std::max(s.maxStickStrain, std::abs(glm::length(x_[st.b] - x_[st.a]) - st.rest) / st.rest);
+  s.maxStickStrain = stickStrain();
+  s.maxStickStrainAfterRelaxation = strainAfterRelaxation_;
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     const Joint& j = joints_[k];
     for (const PointPair& p : j.points)
       s.maxJointError = std::max(s.maxJointError, glm::length(pointOf(j.a, p.inA) - pointOf(j.b, p.inB)));
     if (!j.limited) continue;
     const Real angle = jointAngle(static_cast<int>(k));
-    const Real beyond = j.kind == JointKind::Hinge
-                            ? std::max({0.0, unwrapAround(angle, j.lower, j.upper) - j.upper, j.lower - unwrapAround(angle, j.lower, j.upper)})
-                            : std::max(0.0, angle - j.cone);
+    const Real beyond = j.kind == JointKind::Hinge ? std::max({0.0, unwrapAround(angle, j.lower, j.upper) - j.upper,
+                                                               j.lower - unwrapAround(angle, j.lower, j.upper)})
+                                                   : std::max(0.0, angle - j.cone);
     s.maxLimitViolation = std::max(s.maxLimitViolation, beyond);
   }
   if (settings_.ground)
@@ -238,6 +249,13 @@ void ParticleRagdoll::measure(Real dt) {
 
 ParticleStats ParticleRagdoll::stats() const { return stats_; }
 
+Real ParticleRagdoll::stickStrain() const {
+  Real worst = 0.0;
+  for (const Stick& st : sticks_)
+    worst = std::max(worst, std::abs(glm::length(x_[st.b] - x_[st.a]) - st.rest) / st.rest);
+  return worst;
+}
+
 std::optional<std::string> ParticleRagdoll::nonFiniteState() const {
   for (std::size_t i = 0; i < x_.size(); ++i)
     if (!isFinite(x_[i]) || !isFinite(xOld_[i])) return "particle " + std::to_string(i) + " position is not finite";
@@ -249,7 +267,8 @@ std::optional<std::pair<int, Real>> ParticleRagdoll::rayCast(const Ray& ray, Rea
   for (int b = 0; b < boneCount(); ++b) {
     const collision::Transform t = boneFrame(b);
     const Ray local{t.applyInverse(ray.origin), t.rotateInverse(ray.direction)};
-    if (const auto hit = collision::rayCastBox(bones_[b].halfExtents, local, maxT); hit && (!best || hit->t < best->second))
+    if (const auto hit = collision::rayCastBox(bones_[b].halfExtents, local, maxT);
+        hit && (!best || hit->t < best->second))
       best = std::make_pair(b, hit->t);
   }
   return best;

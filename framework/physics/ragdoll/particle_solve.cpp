@@ -11,17 +11,18 @@
 namespace pba::ragdoll {
 
 void ParticleRagdoll::relax() {
-  for (const Stick& s : sticks_) {
-    if (settings_.student.stick) {
-      projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
-      continue;
+  for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
+    for (const Stick& s : sticks_) {
+      if (settings_.student.stick) {
+        projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
+        continue;
+      }
+      const Vec3 d = x_[s.b] - x_[s.a];
+      const Real length = glm::length(d);
+      if (!(length > 1e-12)) continue;
+      const Term terms[2] = {{s.a, -1.0}, {s.b, 1.0}};
+      projectAlongGradient(x_, w_, terms, d / length, length - s.rest);
     }
-    const Vec3 d = x_[s.b] - x_[s.a];
-    const Real length = glm::length(d);
-    if (!(length > 1e-12)) continue;
-    const Term terms[2] = {{s.a, -1.0}, {s.b, 1.0}};
-    projectAlongGradient(x_, w_, terms, d / length, length - s.rest);
-  }
 }
 
 void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {

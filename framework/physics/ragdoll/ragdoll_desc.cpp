@@ -31,8 +31,10 @@ Status validateJoint(const JointDesc& j, int bones, const std::string& field) {
   if (Status s = checkFinite(field + ".axis", j.axis); !s) return s;
   if (!(glm::length(j.axis) > 1e-9)) return Error{field + ".axis: must not be zero"};
   if (j.limited && j.kind == JointKind::Hinge) {
-    if (!(j.lower <= 0.0) || !std::isfinite(j.lower)) return Error{field + ".lower: must be <= 0 (the start is angle 0)"};
-    if (!(j.upper >= 0.0) || !std::isfinite(j.upper)) return Error{field + ".upper: must be >= 0 (the start is angle 0)"};
+    if (!(j.lower <= 0.0) || !std::isfinite(j.lower))
+      return Error{field + ".lower: must be <= 0 (the start is angle 0)"};
+    if (!(j.upper >= 0.0) || !std::isfinite(j.upper))
+      return Error{field + ".upper: must be >= 0 (the start is angle 0)"};
     if (!(j.upper - j.lower < 2.0 * kPi)) return Error{field + ".upper: the range must be below 360 degrees"};
   }
   if (j.limited && j.kind == JointKind::Ball && !(j.coneAngle >= 0.0 && j.coneAngle < kPi))
@@ -49,7 +51,9 @@ Status validate(const RagdollDesc& desc, const std::string& field) {
     if (Status s = validateBone(desc.bones[i], field + ".bones[" + name + "]"); !s) return s;
   }
   for (std::size_t i = 0; i < desc.joints.size(); ++i)
-    if (Status s = validateJoint(desc.joints[i], static_cast<int>(desc.bones.size()), field + ".joints[" + std::to_string(i) + "]"); !s)
+    if (Status s = validateJoint(desc.joints[i], static_cast<int>(desc.bones.size()),
+                                 field + ".joints[" + std::to_string(i) + "]");
+        !s)
       return s;
   if (!(desc.friction >= 0.0)) return Error{field + ".friction: must be >= 0"};
   return Status::success();

@@ -36,7 +36,8 @@ Method particleMethod(const RagdollDesc& desc, ParticleSettings settings = {}) {
   return {"particle", [r] { r->step(kDt); },
           [r] {
             const ParticleStats s = r->stats();
-            return Measure{s.kineticEnergy, s.potentialEnergy, s.maxJointError, s.maxLimitViolation, s.maxPenetration, s.contacts};
+            return Measure{s.kineticEnergy,     s.potentialEnergy, s.maxJointError,
+                           s.maxLimitViolation, s.maxPenetration,  s.contacts};
           }};
 }
 
@@ -45,7 +46,8 @@ Method constraintMethod(const RagdollDesc& desc) {
   return {"constraint", [r] { r->step(kDt); },
           [r] {
             const ConstraintStats s = r->stats();
-            return Measure{s.kineticEnergy, s.potentialEnergy, s.maxJointError, s.maxLimitViolation, s.maxPenetration, s.contacts};
+            return Measure{s.kineticEnergy,     s.potentialEnergy, s.maxJointError,
+                           s.maxLimitViolation, s.maxPenetration,  s.contacts};
           }};
 }
 
