@@ -124,6 +124,12 @@ ConstraintStats ConstraintRagdoll::stats() const {
 
 namespace pba::ragdoll {
 
+std::size_t ConstraintRagdoll::memoryBytes() const {
+  const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
+  return sizeof(*this) + bytes(world_.bodies()) + bytes(world_.joints()) + bytes(world_.contacts()) + bytes(bodies_) +
+         bytes(joints_) + bytes(desc_);
+}
+
 void ConstraintRagdoll::drawJoints(DebugDraw& d) const {
   for (std::size_t k = 0; k < joints_.size(); ++k) {
     const rigid::Joint& j = world_.joints()[joints_[k]];

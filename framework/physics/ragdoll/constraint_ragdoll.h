@@ -50,6 +50,9 @@ class ConstraintRagdoll {
   /// Hinge angle of B about the axis, or the swing angle of a ball joint [rad].
   Real jointAngle(int joint) const;
   ConstraintStats stats() const;
+  /// Bytes held by the world's bodies, joints and contacts and this object's arrays (the paper's
+  /// memory test; the broad phase's tree is not counted).
+  std::size_t memoryBytes() const;
   /// Joint points (yellow) and hinge axes (orange), drawn like the particle ragdoll's.
   void drawJoints(DebugDraw& d) const;
 

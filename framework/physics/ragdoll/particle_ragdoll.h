@@ -110,6 +110,8 @@ class ParticleRagdoll {
   /// axis from the cone axis (0 for a ball without limit).
   Real jointAngle(int joint) const;
   ParticleStats stats() const;
+  /// Bytes held by the ragdoll's arrays (the paper's memory test).
+  std::size_t memoryBytes() const;
   std::optional<std::string> nonFiniteState() const;
   void draw(DebugDraw& d, const ParticleDrawOptions& options, const Color& color) const;
 
