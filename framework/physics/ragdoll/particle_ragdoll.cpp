@@ -31,6 +31,7 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
     bone.fixed = b.fixed;
     bone.rest = tetrahedronOffsets(b.halfExtents);
     bone.restInverse = restEdgesInverse(bone.rest);
+    bone.shape = collision::makeBox(b.halfExtents).value();
     const std::array<Vec3, 8> corners = boxCorners(b.halfExtents);
     for (int k = 0; k < 8; ++k) bone.corners[k] = barycentric(bone.rest, corners[k]);
     for (const Vec3& offset : bone.rest) {

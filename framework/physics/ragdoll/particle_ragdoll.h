@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "physics/collision/ray.h"
+#include "physics/collision/shapes.h"
 #include "physics/collision/transform.h"
 #include "physics/core/debug_draw.h"
 #include "physics/ragdoll/kernels.h"
@@ -134,6 +135,7 @@ class ParticleRagdoll {
     std::array<Vec3, 4> rest{};  // particle offsets in the box frame
     Mat3 restInverse{1.0};
     std::array<Weights, 8> corners{};  // barycentric weights of the box corners
+    collision::Shape shape;            // the box, for the narrow phase
   };
   struct Stick {
     int a = 0, b = 0;

@@ -135,9 +135,7 @@ bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
 
 void ParticleRagdoll::solveBonePair(int a, int b, bool record) {
   const collision::Transform ta = boneFrame(a), tb = boneFrame(b);
-  const collision::Shape sa = collision::makeBox(bones_[a].halfExtents).value();
-  const collision::Shape sb = collision::makeBox(bones_[b].halfExtents).value();
-  const collision::Manifold m = collision::collideBoxes(sa, ta, sb, tb, 0.0);
+  const collision::Manifold m = collision::collideBoxes(bones_[a].shape, ta, bones_[b].shape, tb, 0.0);
   if (m.count == 0) return;
   // The deepest point only (paper §3.3), equally deep ones averaged.
   const Real deepest = m.deepest();
