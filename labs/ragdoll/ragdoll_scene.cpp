@@ -60,6 +60,21 @@ Real RagdollScene::halfSeparation(const ragdoll::RagdollDesc& desc) const {
   return 0.5 * (hi - lo) + 0.4;
 }
 
+std::optional<app::CameraView> RagdollScene::preferredView() const {
+  const ragdoll::RagdollDesc desc = build();
+  const Real half = halfSeparation(desc);
+  Vec3 lo(1e30), hi(-1e30);
+  for (const ragdoll::BoneDesc& b : desc.bones) {
+    const Vec3 r(glm::length(b.halfExtents));
+    lo = glm::min(lo, b.center - r), hi = glm::max(hi, b.center + r);
+  }
+  lo.x -= half, hi.x += half;
+  lo.y = std::min(lo.y, 0.0);
+  const Vec3 size = hi - lo;
+  const Real extent = std::max({size.x, 1.6 * size.y, 1.0});
+  return app::CameraView{0.5 * (lo + hi), 1.05 * extent, 0.0, 0.3};
+}
+
 void RagdollScene::reset() {
   const ragdoll::RagdollDesc desc = build();
   const Real half = halfSeparation(desc);

@@ -35,6 +35,8 @@ class RagdollScene : public app::Scene {
   void release(int handle) override;
   void refresh() override;
   std::vector<app::DragHandle> dragHandles() const override;
+  /// From the front (both copies side by side across the screen), framing both copies' start boxes.
+  std::optional<app::CameraView> preferredView() const override;
 
  protected:
   RagdollScene();
