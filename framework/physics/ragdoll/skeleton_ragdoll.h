@@ -2,7 +2,8 @@
 // A ragdoll from any skeleton: the library sees only joint names, parents and rest positions (a lab
 // reads them from a file with Assimp). Status: the particle ragdoll of such a skeleton lands and rests;
 // the constraint ragdoll of the same boxes keeps spinning on the ground (about 100 J of kinetic energy
-// for humanoid.bvh after 10 s, not yet understood), so the lab has no `character` scene yet. One box per joint that has children:
+// for humanoid.bvh after 10 s, not yet understood), so the lab has no `character` scene yet.
+// One box per joint that has children:
 //   * one child: a box along the segment to it, as thick as `thickness` × length within
 //     [minHalfThickness, maxHalfThickness];
 //   * several children (hips, chest): the axis-aligned box around the joint and its children, inflated by
@@ -11,8 +12,8 @@
 // "calf", "shin", "lowerleg", "leg" but not "upleg"; "elbow", "forearm", "lowerarm") are hinges flexing
 // 0°…150° (knees backwards, elbows forwards), the others balls with a cone about the bone by name pattern
 // (spine/chest/neck/head 30°, clavicle/shoulder/collar 20°, hip/upleg/thigh 60°, arm 80°, hand/foot 40°,
-// else `defaultCone`). Masses are in proportion to volume, at least `minMassShare` of the total each. Forward is lateral × up, with lateral the mean
-// of Left* minus Right* joints (+z when there are none).
+// else `defaultCone`). Masses are in proportion to volume, at least `minMassShare` of the total each.
+// Forward is lateral × up, with lateral the mean of Left* minus Right* joints (+z when there are none).
 #include <string>
 #include <vector>
 
