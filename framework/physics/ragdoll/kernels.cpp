@@ -26,10 +26,8 @@ Real unwrapAround(Real a, Real lower, Real upper) {
 }
 
 Vec3 atHingeAngle(const HingeFrame& f, const Vec3& p, Real target) {
-  const Vec3 q = p - f.origin;
-  const Vec3 along = glm::dot(q, f.axis) * f.axis;
-  const Real radius = glm::length(q - along);
-  return f.origin + along + radius * (std::cos(target) * f.zero + std::sin(target) * glm::cross(f.axis, f.zero));
+  // Turn p about the axis by the missing angle (a rotation keeps its height and distance from the axis).
+  return f.origin + glm::angleAxis(target - hingeAngle(f, p), f.axis) * (p - f.origin);
 }
 
 Real angleFromAxis(const Vec3& apex, const Vec3& axis, const Vec3& p) {
@@ -38,16 +36,19 @@ Real angleFromAxis(const Vec3& apex, const Vec3& axis, const Vec3& p) {
 }
 
 Vec3 anyPerpendicular(const Vec3& n) {
-  return glm::normalize(glm::cross(n, std::abs(n.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0)));
+  // The coordinate axis least aligned with n, minus its part along n.
+  const Vec3 a = glm::abs(n);
+  const Vec3 e = a.x <= a.y && a.x <= a.z ? Vec3(1.0, 0.0, 0.0) : a.y <= a.z ? Vec3(0.0, 1.0, 0.0) : Vec3(0.0, 0.0, 1.0);
+  return glm::normalize(e - glm::dot(e, n) * n);
 }
 
 Vec3 atAngleFromAxis(const Vec3& apex, const Vec3& axis, const Vec3& p, Real target) {
+  // Turn p − apex about axis × (p − apex), which changes its angle from the axis and nothing else.
   const Vec3 d = p - apex;
-  const Real length = glm::length(d);
-  const Vec3 radial = d - glm::dot(d, axis) * axis;
-  const Real r = glm::length(radial);
-  const Vec3 t = r > 1e-12 * length ? radial / r : anyPerpendicular(axis);
-  return apex + length * (std::cos(target) * axis + std::sin(target) * t);
+  const Vec3 normal = glm::cross(axis, d);
+  const Real size = glm::length(normal);
+  const Vec3 turn = size > 1e-12 * glm::length(d) ? normal / size : anyPerpendicular(axis);
+  return apex + glm::angleAxis(target - angleFromAxis(apex, axis, p), turn) * d;
 }
 
 }  // namespace pba::ragdoll
