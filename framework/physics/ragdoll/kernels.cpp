@@ -38,7 +38,9 @@ Real angleFromAxis(const Vec3& apex, const Vec3& axis, const Vec3& p) {
 Vec3 anyPerpendicular(const Vec3& n) {
   // The coordinate axis least aligned with n, minus its part along n.
   const Vec3 a = glm::abs(n);
-  const Vec3 e = a.x <= a.y && a.x <= a.z ? Vec3(1.0, 0.0, 0.0) : a.y <= a.z ? Vec3(0.0, 1.0, 0.0) : Vec3(0.0, 0.0, 1.0);
+  const Vec3 e = a.x <= a.y && a.x <= a.z ? Vec3(1.0, 0.0, 0.0)
+                 : a.y <= a.z             ? Vec3(0.0, 1.0, 0.0)
+                                          : Vec3(0.0, 0.0, 1.0);
   return glm::normalize(e - glm::dot(e, n) * n);
 }
 
