@@ -20,13 +20,13 @@
 #include "physics/cloth/solver.h"
 
 #ifdef PBA_HAVE_BULLET
-#include <btBulletDynamicsCommon.h>
 #include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletSoftBody/btDeformableBodySolver.h>
 #include <BulletSoftBody/btDeformableMultiBodyConstraintSolver.h>
 #include <BulletSoftBody/btDeformableMultiBodyDynamicsWorld.h>
 #include <BulletSoftBody/btSoftBodyHelpers.h>
 #include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
+#include <btBulletDynamicsCommon.h>
 #endif
 
 namespace {
@@ -38,8 +38,8 @@ constexpr int kFrames = 180;
 /// Bullet's explicit runs take seconds per frame on the 2-core machine).
 constexpr int kGridFrames = 30;
 constexpr Real kFrame = 1.0 / 60.0;
-constexpr Real kSize = 1.0;         // [m] side of the square cloth
-constexpr Real kTotalMass = 0.2;    // [kg] 0.2 kg/m²
+constexpr Real kSize = 1.0;       // [m] side of the square cloth
+constexpr Real kTotalMass = 0.2;  // [kg] 0.2 kg/m²
 /// [N·s/m] 0 in the Bullet comparison: with damping Bullet's "explicit" step solves for the damping
 /// implicitly (a Krylov solve per substep), 2.5× slower still; without it both sides integrate springs alone.
 constexpr Real kSpringDamping = 0.0;
@@ -105,9 +105,15 @@ void BM_ClothImplicit64(benchmark::State& state) {
                  std::to_string(s.substeps) + " step(s) per frame, mean CG " +
                  std::to_string(cg / std::max<long>(1, state.iterations())) + " iterations");
 }
-BENCHMARK(BM_ClothImplicit64)->Args({1000, 0, 1})->Args({1000, 0, 2})->Args({100000, 0, 1})->Args({100000, 0, 4})
-    ->Args({1000, 1, 1})->Args({100000, 1, 1})
-    ->Iterations(kGridFrames)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ClothImplicit64)
+    ->Args({1000, 0, 1})
+    ->Args({1000, 0, 2})
+    ->Args({100000, 0, 1})
+    ->Args({100000, 0, 4})
+    ->Args({1000, 1, 1})
+    ->Args({100000, 1, 1})
+    ->Iterations(kGridFrames)
+    ->Unit(benchmark::kMillisecond);
 
 #ifdef PBA_HAVE_BULLET
 /// The same cloth in Bullet's deformable world (double precision build).

@@ -49,8 +49,8 @@ void solveChain(benchmark::State& state, SolverKind kind, JointType joint, Real 
   state.counters["success"] = solves ? double(successes) / double(solves) : 0.0;
 }
 
-#define PBA_IK_BENCH_LIMIT(name, kind, joint, limit)                                            \
-  void name(benchmark::State& s) { solveChain(s, kind, joint, limit); }                       \
+#define PBA_IK_BENCH_LIMIT(name, kind, joint, limit)                    \
+  void name(benchmark::State& s) { solveChain(s, kind, joint, limit); } \
   BENCHMARK(name)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond)->MinTime(0.5)
 #define PBA_IK_BENCH(name, kind, joint) PBA_IK_BENCH_LIMIT(name, kind, joint, 0.0)
 

@@ -27,7 +27,9 @@ constexpr Real kDt = 1.0 / 60.0;
 constexpr int kSteps = 600;
 
 enum class Scene { Boxes3000, Stack1000 };
-std::vector<rigid::BodyDesc> sceneBodies(Scene s) { return s == Scene::Boxes3000 ? rigid::benchBoxes() : rigid::benchStack1000(); }
+std::vector<rigid::BodyDesc> sceneBodies(Scene s) {
+  return s == Scene::Boxes3000 ? rigid::benchBoxes() : rigid::benchStack1000();
+}
 
 // Thread CPU time [s]: the machine this runs on is shared, and wall time would count the waits.
 double cpuSeconds() {
@@ -64,10 +66,22 @@ void BM_Ours(benchmark::State& state, Scene scene, bool classic) {
     state.counters["solver_iterations"] = world.stats().solverIterations;
   }
 }
-BENCHMARK_CAPTURE(BM_Ours, boxes3000_soft_step, Scene::Boxes3000, false)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Ours, boxes3000_baumgarte_10, Scene::Boxes3000, true)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Ours, stack1000_soft_step, Scene::Stack1000, false)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Ours, stack1000_baumgarte_10, Scene::Stack1000, true)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Ours, boxes3000_soft_step, Scene::Boxes3000, false)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Ours, boxes3000_baumgarte_10, Scene::Boxes3000, true)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Ours, stack1000_soft_step, Scene::Stack1000, false)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Ours, stack1000_baumgarte_10, Scene::Stack1000, true)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 #ifdef PBA_HAVE_BULLET
 // Bullet's own defaults (btDbvtBroadphase, sequential impulses, 10 iterations, split impulse for
@@ -96,7 +110,8 @@ void BM_Bullet(benchmark::State& state, Scene scene) {
       shape->calculateLocalInertia(d.mass, inertia);
       btRigidBody::btRigidBodyConstructionInfo info(d.mass, nullptr, shape, inertia);
       info.m_startWorldTransform.setOrigin(btVector3(d.position.x, d.position.y, d.position.z));
-      info.m_startWorldTransform.setRotation(btQuaternion(d.orientation.x, d.orientation.y, d.orientation.z, d.orientation.w));
+      info.m_startWorldTransform.setRotation(
+          btQuaternion(d.orientation.x, d.orientation.y, d.orientation.z, d.orientation.w));
       info.m_friction = d.friction;
       rigid.push_back(std::make_unique<btRigidBody>(info));
       rigid.back()->setActivationState(DISABLE_DEACTIVATION);
@@ -109,8 +124,14 @@ void BM_Bullet(benchmark::State& state, Scene scene) {
     world.removeRigidBody(&groundBody);
   }
 }
-BENCHMARK_CAPTURE(BM_Bullet, boxes3000, Scene::Boxes3000)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Bullet, stack1000, Scene::Stack1000)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bullet, boxes3000, Scene::Boxes3000)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bullet, stack1000, Scene::Stack1000)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 #endif
 
 // Broad phase: n spheres of radius 0.5 in a cube at density ~0.1, each moving a little every step; one
@@ -141,9 +162,17 @@ void BM_BroadPhase(benchmark::State& state, collision::BroadPhaseKind kind) {
   state.counters["pairs"] = static_cast<double>(pairs.size());
   state.counters["pairs_per_ms"] = benchmark::Counter(static_cast<double>(total) / 1e3, benchmark::Counter::kIsRate);
 }
-BENCHMARK_CAPTURE(BM_BroadPhase, tree, collision::BroadPhaseKind::Tree)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BroadPhase, sap, collision::BroadPhaseKind::SweepAndPrune)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BroadPhase, brute_force, collision::BroadPhaseKind::BruteForce)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BroadPhase, tree, collision::BroadPhaseKind::Tree)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BroadPhase, sap, collision::BroadPhaseKind::SweepAndPrune)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BroadPhase, brute_force, collision::BroadPhaseKind::BruteForce)
+    ->Arg(10000)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 BENCHMARK_MAIN();

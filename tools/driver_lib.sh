@@ -3,7 +3,7 @@
 
 PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-dev libimgui-dev
   libassimp-dev nlohmann-json3-dev libstb-dev libeigen3-dev googletest libgtest-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels fonts-dejavu-core python3 ccache xdotool)
+  xvfb xauth assimp-testmodels fonts-dejavu-core python3 python3-matplotlib ccache xdotool clang-format ffmpeg)
 PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 pba_say() {
@@ -125,6 +125,17 @@ pba_cmd_bench() {
   pba_ensure_packages
   pba_build release
   bash "$ROOT/tools/bench.sh" "$ROOT" "$ROOT/build/release" "$@"
+}
+
+# Debian's python3 (its python3-matplotlib draws the sweep plots), else whatever python3 is first on PATH.
+pba_python() { if [[ -x /usr/bin/python3 ]]; then echo /usr/bin/python3; else command -v python3; fi; }
+
+pba_cmd_sweep() {
+  [[ $# -ge 1 && "$1" != -* ]] || pba_die "usage: ./pba sweep LAB --set NAME=VALUES [...] (./pba sweep LAB --help)" 2
+  [[ -f "$ROOT/labs/$1/CMakeLists.txt" ]] || pba_die "unknown lab '$1' (labs: $(pba_list_labs | tr '\n' ' '))" 2
+  pba_ensure_packages
+  pba_build release "pba-$1"
+  "$(pba_python)" "$ROOT/tools/sweep.py" "$@"
 }
 
 pba_cmd_screenshots() {

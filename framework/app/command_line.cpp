@@ -6,6 +6,7 @@
 
 #include "app/scene_registry.h"
 #include "app/scene_runner.h"
+#include "graphics/frame_recorder.h"
 
 namespace pba::app {
 namespace {
@@ -38,12 +39,12 @@ const LabFlag* findLabFlag(const std::string& flag) {
 long LabOptions::frameCount() const {
   if (frames) return *frames;
   if (seconds) return static_cast<long>(std::ceil(*seconds / kDisplayFrame - 1e-9));
+  if (!record.empty()) return kDefaultRecordFrames;
   return screenshot.empty() ? kDefaultHeadlessFrames : kDefaultScreenshotFrames;
 }
 
 bool looksLikeSceneFile(const std::string& scene) {
-  return scene.find('/') != std::string::npos ||
-         (scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0);
+  return scene.find('/') != std::string::npos || (scene.size() > 5 && scene.compare(scene.size() - 5, 5, ".json") == 0);
 }
 
 Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
@@ -73,17 +74,37 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     };
     std::string v;
     Status s;
-    if (arg == "--help" || arg == "-h") { s = flagOnly(); o.help = true; }
-    else if (arg == "--headless") { s = flagOnly(); o.headless = true; }
-    else if (arg == "--lecture") { s = flagOnly(); o.lecture = true; }
-    else if (arg == "--list-scenes") { s = flagOnly(); o.listScenes = true; }
-    else if (arg == "--scene") { s = next(o.scene); }
-    else if (arg == "--screenshot") { s = next(o.screenshot); }
-    else if (arg == "--metrics") { s = next(o.metrics); }
-    else if (arg == "--frames") {
+    if (arg == "--help" || arg == "-h") {
+      s = flagOnly();
+      o.help = true;
+    } else if (arg == "--headless") {
+      s = flagOnly();
+      o.headless = true;
+    } else if (arg == "--lecture") {
+      s = flagOnly();
+      o.lecture = true;
+    } else if (arg == "--list-scenes") {
+      s = flagOnly();
+      o.listScenes = true;
+    } else if (arg == "--scene") {
+      s = next(o.scene);
+    } else if (arg == "--screenshot") {
+      s = next(o.screenshot);
+    } else if (arg == "--record") {
+      if (!(s = next(o.record))) return Error{s.error()};
+      if (!graphics::recordFormatOf(o.record))
+        return Error{"--record: expected FILE.mp4, FILE.gif or DIR/ (PNG files), got '" + o.record + "'"};
+    } else if (arg == "--record-ui") {
+      if (!(s = next(v))) return Error{s.error()};
+      if (v != "on" && v != "off") return Error{"--record-ui: expected on or off, got '" + v + "'"};
+      o.recordUi = v == "on";
+    } else if (arg == "--metrics") {
+      s = next(o.metrics);
+    } else if (arg == "--frames") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
-      if (!r || r.value() > kMaxFrames) return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
+      if (!r || r.value() > kMaxFrames)
+        return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
       o.frames = r.value();
     } else if (arg == "--seconds") {
       if (!(s = next(v))) return Error{s.error()};
@@ -95,17 +116,21 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       auto r = parsePositive(arg, v);
       if (!r) return Error{r.error()};
       if (r.value() < kMinDt || r.value() > kMaxDt)
-        return Error{"--dt: must be in [" + std::to_string(kMinDt) + ", " + std::to_string(kMaxDt) + "] s, got '" + v + "'"};
+        return Error{"--dt: must be in [" + std::to_string(kMinDt) + ", " + std::to_string(kMaxDt) + "] s, got '" + v +
+                     "'"};
       o.dt = r.value();
     } else if (arg == "--substeps") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
-      if (!r || r.value() > kMaxSubsteps) return Error{"--substeps: expected a whole number in [1, " + std::to_string(kMaxSubsteps) + "], got '" + v + "'"};
+      if (!r || r.value() > kMaxSubsteps)
+        return Error{"--substeps: expected a whole number in [1, " + std::to_string(kMaxSubsteps) + "], got '" + v +
+                     "'"};
       o.substeps = static_cast<int>(r.value());
     } else if (arg == "--time-scale") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parsePositive(arg, v);
-      if (!r || r.value() < kMinTimeScale || r.value() > kMaxTimeScale) return Error{"--time-scale: expected a number in [0.1, 4], got '" + v + "'"};
+      if (!r || r.value() < kMinTimeScale || r.value() > kMaxTimeScale)
+        return Error{"--time-scale: expected a number in [0.1, 4], got '" + v + "'"};
       o.timeScale = r.value();
     } else if (arg == "--seed") {
       if (!(s = next(v))) return Error{s.error()};
@@ -130,7 +155,11 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     if (!s) return Error{s.error()};
   }
   if (o.frames && o.seconds) return Error{"--frames and --seconds: give one or the other"};
-  if (o.headless && !o.screenshot.empty()) return Error{"--screenshot needs a window: drop --headless (use xvfb-run without a display)"};
+  if (o.headless && !o.screenshot.empty())
+    return Error{"--screenshot needs a window: drop --headless (use xvfb-run without a display)"};
+  if (o.headless && !o.record.empty())
+    return Error{"--record needs a window: drop --headless (use xvfb-run without a display)"};
+  if (!o.record.empty() && !o.screenshot.empty()) return Error{"--record and --screenshot: give one or the other"};
   return o;
 }
 
@@ -141,34 +170,39 @@ std::string overrideError(const ParamOverride& o, const std::string& error) {
 }
 
 std::string usage(const std::string& lab) {
-  std::string text =
-      "Usage: pba-" + lab + " [options]\n"
-      "\n"
-      "  --scene NAME|FILE.json  scene to start (default: the first; see --list-scenes)\n"
-      "  --headless              no window and no OpenGL: step the scene and exit\n"
-      "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
-      "                          (default 300 headless, 120 for --screenshot)\n"
-      "  --seconds T             simulated seconds instead of --frames (at most 100000)\n"
-      "  --dt H                  fixed time step in seconds (default: the scene's)\n"
-      "  --substeps N            split each step into N substeps (1-64)\n"
-      "  --time-scale S          slow motion or fast forward, 0.1-4\n"
-      "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
-      "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
-      "  --seed N                random seed (default 1)\n"
-      "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
-      "  --lecture               large fonts, high contrast (key L toggles)\n"
-      "  --list-scenes           print the scenes and exit\n"
-      "  --help                  this text\n";
+  std::string text = "Usage: pba-" + lab +
+                     " [options]\n"
+                     "\n"
+                     "  --scene NAME|FILE.json  scene to start (default: the first; see --list-scenes)\n"
+                     "  --headless              no window and no OpenGL: step the scene and exit\n"
+                     "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
+                     "                          (default 300 headless, 120 for --screenshot)\n"
+                     "  --seconds T             simulated seconds instead of --frames (at most 100000)\n"
+                     "  --dt H                  fixed time step in seconds (default: the scene's)\n"
+                     "  --substeps N            split each step into N substeps (1-64)\n"
+                     "  --time-scale S          slow motion or fast forward, 0.1-4\n"
+                     "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
+                     "  --record FILE.mp4|FILE.gif|DIR/\n"
+                     "                          record --frames (default 300) or --seconds of simulated time at 60\n"
+                     "                          frames/s, then exit: MP4 and GIF through ffmpeg, PNG files into DIR/\n"
+                     "  --record-ui on|off      the panels in the recording, or the scene alone (default off)\n"
+                     "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
+                     "  --seed N                random seed (default 1)\n"
+                     "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
+                     "  --lecture               large fonts, high contrast (key L toggles)\n"
+                     "  --list-scenes           print the scenes and exit\n"
+                     "  --help                  this text\n";
   if (!labFlags().empty()) {
     text += "\nLab options:\n";
     for (const LabFlag& f : labFlags()) {
       const std::string option = "--" + f.flag + " VALUE";
-      text += "  " + option + std::string(option.size() < 24 ? 24 - option.size() : 1, ' ') + f.help + " (parameter '" + f.param +
-              "'" + (f.impliesScene.empty() ? std::string() : "; selects scene '" + f.impliesScene + "'") + ")\n";
+      text += "  " + option + std::string(option.size() < 24 ? 24 - option.size() : 1, ' ') + f.help + " (parameter '" +
+              f.param + "'" + (f.impliesScene.empty() ? std::string() : "; selects scene '" + f.impliesScene + "'") +
+              ")\n";
     }
   }
   text +=
-      "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot\n"
+      "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot  F9 record\n"
       "      L lecture mode  Tab hide UI  F frame scene.  Arrows nudge the target in the view plane,\n"
       "      PageUp/PageDown or Shift+Up/Down away/toward the camera, Ctrl for a fine step.\n"
       "      Mouse: left drag picks, right drag orbits, middle or Shift+right drag pans, wheel zooms.\n"

@@ -2,6 +2,7 @@
 // The command line contract of every lab executable (docs/architecture.md §4):
 //   pba-<lab> [--scene NAME|FILE.json] [--headless] [--frames N | --seconds T] [--dt H]
 //             [--screenshot FILE.png] [--metrics FILE|-] [--seed N] [--lecture] [--list-scenes] [--help]
+//             [--record FILE.mp4|FILE.gif|DIR/ [--record-ui on|off]]
 // plus --substeps N, --time-scale S, --set NAME=VALUE (any scene parameter) and the lab's own flags.
 #include <cstdint>
 #include <optional>
@@ -15,6 +16,7 @@ namespace pba::app {
 
 inline constexpr int kDefaultHeadlessFrames = 300;    // 5 s of simulated time at 60 frames/s
 inline constexpr int kDefaultScreenshotFrames = 120;  // 2 s: scenes have started moving
+inline constexpr int kDefaultRecordFrames = 300;      // 5 s of video
 inline constexpr long kMaxFrames = 6'000'000;         // 100,000 s (over a day) of simulated time
 inline constexpr double kMaxSeconds = 100'000.0;      // [s] the same bound for --seconds
 
@@ -28,15 +30,17 @@ struct ParamOverride {
 };
 
 struct LabOptions {
-  std::string scene;                 ///< scene name or path of a .json scene file; empty = first scene
+  std::string scene;  ///< scene name or path of a .json scene file; empty = first scene
   bool headless = false;
-  std::optional<long> frames;        ///< displayed frames of 1/60 s each
-  std::optional<double> seconds;     ///< alternatively: simulated seconds
-  std::optional<double> dt;          ///< fixed step [s]
+  std::optional<long> frames;     ///< displayed frames of 1/60 s each
+  std::optional<double> seconds;  ///< alternatively: simulated seconds
+  std::optional<double> dt;       ///< fixed step [s]
   std::optional<int> substeps;
   std::optional<double> timeScale;
-  std::string screenshot;            ///< PNG path: render this many frames in a window, save, exit
-  std::string metrics;               ///< JSON path or "-" for stdout
+  std::string screenshot;  ///< PNG path: render this many frames in a window, save, exit
+  std::string record;      ///< video (.mp4, .gif) or PNG folder: record this many frames in a window, exit
+  bool recordUi = false;   ///< --record-ui on: the panels are in the recording (default: the scene alone)
+  std::string metrics;     ///< JSON path or "-" for stdout
   std::uint64_t seed = 1;
   bool lecture = false;
   bool listScenes = false;
@@ -46,7 +50,7 @@ struct LabOptions {
   /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.
   std::string impliedScene;
 
-  /// Number of frames to run in headless and screenshot mode.
+  /// Number of frames to run in headless, screenshot and record mode.
   long frameCount() const;
 };
 

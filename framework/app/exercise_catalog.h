@@ -7,8 +7,8 @@
 namespace pba::app {
 
 struct ExerciseInfo {
-  std::string tag;    ///< e.g. "HELLO-1"
-  std::string lab;    ///< e.g. "hello"
+  std::string tag;  ///< e.g. "HELLO-1"
+  std::string lab;  ///< e.g. "hello"
   std::string title;
   std::string hint;
 };

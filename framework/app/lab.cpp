@@ -42,7 +42,8 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
     if (Status s = scene->params().setFromText(p.param, p.value); !s) {
       // A lab flag meant for another scene: say which scene it belongs with.
       if (!scene->params().find(p.param) && p.option != "--set")
-        return Error{p.option + ": not a parameter of scene '" + name + "' (see --help for the scene each lab option selects)"};
+        return Error{p.option + ": not a parameter of scene '" + name +
+                     "' (see --help for the scene each lab option selects)"};
       return Error{overrideError(p, s.error())};
     }
   }

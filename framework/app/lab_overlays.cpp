@@ -20,27 +20,32 @@ void plotSeries(const std::string& name, const std::vector<double>& series, ImVe
   const PlotScale scale = plotScale(series);
   const ImVec2 o = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), ImGui::GetColorU32(ImGuiCol_FrameBg), ImGui::GetStyle().FrameRounding);
+  draw->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), ImGui::GetColorU32(ImGuiCol_FrameBg),
+                      ImGui::GetStyle().FrameRounding);
   const float pad = 0.2f * ImGui::GetFontSize();
   std::vector<ImVec2> points;
   points.reserve(series.size());
   const double n = static_cast<double>(std::max<size_t>(series.size() - 1, 1));
   for (size_t i = 0; i < series.size(); ++i) {
     const double y = (series[i] - scale.offset - scale.lo) / (scale.hi - scale.lo);
-    points.emplace_back(o.x + pad + (size.x - 2.0f * pad) * static_cast<float>(static_cast<double>(i) / n),
-                        o.y + size.y - pad - (size.y - 2.0f * pad - 1.8f * ImGui::GetFontSize()) * static_cast<float>(std::clamp(y, 0.0, 1.0)));
+    points.emplace_back(
+        o.x + pad + (size.x - 2.0f * pad) * static_cast<float>(static_cast<double>(i) / n),
+        o.y + size.y - pad -
+            (size.y - 2.0f * pad - 1.8f * ImGui::GetFontSize()) * static_cast<float>(std::clamp(y, 0.0, 1.0)));
   }
   if (points.size() >= 2)
-    draw->AddPolyline(points.data(), static_cast<int>(points.size()), ImGui::GetColorU32(ImGuiCol_PlotLines), 0, lecture ? 3.0f : 2.0f);
+    draw->AddPolyline(points.data(), static_cast<int>(points.size()), ImGui::GetColorU32(ImGuiCol_PlotLines), 0,
+                      lecture ? 3.0f : 2.0f);
   // The caption on two lines, so a narrow (lecture) plot never cuts the range off: "name = value" on
   // top, the range (and the mean of a deviation plot) below it in a smaller size.
   const std::string caption = plotCaption(name, series, scale);
   const size_t split = caption.find("  ");
   const float font = ImGui::GetFontSize();
-  draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text), caption.substr(0, split).c_str());
+  draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text),
+                caption.substr(0, split).c_str());
   if (split != std::string::npos)
-    draw->AddText(ImGui::GetFont(), 0.8f * font, ImVec2(o.x + pad, o.y + 0.5f * pad + font), ImGui::GetColorU32(ImGuiCol_TextDisabled),
-                  caption.substr(split + 2).c_str());
+    draw->AddText(ImGui::GetFont(), 0.8f * font, ImVec2(o.x + pad, o.y + 0.5f * pad + font),
+                  ImGui::GetColorU32(ImGuiCol_TextDisabled), caption.substr(split + 2).c_str());
   ImGui::Dummy(size);
 }
 
@@ -64,7 +69,8 @@ float plotPanel(LabSession& session, const UiState& ui) {
                              ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y;
   ImGui::SetNextWindowSize(ImVec2(display.x * (ui.lecture ? 0.28f : 0.38f), windowHeight), ImGuiCond_Always);
   ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
-  for (const auto& [name, series] : shown) plotSeries(name, series, ImVec2(ImGui::GetContentRegionAvail().x, height), ui.lecture);
+  for (const auto& [name, series] : shown)
+    plotSeries(name, series, ImVec2(ImGui::GetContentRegionAvail().x, height), ui.lecture);
   ImGui::End();
   return display.y - kMargin - windowHeight;
 }
@@ -114,7 +120,8 @@ void banners(LabSession& session) {
   ImGui::SetNextWindowSize(ImVec2(std::min(display.x * 0.55f, 900.0f), 0), ImGuiCond_Always);
   ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
-  ImGui::Begin("##banner", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Begin("##banner", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   ImGui::TextWrapped("%s", text.c_str());
   ImGui::End();
   ImGui::PopStyleColor(2);

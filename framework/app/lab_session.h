@@ -38,7 +38,8 @@ class LabSession {
   void drag(int handle, const Vec3& target);
   void release(int handle);
   /// Nudges the scene's target (target_nudge.h); false when the scene has none.
-  bool nudge(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real sceneSize, bool fine);
+  bool nudge(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real sceneSize,
+             bool fine);
 
   /// Loads a scene file. On error the running scene stays and the error is kept for the UI.
   bool loadSceneFile(const std::string& path);

@@ -11,9 +11,12 @@ namespace pba::app {
 
 std::string settingsDirectory(const std::string& lab) {
   std::filesystem::path base;
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) base = xdg;
-  else if (const char* home = std::getenv("HOME"); home && *home) base = std::filesystem::path(home) / ".config";
-  else return {};
+  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
+    base = xdg;
+  else if (const char* home = std::getenv("HOME"); home && *home)
+    base = std::filesystem::path(home) / ".config";
+  else
+    return {};
   return (base / "pba-labs" / lab).string();
 }
 
@@ -41,8 +44,11 @@ bool saveLabSettings(const std::string& directory, const LabSettings& s) {
   std::filesystem::create_directories(directory, ec);
   std::ofstream out(std::filesystem::path(directory) / "settings.json", std::ios::trunc);
   if (!out) return false;
-  const nlohmann::json j = {{"last_scene", s.lastScene}, {"window_width", s.windowWidth},
-                            {"window_height", s.windowHeight}, {"lecture", s.lecture}, {"plotted", s.plotted}};
+  const nlohmann::json j = {{"last_scene", s.lastScene},
+                            {"window_width", s.windowWidth},
+                            {"window_height", s.windowHeight},
+                            {"lecture", s.lecture},
+                            {"plotted", s.plotted}};
   out << j.dump(2) << '\n';
   return static_cast<bool>(out);
 }

@@ -15,10 +15,10 @@ namespace {
 using detail::kAlertRed;
 using detail::kWarnOrange;
 
-constexpr float kPanelWidth = 400.0f;       // [px at UI scale 1]
-constexpr float kOverlayWidth = 350.0f;     // [px at UI scale 1] a scene's own right-hand column
+constexpr float kPanelWidth = 400.0f;         // [px at UI scale 1]
+constexpr float kOverlayWidth = 350.0f;       // [px at UI scale 1] a scene's own right-hand column
 constexpr float kWidgetWidthInFonts = 11.5f;  // slider width in font heights: leaves room for labels
-constexpr float kWidgetShare = 0.56f;       // at most this share of the panel's width (lecture mode)
+constexpr float kWidgetShare = 0.56f;         // at most this share of the panel's width (lecture mode)
 // Shares of the window's width the panel and the overlay column may take: in lecture mode both stay
 // narrow columns, so that the scene keeps most of a 1280×720 projector image.
 constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.27f;
@@ -33,6 +33,7 @@ const char* const kKeys[][2] = {
     {"1 - 9", "scene presets"},
     {"F1 / H", "this help"},
     {"F12", "screenshot (PNG in the working folder)"},
+    {"F9", "start / stop recording (MP4 with ffmpeg, else PNG files; 60 frames/s of simulated time)"},
     {"L", "lecture mode (large fonts, high contrast)"},
     {"Tab", "hide or show the panels"},
     {"F", "frame the scene"},
@@ -80,14 +81,15 @@ void parameterWidgets(LabSession& session) {
     double value = p.get();
     switch (p.kind) {
       case ParamKind::Real: {
-        const ImGuiSliderFlags flags = (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
+        const ImGuiSliderFlags flags =
+            (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
         changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max, "%.4g", flags);
         break;
       }
       case ParamKind::Integer: {
         int v = static_cast<int>(value), lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
-        changed = ImGui::SliderInt(label.c_str(), &v, lo, hi, "%d", ImGuiSliderFlags_AlwaysClamp |
-                                   (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
+        changed = ImGui::SliderInt(label.c_str(), &v, lo, hi, "%d",
+                                   ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
         value = v;
         break;
       }
@@ -112,7 +114,8 @@ void parameterWidgets(LabSession& session) {
         value = v;
         break;
       }
-      case ParamKind::Text: break;  // handled above
+      case ParamKind::Text:
+        break;  // handled above
     }
     helpMarker(p.tooltip + (p.needsReset ? "\nTakes effect on reset." : ""));
     // Sliders clamp to the declared range, so the value is always valid: slider extremes are safe.
@@ -190,16 +193,21 @@ void metricsTable(LabSession& session, const UiState& ui) {
       ImGui::TextUnformatted(key.c_str());
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (tick the box to plot it)", key.c_str());
       ImGui::TableNextColumn();
-      if (value.is_number_float()) ImGui::Text("%.5g", value.get<double>());
-      else if (value.is_string()) ImGui::TextUnformatted(value.get<std::string>().c_str());
-      else ImGui::TextUnformatted(value.dump().c_str());
+      if (value.is_number_float())
+        ImGui::Text("%.5g", value.get<double>());
+      else if (value.is_string())
+        ImGui::TextUnformatted(value.get<std::string>().c_str());
+      else
+        ImGui::TextUnformatted(value.dump().c_str());
       ImGui::TableNextColumn();
       if (value.is_number() || value.is_boolean()) {
         bool on = std::find(plotted.begin(), plotted.end(), key) != plotted.end();
         ImGui::PushID(key.c_str());
         if (ImGui::Checkbox("##plot", &on)) {
-          if (on) plotted.push_back(key);
-          else plotted.erase(std::remove(plotted.begin(), plotted.end(), key), plotted.end());
+          if (on)
+            plotted.push_back(key);
+          else
+            plotted.erase(std::remove(plotted.begin(), plotted.end(), key), plotted.end());
         }
         ImGui::PopID();
       }
@@ -215,8 +223,9 @@ void sceneFileControls(LabSession& session, UiState& ui) {
   // The path takes the panel's whole width, and the full text is repeated below it (wrapped), so a long
   // path can be read without scrolling the field.
   ImGui::TextUnformatted("scene file (JSON)");
-  helpMarker("A JSON scene file: the scene's name and its parameters. Load replaces the scene only when the "
-             "file is valid; Save writes the current parameters.");
+  helpMarker(
+      "A JSON scene file: the scene's name and its parameters. Load replaces the scene only when the "
+      "file is valid; Save writes the current parameters.");
   ImGui::SetNextItemWidth(-FLT_MIN);
   ImGui::InputText("##file", ui.scenePath, sizeof ui.scenePath);
   noteWidget(ui, "file_field");
@@ -259,7 +268,8 @@ void mainPanel(LabSession& session, UiState& ui) {
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(std::min(ImGui::GetFontSize() * kWidgetWidthInFonts, kWidgetShare * ImGui::GetContentRegionAvail().x));
+  ImGui::PushItemWidth(
+      std::min(ImGui::GetFontSize() * kWidgetWidthInFonts, kWidgetShare * ImGui::GetContentRegionAvail().x));
   const auto& list = scenes();
   const int current = session.sceneIndex();
   if (ImGui::BeginCombo("scene", session.runner().sceneName().c_str())) {
@@ -269,7 +279,8 @@ void mainPanel(LabSession& session, UiState& ui) {
         category = list[i].category;
         ImGui::TextDisabled("%s", category.c_str());
       }
-      if (ImGui::Selectable(("  " + list[i].name).c_str(), static_cast<int>(i) == current)) session.switchScene(static_cast<int>(i));
+      if (ImGui::Selectable(("  " + list[i].name).c_str(), static_cast<int>(i) == current))
+        session.switchScene(static_cast<int>(i));
     }
     ImGui::EndCombo();
   }
@@ -286,8 +297,7 @@ void mainPanel(LabSession& session, UiState& ui) {
     session.runner().scene().ui();
   }
   if (header(ui, "Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
-  if (!session.exercises().empty() && header(ui, "Exercises", ImGuiTreeNodeFlags_DefaultOpen))
-    exerciseStatus(session);
+  if (!session.exercises().empty() && header(ui, "Exercises", ImGuiTreeNodeFlags_DefaultOpen)) exerciseStatus(session);
   if (header(ui, "Scene file")) sceneFileControls(session, ui);
   if (header(ui, "View")) {
     bool lecture = ui.lecture;  // the mode changes between frames, never inside this one
@@ -298,6 +308,11 @@ void mainPanel(LabSession& session, UiState& ui) {
     if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
     sameLineIfFits("Help (F1)");
     if (ImGui::Button("Help (F1)")) ui.showHelp = !ui.showHelp;
+    if (ImGui::Button(ui.recording.empty() ? "Record (F9)" : "Stop recording (F9)")) ui.recordRequested = true;
+    if (!ui.recording.empty()) {
+      ImGui::SameLine();
+      ImGui::TextColored(detail::kAlertRed, "%s", ui.recording.c_str());
+    }
   }
   if (!session.message().empty()) ImGui::TextDisabled("%s", session.message().c_str());
   ImGui::PopItemWidth();
@@ -341,7 +356,9 @@ void UiState::applyPending() {
         relayout = true;
         frameRequested = true;  // the panels' widths changed: frame the scene in what they leave
         break;
-      case UiChange::ToggleHideUi: hideUi = !hideUi; break;
+      case UiChange::ToggleHideUi:
+        hideUi = !hideUi;
+        break;
     }
   }
   pending.clear();

@@ -27,16 +27,18 @@ struct UiState {
   bool hideUi = false;
   bool lecture = false;
   bool screenshotRequested = false;
+  bool recordRequested = false;  ///< F9 or the Record button: start or stop a recording
+  std::string recording;         ///< while recording: "REC 3.2 s (192 frames)", else empty
   bool frameRequested = false;
   /// Set when the layout changed between frames (lecture mode): panels take their new size once.
   bool relayout = true;
-  double frameMs = 0.0;     ///< wall time of the last displayed frame [ms]
-  char scenePath[512] = {};  ///< the scene file field
+  double frameMs = 0.0;           ///< wall time of the last displayed frame [ms]
+  char scenePath[512] = {};       ///< the scene file field
   std::vector<UiChange> pending;  ///< asked for during this frame, applied before the next one
-  std::string notice;        ///< short on-screen confirmation ("Screenshot saved: …")
-  double noticeUntil = 0.0;  ///< [s, ImGui time] when the notice disappears
-  int noticeFrames = 0;      ///< frames it is still shown whatever the time (a slow frame rate still sees it)
-  std::string lastScreenshot;  ///< path of the last screenshot written
+  std::string notice;             ///< short on-screen confirmation ("Screenshot saved: …")
+  double noticeUntil = 0.0;       ///< [s, ImGui time] when the notice disappears
+  int noticeFrames = 0;           ///< frames it is still shown whatever the time (a slow frame rate still sees it)
+  std::string lastScreenshot;     ///< path of the last screenshot written
   /// Where a few named widgets were drawn this frame, while visible ("header:View", "file_field",
   /// "load_button", "lecture_checkbox"): the UI status reports them so tests can click them.
   std::map<std::string, LabelBox> widgets;

@@ -124,7 +124,8 @@ Status Params::setFromText(const std::string& name, const std::string& text) {
     case ParamKind::Integer: {
       char* end = nullptr;
       const double v = std::strtod(text.c_str(), &end);
-      if (text.empty() || end == nullptr || *end != '\0') return Error{name + ": expected a number, got '" + text + "'"};
+      if (text.empty() || end == nullptr || *end != '\0')
+        return Error{name + ": expected a number, got '" + text + "'"};
       return setChecked(*p, v, name);
     }
   }
@@ -166,11 +167,20 @@ nlohmann::json Params::toJson() const {
     }
     const double v = p.get();
     switch (p.kind) {
-      case ParamKind::Flag: out[p.name] = v != 0.0; break;
-      case ParamKind::Choice: out[p.name] = p.choices.at(static_cast<size_t>(v)); break;
-      case ParamKind::Integer: out[p.name] = static_cast<long long>(std::llround(v)); break;
-      case ParamKind::Real: out[p.name] = v; break;
-      case ParamKind::Text: break;  // handled above
+      case ParamKind::Flag:
+        out[p.name] = v != 0.0;
+        break;
+      case ParamKind::Choice:
+        out[p.name] = p.choices.at(static_cast<size_t>(v));
+        break;
+      case ParamKind::Integer:
+        out[p.name] = static_cast<long long>(std::llround(v));
+        break;
+      case ParamKind::Real:
+        out[p.name] = v;
+        break;
+      case ParamKind::Text:
+        break;  // handled above
     }
   }
   return out;

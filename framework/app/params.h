@@ -17,15 +17,15 @@ enum class ParamKind { Real, Integer, Flag, Choice, Text };
 
 /// One editable parameter. get/set read and write the scene's own field.
 struct Param {
-  std::string name;       ///< key in scene files and on the command line, e.g. "restitution"
-  std::string unit;       ///< shown after the slider, e.g. "m/s²"; empty for dimensionless
-  std::string tooltip;    ///< the (?) help text: what it does and a typical value
+  std::string name;     ///< key in scene files and on the command line, e.g. "restitution"
+  std::string unit;     ///< shown after the slider, e.g. "m/s²"; empty for dimensionless
+  std::string tooltip;  ///< the (?) help text: what it does and a typical value
   ParamKind kind = ParamKind::Real;
-  double min = 0.0, max = 1.0;        ///< inclusive range (Real and Integer)
-  bool logarithmic = false;           ///< slider in log scale (wide positive ranges)
-  bool needsReset = false;            ///< changing it rebuilds the scene (e.g. particle count)
-  std::vector<std::string> choices;   ///< names of a Choice, in index order
-  std::function<double()> get;            ///< Real, Integer, Flag, Choice
+  double min = 0.0, max = 1.0;       ///< inclusive range (Real and Integer)
+  bool logarithmic = false;          ///< slider in log scale (wide positive ranges)
+  bool needsReset = false;           ///< changing it rebuilds the scene (e.g. particle count)
+  std::vector<std::string> choices;  ///< names of a Choice, in index order
+  std::function<double()> get;       ///< Real, Integer, Flag, Choice
   std::function<void(double)> set;
   std::function<std::string()> getText;  ///< Text (file paths, lists of names)
   std::function<void(const std::string&)> setText;

@@ -10,9 +10,12 @@ void PlotHistory::record(double, const nlohmann::json& metrics) {
   if (!metrics.is_object()) return;
   for (const auto& [key, value] : metrics.items()) {
     double v = 0.0;
-    if (value.is_number()) v = value.get<double>();
-    else if (value.is_boolean()) v = value.get<bool>() ? 1.0 : 0.0;
-    else continue;
+    if (value.is_number())
+      v = value.get<double>();
+    else if (value.is_boolean())
+      v = value.get<bool>() ? 1.0 : 0.0;
+    else
+      continue;
     Ring& ring = rings_[key];
     if (ring.values.size() < capacity_) {
       ring.values.push_back(v);

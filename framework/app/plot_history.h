@@ -37,9 +37,9 @@ class PlotHistory {
 
 /// How the plot panel draws a series: the samples minus `offset`, between lo and hi.
 struct PlotScale {
-  double offset = 0.0;         ///< subtracted from every sample (the mean when `deviation`)
-  double lo = 0.0, hi = 1.0;   ///< range of the plotted values (after the offset); hi > lo
-  bool deviation = false;      ///< the series varies by less than kDeviationShare of its magnitude
+  double offset = 0.0;        ///< subtracted from every sample (the mean when `deviation`)
+  double lo = 0.0, hi = 1.0;  ///< range of the plotted values (after the offset); hi > lo
+  bool deviation = false;     ///< the series varies by less than kDeviationShare of its magnitude
 };
 /// Below this spread relative to its magnitude a series is plotted as its deviation from the mean (a
 /// conserved quantity, rounding noise): its range label would otherwise read "[0.5, 0.5]".

@@ -82,7 +82,8 @@ Result<LoadedScene> loadSceneFile(const std::string& path, const std::string& la
   return parseSceneJson(buffer.str(), path, lab);
 }
 
-nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene, std::optional<Real> dt) {
+nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene,
+                           std::optional<Real> dt) {
   nlohmann::json doc;
   doc["lab"] = lab;
   doc["scene"] = name;

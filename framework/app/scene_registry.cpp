@@ -20,7 +20,8 @@ bool registerScene(std::string category, std::string name, std::function<std::un
   auto& list = mutableScenes();
   SceneEntry entry{std::move(category), std::move(name), std::move(create)};
   // Keep categories together while preserving registration order inside each one.
-  auto last = std::find_if(list.rbegin(), list.rend(), [&](const SceneEntry& e) { return e.category == entry.category; });
+  auto last =
+      std::find_if(list.rbegin(), list.rend(), [&](const SceneEntry& e) { return e.category == entry.category; });
   list.insert(last == list.rend() ? list.end() : last.base(), std::move(entry));
   return true;
 }

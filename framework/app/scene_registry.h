@@ -40,14 +40,15 @@ struct LabFlag {
   int priority = 0;
 };
 const std::vector<LabFlag>& labFlags();
-bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene = {}, int priority = 0);
+bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene = {},
+                     int priority = 0);
 
 }  // namespace pba::app
 
 #define PBA_CONCAT_INNER(a, b) a##b
 #define PBA_CONCAT(a, b) PBA_CONCAT_INNER(a, b)
-#define PBA_REGISTER_SCENE(category, name, Type)                                      \
-  static const bool PBA_CONCAT(pbaSceneRegistered_, __LINE__) = ::pba::app::registerScene( \
-      category, name, [] { return std::unique_ptr<::pba::app::Scene>(new Type()); })
+#define PBA_REGISTER_SCENE(category, name, Type)                \
+  static const bool PBA_CONCAT(pbaSceneRegistered_, __LINE__) = \
+      ::pba::app::registerScene(category, name, [] { return std::unique_ptr<::pba::app::Scene>(new Type()); })
 #define PBA_REGISTER_LAB_FLAG(...) \
   static const bool PBA_CONCAT(pbaFlagRegistered_, __LINE__) = ::pba::app::registerLabFlag(__VA_ARGS__)

@@ -48,7 +48,8 @@ Status SceneRunner::setDt(Real dt, bool keepAcrossScenes) {
 }
 
 Status SceneRunner::setSubsteps(int n) {
-  if (n < 1 || n > kMaxSubsteps) return Error{"substeps: must be in [1, " + std::to_string(kMaxSubsteps) + "], got " + std::to_string(n)};
+  if (n < 1 || n > kMaxSubsteps)
+    return Error{"substeps: must be in [1, " + std::to_string(kMaxSubsteps) + "], got " + std::to_string(n)};
   substeps_ = n;
   return Status::success();
 }

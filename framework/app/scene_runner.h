@@ -14,9 +14,9 @@
 namespace pba::app {
 
 /// Limits of the runner's controls (the UI sliders and the command line share them).
-inline constexpr Real kMinDt = 1e-6;            // [s]
-inline constexpr Real kMaxDt = 0.1;             // [s]
-inline constexpr Real kMinTimeScale = 0.1;      // slow motion
+inline constexpr Real kMinDt = 1e-6;        // [s]
+inline constexpr Real kMaxDt = 0.1;         // [s]
+inline constexpr Real kMinTimeScale = 0.1;  // slow motion
 inline constexpr Real kMaxTimeScale = 4.0;
 inline constexpr int kMaxSubsteps = 64;
 inline constexpr Real kDisplayFrame = 1.0 / 60.0;  // [s] simulated time per displayed frame at 1x

@@ -10,13 +10,20 @@ namespace pba::app {
 std::optional<NudgeDirection> nudgeDirectionForKey(int key, int mods) {
   const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
   switch (key) {
-    case GLFW_KEY_LEFT: return NudgeDirection::Left;
-    case GLFW_KEY_RIGHT: return NudgeDirection::Right;
-    case GLFW_KEY_UP: return shift ? NudgeDirection::Away : NudgeDirection::Up;
-    case GLFW_KEY_DOWN: return shift ? NudgeDirection::Toward : NudgeDirection::Down;
-    case GLFW_KEY_PAGE_UP: return NudgeDirection::Away;
-    case GLFW_KEY_PAGE_DOWN: return NudgeDirection::Toward;
-    default: return std::nullopt;
+    case GLFW_KEY_LEFT:
+      return NudgeDirection::Left;
+    case GLFW_KEY_RIGHT:
+      return NudgeDirection::Right;
+    case GLFW_KEY_UP:
+      return shift ? NudgeDirection::Away : NudgeDirection::Up;
+    case GLFW_KEY_DOWN:
+      return shift ? NudgeDirection::Toward : NudgeDirection::Down;
+    case GLFW_KEY_PAGE_UP:
+      return NudgeDirection::Away;
+    case GLFW_KEY_PAGE_DOWN:
+      return NudgeDirection::Toward;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -24,12 +31,18 @@ bool nudgeIsFine(int mods) { return (mods & GLFW_MOD_CONTROL) != 0; }
 
 Vec3 nudgeDisplacement(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real step) {
   switch (direction) {
-    case NudgeDirection::Left: return -step * right;
-    case NudgeDirection::Right: return step * right;
-    case NudgeDirection::Up: return step * up;
-    case NudgeDirection::Down: return -step * up;
-    case NudgeDirection::Toward: return -step * forward;
-    case NudgeDirection::Away: return step * forward;
+    case NudgeDirection::Left:
+      return -step * right;
+    case NudgeDirection::Right:
+      return step * right;
+    case NudgeDirection::Up:
+      return step * up;
+    case NudgeDirection::Down:
+      return -step * up;
+    case NudgeDirection::Toward:
+      return -step * forward;
+    case NudgeDirection::Away:
+      return step * forward;
   }
   return Vec3(0.0);
 }

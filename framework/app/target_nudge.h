@@ -11,9 +11,9 @@ namespace pba::app {
 
 enum class NudgeDirection { Left, Right, Up, Down, Toward, Away };
 
-inline constexpr Real kNudgeFraction = 0.02;  ///< fallback step: 2 % of the scene's drawn size
-inline constexpr Real kNudgeMinStep = 1e-4;   ///< [m] never smaller (a point-sized scene)
-inline constexpr Real kNudgeFineFactor = 0.2; ///< Ctrl: one fifth of the step
+inline constexpr Real kNudgeFraction = 0.02;   ///< fallback step: 2 % of the scene's drawn size
+inline constexpr Real kNudgeMinStep = 1e-4;    ///< [m] never smaller (a point-sized scene)
+inline constexpr Real kNudgeFineFactor = 0.2;  ///< Ctrl: one fifth of the step
 
 /// The nudge direction of a GLFW key code with its modifier bits (GLFW_MOD_SHIFT = 1), or none.
 /// Left/Right/Up/Down arrows; Shift+Up/Down and PageUp/PageDown: Away/Toward the camera.

@@ -15,9 +15,17 @@ nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json vec(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 nlohmann::json cameraJson(const graphics::OrbitCamera& c) {
-  return {{"yaw", c.yaw},          {"pitch", c.pitch},    {"distance", c.distance}, {"fov_y", c.fovY},
-          {"target", vec(c.target)}, {"eye", vec(c.eye())}, {"right", vec(c.right())}, {"up", vec(c.up())},
-          {"forward", vec(c.forward())}, {"rotate_speed", c.rotateSpeed}, {"zoom_factor", c.zoomFactor}};
+  return {{"yaw", c.yaw},
+          {"pitch", c.pitch},
+          {"distance", c.distance},
+          {"fov_y", c.fovY},
+          {"target", vec(c.target)},
+          {"eye", vec(c.eye())},
+          {"right", vec(c.right())},
+          {"up", vec(c.up())},
+          {"forward", vec(c.forward())},
+          {"rotate_speed", c.rotateSpeed},
+          {"zoom_factor", c.zoomFactor}};
 }
 
 nlohmann::json pixelJson(const graphics::OrbitCamera& camera, const Vec3& p, const glm::vec2& viewport) {
@@ -31,7 +39,8 @@ nlohmann::json windowsJson() {
   const ImGuiContext* context = ImGui::GetCurrentContext();
   if (!context) return out;
   for (const ImGuiWindow* w : context->Windows) {
-    if (!w->Active || w->Hidden || (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup)))
+    if (!w->Active || w->Hidden ||
+        (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup)))
       continue;
     if (std::string(w->Name).rfind("Debug##", 0) == 0) continue;  // ImGui's implicit fallback window
     const float y1 = w->Collapsed ? w->Pos.y + w->TitleBarHeight() : w->Pos.y + w->Size.y;
@@ -65,7 +74,8 @@ std::string uiStatusPath() {
   return path ? std::string(path) : std::string();
 }
 
-nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const graphics::OrbitCamera& camera, const UiFrame& f) {
+nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const graphics::OrbitCamera& camera,
+                        const UiFrame& f) {
   const SceneRunner& runner = session.runner();
   const Scene& scene = runner.scene();
   nlohmann::json presets = nlohmann::json::array();
@@ -97,6 +107,7 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
           {"guard", runner.guardMessage() ? *runner.guardMessage() : std::string()},
           {"notice", noticeShown ? ui.notice : std::string()},
           {"last_screenshot", ui.lastScreenshot},
+          {"recording", ui.recording},
           {"viewport", {f.viewport.x, f.viewport.y}},
           {"font_px", ImGui::GetFontSize()},
           {"camera", cameraJson(camera)},

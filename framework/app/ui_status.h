@@ -27,15 +27,16 @@ std::string uiStatusPath();
 
 /// What the window knows of this frame beyond the session and the UI state.
 struct UiFrame {
-  long frame = 0;                     ///< frames displayed so far
-  glm::vec2 viewport{1280.0f, 720.0f};  ///< window size [screen coordinates]
-  std::optional<int> picked;          ///< handle being dragged, else the last one dragged
-  bool hasBounds = false;             ///< the scene drew something
+  long frame = 0;                              ///< frames displayed so far
+  glm::vec2 viewport{1280.0f, 720.0f};         ///< window size [screen coordinates]
+  std::optional<int> picked;                   ///< handle being dragged, else the last one dragged
+  bool hasBounds = false;                      ///< the scene drew something
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  ///< [m] of what it drew this frame
 };
 
 /// The status of this frame. Call after ImGui::Render() (it lists the ImGui windows drawn).
-nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const graphics::OrbitCamera& camera, const UiFrame& frame);
+nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const graphics::OrbitCamera& camera,
+                        const UiFrame& frame);
 /// Writes `status` to `path` through a temporary file and a rename, so a reader never sees half a file.
 Status writeUiStatus(const std::string& path, const nlohmann::json& status);
 

@@ -16,7 +16,7 @@ struct UiFonts {
   LectureFonts lecture;       ///< 24 px and 19 px × content scale: windows up to about 900 px high
   LectureFonts lectureLarge;  ///< 32 px and 25 px: taller windows (1920×1080), the same share of the screen
   float contentScale = 1.0f;
-  int appliedStyle = -1;      ///< 0 normal, 1 lecture, 2 large lecture, -1 none yet
+  int appliedStyle = -1;  ///< 0 normal, 1 lecture, 2 large lecture, -1 none yet
 };
 
 /// Loads the fonts into the current ImGui context (before the first frame).

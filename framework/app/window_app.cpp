@@ -24,6 +24,7 @@
 #include "app/ui_status.h"
 #include "app/ui_style.h"
 #include "app/window_input.h"
+#include "app/window_recording.h"
 #include "graphics/debug_renderer.h"
 #include "graphics/renderer.h"
 #include "graphics/screenshot.h"
@@ -32,7 +33,7 @@
 namespace pba::app {
 namespace {
 
-constexpr int kMaxStepsPerFrame = 2000;  // bounds one frame's physics so the window stays responsive
+constexpr int kMaxStepsPerFrame = 2000;   // bounds one frame's physics so the window stays responsive
 constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame (dragging the window) never jumps far
 constexpr float kMinFramedPitch = 0.12f;  // [rad] F keeps a pitch in this range, else restores the default
 constexpr float kMaxFramedPitch = 1.35f;  // [rad]
@@ -69,9 +70,10 @@ void drawLabels(const graphics::DebugRenderer& debug, const graphics::OrbitCamer
     if (!label.visible) continue;
     const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
     const LabelBox box = placeLabel(label.pixel.x, label.pixel.y, size.x, size.y, gap, area);
-    list->AddRectFilled(ImVec2(box.x0 - halo, box.y0 - halo), ImVec2(box.x1 + halo, box.y1 + halo), IM_COL32(255, 255, 255, 190),
-                        halo);
-    const ImU32 colour = ImGui::ColorConvertFloat4ToU32(ImVec4(label.color.r, label.color.g, label.color.b, label.color.a));
+    list->AddRectFilled(ImVec2(box.x0 - halo, box.y0 - halo), ImVec2(box.x1 + halo, box.y1 + halo),
+                        IM_COL32(255, 255, 255, 190), halo);
+    const ImU32 colour =
+        ImGui::ColorConvertFloat4ToU32(ImVec4(label.color.r, label.color.g, label.color.b, label.color.a));
     list->AddText(ImVec2(box.x0, box.y0), colour, label.text.c_str());
   }
 }
@@ -107,7 +109,8 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
     lo.y = std::min(lo.y, 0.0f);  // keep the ground in view
     // F always recovers a view: a camera left looking along the ground or from far overhead gets the
     // default elevation back (frame() keeps yaw and pitch).
-    if (!(camera.pitch >= kMinFramedPitch && camera.pitch <= kMaxFramedPitch)) camera.pitch = graphics::OrbitCamera{}.pitch;
+    if (!(camera.pitch >= kMinFramedPitch && camera.pitch <= kMaxFramedPitch))
+      camera.pitch = graphics::OrbitCamera{}.pitch;
     camera.frame(lo, hi, aspect);
     camera.zoom(-2.0f);  // a margin around the scene: room to move
     camera.pan(0.5f * (panelPixels - overlayPixels), plotsShown ? -0.12f * viewport.y : 0.0f, viewport);
@@ -117,7 +120,8 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
 }  // namespace
 
 int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner) {
-  const bool capture = !options.screenshot.empty();
+  const bool recordCli = !options.record.empty();
+  const bool capture = !options.screenshot.empty() || recordCli;
   const std::string settingsDir = capture ? std::string() : settingsDirectory(lab);
   LabSession session(lab, runner, options.seed);
   session.settings() = loadLabSettings(settingsDir);
@@ -140,7 +144,8 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     std::cerr << "pba-" << lab << ": " << error << '\n';
     return kExitInternal;
   }
-  std::unique_ptr<graphics::Renderer> renderer = graphics::Renderer::create(std::string(PBA_RESOURCE_DIR) + "/shaders", &error);
+  std::unique_ptr<graphics::Renderer> renderer =
+      graphics::Renderer::create(std::string(PBA_RESOURCE_DIR) + "/shaders", &error);
   if (!renderer) {
     std::cerr << "pba-" << lab << ": " << error << '\n';
     return kExitInternal;
@@ -159,6 +164,16 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   WindowInput input;
   input.install(window->handle());
   const long captureFrames = options.frameCount();
+  WindowRecording recording;
+  if (recordCli) {
+    const glm::ivec2 fb = window->framebufferSize();
+    if (Status s = recording.start(options.record, fb.x, fb.y, captureFrames); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+    ui.hideUi = !options.recordUi;
+  }
+  std::string title = desc.title;
   std::string statusPath = uiStatusPath();  // tests/ui: the machine-readable status of every frame
   long frame = 0;
   auto last = std::chrono::steady_clock::now();
@@ -188,10 +203,14 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     const float panelPixels = ui.hideUi ? 0.0f : panelWidthPixels(ui);
     const float overlayPixels = ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(ui);
     if (session.takeFrameRequest() || ui.frameRequested) {
-      frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels, !ui.hideUi && !session.settings().plotted.empty());
+      frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels,
+                  !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }
-    runner.advanceFrame(capture ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds), capture ? -1 : kMaxStepsPerFrame);
+    // Captures and recordings advance exactly one display frame of simulated time per frame.
+    const bool fixedFrames = capture || recording.active();
+    runner.advanceFrame(fixedFrames ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds),
+                        fixedFrames ? -1 : kMaxStepsPerFrame);
     if (!runner.paused() || input.dragging()) session.recordPlots();  // a paused plot stays still
 
     renderer->beginFrame(camera, fb.x, fb.y);
@@ -210,7 +229,32 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
 
     ++frame;
     const bool captureNow = capture && frame >= captureFrames;
-    if (ui.screenshotRequested || captureNow) {
+    if (recording.active()) {
+      if (Status s = recording.capture(fb.x, fb.y); !s) {
+        std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+        static_cast<void>(recording.finish());
+        if (recordCli) {
+          exitCode = kExitBadInput;
+          break;
+        }
+        session.setMessage(s.error());
+      }
+    }
+    // F9 takes effect after this frame's capture: a recording holds whole frames of fixed steps.
+    if (ui.recordRequested) {
+      ui.recordRequested = false;
+      if (!capture) {
+        const std::string said = recording.toggle(lab, runner.sceneName(), fb.x, fb.y);
+        session.setMessage(said);
+        ui.showNotice(said, ImGui::GetTime());
+      }
+    }
+    ui.recording = recording.statusText();
+    if (const std::string t = desc.title + (ui.recording.empty() ? "" : "  -  " + ui.recording); t != title) {
+      window->setTitle(t);
+      title = t;
+    }
+    if (ui.screenshotRequested || (captureNow && !recordCli)) {
       const std::string path = captureNow ? options.screenshot : timestampedScreenshotName(lab, runner.sceneName());
       if (!graphics::saveScreenshot(path, fb.x, fb.y, &error)) {
         std::cerr << "pba-" << lab << ": " << error << '\n';
@@ -232,9 +276,21 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     if (captureNow) break;
   }
 
+  nlohmann::json recorded = nullptr;
+  if (recording.active()) {
+    const long frames = recording.frames();
+    if (Result<std::string> done = recording.finish(); !done) {
+      std::cerr << "pba-" << lab << ": " << done.error() << '\n';
+      if (recordCli) exitCode = kExitBadInput;
+    } else {
+      std::cerr << "pba-" << lab << ": " << done.value() << '\n';
+      if (recordCli) recorded = {{"path", options.record}, {"frames", frames}};
+    }
+  }
   if (capture && !options.metrics.empty()) {
     nlohmann::json report = metricsReport(lab, runner, frame);
     report["gl_renderer"] = window->glRenderer();
+    if (!recorded.is_null()) report["recording"] = recorded;
     if (Status s = writeMetrics(report, options.metrics); !s) {
       std::cerr << "pba-" << lab << ": " << s.error() << '\n';
       return kExitBadInput;

@@ -53,18 +53,41 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
     }
     switch (key) {
       case GLFW_KEY_SPACE:
-      case GLFW_KEY_P: session.togglePause(); break;
-      case GLFW_KEY_O: session.singleStep(); break;  // held: repeats
-      case GLFW_KEY_R: session.reset(); break;
-      case GLFW_KEY_LEFT_BRACKET: session.nextScene(-1); break;
-      case GLFW_KEY_RIGHT_BRACKET: session.nextScene(+1); break;
+      case GLFW_KEY_P:
+        session.togglePause();
+        break;
+      case GLFW_KEY_O:
+        session.singleStep();
+        break;  // held: repeats
+      case GLFW_KEY_R:
+        session.reset();
+        break;
+      case GLFW_KEY_LEFT_BRACKET:
+        session.nextScene(-1);
+        break;
+      case GLFW_KEY_RIGHT_BRACKET:
+        session.nextScene(+1);
+        break;
       case GLFW_KEY_F1:
-      case GLFW_KEY_H: ui.showHelp = !ui.showHelp; break;
-      case GLFW_KEY_F12: ui.screenshotRequested = true; break;
+      case GLFW_KEY_H:
+        ui.showHelp = !ui.showHelp;
+        break;
+      case GLFW_KEY_F12:
+        ui.screenshotRequested = true;
+        break;
+      case GLFW_KEY_F9:
+        ui.recordRequested = true;
+        break;
       // Mode changes wait for the end of the frame (UiState::applyPending).
-      case GLFW_KEY_L: ui.request(UiChange::ToggleLecture); break;
-      case GLFW_KEY_TAB: ui.request(UiChange::ToggleHideUi); break;
-      case GLFW_KEY_F: ui.frameRequested = true; break;
+      case GLFW_KEY_L:
+        ui.request(UiChange::ToggleLecture);
+        break;
+      case GLFW_KEY_TAB:
+        ui.request(UiChange::ToggleHideUi);
+        break;
+      case GLFW_KEY_F:
+        ui.frameRequested = true;
+        break;
       default:
         if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) session.applyPreset(key - GLFW_KEY_1);
         break;
@@ -106,9 +129,12 @@ void WindowInput::mouse(LabSession& session, graphics::OrbitCamera& camera, floa
   if (overUi) return;
 
   const ImVec2 delta = io.MouseDelta;
-  const bool panning = ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDown(ImGuiMouseButton_Right));
-  if (panning) camera.pan(delta.x, delta.y, glm::vec2(w, h));
-  else if (ImGui::IsMouseDown(ImGuiMouseButton_Right)) camera.rotate(delta.x, delta.y);
+  const bool panning =
+      ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDown(ImGuiMouseButton_Right));
+  if (panning)
+    camera.pan(delta.x, delta.y, glm::vec2(w, h));
+  else if (ImGui::IsMouseDown(ImGuiMouseButton_Right))
+    camera.rotate(delta.x, delta.y);
   if (io.MouseWheel != 0.0f) camera.zoom(io.MouseWheel);
 }
 

@@ -35,9 +35,9 @@ class WindowInput {
     int mods = 0;  ///< GLFW modifier bits
   };
   std::vector<KeyPress> pressed_;  ///< keys pressed since the last frame
-  std::optional<int> handle_;  ///< the scene object being dragged
+  std::optional<int> handle_;      ///< the scene object being dragged
   std::optional<int> lastHandle_;  ///< the one dragged before
-  Vec3 planePoint_{0.0};       ///< the drag plane faces the camera through the picked point
+  Vec3 planePoint_{0.0};           ///< the drag plane faces the camera through the picked point
   Vec3 planeNormal_{0.0, 0.0, 1.0};
   Vec3 grabOffset_{0.0};  ///< [m] object position − grab point (Scene::dragHandles), kept while dragging
 };

@@ -9,7 +9,7 @@
 namespace pba::graphics {
 
 struct Ray {
-  glm::vec3 origin{0.0f};     ///< camera eye, m
+  glm::vec3 origin{0.0f};                  ///< camera eye, m
   glm::vec3 direction{0.0f, 0.0f, -1.0f};  ///< unit
 };
 
@@ -26,12 +26,12 @@ class OrbitCamera {
   static constexpr float kMaxDistance = 1e5f;     ///< m
 
   glm::vec3 target{0.0f, 0.5f, 0.0f};  ///< orbit centre, m
-  float yaw = 0.6f;        ///< rad about +y; 0 looks from +z towards -z
-  float pitch = 0.45f;     ///< rad above the horizon (eye higher than target when > 0)
-  float distance = 6.0f;   ///< eye-to-target distance, m
-  float fovY = 0.7853982f; ///< vertical field of view, rad (45 degrees)
-  float nearPlane = 0.05f; ///< m
-  float farPlane = 500.0f; ///< m
+  float yaw = 0.6f;                    ///< rad about +y; 0 looks from +z towards -z
+  float pitch = 0.45f;                 ///< rad above the horizon (eye higher than target when > 0)
+  float distance = 6.0f;               ///< eye-to-target distance, m
+  float fovY = 0.7853982f;             ///< vertical field of view, rad (45 degrees)
+  float nearPlane = 0.05f;             ///< m
+  float farPlane = 500.0f;             ///< m
   /// The ground plane y = groundHeight [m] (the renderer's grid) stays below the eye: clampState keeps
   /// the target on or above it and the eye at least minEyeHeight() above it, so no orbit, pan or zoom
   /// looks at the ground from below (which shows nothing but the grid's underside). keepAboveGround

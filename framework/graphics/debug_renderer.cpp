@@ -87,11 +87,21 @@ void DebugRenderer::label(const glm::vec3& position, const std::string& text, co
 void DebugRenderer::flush(Renderer& renderer) const {
   for (const Solid& s : solids_) {
     switch (s.shape) {
-      case Shape::Sphere: renderer.drawSphere(s.a, s.radius, s.color); break;
-      case Shape::Box: renderer.drawBox(s.a, s.half, s.rotation, s.color); break;
-      case Shape::Capsule: renderer.drawCapsule(s.a, s.b, s.radius, s.color); break;
-      case Shape::Cylinder: renderer.drawCylinder(s.a, s.b, s.radius, s.color); break;
-      case Shape::Cone: renderer.drawCone(s.a, s.b, s.radius, s.color); break;
+      case Shape::Sphere:
+        renderer.drawSphere(s.a, s.radius, s.color);
+        break;
+      case Shape::Box:
+        renderer.drawBox(s.a, s.half, s.rotation, s.color);
+        break;
+      case Shape::Capsule:
+        renderer.drawCapsule(s.a, s.b, s.radius, s.color);
+        break;
+      case Shape::Cylinder:
+        renderer.drawCylinder(s.a, s.b, s.radius, s.color);
+        break;
+      case Shape::Cone:
+        renderer.drawCone(s.a, s.b, s.radius, s.color);
+        break;
     }
   }
   for (const auto& [mesh, color] : meshes_) renderer.drawTriangles(mesh, color);
@@ -108,7 +118,8 @@ void DebugRenderer::clear() {
   hasBounds_ = false;
 }
 
-std::vector<ScreenLabel> DebugRenderer::projectLabels(const OrbitCamera& camera, float viewportW, float viewportH) const {
+std::vector<ScreenLabel> DebugRenderer::projectLabels(const OrbitCamera& camera, float viewportW,
+                                                      float viewportH) const {
   std::vector<ScreenLabel> out;
   out.reserve(labels_.size());
   for (const Label& l : labels_) {

@@ -60,8 +60,8 @@ class DebugRenderer {
   enum class Shape { Sphere, Box, Capsule, Cylinder, Cone };
   struct Solid {
     Shape shape;
-    glm::vec3 a, b;   ///< sphere/box: centre in a; segments: a -> b
-    glm::vec3 half;   ///< box half extents
+    glm::vec3 a, b;  ///< sphere/box: centre in a; segments: a -> b
+    glm::vec3 half;  ///< box half extents
     glm::quat rotation;
     float radius;
     glm::vec4 color;

@@ -63,7 +63,8 @@ void LineRenderer::clear() {
   points_.clear();
 }
 
-void LineRenderer::draw(const glm::mat4& viewProj, const glm::vec2& viewport, float lineWidthPx, float pointScale) const {
+void LineRenderer::draw(const glm::mat4& viewProj, const glm::vec2& viewport, float lineWidthPx,
+                        float pointScale) const {
   if (!lines_.empty()) {
     lineShader_->use();
     lineShader_->set("uViewProj", viewProj);

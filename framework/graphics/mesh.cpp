@@ -23,8 +23,8 @@ Mesh::Mesh(const MeshData& data) : indexCount_(static_cast<GLsizei>(data.indices
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
   glGenBuffers(1, &normalVbo_);
   glBindBuffer(GL_ARRAY_BUFFER, normalVbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.normals.size() * sizeof(glm::vec3)),
-               data.normals.data(), GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.normals.size() * sizeof(glm::vec3)), data.normals.data(),
+               GL_STATIC_DRAW);
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
   glGenBuffers(1, &ebo_);
@@ -64,8 +64,8 @@ void Mesh::update(const MeshData& data) {
   }
   glBindVertexArray(vao_);
   glBindBuffer(GL_ARRAY_BUFFER, positionVbo_);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.positions.size() * sizeof(glm::vec3)), data.positions.data(),
-               GL_STREAM_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.positions.size() * sizeof(glm::vec3)),
+               data.positions.data(), GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, normalVbo_);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.normals.size() * sizeof(glm::vec3)), data.normals.data(),
                GL_STREAM_DRAW);
@@ -85,8 +85,7 @@ void Mesh::drawInstanced(const std::vector<Instance>& instances) const {
     glBufferData(GL_ARRAY_BUFFER, instanceCapacity_, nullptr, GL_STREAM_DRAW);
   }
   glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, instances.data());
-  glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr,
-                          static_cast<GLsizei>(instances.size()));
+  glDrawElementsInstanced(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(instances.size()));
   glBindVertexArray(0);
 }
 

@@ -17,7 +17,7 @@ namespace pba::graphics {
 
 struct MeshData {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;  ///< unit, one per position
+  std::vector<glm::vec3> normals;      ///< unit, one per position
   std::vector<std::uint32_t> indices;  ///< triangles, counter-clockwise seen from outside
 
   std::size_t triangleCount() const { return indices.size() / 3; }

@@ -1,9 +1,9 @@
 // Assimp import into the plain Model structure (see model.h).
 #include "graphics/model.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -83,7 +83,8 @@ ModelMesh convertMesh(const aiMesh* src, const aiScene* scene, Model& model) {
     int id = model.findBone(bone->mName.C_Str());
     if (id < 0) {
       id = static_cast<int>(model.bones.size());
-      model.bones.push_back(ModelBone{bone->mName.C_Str(), model.findNode(bone->mName.C_Str()), toGlm(bone->mOffsetMatrix)});
+      model.bones.push_back(
+          ModelBone{bone->mName.C_Str(), model.findNode(bone->mName.C_Str()), toGlm(bone->mOffsetMatrix)});
     }
     for (unsigned w = 0; w < bone->mNumWeights; ++w) {
       const aiVertexWeight& vw = bone->mWeights[w];
@@ -121,7 +122,8 @@ Animation convertAnimation(const aiAnimation* src, const Model& model) {
     }
     for (unsigned k = 0; k < ch->mNumRotationKeys; ++k) {
       const aiQuatKey& key = ch->mRotationKeys[k];
-      channel.rotations.push_back({seconds(key.mTime), glm::quat(key.mValue.w, key.mValue.x, key.mValue.y, key.mValue.z)});
+      channel.rotations.push_back(
+          {seconds(key.mTime), glm::quat(key.mValue.w, key.mValue.x, key.mValue.y, key.mValue.z)});
     }
     for (unsigned k = 0; k < ch->mNumScalingKeys; ++k) {
       const aiVectorKey& key = ch->mScalingKeys[k];
@@ -184,7 +186,8 @@ std::optional<Model> loadModel(const std::string& path, std::string* error) {
     model.meshes.push_back(convertMesh(scene->mMeshes[m], scene, model));
   }
   assignMeshNodes(scene->mRootNode, nodeIndex, model);
-  for (unsigned a = 0; a < scene->mNumAnimations; ++a) model.animations.push_back(convertAnimation(scene->mAnimations[a], model));
+  for (unsigned a = 0; a < scene->mNumAnimations; ++a)
+    model.animations.push_back(convertAnimation(scene->mAnimations[a], model));
   if (model.bones.size() > static_cast<std::size_t>(kMaxSkinningBones)) {
     return fail("has " + std::to_string(model.bones.size()) + " bones; the skinning shader supports " +
                 std::to_string(kMaxSkinningBones));

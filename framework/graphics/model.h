@@ -33,14 +33,14 @@ struct ModelMesh {
 
 struct ModelNode {
   std::string name;
-  int parent = -1;           ///< index in Model::nodes, -1 for the root; always < own index
-  glm::mat4 local{1.0f};     ///< transform relative to the parent (bind / rest pose)
+  int parent = -1;        ///< index in Model::nodes, -1 for the root; always < own index
+  glm::mat4 local{1.0f};  ///< transform relative to the parent (bind / rest pose)
 };
 
 struct ModelBone {
   std::string name;
-  int node = -1;             ///< node whose global transform drives the bone
-  glm::mat4 offset{1.0f};    ///< inverse bind matrix: mesh space -> bone space at bind pose
+  int node = -1;           ///< node whose global transform drives the bone
+  glm::mat4 offset{1.0f};  ///< inverse bind matrix: mesh space -> bone space at bind pose
 };
 
 template <typename T>

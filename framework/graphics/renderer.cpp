@@ -31,10 +31,10 @@ glm::vec4 lectureContrast(const glm::vec4& c) { return glm::vec4(glm::pow(glm::v
 struct GridColors {
   glm::vec3 ground, minor, major, axisX, axisZ;
 };
-constexpr GridColors kGridColors{{0.90f, 0.905f, 0.91f}, {0.78f, 0.79f, 0.81f}, {0.60f, 0.62f, 0.66f}, {0.85f, 0.45f, 0.42f},
-                                 {0.42f, 0.56f, 0.86f}};
-constexpr GridColors kLectureGridColors{{0.95f, 0.955f, 0.96f}, {0.62f, 0.63f, 0.66f}, {0.36f, 0.38f, 0.42f},
-                                        {0.80f, 0.22f, 0.18f}, {0.16f, 0.36f, 0.80f}};
+constexpr GridColors kGridColors{
+    {0.90f, 0.905f, 0.91f}, {0.78f, 0.79f, 0.81f}, {0.60f, 0.62f, 0.66f}, {0.85f, 0.45f, 0.42f}, {0.42f, 0.56f, 0.86f}};
+constexpr GridColors kLectureGridColors{
+    {0.95f, 0.955f, 0.96f}, {0.62f, 0.63f, 0.66f}, {0.36f, 0.38f, 0.42f}, {0.80f, 0.22f, 0.18f}, {0.16f, 0.36f, 0.80f}};
 // Lecture mode's background: nearly white, barely graded, so the scene's colours carry the picture.
 constexpr glm::vec3 kLectureBackgroundTop{0.90f, 0.93f, 0.96f};
 constexpr glm::vec3 kLectureBackgroundBottom{1.0f, 1.0f, 1.0f};
@@ -87,7 +87,8 @@ std::unique_ptr<Renderer> Renderer::create(const std::string& shaderDir, std::st
   glGenVertexArrays(1, &r->emptyVao_);
   glGenBuffers(1, &r->boneUbo_);
   glBindBuffer(GL_UNIFORM_BUFFER, r->boneUbo_);
-  glBufferData(GL_UNIFORM_BUFFER, kMaxSkinningBones * static_cast<GLsizeiptr>(sizeof(glm::mat4)), nullptr, GL_DYNAMIC_DRAW);
+  glBufferData(GL_UNIFORM_BUFFER, kMaxSkinningBones * static_cast<GLsizeiptr>(sizeof(glm::mat4)), nullptr,
+               GL_DYNAMIC_DRAW);
   glBindBuffer(GL_UNIFORM_BUFFER, 0);
   const GLenum glError = glGetError();
   if (glError != GL_NO_ERROR) {
@@ -146,7 +147,8 @@ void Renderer::drawSphere(const glm::vec3& center, float radius, const glm::vec4
 void Renderer::drawBox(const glm::vec3& center, const glm::vec3& halfExtents, const glm::quat& rotation,
                        const glm::vec4& color) {
   const glm::vec3 h = glm::max(glm::abs(halfExtents), glm::vec3(kMinLength));
-  addInstance(*box_, glm::translate(glm::mat4(1.0f), center) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), h),
+  addInstance(*box_,
+              glm::translate(glm::mat4(1.0f), center) * glm::mat4_cast(rotation) * glm::scale(glm::mat4(1.0f), h),
               color);
 }
 
@@ -165,11 +167,15 @@ void Renderer::drawCone(const glm::vec3& base, const glm::vec3& apex, float radi
   addInstance(*cone_, segmentTransform(base, apex, radius), color);
 }
 
-void Renderer::drawLine(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color) { drawLine(a, b, color, color); }
+void Renderer::drawLine(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color) {
+  drawLine(a, b, color, color);
+}
 
 void Renderer::drawLine(const glm::vec3& a, const glm::vec3& b, const glm::vec4& colorA, const glm::vec4& colorB) {
-  if (settings_.lectureMode) lines_->addLine(a, b, lectureContrast(colorA), lectureContrast(colorB));
-  else lines_->addLine(a, b, colorA, colorB);
+  if (settings_.lectureMode)
+    lines_->addLine(a, b, lectureContrast(colorA), lectureContrast(colorB));
+  else
+    lines_->addLine(a, b, colorA, colorB);
   grow(a);
   grow(b);
 }
@@ -202,7 +208,8 @@ void Renderer::drawSkinned(const SkinnedMesh& mesh, const std::vector<glm::mat4>
   // Bounds: bind-pose box moved by each bone's skinning matrix (conservative enough for framing).
   for (const glm::mat4& s : skinned_.back().skinning) {
     for (int i = 0; i < 8; ++i) {
-      const glm::vec3 c((i & 1) ? mesh.boundsMax().x : mesh.boundsMin().x, (i & 2) ? mesh.boundsMax().y : mesh.boundsMin().y,
+      const glm::vec3 c((i & 1) ? mesh.boundsMax().x : mesh.boundsMin().x,
+                        (i & 2) ? mesh.boundsMax().y : mesh.boundsMin().y,
                         (i & 4) ? mesh.boundsMax().z : mesh.boundsMin().z);
       grow(glm::vec3(model * s * glm::vec4(c, 1.0f)));
     }

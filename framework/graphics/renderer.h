@@ -25,13 +25,13 @@ class SkinnedMesh;
 
 struct RendererSettings {
   bool shadows = true;
-  bool grid = true;                 ///< ground plane with the 1 m / 5 m grid at y = 0
-  int shadowMapSize = 2048;         ///< texels per side
+  bool grid = true;          ///< ground plane with the 1 m / 5 m grid at y = 0
+  int shadowMapSize = 2048;  ///< texels per side
   float lineWidthPx = 2.0f;
-  bool lectureMode = false;         ///< thicker lines, bigger dots (projectors)
+  bool lectureMode = false;  ///< thicker lines, bigger dots (projectors)
   glm::vec3 lightDirection = glm::normalize(glm::vec3(-0.45f, 0.85f, 0.35f));  ///< towards the light
-  glm::vec3 backgroundTop{0.74f, 0.81f, 0.89f};     ///< sRGB
-  glm::vec3 backgroundBottom{0.95f, 0.96f, 0.97f};  ///< sRGB
+  glm::vec3 backgroundTop{0.74f, 0.81f, 0.89f};                                ///< sRGB
+  glm::vec3 backgroundBottom{0.95f, 0.96f, 0.97f};                             ///< sRGB
 };
 
 struct FrameStats {
@@ -51,7 +51,8 @@ class Renderer {
 
   void beginFrame(const OrbitCamera& camera, int viewportW, int viewportH);
   void drawSphere(const glm::vec3& center, float radius, const glm::vec4& color);
-  void drawBox(const glm::vec3& center, const glm::vec3& halfExtents, const glm::quat& rotation, const glm::vec4& color);
+  void drawBox(const glm::vec3& center, const glm::vec3& halfExtents, const glm::quat& rotation,
+               const glm::vec4& color);
   void drawCylinder(const glm::vec3& a, const glm::vec3& b, float radius, const glm::vec4& color);
   void drawCapsule(const glm::vec3& a, const glm::vec3& b, float radius, const glm::vec4& color);
   void drawCone(const glm::vec3& base, const glm::vec3& apex, float radius, const glm::vec4& color);

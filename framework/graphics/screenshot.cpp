@@ -14,10 +14,10 @@
 
 namespace pba::graphics {
 
-bool saveScreenshot(const std::string& path, int width, int height, std::string* error) {
+bool readFramebuffer(int width, int height, std::vector<unsigned char>& rgb, std::string* error) {
   if (width <= 0 || height <= 0) {
-    if (error) *error = path + ": cannot capture an empty framebuffer (" + std::to_string(width) + "x" +
-                        std::to_string(height) + ")";
+    if (error)
+      *error = "cannot capture an empty framebuffer (" + std::to_string(width) + "x" + std::to_string(height) + ")";
     return false;
   }
   const auto w = static_cast<std::size_t>(width), h = static_cast<std::size_t>(height);
@@ -28,15 +28,25 @@ bool saveScreenshot(const std::string& path, int width, int height, std::string*
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
   const GLenum glError = glGetError();
   if (glError != GL_NO_ERROR) {
-    if (error) *error = path + ": glReadPixels failed with OpenGL error " + std::to_string(glError);
+    if (error) *error = "glReadPixels failed with OpenGL error " + std::to_string(glError);
     return false;
   }
-  // OpenGL rows go bottom-up; PNG rows top-down. Drop alpha (the window is opaque).
-  std::vector<unsigned char> rgb(w * h * 3);
+  // OpenGL rows go bottom-up; images top-down. Drop alpha (the window is opaque).
+  rgb.resize(w * h * 3);
   for (std::size_t y = 0; y < h; ++y) {
     const unsigned char* src = &rgba[(h - 1 - y) * w * 4];
     unsigned char* dst = &rgb[y * w * 3];
     for (std::size_t x = 0; x < w; ++x) std::memcpy(dst + 3 * x, src + 4 * x, 3);
+  }
+  return true;
+}
+
+bool saveScreenshot(const std::string& path, int width, int height, std::string* error) {
+  std::vector<unsigned char> rgb;
+  std::string why;
+  if (!readFramebuffer(width, height, rgb, &why)) {
+    if (error) *error = path + ": " + why;
+    return false;
   }
   errno = 0;
   if (stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3) == 0) {
@@ -50,7 +60,8 @@ bool imageStats(const std::string& path, ImageStats* stats, std::string* error) 
   int w = 0, h = 0, channels = 0;
   unsigned char* pixels = stbi_load(path.c_str(), &w, &h, &channels, 3);
   if (!pixels) {
-    if (error) *error = path + ": cannot read image (" + std::string(stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
+    if (error)
+      *error = path + ": cannot read image (" + std::string(stbi_failure_reason() ? stbi_failure_reason() : "?") + ")";
     return false;
   }
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);

@@ -3,11 +3,15 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace pba::graphics {
 
-/// Reads the default framebuffer's back buffer (call before swapBuffers), flips it to top-down rows
-/// and writes an RGB PNG. false + *error naming the path on failure.
+/// Reads the default framebuffer's back buffer (call before swapBuffers) into `rgb`: width × height
+/// RGB bytes, rows top-down. false + *error on an empty framebuffer or an OpenGL error.
+bool readFramebuffer(int width, int height, std::vector<unsigned char>& rgb, std::string* error);
+
+/// readFramebuffer, then an RGB PNG at `path`. false + *error naming the path on failure.
 bool saveScreenshot(const std::string& path, int width, int height, std::string* error);
 
 struct ImageStats {

@@ -3,10 +3,10 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <cstdio>
 #include <sstream>
 
 namespace pba::graphics {
@@ -41,8 +41,7 @@ bool readText(const std::string& path, std::string* text) {
   return true;
 }
 
-bool expand(const std::string& path, int depth, std::vector<std::string>& files, std::string* out,
-            std::string* error) {
+bool expand(const std::string& path, int depth, std::vector<std::string>& files, std::string* out, std::string* error) {
   if (depth > 8) {
     if (error) *error = path + ": #include nested too deeply (cycle?)";
     return false;
@@ -138,7 +137,8 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
       out += location(number) + ": " + line.substr(static_cast<std::size_t>(used)) + "\n";
     } else if (used = 0; std::sscanf(line.c_str(), "%ld(%ld) : %n", &source, &number, &used) == 2 && used > 0) {
       out += location(number) + ": " + line.substr(static_cast<std::size_t>(used)) + "\n";
-    } else if (used = 0; std::sscanf(line.c_str(), "%7[A-Z]: %ld:%ld: %n", kind, &source, &number, &used) == 3 && used > 0) {
+    } else if (used = 0;
+               std::sscanf(line.c_str(), "%7[A-Z]: %ld:%ld: %n", kind, &source, &number, &used) == 3 && used > 0) {
       out += location(number) + ": " + kind + ": " + line.substr(static_cast<std::size_t>(used)) + "\n";
     } else {
       out += line + "\n";
@@ -160,8 +160,8 @@ std::unique_ptr<ShaderProgram> ShaderProgram::loadFiles(const std::string& verte
     GLenum type;
     const std::string* path;
   };
-  const Stage stages[] = {{GL_VERTEX_SHADER, &vertexPath}, {GL_GEOMETRY_SHADER, &geometryPath},
-                          {GL_FRAGMENT_SHADER, &fragmentPath}};
+  const Stage stages[] = {
+      {GL_VERTEX_SHADER, &vertexPath}, {GL_GEOMETRY_SHADER, &geometryPath}, {GL_FRAGMENT_SHADER, &fragmentPath}};
   std::vector<GLuint> shaders;
   auto cleanup = [&] {
     for (GLuint s : shaders) glDeleteShader(s);
@@ -211,9 +211,15 @@ GLint ShaderProgram::location(const std::string& uniform) const {
 
 void ShaderProgram::set(const std::string& u, int v) const { glUniform1i(location(u), v); }
 void ShaderProgram::set(const std::string& u, float v) const { glUniform1f(location(u), v); }
-void ShaderProgram::set(const std::string& u, const glm::vec2& v) const { glUniform2fv(location(u), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const std::string& u, const glm::vec3& v) const { glUniform3fv(location(u), 1, glm::value_ptr(v)); }
-void ShaderProgram::set(const std::string& u, const glm::vec4& v) const { glUniform4fv(location(u), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const std::string& u, const glm::vec2& v) const {
+  glUniform2fv(location(u), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const std::string& u, const glm::vec3& v) const {
+  glUniform3fv(location(u), 1, glm::value_ptr(v));
+}
+void ShaderProgram::set(const std::string& u, const glm::vec4& v) const {
+  glUniform4fv(location(u), 1, glm::value_ptr(v));
+}
 void ShaderProgram::set(const std::string& u, const glm::mat3& v) const {
   glUniformMatrix3fv(location(u), 1, GL_FALSE, glm::value_ptr(v));
 }

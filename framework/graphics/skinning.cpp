@@ -15,8 +15,8 @@ template <typename T>
 std::pair<std::size_t, float> bracket(const std::vector<Key<T>>& keys, float t) {
   if (keys.size() < 2 || t <= keys.front().time) return {0, 0.0f};
   if (t >= keys.back().time) return {keys.size() - 1, 0.0f};
-  const auto upper = std::upper_bound(keys.begin(), keys.end(), t,
-                                      [](float time, const Key<T>& key) { return time < key.time; });
+  const auto upper =
+      std::upper_bound(keys.begin(), keys.end(), t, [](float time, const Key<T>& key) { return time < key.time; });
   const std::size_t i = static_cast<std::size_t>(upper - keys.begin()) - 1;
   const float span = keys[i + 1].time - keys[i].time;
   return {i, span > 1e-9f ? (t - keys[i].time) / span : 0.0f};
@@ -61,7 +61,8 @@ std::vector<glm::mat4> bindPoseGlobals(const Model& model) {
   std::vector<int> boneOfNode(model.nodes.size(), -1);
   for (std::size_t b = 0; b < model.bones.size(); ++b) {
     const int node = model.bones[b].node;
-    if (node >= 0 && static_cast<std::size_t>(node) < boneOfNode.size()) boneOfNode[static_cast<std::size_t>(node)] = static_cast<int>(b);
+    if (node >= 0 && static_cast<std::size_t>(node) < boneOfNode.size())
+      boneOfNode[static_cast<std::size_t>(node)] = static_cast<int>(b);
   }
   for (std::size_t i = 0; i < model.nodes.size(); ++i) {
     const int parent = model.nodes[i].parent;

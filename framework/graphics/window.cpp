@@ -75,12 +75,12 @@ std::unique_ptr<Window> Window::create(const WindowDesc& desc, std::string* erro
   const GLenum glewStatus = glewInit();
   // GLEW 2.x may return GLEW_ERROR_NO_GLX_DISPLAY on EGL/Wayland contexts although GL works.
   if (glewStatus != GLEW_OK && glGenVertexArrays == nullptr) {
-    if (error) *error = std::string("cannot load OpenGL functions (GLEW): ") +
-                        reinterpret_cast<const char*>(glewGetErrorString(glewStatus));
+    if (error)
+      *error = std::string("cannot load OpenGL functions (GLEW): ") +
+               reinterpret_cast<const char*>(glewGetErrorString(glewStatus));
     return nullptr;
   }
-  while (glGetError() != GL_NO_ERROR) {
-  }  // glewInit leaves a GL_INVALID_ENUM behind in core profiles
+  while (glGetError() != GL_NO_ERROR) {}  // glewInit leaves a GL_INVALID_ENUM behind in core profiles
   glfwSwapInterval(desc.vsync ? 1 : 0);
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);

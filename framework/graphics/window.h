@@ -14,7 +14,7 @@ namespace pba::graphics {
 
 struct WindowDesc {
   std::string title = "PBA Labs";
-  int width = 1280;   ///< window size in screen coordinates
+  int width = 1280;  ///< window size in screen coordinates
   int height = 720;
   bool visible = true;  ///< under Xvfb keep it visible: hidden windows may not render with some Mesa setups
   bool vsync = true;
@@ -30,9 +30,9 @@ class Window {
   Window& operator=(const Window&) = delete;
 
   GLFWwindow* handle() const { return window_; }
-  glm::ivec2 framebufferSize() const;  ///< pixels (what glViewport wants)
-  glm::ivec2 windowSize() const;       ///< screen coordinates (what cursor positions use)
-  glm::vec2 contentScale() const;      ///< DPI scale, 1 on a normal monitor and under Xvfb
+  glm::ivec2 framebufferSize() const;       ///< pixels (what glViewport wants)
+  glm::ivec2 windowSize() const;            ///< screen coordinates (what cursor positions use)
+  glm::vec2 contentScale() const;           ///< DPI scale, 1 on a normal monitor and under Xvfb
   int samples() const { return samples_; }  ///< MSAA samples actually obtained
 
   bool shouldClose() const;

@@ -14,9 +14,12 @@ constexpr Color kWire{0.15f, 0.16f, 0.18f, 1.0f};
 constexpr Color kCollider{0.62f, 0.64f, 0.68f, 1.0f};
 // Strain bands: < 0.5 %, < 2 %, < 5 %, < 10 %, ≥ 10 %.
 constexpr std::array<Real, 4> kStrainBands{0.005, 0.02, 0.05, 0.10};
-constexpr std::array<Color, 5> kStrainColors{colors::kBlue, colors::kGreen, colors::kYellow, colors::kOrange, colors::kRed};
+constexpr std::array<Color, 5> kStrainColors{colors::kBlue, colors::kGreen, colors::kYellow, colors::kOrange,
+                                             colors::kRed};
 
-Color scaled(const Color& c, float k) { return {std::min(1.0f, c.r * k), std::min(1.0f, c.g * k), std::min(1.0f, c.b * k), c.a}; }
+Color scaled(const Color& c, float k) {
+  return {std::min(1.0f, c.r * k), std::min(1.0f, c.g * k), std::min(1.0f, c.b * k), c.a};
+}
 
 /// Two axes spanning the rest shape (the two largest extents of its bounding box), its low corner and a
 /// pattern cell size: a whole number of edge lengths (the shortest rest edge, a grid's spacing), so that
@@ -24,7 +27,7 @@ Color scaled(const Color& c, float k) { return {std::min(1.0f, c.r * k), std::mi
 struct RestFrame {
   int u = 0, v = 2;
   Vec3 origin{0.0};
-  Real cellU = 0.1, cellV = 0.1;  // [m]
+  Real cellU = 0.1, cellV = 0.1;    // [m]
   Real stepsU = 1.0, stepsV = 1.0;  // edge lengths per cell (whole numbers on a grid)
 };
 RestFrame restFrame(const Cloth& c) {
@@ -119,21 +122,27 @@ void ClothScene::drawCloth(DebugDraw& d, const Cloth& c, const Color& base) cons
   }
   const Real pinSize = std::max(0.01, 1.5 * thickness_);
   for (const Pin& p : c.pins) {
-    d.sphere(c.position[p.particle], pinSize, static_cast<int>(p.particle) == dragged_ ? colors::kYellow : colors::kRed);
+    d.sphere(c.position[p.particle], pinSize,
+             static_cast<int>(p.particle) == dragged_ ? colors::kYellow : colors::kRed);
   }
 }
 
 void ClothScene::drawColliders(DebugDraw& d) const {
   for (const Collider& c : colliders_) {
     switch (c.shape) {
-      case ColliderShape::Plane: break;  // the renderer's ground grid shows the floor at y = 0
-      case ColliderShape::Sphere: d.sphere(c.center, c.radius, kCollider); break;
+      case ColliderShape::Plane:
+        break;  // the renderer's ground grid shows the floor at y = 0
+      case ColliderShape::Sphere:
+        d.sphere(c.center, c.radius, kCollider);
+        break;
       case ColliderShape::Capsule: {
         const Vec3 axis = glm::normalize(c.orientation) * Vec3(0.0, c.halfLength, 0.0);
         d.capsule(c.center - axis, c.center + axis, c.radius, kCollider);
         break;
       }
-      case ColliderShape::Box: d.box(c.center, c.halfExtents, c.orientation, kCollider); break;
+      case ColliderShape::Box:
+        d.box(c.center, c.halfExtents, c.orientation, kCollider);
+        break;
     }
   }
 }

@@ -19,33 +19,39 @@ ClothScene::ClothScene() {
   params_.integer("substeps", &settings_.substeps, 1, 200, "",
                   "Substeps per step (explicit: symplectic Euler steps; pbd/xpbd: predict-solve-update cycles; "
                   "implicit: backward Euler steps). Typical 10 for xpbd, 1 for implicit.");
-  params_.real("stiffness", &stiffness_, 1.0, 1e6, "N/m",
-               "Stretch and shear spring constant of the mass-spring model (explicit, implicit). Typical 10³–10⁵.")
+  params_
+      .real("stiffness", &stiffness_, 1.0, 1e6, "N/m",
+            "Stretch and shear spring constant of the mass-spring model (explicit, implicit). Typical 10³–10⁵.")
       .logarithmic();
   params_.real("bend_stiffness", &bendStiffness_, 0.0, 1e5, "N/m",
                "Bend springs (skip one particle) of the mass-spring model. Typical 1–100.");
   params_.real("spring_damping", &springDamping_, 0.0, 10.0, "N·s/m",
                "Damping along every spring (resists the rate of stretch). Typical 0.02.");
-  params_.real("cg_tolerance", &settings_.implicit.cg.tolerance, 1e-12, 0.5, "",
-               "Implicit: relative residual (preconditioned norm) at which the conjugate gradient stops. Typical 10⁻³.")
+  params_
+      .real("cg_tolerance", &settings_.implicit.cg.tolerance, 1e-12, 0.5, "",
+            "Implicit: relative residual (preconditioned norm) at which the conjugate gradient stops. Typical 10⁻³.")
       .logarithmic()
       .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
-  params_.integer("cg_max_iterations", &settings_.implicit.cg.maxIterations, 1, 10000, "",
-                  "Implicit: at most this many conjugate-gradient iterations per step. Typical 500.")
+  params_
+      .integer("cg_max_iterations", &settings_.implicit.cg.maxIterations, 1, 10000, "",
+               "Implicit: at most this many conjugate-gradient iterations per step. Typical 500.")
       .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
-  params_.real("compliance", &compliance_, 0.0, 1e-2, "m/N",
-               "XPBD compliance α = 1/k of the stretch and shear constraints: 0 is inextensible. Independent of "
-               "iterations and substeps, unlike PBD's stiffness. Typical 0–10⁻⁴.")
+  params_
+      .real("compliance", &compliance_, 0.0, 1e-2, "m/N",
+            "XPBD compliance α = 1/k of the stretch and shear constraints: 0 is inextensible. Independent of "
+            "iterations and substeps, unlike PBD's stiffness. Typical 0–10⁻⁴.")
       .logarithmic();
   params_.choiceEnum("bending", &settings_.bending, {"isometric", "distance", "none"},
                      "Bending of pbd/xpbd: isometric (Bergou 2006, one linear constraint per inner edge), distance "
                      "(TMP #14–15: opposite vertices of each inner edge keep their rest distance) or none.");
-  params_.real("bend_compliance", &bendCompliance_, 0.0, 1e4, "1/(N·m)",
-               "XPBD compliance of isometric bending (Bergou 2006): larger is floppier. Typical 1–100.")
+  params_
+      .real("bend_compliance", &bendCompliance_, 0.0, 1e4, "1/(N·m)",
+            "XPBD compliance of isometric bending (Bergou 2006): larger is floppier. Typical 1–100.")
       .logarithmic()
       .shownWhen([this] { return settings_.bending == BendingModel::Isometric; });
-  params_.real("bend_link_compliance", &bendLinkCompliance_, 0.0, 100.0, "m/N",
-               "XPBD compliance of the distance bending links (TMP uses 1). Larger is floppier.")
+  params_
+      .real("bend_link_compliance", &bendLinkCompliance_, 0.0, 100.0, "m/N",
+            "XPBD compliance of the distance bending links (TMP uses 1). Larger is floppier.")
       .logarithmic()
       .shownWhen([this] { return settings_.bending == BendingModel::Distance; });
   params_.real("damping", &damping_, 0.0, 10.0, "1/s",
@@ -54,26 +60,30 @@ ClothScene::ClothScene() {
                "Particles keep this distance from each other (self-collision) and half of it from colliders.");
   params_.integer("resolution", &resolution_, 2, 256, "", "Particles along the cloth's first side. Typical 32.")
       .needsReset();
-  params_.choiceEnum("layout", &layout_, {"grid", "mesh"},
-                     "Springs of the mass-spring model: grid (Provot: axis neighbours, both diagonals, skip-one; "
-                     "CLOTH-1) or mesh (every edge, and across every inner edge).")
+  params_
+      .choiceEnum("layout", &layout_, {"grid", "mesh"},
+                  "Springs of the mass-spring model: grid (Provot: axis neighbours, both diagonals, skip-one; "
+                  "CLOTH-1) or mesh (every edge, and across every inner edge).")
       .needsReset();
   params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration. Earth 9.81.");
   params_.real("friction", &friction_, 0.0, 2.0, "", "Coulomb friction μ of every collider. Typical 0.4.");
   params_.flag("self_collision", &settings_.selfCollision,
                "Particle–particle self-collision (Ten Minute Physics #15, dense spatial hash).");
-  params_.integer("self_sweeps", &settings_.selfCollisionSweeps, 1, 10, "",
-                  "Self-collision sweeps per substep (TMP: 1). More resolve piles of many layers.")
+  params_
+      .integer("self_sweeps", &settings_.selfCollisionSweeps, 1, 10, "",
+               "Self-collision sweeps per substep (TMP: 1). More resolve piles of many layers.")
       .shownWhen([this] { return settings_.selfCollision; });
   params_.flag("tearing", &settings_.tearing.enabled, "Edges stretched beyond tear_threshold split the cloth.");
-  params_.real("tear_threshold", &settings_.tearing.threshold, 0.05, 5.0, "",
-               "Strain (l − L)/L at which an edge tears. Typical 0.5.")
+  params_
+      .real("tear_threshold", &settings_.tearing.threshold, 0.05, 5.0, "",
+            "Strain (l − L)/L at which an edge tears. Typical 0.5.")
       .shownWhen([this] { return settings_.tearing.enabled; });
 }
 
 void ClothScene::declareDisplayParams() {
   params_.choiceEnum("pattern", &pattern_, {"checker", "woven", "plain"}, "Fabric pattern: folds read on a projector.");
-  params_.flag("strain_colors", &strainColors_, "Colour triangles by strain: blue < 0.5 %, green, yellow, orange, red ≥ 10 %.");
+  params_.flag("strain_colors", &strainColors_,
+               "Colour triangles by strain: blue < 0.5 %, green, yellow, orange, red ≥ 10 %.");
   params_.flag("wireframe", &wireframe_, "Draw the mesh edges.");
   params_.flag("show_links", &showLinks_, "Draw the springs (explicit, implicit) or constraints (pbd, xpbd).");
 }
@@ -123,7 +133,8 @@ void ClothScene::step(Real dt) {
   solverMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   time_ += dt;
   if (!colliders_.empty()) {
-    worstColliderDistance_ = std::min(worstColliderDistance_, minColliderDistance(colliders_, cloth_.position, 0.5 * thickness_));
+    worstColliderDistance_ =
+        std::min(worstColliderDistance_, minColliderDistance(colliders_, cloth_.position, 0.5 * thickness_));
   }
   if (countIntersections_) {
     selfIntersections_ = countSelfIntersections(cloth_.position, cloth_.restPosition, thickness_, hash_);
@@ -156,8 +167,9 @@ nlohmann::json ClothScene::clothMetrics(const Cloth& c, const ClothStepStats& st
 nlohmann::json ClothScene::metrics() const {
   nlohmann::json j = clothMetrics(cloth_, stats_, settings_.kind);
   j["step_ms"] = solverMs_;
-  j["self_intersections"] =
-      countIntersections_ ? selfIntersections_ : countSelfIntersections(cloth_.position, cloth_.restPosition, thickness_, hash_);
+  j["self_intersections"] = countIntersections_
+                                ? selfIntersections_
+                                : countSelfIntersections(cloth_.position, cloth_.restPosition, thickness_, hash_);
   if (countIntersections_) j["self_intersections_max"] = worstSelfIntersections_;
   if (std::isfinite(worstColliderDistance_)) j["worst_collider_distance_m"] = worstColliderDistance_;
   j["self_contacts"] = stats_.selfContacts;
@@ -202,7 +214,8 @@ std::optional<app::PickHit> ClothScene::pick(const app::Ray& ray) const {
   // neighbour of the one under the cursor, the one nearest to the ray is not.
   std::optional<Real> front;
   for (const Triangle& tri : cloth_.triangles) {
-    const std::optional<Real> t = rayTriangle(ray, cloth_.position[tri[0]], cloth_.position[tri[1]], cloth_.position[tri[2]]);
+    const std::optional<Real> t =
+        rayTriangle(ray, cloth_.position[tri[0]], cloth_.position[tri[1]], cloth_.position[tri[2]]);
     if (t && (!front || *t < *front)) front = t;
   }
   if (!front) return std::nullopt;
@@ -231,7 +244,7 @@ void ClothScene::drag(int handle, const Vec3& target) {
     const Pin* p = findPin(cloth_, i);
     draggedWasPinned_ = p ? std::optional<Pin>(*p) : std::nullopt;
   }
-  pin(cloth_, i, target);  // kinematic while held: every solver moves it onto the cursor
+  pin(cloth_, i, target);       // kinematic while held: every solver moves it onto the cursor
   cloth_.position[i] = target;  // at once, so that a paused scene shows it
   cloth_.velocity[i] = Vec3(0.0);
 }
@@ -266,8 +279,11 @@ std::vector<app::DragHandle> ClothScene::dragHandles() const {
 std::vector<app::LegendEntry> ClothScene::legend() const {
   std::vector<app::LegendEntry> entries;
   if (strainColors_) {
-    entries = {{colors::kBlue, "stretch < 0.5 %"}, {colors::kGreen, "< 2 %"}, {colors::kYellow, "< 5 %"},
-               {colors::kOrange, "< 10 %"}, {colors::kRed, "≥ 10 %"}};
+    entries = {{colors::kBlue, "stretch < 0.5 %"},
+               {colors::kGreen, "< 2 %"},
+               {colors::kYellow, "< 5 %"},
+               {colors::kOrange, "< 10 %"},
+               {colors::kRed, "≥ 10 %"}};
   }
   entries.push_back({colors::kRed, "pinned particle"});
   entries.push_back({colors::kYellow, "the particle being dragged"});

@@ -60,17 +60,17 @@ class ClothScene : public app::Scene {
 
   // Parameters (the common ones of every cloth scene)
   ClothSolverKind solverKind_ = ClothSolverKind::Xpbd;
-  int resolution_ = 32;         ///< particles along the cloth's first side
-  Real stiffness_ = 2000.0;     ///< [N/m] stretch and shear springs
-  Real bendStiffness_ = 20.0;   ///< [N/m] bend springs
-  Real springDamping_ = 0.02;   ///< [N·s/m]
-  Real compliance_ = 0.0;       ///< [m/N] XPBD stretch and shear
-  Real bendCompliance_ = 1000.0;  ///< [1/(N·m)] XPBD isometric bending
-  Real bendLinkCompliance_ = 1.0;  ///< [m/N] XPBD distance bending
-  Real damping_ = 0.1;          ///< [1/s] mass (velocity) damping, every solver
-  Real thickness_ = 0.01;       ///< [m]
-  Real gravity_ = kStandardGravity;  ///< [m/s²]
-  Real friction_ = 0.4;         ///< μ of the colliders
+  int resolution_ = 32;                       ///< particles along the cloth's first side
+  Real stiffness_ = 2000.0;                   ///< [N/m] stretch and shear springs
+  Real bendStiffness_ = 20.0;                 ///< [N/m] bend springs
+  Real springDamping_ = 0.02;                 ///< [N·s/m]
+  Real compliance_ = 0.0;                     ///< [m/N] XPBD stretch and shear
+  Real bendCompliance_ = 1000.0;              ///< [1/(N·m)] XPBD isometric bending
+  Real bendLinkCompliance_ = 1.0;             ///< [m/N] XPBD distance bending
+  Real damping_ = 0.1;                        ///< [1/s] mass (velocity) damping, every solver
+  Real thickness_ = 0.01;                     ///< [m]
+  Real gravity_ = kStandardGravity;           ///< [m/s²]
+  Real friction_ = 0.4;                       ///< μ of the colliders
   SpringLayout layout_ = SpringLayout::Grid;  ///< of the grid scenes' springs
   // Display
   Pattern pattern_ = Pattern::Checker;
@@ -88,9 +88,9 @@ class ClothScene : public app::Scene {
   std::string buildError_;
   Real time_ = 0.0;
   Real initialEnergy_ = 0.0;  ///< [J] at reset
-  double solverMs_ = 0.0;           ///< wall time of the last solver step [ms]
+  double solverMs_ = 0.0;     ///< wall time of the last solver step [ms]
   std::size_t selfIntersections_ = 0, worstSelfIntersections_ = 0;
-  bool countIntersections_ = false;  ///< every step (self-collision scenes) instead of on demand
+  bool countIntersections_ = false;   ///< every step (self-collision scenes) instead of on demand
   Real worstColliderDistance_ = 0.0;  ///< [m] most negative over the run
   Color clothColor_{0.85f, 0.33f, 0.25f, 1.0f};
   int dragged_ = -1;

@@ -60,8 +60,7 @@ class ComparisonScene final : public ClothScene {
       j[name + "_max_strain"] = edgeStrain(cloths_[k]).max;
       j[name + "_energy_J"] = clothEnergy(cloths_[k], env_, kAllClothSolvers[k]);
     }
-    j["explicit_substeps"] =
-        static_cast<int>(std::ceil((1.0 / 60.0) / (0.5 * explicitStabilityLimit(cloths_[0]))));
+    j["explicit_substeps"] = static_cast<int>(std::ceil((1.0 / 60.0) / (0.5 * explicitStabilityLimit(cloths_[0]))));
     j["implicit_cg_iterations"] = stats_[1].cgIterations;
     j["step_ms"] = ms_[0] + ms_[1] + ms_[2] + ms_[3];
     particles::SpatialHash hash;
@@ -79,9 +78,7 @@ class ComparisonScene final : public ClothScene {
     for (std::size_t k = 0; k < cloths_.size(); ++k) e += clothEnergy(cloths_[k], env_, kAllClothSolvers[k]);
     return e;
   }
-  std::vector<std::string> defaultPlots() const override {
-    return {"pbd_max_strain", "xpbd_max_strain"};
-  }
+  std::vector<std::string> defaultPlots() const override { return {"pbd_max_strain", "xpbd_max_strain"}; }
   std::vector<app::Preset> presets() const override { return {}; }
   std::optional<app::PickHit> pick(const app::Ray&) const override { return std::nullopt; }
   std::vector<app::DragHandle> dragHandles() const override { return {}; }

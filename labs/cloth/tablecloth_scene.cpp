@@ -5,9 +5,9 @@
 namespace pba::labs::cloth {
 namespace {
 
-constexpr Real kTableTop = 0.75;                          // [m]
-constexpr Vec3 kTableHalf{0.45, 0.025, 0.45};             // [m] the top
-constexpr Real kLegHalf = 0.5 * (kTableTop - 0.05);       // [m]
+constexpr Real kTableTop = 0.75;                     // [m]
+constexpr Vec3 kTableHalf{0.45, 0.025, 0.45};        // [m] the top
+constexpr Real kLegHalf = 0.5 * (kTableTop - 0.05);  // [m]
 
 class TableclothScene final : public ClothScene {
  public:

@@ -21,7 +21,8 @@
 namespace {
 std::string solverChoices() {
   std::string choices;
-  for (const pba::ik::SolverInfo& s : pba::ik::solverTable()) choices += std::string(choices.empty() ? "" : "|") + s.name;
+  for (const pba::ik::SolverInfo& s : pba::ik::solverTable())
+    choices += std::string(choices.empty() ? "" : "|") + s.name;
   return choices;
 }
 }  // namespace
@@ -55,17 +56,25 @@ class BatchScene final : public app::Scene {
     params_.integer("links", &desc_.links, 1, 10000, "", "Links of the chain.").needsReset();
     params_.choiceEnum("joint", &joint_, {"hinge", "ball"}, "Joint type of every link.").needsReset();
     params_.integer("targets", &targets_, 1, 1000000, "", "Number of solves.").needsReset();
-    params_.real("tolerance", &options_.tolerance, 1e-9, 1.0, "m", "Success tolerance. Typical 1e-4 m.").logarithmic().needsReset();
+    params_.real("tolerance", &options_.tolerance, 1e-9, 1.0, "m", "Success tolerance. Typical 1e-4 m.")
+        .logarithmic()
+        .needsReset();
     params_.integer("max_iterations", &options_.maxIterations, 1, 100000, "", "Iteration cap per solve.").needsReset();
     params_.angle("limit", &desc_.limit, 5.0, 180.0, "Every rotational DOF in ±limit.").needsReset();
-    params_.flag("limits", &options_.enforceLimits, "Enforce the joint limits (IK-6's clamp). Off: the goals still come from poses inside them.")
+    params_
+        .flag("limits", &options_.enforceLimits,
+              "Enforce the joint limits (IK-6's clamp). Off: the goals still come from poses inside them.")
         .needsReset();
     declareMethodOptions(params_, options_, false);
     for (app::Param& p : params_.all())  // every setting of batch mode takes effect by re-running the solves
       p.needsReset = true;
-    params_.text("skeleton", &character_.skeleton, "Skeleton file to use instead of the chain (BVH, FBX, COLLADA, glTF). Empty: the chain.")
+    params_
+        .text("skeleton", &character_.skeleton,
+              "Skeleton file to use instead of the chain (BVH, FBX, COLLADA, glTF). Empty: the chain.")
         .needsReset();
-    params_.text("effectors", &character_.effectors, "Comma-separated joint names of the skeleton's effectors. Empty: hands and feet.")
+    params_
+        .text("effectors", &character_.effectors,
+              "Comma-separated joint names of the skeleton's effectors. Empty: hands and feet.")
         .needsReset();
     targets_ = 100;
     options_.restarts = 10;  // both runs say something: as published, and with the stall recovery
@@ -79,7 +88,8 @@ class BatchScene final : public app::Scene {
     const Result<Rig> r = loadCharacterRig(character_);
     if (!r) return Error{r.error()};
     const Rig& rig = r.value();
-    if (rig.effectors.empty()) return Error{"effectors: " + character_.skeleton + " has none (name its joints with --effectors)"};
+    if (rig.effectors.empty())
+      return Error{"effectors: " + character_.skeleton + " has none (name its joints with --effectors)"};
     bool moves = false;
     for (const Effector& e : rig.effectors)
       for (int j = e.joint; j >= 0 && !moves; j = rig.skeleton.joint(j).parent)
@@ -88,12 +98,14 @@ class BatchScene final : public app::Scene {
     if (options_.solver == SolverKind::Analytic) {
       Pose pose = rig.skeleton.restPose();
       const SolveResult trial = solve(rig.skeleton, pose, rig.effectors, options_);
-      if (trial.status == SolveStatus::NotApplicable) return Error{"--solver analytic: " + trial.message + " (it applies to 1 or 2 links)"};
+      if (trial.status == SolveStatus::NotApplicable)
+        return Error{"--solver analytic: " + trial.message + " (it applies to 1 or 2 links)"};
     }
     return Status::success();
   }
   std::string description() const override {
-    return "Batch statistics: K solves from rest toward random reachable goals (success rate, residuals, iterations, time).";
+    return "Batch statistics: K solves from rest toward random reachable goals (success rate, residuals, iterations, "
+           "time).";
   }
   void reset() override {
     desc_.joint = joint_ == BatchJoint::Hinge ? JointType::Hinge : JointType::Ball;
@@ -139,11 +151,14 @@ class BatchScene final : public app::Scene {
   void draw(DebugDraw& d) const override {
     const std::vector<Frame> f = forwardKinematics(rig_.skeleton, pose_);
     for (int j = 1; j < rig_.skeleton.jointCount(); ++j)
-      d.capsule(f[static_cast<size_t>(rig_.skeleton.joint(j).parent)].position, f[static_cast<size_t>(j)].position, 0.02, colors::kBlue);
-    for (const Effector& e : rig_.effectors) d.capsule(f[static_cast<size_t>(e.joint)].position, effectorPosition(e, f), 0.02, colors::kBlue);
+      d.capsule(f[static_cast<size_t>(rig_.skeleton.joint(j).parent)].position, f[static_cast<size_t>(j)].position,
+                0.02, colors::kBlue);
+    for (const Effector& e : rig_.effectors)
+      d.capsule(f[static_cast<size_t>(e.joint)].position, effectorPosition(e, f), 0.02, colors::kBlue);
     for (const Vec3& g : lastGoals_) d.sphere(g, 0.05, colors::kRed);
     char label[128];
-    std::snprintf(label, sizeof label, "%s: %d/%d solved, median %.1f us", solverName(options_.solver), successes_, targets_, timeMedian_);
+    std::snprintf(label, sizeof label, "%s: %d/%d solved, median %.1f us", solverName(options_.solver), successes_,
+                  targets_, timeMedian_);
     d.text(Vec3(0.0, 1.2, 0.0), label, colors::kDark);
   }
   nlohmann::json metrics() const override {
@@ -151,7 +166,9 @@ class BatchScene final : public app::Scene {
             {"links", character_.skeleton.empty() ? desc_.links : rig_.skeleton.jointCount()},
             {"joints", rig_.skeleton.jointCount()},
             {"effectors", rig_.effectors.size()},
-            {"joint", !character_.skeleton.empty() ? "skeleton" : joint_ == BatchJoint::Hinge ? "hinge" : "ball"},
+            {"joint", !character_.skeleton.empty()  ? "skeleton"
+                      : joint_ == BatchJoint::Hinge ? "hinge"
+                                                    : "ball"},
             {"targets", targets_},
             {"success_rate_no_restarts", targets_ > 0 ? Real(plainSuccesses_) / targets_ : 0.0},
             {"iterations_mean_no_restarts", plainIterationsMean_},
@@ -182,7 +199,8 @@ class BatchScene final : public app::Scene {
   std::vector<Vec3> lastGoals_;
   CharacterDesc character_{"", "", 1.7, degToRad(100.0)};
   int successes_ = 0, plainSuccesses_ = 0, violations_ = 0;
-  Real plainIterationsMean_ = 0.0, residualMax_ = 0.0, residualMedian_ = 0.0, iterationsMean_ = 0.0, restartsMean_ = 0.0, timeMedian_ = 0.0, timeP95_ = 0.0;
+  Real plainIterationsMean_ = 0.0, residualMax_ = 0.0, residualMedian_ = 0.0, iterationsMean_ = 0.0,
+       restartsMean_ = 0.0, timeMedian_ = 0.0, timeP95_ = 0.0;
 };
 
 }  // namespace

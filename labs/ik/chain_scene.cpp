@@ -13,16 +13,21 @@ class ChainScene final : public IkScene {
     options_.solver = SolverKind::Ccd;
     options_.maxIterations = 50;
     declareSolverParams();
-    params_.integer("links", &desc_.links, 1, 1000, "", "Number of links (joints). Workbook §2.1: try 10 to 1000.").needsReset();
+    params_.integer("links", &desc_.links, 1, 1000, "", "Number of links (joints). Workbook §2.1: try 10 to 1000.")
+        .needsReset();
     params_.choiceEnum("joint", &joint_, {"hinge", "ball", "free"}, "Joint type of every link.").needsReset();
-    params_.choiceEnum("axes", &desc_.axes, {"planar", "alternating"}, "Hinge axes: all z (planar arm) or alternating z/y (3D).")
+    params_
+        .choiceEnum("axes", &desc_.axes, {"planar", "alternating"},
+                    "Hinge axes: all z (planar arm) or alternating z/y (3D).")
         .needsReset();
     params_.angle("limit", &desc_.limit, 5.0, 180.0, "Every rotational DOF is limited to ±limit.").needsReset();
-    params_.real("length", &desc_.totalLength, 0.5, 4.0, "m", "Total length of the chain (its reach). Typical 2 m.").needsReset();
+    params_.real("length", &desc_.totalLength, 0.5, 4.0, "m", "Total length of the chain (its reach). Typical 2 m.")
+        .needsReset();
     desc_.axes = HingeAxes::Alternating;
   }
   std::string description() const override {
-    return "A chain of links reaching for the goal; pick the method and the number of links and compare iterations and time.";
+    return "A chain of links reaching for the goal; pick the method and the number of links and compare iterations and "
+           "time.";
   }
   std::vector<app::Preset> presets() const override {
     return {{"ccd 10", {{"solver", "ccd"}, {"links", 10}}},
@@ -35,7 +40,9 @@ class ChainScene final : public IkScene {
  protected:
   Rig build() const override {
     ChainDesc d = desc_;
-    d.joint = joint_ == ChainJoint::Hinge ? JointType::Hinge : joint_ == ChainJoint::Ball ? JointType::Ball : JointType::Free;
+    d.joint = joint_ == ChainJoint::Hinge  ? JointType::Hinge
+              : joint_ == ChainJoint::Ball ? JointType::Ball
+                                           : JointType::Free;
     return buildIkChain(d).value();
   }
   Real pathRadius() const override { return 0.3 * desc_.totalLength; }

@@ -16,8 +16,8 @@ using namespace pba::ik;
 
 namespace {
 
-constexpr int kListedJoints = 40;  // joint names listed in an error message before "..."
-constexpr Real kTrunkWeight = 0.1;  // [1] DOF weight of joints above several effectors
+constexpr int kListedJoints = 40;                    // joint names listed in an error message before "..."
+constexpr Real kTrunkWeight = 0.1;                   // [1] DOF weight of joints above several effectors
 constexpr Real kTrunkLimit = 15.0 * kPi / 180.0;     // [rad] per Euler angle of those trunk joints
 constexpr Real kClavicleLimit = 30.0 * kPi / 180.0;  // [rad] per Euler angle of a clavicle
 
@@ -69,7 +69,8 @@ std::vector<int> automaticEffectors(const Skeleton& s) {
     const std::string n = lower(s.joint(j).name);
     const int p = s.joint(j).parent;
     const bool ancestorMatched = p >= 0 && matched[static_cast<size_t>(p)];
-    matched[static_cast<size_t>(j)] = ancestorMatched || n.find("hand") != std::string::npos || n.find("foot") != std::string::npos;
+    matched[static_cast<size_t>(j)] =
+        ancestorMatched || n.find("hand") != std::string::npos || n.find("foot") != std::string::npos;
     if (matched[static_cast<size_t>(j)] && !ancestorMatched) picked.push_back(j);
   }
   if (picked.empty())
@@ -99,7 +100,8 @@ std::optional<Vec3> firstBone(const graphics::Model& m, const std::vector<RestFr
 std::vector<LimbJoint> limbJoints(const graphics::Model& m) {
   std::vector<LimbJoint> limbs(m.nodes.size(), LimbJoint::None);
   bool any = false;
-  for (size_t i = 0; i < m.nodes.size(); ++i) any = (limbs[i] = limbJointFromName(m.nodes[i].name)) != LimbJoint::None || any;
+  for (size_t i = 0; i < m.nodes.size(); ++i)
+    any = (limbs[i] = limbJointFromName(m.nodes[i].name)) != LimbJoint::None || any;
   if (any) return limbs;
   for (size_t i = 0; i < m.nodes.size(); ++i) {
     const int p = m.nodes[i].parent;
@@ -133,12 +135,15 @@ Vec3 facingDirection(const graphics::Model& m, const std::vector<RestFrame>& res
 LimbJoint limbJointFromName(const std::string& name) {
   const std::string n = bareName(name);
   // Elbows: "elbow", Mixamo/CMU/BVH "ForeArm", "LowerArm" (Unity/VRM humanoids).
-  if (contains(n, "elbow") || contains(n, "forearm") || contains(n, "lowerarm") || contains(n, "lower_arm")) return LimbJoint::Elbow;
+  if (contains(n, "elbow") || contains(n, "forearm") || contains(n, "lowerarm") || contains(n, "lower_arm"))
+    return LimbJoint::Elbow;
   // Knees: "knee", "shin", "calf", "LowerLeg", and the Mixamo/CMU convention "LeftLeg" (the shin;
   // "LeftUpLeg" is the thigh). "leg" alone is a knee unless it says up/upper/thigh.
-  if (contains(n, "knee") || contains(n, "shin") || contains(n, "calf") || contains(n, "lowerleg") || contains(n, "lower_leg"))
+  if (contains(n, "knee") || contains(n, "shin") || contains(n, "calf") || contains(n, "lowerleg") ||
+      contains(n, "lower_leg"))
     return LimbJoint::Knee;
-  if (n.size() >= 3 && n.compare(n.size() - 3, 3, "leg") == 0 && !contains(n, "up") && !contains(n, "thigh")) return LimbJoint::Knee;
+  if (n.size() >= 3 && n.compare(n.size() - 3, 3, "leg") == 0 && !contains(n, "up") && !contains(n, "thigh"))
+    return LimbJoint::Knee;
   return LimbJoint::None;
 }
 
@@ -202,7 +207,8 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
     j.type = node.parent >= 0 && bone ? JointType::Ball : JointType::Fixed;
     for (int k = 0; k < 3; ++k) j.lo[k] = -d.limit, j.hi[k] = d.limit;
     // Clavicles ("LeftShoulder" in BVH, Mixamo and CMU files; "Collar", "Clavicle") barely move.
-    if (const std::string n = bareName(j.name); j.type == JointType::Ball && (contains(n, "shoulder") || contains(n, "clavicle") || contains(n, "collar")))
+    if (const std::string n = bareName(j.name);
+        j.type == JointType::Ball && (contains(n, "shoulder") || contains(n, "clavicle") || contains(n, "collar")))
       clampRange(j, kClavicleLimit);
     if (j.type == JointType::Ball && limbs[i] != LimbJoint::None) {
       // Flexion axis (world, at rest): elbow bone × forward, knee forward × bone; then in the
@@ -216,14 +222,17 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
         j.hi[0] = kHingeFlexMax;
       }
     }
-    if (Result<int> added = rig.skeleton.add(j); !added) return Error{"skeleton: " + path + ": joint '" + j.name + "': " + added.error()};
+    if (Result<int> added = rig.skeleton.add(j); !added)
+      return Error{"skeleton: " + path + ": joint '" + j.name + "': " + added.error()};
   }
 
   std::vector<int> chosen;
   const std::vector<std::string> names = splitNames(d.effectors);
   for (const std::string& name : names) {
     const int j = rig.skeleton.find(name);
-    if (j < 0) return Error{"effectors: no joint named '" + name + "' in " + path + " (joints: " + jointList(rig.skeleton) + ")"};
+    if (j < 0)
+      return Error{"effectors: no joint named '" + name + "' in " + path + " (joints: " + jointList(rig.skeleton) +
+                   ")"};
     chosen.push_back(j);
   }
   if (names.empty()) chosen = automaticEffectors(rig.skeleton);
@@ -249,7 +258,8 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
   }
   if (skin) {
     *skin = CharacterSkin{};
-    const bool hasMesh = std::any_of(model->meshes.begin(), model->meshes.end(), [](const graphics::ModelMesh& m) { return !m.placeholder; });
+    const bool hasMesh = std::any_of(model->meshes.begin(), model->meshes.end(),
+                                     [](const graphics::ModelMesh& m) { return !m.placeholder; });
     if (hasMesh) {
       skin->model = std::make_shared<const graphics::Model>(*model);
       skin->scale = scale;

@@ -32,13 +32,14 @@
 namespace pba::labs::ik {
 
 struct CharacterDesc {
-  std::string skeleton = "resources/models/humanoid.bvh";  ///< file path; relative paths also tried from the repository root
-  std::string effectors;                                   ///< "LeftHand,RightFoot"; empty = hands and feet by name
-  double height = 1.7;                                     ///< [m] height of the rest pose after scaling
-  double limit = 100.0 * kPi / 180.0;                                    ///< [rad] every ball DOF in [−limit, limit]
+  std::string skeleton =
+      "resources/models/humanoid.bvh";  ///< file path; relative paths also tried from the repository root
+  std::string effectors;                ///< "LeftHand,RightFoot"; empty = hands and feet by name
+  double height = 1.7;                  ///< [m] height of the rest pose after scaling
+  double limit = 100.0 * kPi / 180.0;   ///< [rad] every ball DOF in [−limit, limit]
 };
 
-inline constexpr double kHingeFlexMin = -5.0 * kPi / 180.0;  ///< [rad] a knee or elbow straightens slightly past rest
+inline constexpr double kHingeFlexMin = -5.0 * kPi / 180.0;   ///< [rad] a knee or elbow straightens slightly past rest
 inline constexpr double kHingeFlexMax = 150.0 * kPi / 180.0;  ///< [rad] and flexes this far
 
 enum class LimbJoint { None, Elbow, Knee };

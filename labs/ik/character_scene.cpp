@@ -14,7 +14,8 @@
 // …) but not over --targets (priority 1 < 2): "--skeleton F --solver ccd" solves the character with
 // CCD; "--effectors LeftHand" alone loads the default humanoid with that effector.
 PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "skeleton file Assimp reads (BVH, FBX, COLLADA, glTF)", "character", 1);
-PBA_REGISTER_LAB_FLAG("effectors", "effectors", "comma-separated joint names of the effectors (default: hands and feet)", "character", 1);
+PBA_REGISTER_LAB_FLAG("effectors", "effectors",
+                      "comma-separated joint names of the effectors (default: hands and feet)", "character", 1);
 
 namespace pba::labs::ik {
 namespace {
@@ -28,29 +29,38 @@ class CharacterScene final : public IkScene {
     options_.damping = 0.03;
     showLimits_ = false;  // ±limit on three Euler angles: cones would hide the body
     declareSolverParams();
-    params_.text("skeleton", &desc_.skeleton,
-                 "Skeleton file (BVH, FBX, COLLADA, glTF: anything Assimp reads). Relative paths are also tried from the "
-                 "repository root. Default: the project's humanoid, resources/models/humanoid.bvh.")
+    params_
+        .text("skeleton", &desc_.skeleton,
+              "Skeleton file (BVH, FBX, COLLADA, glTF: anything Assimp reads). Relative paths are also tried from the "
+              "repository root. Default: the project's humanoid, resources/models/humanoid.bvh.")
         .needsReset();
-    params_.text("effectors", &desc_.effectors,
-                 "Comma-separated joint names that reach for goals, e.g. LeftHand,RightFoot. Empty: the joints named "
-                 "hand or foot (else the leaves).")
+    params_
+        .text("effectors", &desc_.effectors,
+              "Comma-separated joint names that reach for goals, e.g. LeftHand,RightFoot. Empty: the joints named "
+              "hand or foot (else the leaves).")
         .needsReset();
-    params_.real("height", &desc_.height, 0.2, 5.0, "m", "The skeleton is scaled so its rest pose is this tall. Typical 1.7 m.")
+    params_
+        .real("height", &desc_.height, 0.2, 5.0, "m",
+              "The skeleton is scaled so its rest pose is this tall. Typical 1.7 m.")
         .needsReset();
-    params_.angle("limit", &desc_.limit, 10.0, 180.0, "Every ball joint's three Euler angles stay in ±limit. Typical 100 deg.")
+    params_
+        .angle("limit", &desc_.limit, 10.0, 180.0,
+               "Every ball joint's three Euler angles stay in ±limit. Typical 100 deg.")
         .needsReset();
-    params_.flag("skin", &showSkin_, "Draw the file's meshes (skinned by the solved pose) over the skeleton, when it has any.");
+    params_.flag("skin", &showSkin_,
+                 "Draw the file's meshes (skinned by the solved pose) over the skeleton, when it has any.");
   }
   std::string description() const override {
-    return "An imported skeleton (any Assimp file): hands and feet reach for their goals; load your own with --skeleton.";
+    return "An imported skeleton (any Assimp file): hands and feet reach for their goals; load your own with "
+           "--skeleton.";
   }
   Status validate() override {
     const Result<Rig> r = loadCharacterRig(desc_);
     return r ? Status::success() : Status(Error{r.error()});
   }
   void ui() override {
-    if (!error_.empty()) ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous skeleton kept)", error_.c_str());
+    if (!error_.empty())
+      ImGui::TextColored(ImVec4(0.86f, 0.2f, 0.18f, 1.0f), "%s (previous skeleton kept)", error_.c_str());
     effectorPicker();
     IkScene::ui();
   }
@@ -58,7 +68,8 @@ class CharacterScene final : public IkScene {
     if (showSkin_ && skin_.model) {
       // Translucent, so the bones, axes and goals inside stay visible.
       const std::vector<SkinSurface> surfaces = poseSkin(skin_, forwardKinematics(rig_.skeleton, pose_));
-      for (const SkinSurface& s : surfaces) d.triangles(s.positions, s.normals, s.indices, Color{0.93f, 0.76f, 0.62f, 0.55f});
+      for (const SkinSurface& s : surfaces)
+        d.triangles(s.positions, s.normals, s.indices, Color{0.93f, 0.76f, 0.62f, 0.55f});
     }
     IkScene::draw(d);
   }
@@ -123,8 +134,10 @@ class CharacterScene final : public IkScene {
       const bool clicked = ImGui::Checkbox(name.c_str(), &on);
       ImGui::PopID();
       if (clicked) {
-        if (on) chosen.push_back(name);
-        else chosen.erase(it);
+        if (on)
+          chosen.push_back(name);
+        else
+          chosen.erase(it);
         changed = true;
       }
     }

@@ -31,15 +31,24 @@ constexpr Color kDeepPink{0.84f, 0.22f, 0.52f, 1.0f};
 // Each method's colour (the switch has no default: a new SolverKind must get one, or -Wswitch says so).
 Color colorOf(SolverKind kind) {
   switch (kind) {
-    case SolverKind::Analytic: return colors::kDark;
-    case SolverKind::Ccd: return colors::kRed;
-    case SolverKind::Fabrik: return colors::kGreen;
-    case SolverKind::JacobianTranspose: return kDeepOrange;
-    case SolverKind::PseudoInverse: return kDarkGold;
-    case SolverKind::DampedLeastSquares: return colors::kBlue;
-    case SolverKind::SelectivelyDamped: return colors::kPurple;
-    case SolverKind::GradientDescent: return colors::kTeal;
-    case SolverKind::Lbfgs: return kDeepPink;
+    case SolverKind::Analytic:
+      return colors::kDark;
+    case SolverKind::Ccd:
+      return colors::kRed;
+    case SolverKind::Fabrik:
+      return colors::kGreen;
+    case SolverKind::JacobianTranspose:
+      return kDeepOrange;
+    case SolverKind::PseudoInverse:
+      return kDarkGold;
+    case SolverKind::DampedLeastSquares:
+      return colors::kBlue;
+    case SolverKind::SelectivelyDamped:
+      return colors::kPurple;
+    case SolverKind::GradientDescent:
+      return colors::kTeal;
+    case SolverKind::Lbfgs:
+      return kDeepPink;
   }
   return colors::kDark;
 }
@@ -67,11 +76,18 @@ class ComparisonScene final : public app::Scene {
     options_.maxIterations = 60;
     options_.recordHistory = true;
     params_.integer("links", &desc_.links, 2, 50, "", "Links of every chain. Typical 8.").needsReset();
-    params_.choiceEnum("joint", &joint_, {"hinge", "ball"}, "Joint type of every link (hinges alternate z/y axes; FABRIK handles hinges poorly: compare).").needsReset();
-    params_.choiceEnum("layout", &layout_, {"overlay", "side-by-side"},
-                       "Chains overlaid on one base as ghosts of one another (compact, best on a projector), or side by side.");
-    params_.integer("max_iterations", &options_.maxIterations, 1, 1000, "", "Iteration cap per solve, for every method. Typical 60.");
-    params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success tolerance, for every method. Typical 1e-4 m.").logarithmic();
+    params_
+        .choiceEnum("joint", &joint_, {"hinge", "ball"},
+                    "Joint type of every link (hinges alternate z/y axes; FABRIK handles hinges poorly: compare).")
+        .needsReset();
+    params_.choiceEnum(
+        "layout", &layout_, {"overlay", "side-by-side"},
+        "Chains overlaid on one base as ghosts of one another (compact, best on a projector), or side by side.");
+    params_.integer("max_iterations", &options_.maxIterations, 1, 1000, "",
+                    "Iteration cap per solve, for every method. Typical 60.");
+    params_
+        .real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success tolerance, for every method. Typical 1e-4 m.")
+        .logarithmic();
     params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of DLS. Typical 0.05 m.");
     params_.choiceEnum("line_search", &options_.lineSearch, lineSearchNames(),
                        "Step length of gradient descent: backtracking (Armijo, the default here: golden-section costs "
@@ -88,7 +104,8 @@ class ComparisonScene final : public app::Scene {
     options_.fromRest = true;
   }
   std::string description() const override {
-    return "Eight methods, eight identical chains, one goal: watch the residual-per-iteration curves on the right (log scale) and the poses.";
+    return "Eight methods, eight identical chains, one goal: watch the residual-per-iteration curves on the right (log "
+           "scale) and the poses.";
   }
   void reset() override {
     ChainDesc d = desc_;
@@ -114,7 +131,8 @@ class ComparisonScene final : public app::Scene {
       const std::vector<Frame> f = forwardKinematics(rig_.skeleton, poses_[m]);
       const Color c = kMethods[m].color;
       for (int j = 1; j < rig_.skeleton.jointCount(); ++j)
-        d.capsule(base + f[static_cast<size_t>(rig_.skeleton.joint(j).parent)].position, base + f[static_cast<size_t>(j)].position, r, c);
+        d.capsule(base + f[static_cast<size_t>(rig_.skeleton.joint(j).parent)].position,
+                  base + f[static_cast<size_t>(j)].position, r, c);
       d.capsule(base + f.back().position, base + effectorPosition(rig_.effectors[0], f), r, c);
       d.sphere(base, 2.0 * r, colors::kDark);
       if (layout_ == Layout::SideBySide || m == 0) d.sphere(base + goal_, 2.5 * r, colors::kDark);
@@ -146,7 +164,8 @@ class ComparisonScene final : public app::Scene {
   std::optional<std::string> nonFiniteState() const override {
     for (size_t m = 0; m < poses_.size(); ++m)
       for (Real v : poses_[m].dofs)
-        if (!isFinite(v)) return std::string("a joint angle of the ") + solverName(kMethods[m].kind) + " chain is not finite";
+        if (!isFinite(v))
+          return std::string("a joint angle of the ") + solverName(kMethods[m].kind) + " chain is not finite";
     return std::nullopt;
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
@@ -194,7 +213,8 @@ class ComparisonScene final : public app::Scene {
   /// The goal on the figure-8 at `phase` [rad], relative to the chains' base.
   Vec3 pathGoal(Real phase) const {
     const Real L = desc_.totalLength;
-    return facing() * (L * Vec3(0.35 * std::sin(phase), 0.6 + 0.2 * std::sin(2.0 * phase), 0.25 + 0.15 * std::cos(phase)));
+    return facing() *
+           (L * Vec3(0.35 * std::sin(phase), 0.6 + 0.2 * std::sin(2.0 * phase), 0.25 + 0.15 * std::cos(phase)));
   }
   static Quat facing() { return glm::angleAxis(kViewYaw, Vec3(0, 1, 0)); }
   Vec3 baseOf(size_t m) const {
@@ -207,7 +227,8 @@ class ComparisonScene final : public app::Scene {
     ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
     ImGui::SetNextWindowSize(ImVec2(column.x1 - column.x0, 0.0f), ImGuiCond_Always);
     ImGui::Begin("Residual per iteration (log scale)", nullptr,
-                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoScrollbar);
     size_t longest = 2;
     Real top = -1.0;
     for (const SolveResult& r : results_) {
@@ -221,7 +242,8 @@ class ComparisonScene final : public app::Scene {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     auto point = [&](Real i, Real residual) {
       const Real y = std::clamp((std::log10(std::max(residual, 1e-12)) - kPlotFloor) / (top - kPlotFloor), 0.0, 1.0);
-      return ImVec2(o.x + axis + width * static_cast<float>(i / Real(longest - 1)), o.y + height * static_cast<float>(1.0 - y));
+      return ImVec2(o.x + axis + width * static_cast<float>(i / Real(longest - 1)),
+                    o.y + height * static_cast<float>(1.0 - y));
     };
     auto rgba = [](const Color& c) { return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, c.a)); };
     const ImU32 grid = ImGui::GetColorU32(ImVec4(0.6f, 0.6f, 0.62f, 0.6f));
@@ -232,12 +254,14 @@ class ComparisonScene final : public app::Scene {
       std::snprintf(tick, sizeof tick, "1e%.0f", e);
       draw->AddText(ImVec2(o.x, a.y - 0.5f * font), ImGui::GetColorU32(ImGuiCol_TextDisabled), tick);
     }
-    draw->AddLine(point(0, options_.tolerance), point(Real(longest - 1), options_.tolerance), rgba(colors::kDark), 1.5f);
+    draw->AddLine(point(0, options_.tolerance), point(Real(longest - 1), options_.tolerance), rgba(colors::kDark),
+                  1.5f);
     for (size_t m = 0; m < kMethods.size(); ++m) {
       const std::vector<Real>& hist = results_[m].residualHistory;
       std::vector<ImVec2> line;
       for (size_t i = 0; i < hist.size(); ++i) line.push_back(point(Real(i), hist[i]));
-      if (line.size() >= 2) draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 0.15f * font);
+      if (line.size() >= 2)
+        draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 0.15f * font);
     }
     ImGui::Dummy(ImVec2(axis + width, height));
     ImGui::TextDisabled("0 … %zu iterations; black: tolerance", longest - 1);

@@ -20,47 +20,59 @@ void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacob
     return !jacobianOnly || k == SolverKind::JacobianTranspose || k == SolverKind::PseudoInverse ||
            k == SolverKind::DampedLeastSquares || k == SolverKind::SelectivelyDamped;
   };
-  params.choiceEnum("jacobian", &options.jacobian, jacobianSourceNames(),
-                    "Where the Jacobian methods take J from: analytic (IK-3's columns a x (e - r)) or differences "
-                    "(central differences of forward kinematics: 2 FK per column, slower, independent of IK-3).")
+  params
+      .choiceEnum("jacobian", &options.jacobian, jacobianSourceNames(),
+                  "Where the Jacobian methods take J from: analytic (IK-3's columns a x (e - r)) or differences "
+                  "(central differences of forward kinematics: 2 FK per column, slower, independent of IK-3).")
       .shownWhen(jacobian);
-  params.angle("max_joint_step", &options.maxJointStep, 0.0, 180.0,
-               "Not in the papers (our safeguard): JT, pinv, DLS and SDLS scale a step down so that no DOF turns by more "
-               "than this. 0 = off, the methods as published (SDLS always applies its own gamma_max = 45 deg).")
+  params
+      .angle("max_joint_step", &options.maxJointStep, 0.0, 180.0,
+             "Not in the papers (our safeguard): JT, pinv, DLS and SDLS scale a step down so that no DOF turns by more "
+             "than this. 0 = off, the methods as published (SDLS always applies its own gamma_max = 45 deg).")
       .shownWhen(stepMethod);
-  params.flag("jacobian_line_search", &options.jacobianLineSearch,
-              "Not in the papers (our safeguard): JT, pinv, DLS and SDLS halve a step until the residual decreases "
-              "(JT: Armijo's sufficient decrease from Buss's step length). Off = the methods as published.")
+  params
+      .flag("jacobian_line_search", &options.jacobianLineSearch,
+            "Not in the papers (our safeguard): JT, pinv, DLS and SDLS halve a step until the residual decreases "
+            "(JT: Armijo's sufficient decrease from Buss's step length). Off = the methods as published.")
       .shownWhen(stepMethod);
-  params.integer("restarts", &options.restarts, 0, 100, "",
-                 "Stall recovery, not in the papers (IK slides, 'when stuck, randomise the pose'): a stalled or crawling "
-                 "solve restarts from a random pose inside the limits at most this many times, within the same "
-                 "iteration cap, and keeps its best attempt. 0 = off: a stall ends the solve, as published.");
+  params.integer(
+      "restarts", &options.restarts, 0, 100, "",
+      "Stall recovery, not in the papers (IK slides, 'when stuck, randomise the pose'): a stalled or crawling "
+      "solve restarts from a random pose inside the limits at most this many times, within the same "
+      "iteration cap, and keeps its best attempt. 0 = off: a stall ends the solve, as published.");
 }
 
 void IkScene::declareSolverParams(bool withPath) {
   // Table-driven from the library: every method it names appears in the dropdown.
   std::string methods;
-  for (const SolverInfo& s : solverTable()) methods += std::string(methods.empty() ? "" : ", ") + s.name + " (" + s.longName + ")";
+  for (const SolverInfo& s : solverTable())
+    methods += std::string(methods.empty() ? "" : ", ") + s.name + " (" + s.longName + ")";
   params_.choiceEnum("solver", &options_.solver, solverNames(), "IK method: " + methods + ".");
   params_.integer("max_iterations", &options_.maxIterations, 1, 5000, "",
                   "Iteration cap per solve (CCD/FABRIK: passes; Jacobian methods: steps). Typical 100.");
-  params_.real("tolerance", &options_.tolerance, 1e-6, 0.1, "m", "Success when the effector is this close to its goal. Typical 1e-4 m.")
+  params_
+      .real("tolerance", &options_.tolerance, 1e-6, 0.1, "m",
+            "Success when the effector is this close to its goal. Typical 1e-4 m.")
       .logarithmic();
   params_.real("damping", &options_.damping, 0.0, 1.0, "m", "Lambda of damped least squares. Typical 0.05 m.")
       .shownWhen([this] { return options_.solver == SolverKind::DampedLeastSquares; });
-  params_.choiceEnum("line_search", &options_.lineSearch, lineSearchNames(),
-                     "Step length of gradient descent: fixed (asst4: gradient_step every step), backtracking "
-                     "(Armijo's sufficient decrease) or golden (golden-section search, an exact line search).")
+  params_
+      .choiceEnum("line_search", &options_.lineSearch, lineSearchNames(),
+                  "Step length of gradient descent: fixed (asst4: gradient_step every step), backtracking "
+                  "(Armijo's sufficient decrease) or golden (golden-section search, an exact line search).")
       .shownWhen([this] { return options_.solver == SolverKind::GradientDescent; });
-  params_.real("gradient_step", &options_.gradientStep, 1e-4, 10.0, "rad²/m²",
-               "Fixed step alpha of gradient descent: dtheta = -alpha grad f. Too large oscillates (stable below "
-               "2 / largest eigenvalue of J^T J); too small crawls. Typical 0.2.")
+  params_
+      .real("gradient_step", &options_.gradientStep, 1e-4, 10.0, "rad²/m²",
+            "Fixed step alpha of gradient descent: dtheta = -alpha grad f. Too large oscillates (stable below "
+            "2 / largest eigenvalue of J^T J); too small crawls. Typical 0.2.")
       .logarithmic()
-      .shownWhen([this] { return options_.solver == SolverKind::GradientDescent && options_.lineSearch == LineSearch::Fixed; });
-  params_.real("cutoff", &options_.singularCutoff, 1e-6, 0.5, "",
-               "Pseudo-inverse: singular values below cutoff x sigma_max are dropped (near-singular directions "
-               "would give huge steps). Typical 1e-3.")
+      .shownWhen([this] {
+        return options_.solver == SolverKind::GradientDescent && options_.lineSearch == LineSearch::Fixed;
+      });
+  params_
+      .real("cutoff", &options_.singularCutoff, 1e-6, 0.5, "",
+            "Pseudo-inverse: singular values below cutoff x sigma_max are dropped (near-singular directions "
+            "would give huge steps). Typical 1e-3.")
       .logarithmic()
       .shownWhen([this] { return options_.solver == SolverKind::PseudoInverse; });
   declareMethodOptions(params_, options_, true);
@@ -70,11 +82,14 @@ void IkScene::declareSolverParams(bool withPath) {
   params_.real("time_cap", &options_.maxSeconds, 0.0, 0.1, "s",
                "Stop a solve after this much wall time (status time_cap). 0 = no cap. Results then depend on the "
                "machine's speed.");
-  params_.flag("from_rest", &options_.fromRest, "Repeatability: start every solve from the rest pose instead of the last pose.");
-  params_.flag("limits", &options_.enforceLimits, "Enforce the joint limits (clamping; Jacobian methods also zero blocked columns).");
-  params_.choiceEnum("limit_mode", &options_.limitMode, jacobianLimitModeNames(),
-                     "Jacobian methods at a limit: clamp the pose after each step, or also zero the columns of DOFs "
-                     "pushed against their limit (one-sided derivative, IK slides).")
+  params_.flag("from_rest", &options_.fromRest,
+               "Repeatability: start every solve from the rest pose instead of the last pose.");
+  params_.flag("limits", &options_.enforceLimits,
+               "Enforce the joint limits (clamping; Jacobian methods also zero blocked columns).");
+  params_
+      .choiceEnum("limit_mode", &options_.limitMode, jacobianLimitModeNames(),
+                  "Jacobian methods at a limit: clamp the pose after each step, or also zero the columns of DOFs "
+                  "pushed against their limit (one-sided derivative, IK slides).")
       .shownWhen([this] {
         const SolverKind k = options_.solver;
         return options_.enforceLimits && (k == SolverKind::JacobianTranspose || k == SolverKind::PseudoInverse ||
@@ -120,13 +135,15 @@ void IkScene::step(Real dt) {
   if (!dragging_ && path_ != TargetPath::Mouse) {
     const Real w = 2.0 * kPi * pathSpeed_ * time_;
     for (size_t k = 0; k < rig_.effectors.size(); ++k) {
-      if (path_ != TargetPath::RandomJumps) rig_.effectors[k].targetPosition = centers_[k] + pathOffset(k, w + 0.7 * Real(k));
+      if (path_ != TargetPath::RandomJumps)
+        rig_.effectors[k].targetPosition = centers_[k] + pathOffset(k, w + 0.7 * Real(k));
     }
     if (path_ == TargetPath::RandomJumps && time_ >= nextJump_) {
       nextJump_ = time_ + kJumpInterval;
       std::uniform_real_distribution<Real> u(-1.0, 1.0);
       for (size_t k = 0; k < rig_.effectors.size(); ++k)
-        rig_.effectors[k].targetPosition = centers_[k] + 1.5 * pathRadius() * Vec3(u(rng_) - 0.5, u(rng_), 0.5 * u(rng_));
+        rig_.effectors[k].targetPosition =
+            centers_[k] + 1.5 * pathRadius() * Vec3(u(rng_) - 0.5, u(rng_), 0.5 * u(rng_));
     }
   }
   solveNow();
@@ -134,7 +151,8 @@ void IkScene::step(Real dt) {
 
 Vec3 IkScene::pathOffset(size_t, Real phase) const {
   const Real r = pathRadius();
-  if (path_ == TargetPath::Figure8) return r * Vec3(std::sin(phase) - 0.5, std::sin(2.0 * phase), 0.3 * std::cos(phase));
+  if (path_ == TargetPath::Figure8)
+    return r * Vec3(std::sin(phase) - 0.5, std::sin(2.0 * phase), 0.3 * std::cos(phase));
   return r * Vec3(std::cos(phase) - 1.0, std::sin(phase), 0.3 * std::sin(phase));
 }
 
@@ -164,7 +182,8 @@ std::optional<std::string> IkScene::nonFiniteState() const {
 std::optional<app::PickHit> IkScene::pick(const app::Ray& ray) const {
   std::optional<app::PickHit> best;
   for (size_t k = 0; k < rig_.effectors.size(); ++k) {
-    const std::optional<Real> t = intersectRaySphere(ray, rig_.effectors[k].targetPosition, 2.0 * kTargetRadiusFactor * boneRadius_);
+    const std::optional<Real> t =
+        intersectRaySphere(ray, rig_.effectors[k].targetPosition, 2.0 * kTargetRadiusFactor * boneRadius_);
     if (t && (!best || *t < best->distance)) best = app::PickHit{static_cast<int>(k), *t, pointAt(ray, *t)};
   }
   return best;
@@ -187,7 +206,8 @@ bool IkScene::nudge(const Vec3& delta) {
 
 std::vector<app::DragHandle> IkScene::dragHandles() const {
   std::vector<app::DragHandle> out;
-  for (size_t k = 0; k < rig_.effectors.size(); ++k) out.push_back({static_cast<int>(k), rig_.effectors[k].targetPosition});
+  for (size_t k = 0; k < rig_.effectors.size(); ++k)
+    out.push_back({static_cast<int>(k), rig_.effectors[k].targetPosition});
   return out;
 }
 

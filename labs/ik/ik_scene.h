@@ -83,7 +83,7 @@ class IkScene : public app::Scene {
   SolveOptions options_;
   SolveResult last_;
   TargetPath path_ = TargetPath::Circle;
-  Real pathSpeed_ = 0.5;   // [Hz] laps per second of the scripted path
+  Real pathSpeed_ = 0.5;  // [Hz] laps per second of the scripted path
   bool showLimits_ = true;
   bool showPath_ = true;
   bool showJacobian_ = true;

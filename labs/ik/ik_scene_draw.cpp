@@ -24,7 +24,9 @@ constexpr int kRimSamples = 12;  // points per edge of the ball joint's limit re
 constexpr Real kFullTurn = 2.0 * kPi - 1e-9;
 
 /// Bone direction of a ball joint for Euler angles t (the pre-rotation frame applied by the caller).
-Vec3 ballDirection(const std::array<Real, 3>& t, const Vec3& bone) { return quatFromEulerXYZ(Vec3(t[0], t[1], t[2])) * bone; }
+Vec3 ballDirection(const std::array<Real, 3>& t, const Vec3& bone) {
+  return quatFromEulerXYZ(Vec3(t[0], t[1], t[2])) * bone;
+}
 }  // namespace
 
 Vec3 IkScene::boneOf(int j) const {
@@ -61,7 +63,8 @@ void IkScene::drawJointAxesAndLimits(DebugDraw& d, int j, const std::vector<Fram
     // The Euler axes in the order they act (IK slides, 3-DOF joints): x in the pre frame, y after
     // the x rotation, z after x and y.
     const Quat rx = glm::angleAxis(dofs[0], Vec3(1, 0, 0)), rxy = rx * glm::angleAxis(dofs[1], Vec3(0, 1, 0));
-    const std::array<Vec3, 3> axes = {fj.pre * Vec3(1, 0, 0), fj.pre * rx * Vec3(0, 1, 0), fj.pre * rxy * Vec3(0, 0, 1)};
+    const std::array<Vec3, 3> axes = {fj.pre * Vec3(1, 0, 0), fj.pre * rx * Vec3(0, 1, 0),
+                                      fj.pre * rxy * Vec3(0, 0, 1)};
     const std::array<Color, 3> colour = {colors::kRed, colors::kGreen, colors::kBlue};
     for (int k = 0; k < 3; ++k) d.line(fj.position - 3.0 * r * axes[k], fj.position + 3.0 * r * axes[k], colour[k]);
   }
@@ -75,8 +78,11 @@ void IkScene::drawJointAxesAndLimits(DebugDraw& d, int j, const std::vector<Fram
   const Real len = 5.0 * r;
   std::array<Real, 3> t = {dofs[0], dofs[1], dofs[2]};
   std::vector<Vec3> rim;
-  const std::array<std::array<Real, 2>, 5> corners = {
-      {{joint.lo[a], joint.lo[b]}, {joint.hi[a], joint.lo[b]}, {joint.hi[a], joint.hi[b]}, {joint.lo[a], joint.hi[b]}, {joint.lo[a], joint.lo[b]}}};
+  const std::array<std::array<Real, 2>, 5> corners = {{{joint.lo[a], joint.lo[b]},
+                                                       {joint.hi[a], joint.lo[b]},
+                                                       {joint.hi[a], joint.hi[b]},
+                                                       {joint.lo[a], joint.hi[b]},
+                                                       {joint.lo[a], joint.lo[b]}}};
   for (size_t c = 0; c + 1 < corners.size(); ++c) {
     for (int i = 0; i < kRimSamples; ++i) {
       const Real s = Real(i) / kRimSamples;
@@ -131,8 +137,8 @@ void IkScene::draw(DebugDraw& d) const {
       }
   }
   char label[128];
-  std::snprintf(label, sizeof label, "%s: %s, %d it, %.2e m", solverName(options_.solver), statusName(last_.status), last_.iterations,
-                last_.positionResidual);
+  std::snprintf(label, sizeof label, "%s: %s, %d it, %.2e m", solverName(options_.solver), statusName(last_.status),
+                last_.iterations, last_.positionResidual);
   if (!rig_.effectors.empty()) d.text(rig_.effectors[0].targetPosition + Vec3(0, 4.0 * r, 0), label, colors::kDark);
 }
 

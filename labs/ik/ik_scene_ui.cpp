@@ -45,7 +45,8 @@ void IkScene::ui() {
   }
   if (rig_.effectors.size() > 1) {
     // The goal the arrow keys nudge (also chosen by picking a goal with the mouse).
-    const std::string current = rig_.skeleton.joint(rig_.effectors[std::min(selected_, rig_.effectors.size() - 1)].joint).name;
+    const std::string current =
+        rig_.skeleton.joint(rig_.effectors[std::min(selected_, rig_.effectors.size() - 1)].joint).name;
     if (ImGui::BeginCombo("goal for the keys", current.c_str())) {
       for (size_t k = 0; k < rig_.effectors.size(); ++k)
         if (ImGui::Selectable(rig_.skeleton.joint(rig_.effectors[k].joint).name.c_str(), k == selected_)) selected_ = k;
@@ -62,7 +63,8 @@ void IkScene::angleBars() const {
   if (rows.empty()) return;
   ImGui::Text("Joint angles (%zu DOFs; bar = [lower, upper] limit)", rows.size());
   const float rowHeight = ImGui::GetFrameHeightWithSpacing();
-  const float height = rowHeight * static_cast<float>(std::min<size_t>(rows.size(), kVisibleBars)) + ImGui::GetStyle().WindowPadding.y * 2.0f;
+  const float height = rowHeight * static_cast<float>(std::min<size_t>(rows.size(), kVisibleBars)) +
+                       ImGui::GetStyle().WindowPadding.y * 2.0f;
   ImGui::BeginChild("angle bars", ImVec2(0.0f, height), true);
   ImGuiListClipper clipper;
   clipper.Begin(static_cast<int>(rows.size()), rowHeight);
@@ -91,7 +93,8 @@ void IkScene::angleBars() const {
       if (linear)
         std::snprintf(overlay, sizeof overlay, "%s  %.3f m  [%.2f, %.2f]", label.c_str(), v, lo, hi);
       else
-        std::snprintf(overlay, sizeof overlay, "%s  %.1f°  [%.0f, %.0f]", label.c_str(), radToDeg(v), radToDeg(lo), radToDeg(hi));
+        std::snprintf(overlay, sizeof overlay, "%s  %.1f°  [%.0f, %.0f]", label.c_str(), radToDeg(v), radToDeg(lo),
+                      radToDeg(hi));
       if (atLimit) ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.95f, 0.55f, 0.12f, 1.0f));
       ImGui::ProgressBar(fraction, ImVec2(-1.0f, 0.0f), overlay);
       if (atLimit) ImGui::PopStyleColor();

@@ -23,25 +23,32 @@ const ImVec4 kMarker(0.93f, 0.55f, 0.10f, 1.0f);
 ImU32 heat(Real t) {  // t in [−1, 1]
   const float a = static_cast<float>(std::min(1.0, std::abs(t)));
   const ImVec4& end = t >= 0.0 ? kPositive : kNegative;
-  return ImGui::GetColorU32(ImVec4(kZero.x + (end.x - kZero.x) * a, kZero.y + (end.y - kZero.y) * a,
-                                   kZero.z + (end.z - kZero.z) * a, 1.0f));
+  return ImGui::GetColorU32(
+      ImVec4(kZero.x + (end.x - kZero.x) * a, kZero.y + (end.y - kZero.y) * a, kZero.z + (end.z - kZero.z) * a, 1.0f));
 }
 
 const char* methodCaption(SolverKind kind) {
   switch (kind) {
-    case SolverKind::JacobianTranspose: return "Jacobian transpose: the step along each singular direction grows with σ, so "
-                                               "directions with small σ move slowly.";
-    case SolverKind::PseudoInverse: return "Pseudo-inverse: gain 1/σ per direction; σ below the cut-off (orange) are dropped, "
-                                           "otherwise near-singular poses give huge steps.";
-    case SolverKind::DampedLeastSquares: return "Damped least squares: gain σ/(σ² + λ²); directions with σ well below λ "
-                                                "(orange) are damped, the rest behave like the pseudo-inverse.";
-    case SolverKind::SelectivelyDamped: return "Selectively damped least squares: each singular direction gets its own "
-                                               "clamp on the joint change it may cause (Buss & Kim 2005).";
-    case SolverKind::GradientDescent: return "Gradient descent: the direction J^T r, like the transpose; along each singular "
-                                             "direction the gain is σ times the step length, chosen by the line search.";
-    case SolverKind::Lbfgs: return "L-BFGS: the gradient J^T r bent by an inverse-Hessian estimate built from the last "
-                                   "steps, so directions with small σ catch up (a quasi-Newton method).";
-    default: return "";
+    case SolverKind::JacobianTranspose:
+      return "Jacobian transpose: the step along each singular direction grows with σ, so "
+             "directions with small σ move slowly.";
+    case SolverKind::PseudoInverse:
+      return "Pseudo-inverse: gain 1/σ per direction; σ below the cut-off (orange) are dropped, "
+             "otherwise near-singular poses give huge steps.";
+    case SolverKind::DampedLeastSquares:
+      return "Damped least squares: gain σ/(σ² + λ²); directions with σ well below λ "
+             "(orange) are damped, the rest behave like the pseudo-inverse.";
+    case SolverKind::SelectivelyDamped:
+      return "Selectively damped least squares: each singular direction gets its own "
+             "clamp on the joint change it may cause (Buss & Kim 2005).";
+    case SolverKind::GradientDescent:
+      return "Gradient descent: the direction J^T r, like the transpose; along each singular "
+             "direction the gain is σ times the step length, chosen by the line search.";
+    case SolverKind::Lbfgs:
+      return "L-BFGS: the gradient J^T r bent by an inverse-Hessian estimate built from the last "
+             "steps, so directions with small σ catch up (a quasi-Newton method).";
+    default:
+      return "";
   }
 }
 
@@ -65,8 +72,8 @@ void heatMap(const JacobianView& v) {
     if (rowLabels || (label[0] == 'x' && J.rows >= 3)) {  // per row, or one label per effector (its x row)
       char effector[24];
       std::snprintf(effector, sizeof effector, "e%s", label.c_str() + 1);
-      draw->AddText(ImVec2(origin.x, y + (rowLabels ? 0.5f * (cellHeight - font) : 0.0f)), ImGui::GetColorU32(ImGuiCol_Text),
-                    rowLabels ? label.c_str() : effector);
+      draw->AddText(ImVec2(origin.x, y + (rowLabels ? 0.5f * (cellHeight - font) : 0.0f)),
+                    ImGui::GetColorU32(ImGuiCol_Text), rowLabels ? label.c_str() : effector);
     }
     for (int b = 0; b < bins; ++b) {
       // A cell covering several columns shows the entry of largest magnitude among them.
@@ -75,7 +82,8 @@ void heatMap(const JacobianView& v) {
       for (int c = c0; c < c1; ++c)
         if (std::abs(J(r, c)) > std::abs(value)) value = J(r, c);
       const float x = origin.x + labelWidth + static_cast<float>(b) * cellWidth;
-      draw->AddRectFilled(ImVec2(x, y), ImVec2(x + cellWidth, y + cellHeight), heat(maxAbs > 0.0 ? value / maxAbs : 0.0));
+      draw->AddRectFilled(ImVec2(x, y), ImVec2(x + cellWidth, y + cellHeight),
+                          heat(maxAbs > 0.0 ? value / maxAbs : 0.0));
     }
   }
   const float bottom = origin.y + static_cast<float>(J.rows) * cellHeight;
@@ -123,17 +131,20 @@ void singularValues(const JacobianView& v, const SolveOptions& o) {
     char label[48];
     std::snprintf(label, sizeof label, "σ%zu = %.3g", i + 1, v.sigma[i]);
     // Compressed rows: label every other one, always the first and the last (the smallest σ).
-    if (shown <= 6 || row + 1 == shown || (row % 2 == 0 && row + 2 != shown)) draw->AddText(ImVec2(origin.x, y + 0.5f * (rowHeight - font)), ImGui::GetColorU32(ImGuiCol_Text), label);
+    if (shown <= 6 || row + 1 == shown || (row % 2 == 0 && row + 2 != shown))
+      draw->AddText(ImVec2(origin.x, y + 0.5f * (rowHeight - font)), ImGui::GetColorU32(ImGuiCol_Text), label);
     const float w = static_cast<float>(v.sigma[i] / scale) * barArea;
-    draw->AddRectFilled(ImVec2(origin.x + textWidth, y + 0.15f * rowHeight), ImVec2(origin.x + textWidth + std::max(w, 1.0f), y + 0.85f * rowHeight),
+    draw->AddRectFilled(ImVec2(origin.x + textWidth, y + 0.15f * rowHeight),
+                        ImVec2(origin.x + textWidth + std::max(w, 1.0f), y + 0.85f * rowHeight),
                         ImGui::GetColorU32(kBar));
   }
   const float bottom = origin.y + static_cast<float>(shown) * rowHeight;
   if (marker >= 0.0) {
     const float x = origin.x + textWidth + static_cast<float>(marker / scale) * barArea;
     draw->AddLine(ImVec2(x, origin.y), ImVec2(x, bottom), ImGui::GetColorU32(kMarker), 2.0f);
-    draw->AddText(ImVec2(std::min(x + 3.0f, origin.x + textWidth + barArea - ImGui::CalcTextSize(markerName).x), bottom),
-                  ImGui::GetColorU32(kMarker), markerName);
+    draw->AddText(
+        ImVec2(std::min(x + 3.0f, origin.x + textWidth + barArea - ImGui::CalcTextSize(markerName).x), bottom),
+        ImGui::GetColorU32(kMarker), markerName);
   }
   ImGui::Dummy(ImVec2(textWidth + barArea, static_cast<float>(shown) * rowHeight + (marker >= 0.0 ? font : 0.0f)));
   if (shown < v.sigma.size()) ImGui::TextDisabled("(σ7 … σ%zu not shown)", v.sigma.size() - 6);
@@ -142,17 +153,20 @@ void singularValues(const JacobianView& v, const SolveOptions& o) {
 }  // namespace
 
 bool usesJacobian(SolverKind kind) {
-  return kind == SolverKind::JacobianTranspose || kind == SolverKind::PseudoInverse || kind == SolverKind::DampedLeastSquares ||
-         kind == SolverKind::SelectivelyDamped || kind == SolverKind::GradientDescent || kind == SolverKind::Lbfgs;
+  return kind == SolverKind::JacobianTranspose || kind == SolverKind::PseudoInverse ||
+         kind == SolverKind::DampedLeastSquares || kind == SolverKind::SelectivelyDamped ||
+         kind == SolverKind::GradientDescent || kind == SolverKind::Lbfgs;
 }
 
-JacobianView computeJacobianView(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& options) {
+JacobianView computeJacobianView(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
+                                 const SolveOptions& options) {
   JacobianView v;
   const std::vector<Frame> frames = forwardKinematics(s, pose);
   const Real scale = resolvedOrientationScale(s, effectors, options);
   const JacobianLayout layout = planJacobian(s, pose, effectors, frames, scale);
-  v.J = options.jacobian == JacobianSource::Analytic ? jacobian(s, pose, effectors, frames, layout, scale)
-                                                     : numericalJacobian(s, pose, effectors, layout, scale, kJacobianStep);
+  v.J = options.jacobian == JacobianSource::Analytic
+            ? jacobian(s, pose, effectors, frames, layout, scale)
+            : numericalJacobian(s, pose, effectors, layout, scale, kJacobianStep);
   v.sigma = svd(v.J).sigma;
   v.rowLabels.resize(static_cast<size_t>(v.J.rows));
   for (size_t k = 0; k < effectors.size(); ++k) {
@@ -165,7 +179,8 @@ JacobianView computeJacobianView(const Skeleton& s, const Pose& pose, const std:
     }
   }
   for (int c = 0; c < v.J.cols; ++c)
-    v.jointOfColumn.push_back(c < s.dofCount() ? s.dofJoint(c) : layout.freeJoints[static_cast<size_t>(c - s.dofCount())]);
+    v.jointOfColumn.push_back(c < s.dofCount() ? s.dofJoint(c)
+                                               : layout.freeJoints[static_cast<size_t>(c - s.dofCount())]);
   return v;
 }
 
@@ -174,7 +189,8 @@ void drawJacobianWindow(const JacobianView& view, const SolveOptions& options, c
   ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
   ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);  // height 0: fit the contents
   const std::string title = std::string("Jacobian J (") + solverName(options.solver) + ")";
-  ImGui::Begin(title.c_str(), nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::Begin(title.c_str(), nullptr,
+               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
   if (view.J.rows == 0 || view.J.cols == 0) {
     ImGui::TextUnformatted("no effector below a movable joint");
   } else {

@@ -13,12 +13,14 @@ class LimitsScene final : public IkScene {
     options_.solver = SolverKind::Ccd;
     options_.maxIterations = 50;
     declareSolverParams();
-    params_.angle("limit", &limit_, 5.0, 180.0, "Every joint may turn at most ±limit from its rest angle.").needsReset();
+    params_.angle("limit", &limit_, 5.0, 180.0, "Every joint may turn at most ±limit from its rest angle.")
+        .needsReset();
     params_.integer("links", &links_, 2, 12, "", "Number of hinge links.").needsReset();
     path_ = TargetPath::Circle;
   }
   std::string description() const override {
-    return "Hinges limited to ±limit (orange arcs): the chain clamps at its limits and stops short where the goal leaves the workspace.";
+    return "Hinges limited to ±limit (orange arcs): the chain clamps at its limits and stops short where the goal "
+           "leaves the workspace.";
   }
 
  protected:

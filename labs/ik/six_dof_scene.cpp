@@ -17,7 +17,8 @@ class SixDofScene final : public IkScene {
     params_.real("spin_speed", &spin_, 0.0, 2.0, "Hz", "How fast the goal frame turns about its own axis.");
   }
   std::string description() const override {
-    return "The tip must match the goal's position and its orientation (frame gizmo): orientation rows join the Jacobian.";
+    return "The tip must match the goal's position and its orientation (frame gizmo): orientation rows join the "
+           "Jacobian.";
   }
   void step(Real dt) override {
     const Real a = 2.0 * kPi * spin_ * (time_ + dt);

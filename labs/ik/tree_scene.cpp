@@ -13,7 +13,9 @@ class TreeScene final : public IkScene {
     options_.solver = SolverKind::SelectivelyDamped;
     options_.maxIterations = 30;
     declareSolverParams();
-    params_.choiceEnum("shape", &shape_, {"hand", "double-y"}, "The tree: a hand with five finger tips, or Buss & Kim's double Y.")
+    params_
+        .choiceEnum("shape", &shape_, {"hand", "double-y"},
+                    "The tree: a hand with five finger tips, or Buss & Kim's double Y.")
         .needsReset();
   }
   std::string description() const override {

@@ -13,12 +13,15 @@ class TwoBoneScene final : public IkScene {
     options_.solver = SolverKind::Analytic;
     options_.usePole = true;
     declareSolverParams();
-    params_.real("upper", &desc_.upper, 0.2, 2.0, "m", "Upper arm length (shoulder to elbow). Typical 0.9 m.").needsReset();
+    params_.real("upper", &desc_.upper, 0.2, 2.0, "m", "Upper arm length (shoulder to elbow). Typical 0.9 m.")
+        .needsReset();
     params_.real("lower", &desc_.lower, 0.2, 2.0, "m", "Forearm length (elbow to wrist). Typical 0.8 m.").needsReset();
-    params_.angle("pole_angle", &poleAngle_, -180.0, 180.0, "Direction of the pole target around the arm: where the elbow points.");
+    params_.angle("pole_angle", &poleAngle_, -180.0, 180.0,
+                  "Direction of the pole target around the arm: where the elbow points.");
   }
   std::string description() const override {
-    return "A two-bone arm solved exactly by the law of cosines; the elbow bends toward the pole target (purple: drag it, or pick it and use the arrow keys).";
+    return "A two-bone arm solved exactly by the law of cosines; the elbow bends toward the pole target (purple: drag "
+           "it, or pick it and use the arrow keys).";
   }
   void step(Real dt) override {
     options_.polePoint = polePoint();
@@ -58,7 +61,7 @@ class TwoBoneScene final : public IkScene {
   Real pathRadius() const override { return 0.5; }
 
  private:
-  static constexpr int kPoleHandle = 1000;  // the goal is handle 0
+  static constexpr int kPoleHandle = 1000;   // the goal is handle 0
   static constexpr Real kPoleRadius = 0.05;  // [m]
   Vec3 polePoint() const { return desc_.shoulder + Vec3(0.5, std::cos(poleAngle_), std::sin(poleAngle_)) * 1.5; }
   /// The pole angle whose point on the circle is nearest `p` (its angle about the x axis).

@@ -40,8 +40,8 @@ class BouncingScene final : public app::Scene {
     }
     obstacles_.planes = {particles::PlaneObstacle{}};
     obstacles_.spheres = {particles::SphereObstacle{Vec3(0.6, 0.0, 0.0), 0.8}};
-    obstacles_.boxes = {particles::BoxObstacle{Vec3(-1.2, 0.3, 0.2), Vec3(0.5, 0.3, 0.5),
-                                               glm::angleAxis(0.4, Vec3(0.0, 1.0, 0.0))}};
+    obstacles_.boxes = {
+        particles::BoxObstacle{Vec3(-1.2, 0.3, 0.2), Vec3(0.5, 0.3, 0.5), glm::angleAxis(0.4, Vec3(0.0, 1.0, 0.0))}};
     sim_.finishReset();
   }
 

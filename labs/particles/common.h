@@ -100,7 +100,8 @@ struct IntegratedSystem {
   nlohmann::json metrics() const {
     nlohmann::json j = baseMetrics(kind, system.particles.size(), system.energy(), initialEnergy, rate);
     Vec3 momentum(0.0);
-    for (std::size_t i = 0; i < system.particles.size(); ++i) momentum += system.particles.mass(i) * system.particles.velocity[i];
+    for (std::size_t i = 0; i < system.particles.size(); ++i)
+      momentum += system.particles.mass(i) * system.particles.velocity[i];
     j["momentum"] = glm::length(momentum);
     return j;
   }

@@ -20,7 +20,8 @@ class GranularScene final : public app::Scene {
   GranularScene() {
     params_.integer("particles", &count_, 10, 20000, "", "Number of grains. Typical 1000.").needsReset();
     params_.real("radius", &radius_, 0.01, 0.1, "m", "Grain radius. Typical 0.04 m.").needsReset();
-    params_.integer("iterations", &iterations_, 1, 10, "", "Collision sweeps per step: more = stiffer pile. Typical 3.");
+    params_.integer("iterations", &iterations_, 1, 10, "",
+                    "Collision sweeps per step: more = stiffer pile. Typical 3.");
     params_.real("restitution", &obstacles_.material.restitution, 0.0, 1.0, "", "Bounciness of all contacts.");
     params_.real("friction", &obstacles_.material.kineticFriction, 0.0, 1.5, "", "μ_k against floor and walls.");
     sim_.declareParams(params_);
@@ -90,7 +91,8 @@ class GranularScene final : public app::Scene {
   std::optional<Real> energy() const override { return sim_.system.energy(); }
   std::vector<std::string> defaultPlots() const override { return {"energy", "pair_contacts"}; }
   std::vector<app::Preset> presets() const override {
-    return {{"sand", {{"restitution", 0.05}, {"friction", 0.6}}}, {"marbles", {{"restitution", 0.6}, {"friction", 0.1}}},
+    return {{"sand", {{"restitution", 0.05}, {"friction", 0.6}}},
+            {"marbles", {{"restitution", 0.6}, {"friction", 0.1}}},
             {"lots", {{"particles", 5000}, {"radius", 0.025}}}};
   }
 

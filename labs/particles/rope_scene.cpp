@@ -18,8 +18,9 @@ class RopeScene final : public app::Scene {
     params_.real("stiffness", &rope_.stiffness, 10.0, 1e5, "N/m", "Spring constant of each rope segment. Typical 2000.")
         .logarithmic()
         .needsReset();
-    params_.real("damping", &rope_.damping, 0.0, 20.0, "N·s/m",
-                 "Damping along each spring (resists stretching speed, not swinging). Typical 2.")
+    params_
+        .real("damping", &rope_.damping, 0.0, 20.0, "N·s/m",
+              "Damping along each spring (resists stretching speed, not swinging). Typical 2.")
         .needsReset();
     params_.real("drag", &drag_, 0.0, 2.0, "N·s/m", "Linear air drag on every particle. Typical 0.02.");
     sim_.declareParams(params_, " Explicit methods need h < 2/ω of the stiffest spring.");
@@ -45,7 +46,8 @@ class RopeScene final : public app::Scene {
     chain.stiffness = 4.0 * rope_.stiffness;
     chain.bending = true;
     chainFirst_ = springs::appendRope(chain, sim_.system).value();
-    for (std::size_t i = chainFirst_; i < sim_.system.particles.size(); ++i) sim_.system.particles.color[i] = colors::kDark;
+    for (std::size_t i = chainFirst_; i < sim_.system.particles.size(); ++i)
+      sim_.system.particles.color[i] = colors::kDark;
     sim_.system.forces.drag.linear = drag_;
     sim_.finishReset();
     dragged_ = -1;
@@ -83,16 +85,20 @@ class RopeScene final : public app::Scene {
   std::optional<Real> energy() const override { return sim_.system.energy(); }
   std::vector<std::string> defaultPlots() const override { return {"energy", "max_stretch"}; }
   std::vector<app::Preset> presets() const override {
-    return {{"slack", {{"stiffness", 200.0}}}, {"stiff", {{"stiffness", 20000.0}}},
-            {"undamped", {{"damping", 0.0}, {"drag", 0.0}}}, {"implicit", {{"integrator", "implicit-euler"}}}};
+    return {{"slack", {{"stiffness", 200.0}}},
+            {"stiff", {{"stiffness", 20000.0}}},
+            {"undamped", {{"damping", 0.0}, {"drag", 0.0}}},
+            {"implicit", {{"integrator", "implicit-euler"}}}};
   }
   std::optional<app::PickHit> pick(const app::Ray& ray) const override {
     return lab::pickParticle(ray, sim_.system.particles, 2.0 * kBeadRadius);
   }
   std::vector<app::DragHandle> dragHandles() const override { return lab::particleHandles(sim_.system.particles); }
   std::vector<app::LegendEntry> legend() const override {
-    return {{colors::kOrange, "light rope"}, {colors::kDark, "heavy chain (with bending springs)"},
-            {colors::kRed, "pinned end"}, {colors::kYellow, "the particle being dragged"}};
+    return {{colors::kOrange, "light rope"},
+            {colors::kDark, "heavy chain (with bending springs)"},
+            {colors::kRed, "pinned end"},
+            {colors::kYellow, "the particle being dragged"}};
   }
   void drag(int handle, const Vec3& target) override {
     const auto i = static_cast<std::size_t>(handle);

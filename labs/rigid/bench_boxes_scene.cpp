@@ -24,7 +24,9 @@ class BenchBoxesScene final : public lab::WorldScene {
   std::vector<app::Preset> presets() const override {
     return {{"ten layers", {{"layers", 10}}}, {"sap", {{"broad_phase", "sap"}}}, {"sleeping", {{"sleeping", true}}}};
   }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(-6.0, 55.0, -6.0), 200.0, 0.6, 0.2}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(-6.0, 55.0, -6.0), 200.0, 0.6, 0.2};
+  }
 
  private:
   int layers_ = 47;

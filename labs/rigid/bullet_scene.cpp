@@ -7,9 +7,9 @@
 namespace {
 using namespace pba;
 
-constexpr Real kRadius = 0.005;   // [m] a 1 cm sphere
-constexpr Real kWallX = 6.0;      // [m]
-constexpr Real kWallHalf = 0.005; // [m] a 1 cm wall
+constexpr Real kRadius = 0.005;    // [m] a 1 cm sphere
+constexpr Real kWallX = 6.0;       // [m]
+constexpr Real kWallHalf = 0.005;  // [m] a 1 cm wall
 
 class BulletScene final : public lab::WorldScene {
  public:
@@ -19,7 +19,8 @@ class BulletScene final : public lab::WorldScene {
     params_.real("interval", &interval_, 0.05, 2.0, "s", "Time between two shots per lane. Typical 0.25 s.");
   }
   std::string description() const override {
-    return "1 cm shots at 100 m/s hit a 1 cm wall: with continuous collision (front lane) none passes, without it (back "
+    return "1 cm shots at 100 m/s hit a 1 cm wall: with continuous collision (front lane) none passes, without it "
+           "(back "
            "lane) they tunnel.";
   }
 
@@ -86,9 +87,13 @@ class BulletScene final : public lab::WorldScene {
   }
   // Every shot brings energy in: the runaway guard has nothing to compare with (NaN is still caught).
   std::optional<Real> energy() const override { return std::nullopt; }
-  std::vector<app::Preset> presets() const override { return {{"slow", {{"speed", 10.0}}}, {"very fast", {{"speed", 300.0}}}}; }
+  std::vector<app::Preset> presets() const override {
+    return {{"slow", {{"speed", 10.0}}}, {"very fast", {{"speed", 300.0}}}};
+  }
   std::vector<std::string> defaultPlots() const override { return {"tunnelled_ccd", "tunnelled_no_ccd"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(4.0, 1.0, 0.0), 7.0, 1.0, 0.3}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(4.0, 1.0, 0.0), 7.0, 1.0, 0.3};
+  }
 
  private:
   struct Shot {

@@ -18,11 +18,13 @@ class CradleScene final : public lab::WorldScene {
     settings_.speculativeDistance = 0.001;
     settings_.sleeping = false;
     params_.integer("balls", &count_, 2, 12, "", "Number of balls. Typical 5.").needsReset();
-    params_.real("restitution", &restitution_, 0.0, 1.0, "", "Coefficient of restitution of the balls (1: elastic).").needsReset();
+    params_.real("restitution", &restitution_, 0.0, 1.0, "", "Coefficient of restitution of the balls (1: elastic).")
+        .needsReset();
     params_.angle("lift", &lift_, 5.0, 80.0, "Angle the first ball is pulled back. Typical 30°.").needsReset();
   }
   std::string description() const override {
-    return "Newton's cradle: the first ball's momentum passes along the row (restitution 1) or spreads and decays (below 1).";
+    return "Newton's cradle: the first ball's momentum passes along the row (restitution 1) or spreads and decays "
+           "(below 1).";
   }
 
  protected:
@@ -40,10 +42,14 @@ class CradleScene final : public lab::WorldScene {
   }
   Real defaultDt() const override { return 1.0 / 480.0; }
   std::vector<app::Preset> presets() const override {
-    return {{"elastic", {{"restitution", 1.0}}}, {"lossy", {{"restitution", 0.8}}}, {"two up", {{"balls", 7}, {"lift", 45.0}}}};
+    return {{"elastic", {{"restitution", 1.0}}},
+            {"lossy", {{"restitution", 0.8}}},
+            {"two up", {{"balls", 7}, {"lift", 45.0}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"energy_J", "last_ball_rise_m"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 1.0, 0.0), 3.5, 0.0, 0.15}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 1.0, 0.0), 3.5, 0.0, 0.15};
+  }
 
  private:
   static constexpr Real kRadius = 0.1;  // [m]

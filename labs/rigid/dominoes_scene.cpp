@@ -11,11 +11,15 @@ class DominoesScene final : public lab::WorldScene {
  public:
   DominoesScene() {
     params_.integer("count", &count_, 2, 200, "", "Number of dominoes. Typical 24.").needsReset();
-    params_.real("spacing", &spacing_, 0.15, 0.9, "m", "Distance between neighbours (a domino is 1 m tall). Typical 0.5 m.").needsReset();
+    params_
+        .real("spacing", &spacing_, 0.15, 0.9, "m",
+              "Distance between neighbours (a domino is 1 m tall). Typical 0.5 m.")
+        .needsReset();
     params_.real("friction", &friction_, 0.0, 1.5, "", "Coulomb μ of dominoes and ground. Typical 0.6.").needsReset();
   }
   std::string description() const override {
-    return "The first domino is tipped and the wave runs down the row: contacts between rotating boxes, friction at the "
+    return "The first domino is tipped and the wave runs down the row: contacts between rotating boxes, friction at "
+           "the "
            "feet.";
   }
 
@@ -30,7 +34,8 @@ class DominoesScene final : public lab::WorldScene {
     j["fallen"] = fallen;
   }
   std::vector<app::Preset> presets() const override {
-    return {{"close", {{"spacing", 0.3}}}, {"far", {{"spacing", 0.8}}}, {"long row", {{"count", 100}, {"spacing", 0.5}}}};
+    return {
+        {"close", {{"spacing", 0.3}}}, {"far", {{"spacing", 0.8}}}, {"long row", {{"count", 100}, {"spacing", 0.5}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"fallen", "kinetic_energy_J"}; }
   std::optional<app::CameraView> preferredView() const override {

@@ -9,17 +9,19 @@
 namespace {
 using namespace pba;
 
-constexpr Real kBoxHalf = 0.25;     // [m] the sliding cube
+constexpr Real kBoxHalf = 0.25;  // [m] the sliding cube
 
 class InclineScene final : public lab::WorldScene {
  public:
   InclineScene() {
-    params_.angle("angle", &angle_, 0.0, 60.0, "Tilt θ of the plane. It slides when tan θ > μ. Typical 30°.").needsReset();
+    params_.angle("angle", &angle_, 0.0, 60.0, "Tilt θ of the plane. It slides when tan θ > μ. Typical 30°.")
+        .needsReset();
     params_.real("friction", &friction_, 0.0, 1.5, "", "Coulomb μ of box and plane. Typical 0.3.").needsReset();
   }
 
   std::string description() const override {
-    return "A box on a tilted plane slides with a = g(sin θ − μ cos θ) when tan θ > μ and sticks otherwise; the ghost beside "
+    return "A box on a tilted plane slides with a = g(sin θ − μ cos θ) when tan θ > μ and sticks otherwise; the ghost "
+           "beside "
            "it follows the closed form.";
   }
 
@@ -50,11 +52,15 @@ class InclineScene final : public lab::WorldScene {
     d.text(at + Vec3(0.0, 0.6, 0.0), "closed form", colors::kGreen);
   }
   std::vector<app::Preset> presets() const override {
-    return {{"slides", {{"angle", 30.0}, {"friction", 0.3}}}, {"sticks", {{"angle", 20.0}, {"friction", 0.5}}},
-            {"ice", {{"angle", 15.0}, {"friction", 0.02}}}, {"on the edge", {{"angle", 26.0}, {"friction", 0.5}}}};
+    return {{"slides", {{"angle", 30.0}, {"friction", 0.3}}},
+            {"sticks", {{"angle", 20.0}, {"friction", 0.5}}},
+            {"ice", {{"angle", 15.0}, {"friction", 0.02}}},
+            {"on the edge", {{"angle", 26.0}, {"friction", 0.5}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"slide_distance_m", "expected_slide_distance_m"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 4.5, 0.0), 13.0, 0.35, 0.12}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 4.5, 0.0), 13.0, 0.35, 0.12};
+  }
 
  private:
   Real angle_ = degToRad(30.0), friction_ = 0.3, time_ = 0.0;

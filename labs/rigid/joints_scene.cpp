@@ -13,11 +13,17 @@ class JointsScene final : public lab::WorldScene {
  public:
   JointsScene() {
     settings_.iterations = 2;  // a 10-link chain within 1 mm (tests/physics/rigid/joints_test.cpp)
-    params_.real("motor_speed", &motorSpeed_, -10.0, 10.0, "rad/s", "Target speed of the paddle's hinge motor. Typical 2 rad/s.");
-    params_.real("motor_torque", &motorTorque_, 0.0, 5000.0, "N·m", "Largest torque the motor may apply. Typical 500 N·m.");
-    params_.angle("hinge_limit", &limit_, 0.0, 170.0, "Half range of the limited hinge: ±limit. Typical 30°.").needsReset();
-    params_.angle("cone", &cone_, 0.0, 120.0, "Half-angle of the cone-twist joint's swing cone. Typical 30°.").needsReset();
-    params_.real("bridge_hertz", &bridgeHertz_, 0.5, 60.0, "Hz", "Stiffness of the rope bridge's springs. Typical 10 Hz.").needsReset();
+    params_.real("motor_speed", &motorSpeed_, -10.0, 10.0, "rad/s",
+                 "Target speed of the paddle's hinge motor. Typical 2 rad/s.");
+    params_.real("motor_torque", &motorTorque_, 0.0, 5000.0, "N·m",
+                 "Largest torque the motor may apply. Typical 500 N·m.");
+    params_.angle("hinge_limit", &limit_, 0.0, 170.0, "Half range of the limited hinge: ±limit. Typical 30°.")
+        .needsReset();
+    params_.angle("cone", &cone_, 0.0, 120.0, "Half-angle of the cone-twist joint's swing cone. Typical 30°.")
+        .needsReset();
+    params_
+        .real("bridge_hertz", &bridgeHertz_, 0.5, 60.0, "Hz", "Stiffness of the rope bridge's springs. Typical 10 Hz.")
+        .needsReset();
   }
   std::string description() const override {
     return "Hinge and ball chains, a motor, hinge, cone and slider limits, and a soft rope bridge: joint errors stay "
@@ -42,7 +48,8 @@ class JointsScene final : public lab::WorldScene {
     motor.maxMotorTorque = motorTorque_;
     motorJoint_ = w.addJoint(motor).value();
     // Limited hinge: a bar released from horizontal that must stop at −limit.
-    limited_ = rigid::addBox(w, Vec3(0.6, 0.05, 0.05), Vec3(3.2, 4.0, 0.0), Quat(1, 0, 0, 0), 500.0, 0.6, colors::kOrange);
+    limited_ =
+        rigid::addBox(w, Vec3(0.6, 0.05, 0.05), Vec3(3.2, 4.0, 0.0), Quat(1, 0, 0, 0), 500.0, 0.6, colors::kOrange);
     rigid::JointDesc hinge;
     hinge.kind = rigid::JointKind::Hinge;
     hinge.bodyB = limited_;
@@ -113,7 +120,8 @@ class JointsScene final : public lab::WorldScene {
   void extraMetrics(nlohmann::json& j) const override {
     const std::vector<rigid::Joint>& joints = world_.joints();
     std::vector<rigid::SolverBody> poses(world_.bodyCount() + 1);
-    for (int i = 0; i < world_.bodyCount(); ++i) poses[i].c = world_.body(i).position, poses[i].q = world_.body(i).orientation;
+    for (int i = 0; i < world_.bodyCount(); ++i)
+      poses[i].c = world_.body(i).position, poses[i].q = world_.body(i).orientation;
     const Real angle = rigid::jointCoordinate(joints[limitedJoint_], poses);
     j["hinge_limit_violation_deg"] = radToDeg(std::max({0.0, angle - limit_, -limit_ - angle}));
     j["cone_swing_deg"] = radToDeg(rigid::jointSwingAngle(joints[coneJoint_], poses));
@@ -127,11 +135,15 @@ class JointsScene final : public lab::WorldScene {
     WorldScene::step(dt);
   }
   std::vector<app::Preset> presets() const override {
-    return {{"fast motor", {{"motor_speed", 8.0}}}, {"weak motor", {{"motor_torque", 10.0}}},
-            {"stiff bridge", {{"bridge_hertz", 40.0}}}, {"wide cone", {{"cone", 90.0}}}};
+    return {{"fast motor", {{"motor_speed", 8.0}}},
+            {"weak motor", {{"motor_torque", 10.0}}},
+            {"stiff bridge", {{"bridge_hertz", 40.0}}},
+            {"wide cone", {{"cone", 90.0}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"max_joint_error_m", "motor_speed_rad_s"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(3.0, 3.2, 0.0), 15.0, 0.0, 0.12}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(3.0, 3.2, 0.0), 15.0, 0.0, 0.12};
+  }
 
  private:
   Real motorSpeed_ = 2.0, motorTorque_ = 500.0, limit_ = degToRad(30.0), cone_ = degToRad(30.0), bridgeHertz_ = 10.0;

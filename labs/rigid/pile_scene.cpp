@@ -9,7 +9,10 @@ using namespace pba;
 class PileScene final : public lab::WorldScene {
  public:
   PileScene() {
-    params_.integer("bodies", &count_, 10, 4000, "", "Number of bodies (per eight: a sphere, a capsule, three boxes, three hulls). Typical 1000.").needsReset();
+    params_
+        .integer("bodies", &count_, 10, 4000, "",
+                 "Number of bodies (per eight: a sphere, a capsule, three boxes, three hulls). Typical 1000.")
+        .needsReset();
   }
   std::string description() const override {
     return "A thousand mixed shapes (spheres, capsules, boxes, hulls) fall and pile up; resting islands sleep (grey).";
@@ -24,7 +27,9 @@ class PileScene final : public lab::WorldScene {
     return {{"small", {{"bodies", 100}}}, {"sap", {{"broad_phase", "sap"}}}, {"no sleeping", {{"sleeping", false}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"kinetic_energy_J", "sleeping"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 2.0, 0.0), 16.0, 0.6, 0.45}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 2.0, 0.0), 16.0, 0.6, 0.45};
+  }
 
  private:
   int count_ = 1000;

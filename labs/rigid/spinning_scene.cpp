@@ -15,8 +15,13 @@ class SpinningScene final : public lab::WorldScene {
     settings_.gyroscopic = rigid::GyroscopicMode::Midpoint;
     settings_.sleeping = false;
     gravity_ = 0.0;
-    params_.real("spin", &spin_, 0.5, 30.0, "rad/s", "Spin about the intermediate axis (along the bar). Typical 6 rad/s.").needsReset();
-    params_.real("perturbation", &perturbation_, 0.0, 1.0, "rad/s", "Small spin about the other axes that grows into the flip.").needsReset();
+    params_
+        .real("spin", &spin_, 0.5, 30.0, "rad/s", "Spin about the intermediate axis (along the bar). Typical 6 rad/s.")
+        .needsReset();
+    params_
+        .real("perturbation", &perturbation_, 0.0, 1.0, "rad/s",
+              "Small spin about the other axes that grows into the flip.")
+        .needsReset();
   }
   std::string description() const override {
     return "A T-handle spinning about its intermediate axis flips over periodically; energy and |L| stay constant "
@@ -55,11 +60,14 @@ class SpinningScene final : public lab::WorldScene {
     d.arrow(b.position, b.position + 0.08 * b.angularVelocity, colors::kPurple);
   }
   std::vector<app::Preset> presets() const override {
-    return {{"gyroscopic off", {{"gyroscopic", "off"}}}, {"implicit (Catto)", {{"gyroscopic", "implicit"}}},
+    return {{"gyroscopic off", {{"gyroscopic", "off"}}},
+            {"implicit (Catto)", {{"gyroscopic", "implicit"}}},
             {"fast", {{"spin", 15.0}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"kinetic_energy_J", "angular_momentum"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 1.5, 0.0), 3.0, 0.6, 0.3}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 1.5, 0.0), 3.0, 0.6, 0.3};
+  }
 
  private:
   rigid::THandle handle_;

@@ -9,9 +9,11 @@ using namespace pba;
 class StackScene final : public lab::WorldScene {
  public:
   StackScene() {
-    settings_.iterations = 2;  // the 210-box pyramid at rest within 1 cm (tests/physics/rigid/contact_behaviour_test.cpp)
+    settings_.iterations =
+        2;  // the 210-box pyramid at rest within 1 cm (tests/physics/rigid/contact_behaviour_test.cpp)
     params_.integer("column", &desc_.columnHeight, 1, 40, "", "Boxes in the vertical stack. Typical 10.").needsReset();
-    params_.integer("pyramid_base", &desc_.pyramidBase, 1, 40, "", "Boxes in the pyramid's bottom row (20: 210 boxes).").needsReset();
+    params_.integer("pyramid_base", &desc_.pyramidBase, 1, 40, "", "Boxes in the pyramid's bottom row (20: 210 boxes).")
+        .needsReset();
     params_.real("friction", &desc_.friction, 0.0, 1.5, "", "Coulomb μ of every box. Typical 0.6.").needsReset();
   }
   std::string description() const override {
@@ -34,11 +36,14 @@ class StackScene final : public lab::WorldScene {
   void extraMetrics(nlohmann::json& j) const override { j["top_drift_m"] = topDrift(); }
   std::vector<app::Preset> presets() const override {
     return {{"no warm start", {{"warm_starting", false}}},
-            {"baumgarte", {{"correction", "baumgarte"}, {"solver_substeps", 1}, {"iterations", 10}, {"relax_iterations", 0}}},
+            {"baumgarte",
+             {{"correction", "baumgarte"}, {"solver_substeps", 1}, {"iterations", 10}, {"relax_iterations", 0}}},
             {"tall column", {{"column", 25}, {"pyramid_base", 5}}}};
   }
   std::vector<std::string> defaultPlots() const override { return {"top_drift_m", "kinetic_energy_J"}; }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(-3.0, 7.0, 0.0), 38.0, 0.1, 0.15}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(-3.0, 7.0, 0.0), 38.0, 0.1, 0.15};
+  }
 
  private:
   rigid::StackDesc desc_;

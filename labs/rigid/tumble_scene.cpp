@@ -3,8 +3,8 @@
 // restitution and a Coulomb friction impulse (the exercises RIGID-1 to RIGID-4, physics/rigid/tumble.h).
 #include <cmath>
 
-#include "app/scene_registry.h"
 #include <glm/gtx/quaternion.hpp>
+#include "app/scene_registry.h"
 
 #include "physics/rigid/tumble.h"
 
@@ -15,8 +15,10 @@ class TumbleScene final : public app::Scene {
  public:
   TumbleScene() {
     params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration (downwards). Earth 9.81.");
-    params_.real("restitution", &settings_.restitution, 0.0, 1.0, "", "Coefficient of restitution e of the impacts (RIGID-3). Typical 0.4.");
-    params_.real("friction", &settings_.friction, 0.0, 2.0, "", "Coulomb friction μ against the ground (RIGID-4). Typical 0.5.");
+    params_.real("restitution", &settings_.restitution, 0.0, 1.0, "",
+                 "Coefficient of restitution e of the impacts (RIGID-3). Typical 0.4.");
+    params_.real("friction", &settings_.friction, 0.0, 2.0, "",
+                 "Coulomb friction μ against the ground (RIGID-4). Typical 0.5.");
     params_.real("height", &height_, 0.5, 5.0, "m", "Drop height of the centre of mass.").needsReset();
     params_.real("mass", &box_.mass, 0.1, 100.0, "kg", "Mass of the box.").needsReset();
     params_.real("spin", &spin_, 0.0, 20.0, "rad/s", "Initial spin about a tilted axis.").needsReset();
@@ -58,13 +60,15 @@ class TumbleScene final : public app::Scene {
   }
 
   nlohmann::json metrics() const override {
-    const Mat3 inertia = rigid::worldInertiaTensor(rigid::boxInertiaTensor(box_.mass, box_.halfExtents), box_.orientation);
+    const Mat3 inertia =
+        rigid::worldInertiaTensor(rigid::boxInertiaTensor(box_.mass, box_.halfExtents), box_.orientation);
     const Vec3 l = inertia * box_.angularVelocity;
     Real impulse = 0.0;
     for (const rigid::TumbleContact& c : contacts_) impulse += c.normalImpulse;
     return {{"bodies", 1},
             {"contacts", contacts_.size()},
-            {"kinetic_energy_J", 0.5 * box_.mass * glm::dot(box_.velocity, box_.velocity) + 0.5 * glm::dot(box_.angularVelocity, l)},
+            {"kinetic_energy_J",
+             0.5 * box_.mass * glm::dot(box_.velocity, box_.velocity) + 0.5 * glm::dot(box_.angularVelocity, l)},
             {"energy_J", rigid::tumbleEnergy(box_, settings_)},
             {"momentum", box_.mass * glm::length(box_.velocity)},
             {"angular_momentum", glm::length(glm::cross(box_.position, box_.mass * box_.velocity) + l)},
@@ -90,7 +94,9 @@ class TumbleScene final : public app::Scene {
             {"ice", {{"restitution", 0.3}, {"friction", 0.02}}},
             {"spinning drop", {{"spin", 8.0}, {"height", 3.0}}}};
   }
-  std::optional<app::CameraView> preferredView() const override { return app::CameraView{Vec3(0.0, 0.1, 0.0), 3.6, 0.6, 0.4}; }
+  std::optional<app::CameraView> preferredView() const override {
+    return app::CameraView{Vec3(0.0, 0.1, 0.0), 3.6, 0.6, 0.4};
+  }
 
  private:
   rigid::TumbleBox box_;

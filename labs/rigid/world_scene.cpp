@@ -8,29 +8,45 @@ namespace pba::lab {
 WorldScene::WorldScene(bool withShooting) : shooting_(withShooting) {
   rigid::WorldSettings& s = settings_;
   params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration (downwards). Earth 9.81.");
-  params_.integer("solver_substeps", &s.substeps, 1, 16, "", "Substeps per step (Box2D v3 soft step): each integrates, solves and relaxes. Typical 4.");
-  params_.integer("iterations", &s.iterations, 1, 50, "", "Velocity iterations per substep, with bias. Typical 1 (soft step) or 10 (Baumgarte, one substep).");
-  params_.integer("relax_iterations", &s.relaxIterations, 0, 10, "", "Iterations per substep without bias after the position update (removes the push-out velocity). Typical 1.");
-  params_.flag("warm_starting", &s.warmStarting, "Start each step from last step's impulses (matched by feature id). Off: stacks sag and jitter.");
-  params_.choiceEnum("correction", &s.positionCorrection, rigid::positionCorrectionNames(),
-                     "Penetration removal: soft (spring of contact_hertz, Box2D v3), baumgarte (β/h × depth beyond the slop), none.");
+  params_.integer("solver_substeps", &s.substeps, 1, 16, "",
+                  "Substeps per step (Box2D v3 soft step): each integrates, solves and relaxes. Typical 4.");
+  params_.integer("iterations", &s.iterations, 1, 50, "",
+                  "Velocity iterations per substep, with bias. Typical 1 (soft step) or 10 (Baumgarte, one substep).");
+  params_.integer(
+      "relax_iterations", &s.relaxIterations, 0, 10, "",
+      "Iterations per substep without bias after the position update (removes the push-out velocity). Typical 1.");
+  params_.flag("warm_starting", &s.warmStarting,
+               "Start each step from last step's impulses (matched by feature id). Off: stacks sag and jitter.");
+  params_.choiceEnum(
+      "correction", &s.positionCorrection, rigid::positionCorrectionNames(),
+      "Penetration removal: soft (spring of contact_hertz, Box2D v3), baumgarte (β/h × depth beyond the slop), none.");
   params_.choiceEnum("friction_model", &s.friction, rigid::frictionModelNames(),
                      "Coulomb friction as a cone (|λ_t| ≤ μλ_n) or a pyramid (each tangent ≤ μλ_n).");
   params_.choiceEnum("gyroscopic", &s.gyroscopic, rigid::gyroscopicModeNames(),
-                     "Gyroscopic term ω × Iω: off (ω constant in free flight), implicit (Catto GDC 2015), midpoint (conserves L and energy).");
-  params_.real("contact_hertz", &s.contactHertz, 1.0, 240.0, "Hz", "Stiffness of soft contacts (capped at a quarter of the substep rate). Typical 30 Hz.").logarithmic();
-  params_.real("contact_damping", &s.contactDampingRatio, 0.0, 20.0, "", "Damping ratio of soft contacts. Typical 10 (no bounce).");
-  params_.real("baumgarte", &s.baumgarte, 0.0, 1.0, "", "β of the Baumgarte bias: share of the penetration removed per step. Typical 0.2.");
-  params_.real("restitution_threshold", &s.restitutionThreshold, 0.0, 10.0, "m/s", "Impacts slower than this do not bounce. Typical 1 m/s.");
+                     "Gyroscopic term ω × Iω: off (ω constant in free flight), implicit (Catto GDC 2015), midpoint "
+                     "(conserves L and energy).");
+  params_
+      .real("contact_hertz", &s.contactHertz, 1.0, 240.0, "Hz",
+            "Stiffness of soft contacts (capped at a quarter of the substep rate). Typical 30 Hz.")
+      .logarithmic();
+  params_.real("contact_damping", &s.contactDampingRatio, 0.0, 20.0, "",
+               "Damping ratio of soft contacts. Typical 10 (no bounce).");
+  params_.real("baumgarte", &s.baumgarte, 0.0, 1.0, "",
+               "β of the Baumgarte bias: share of the penetration removed per step. Typical 0.2.");
+  params_.real("restitution_threshold", &s.restitutionThreshold, 0.0, 10.0, "m/s",
+               "Impacts slower than this do not bounce. Typical 1 m/s.");
   params_.choiceEnum("broad_phase", &s.broadPhase, collision::broadPhaseNames(),
                      "Pair finding: dynamic AABB tree, sweep and prune, or brute force (all pairs; the reference).");
   params_.flag("sleeping", &s.sleeping, "Islands of bodies at rest for 0.5 s sleep (grey) until touched.");
   params_.flag("continuous", &s.continuous, "Time of impact against static bodies for fast bodies (no tunnelling).");
-  params_.flag("show_contacts", &drawOptions_.contacts, "Draw contact points (red: touching, grey: speculative) and normals (yellow).");
+  params_.flag("show_contacts", &drawOptions_.contacts,
+               "Draw contact points (red: touching, grey: speculative) and normals (yellow).");
   params_.flag("show_impulses", &drawOptions_.impulses, "Draw normal impulses as orange arrows.");
   params_.flag("show_aabb_tree", &drawOptions_.aabbTree, "Draw the broad phase's AABB tree.");
   params_.flag("show_frames", &drawOptions_.frames, "Draw each body's frame (x red, y green, z blue).");
-  if (shooting_) params_.real("shot_speed", &shotSpeed_, 1.0, 100.0, "m/s", "Speed of the ball shot by clicking where no body is. Typical 15 m/s.");
+  if (shooting_)
+    params_.real("shot_speed", &shotSpeed_, 1.0, 100.0, "m/s",
+                 "Speed of the ball shot by clicking where no body is. Typical 15 m/s.");
 }
 
 void WorldScene::reset() {

@@ -28,10 +28,13 @@ TEST(CommandLineFlags, ALabFlagRemembersTheOptionThatSetIt) {
 }
 
 TEST(CommandLineFlags, OverrideErrorsNameTheFlagTyped) {
-  EXPECT_EQ(overrideError({"links", "0", "--links"}, "links: must be in [1, 1000], got 0"), "--links: must be in [1, 1000], got 0");
-  EXPECT_EQ(overrideError({"integrator", "leapfrog", "--integrator"}, "integrator: unknown value 'leapfrog' (one of: euler, rk4)"),
+  EXPECT_EQ(overrideError({"links", "0", "--links"}, "links: must be in [1, 1000], got 0"),
+            "--links: must be in [1, 1000], got 0");
+  EXPECT_EQ(overrideError({"integrator", "leapfrog", "--integrator"},
+                          "integrator: unknown value 'leapfrog' (one of: euler, rk4)"),
             "--integrator: unknown value 'leapfrog' (one of: euler, rk4)");
-  EXPECT_EQ(overrideError({"links", "0", "--set"}, "links: must be in [1, 1000], got 0"), "--set links: must be in [1, 1000], got 0");
+  EXPECT_EQ(overrideError({"links", "0", "--set"}, "links: must be in [1, 1000], got 0"),
+            "--set links: must be in [1, 1000], got 0");
 }
 
 TEST(CommandLineFlags, PrepareRunnerNamesTheLabFlagOfABadValue) {
@@ -45,7 +48,8 @@ TEST(CommandLineFlags, AFlagForAnotherSceneSaysSoInsteadOfNoSuchParameter) {
   SceneRunner r;
   const Status s = prepareRunner("test", parseArgs({"--scene", "constant", "--test-missing", "1"}).value(), r);
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.error(), "--test-missing: not a parameter of scene 'constant' (see --help for the scene each lab option selects)");
+  EXPECT_EQ(s.error(),
+            "--test-missing: not a parameter of scene 'constant' (see --help for the scene each lab option selects)");
 }
 
 TEST(CommandLineFlags, FramesAndSecondsAreBounded) {

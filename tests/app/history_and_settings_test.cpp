@@ -59,7 +59,8 @@ TEST(PlotScale, ANearlyConstantSeriesIsPlottedAsItsDeviationFromTheMean) {
   double mean = 0.0;
   for (double e : energy) mean += e / 100.0;
   EXPECT_NEAR(scale.offset, mean, 1e-15);
-  EXPECT_NEAR(scale.hi - scale.lo, *std::max_element(energy.begin(), energy.end()) - *std::min_element(energy.begin(), energy.end()), 1e-15);
+  EXPECT_NEAR(scale.hi - scale.lo,
+              *std::max_element(energy.begin(), energy.end()) - *std::min_element(energy.begin(), energy.end()), 1e-15);
   const std::string caption = pba::app::plotCaption("energy_J", energy, scale);
   EXPECT_NE(caption.find("mean 0.5"), std::string::npos) << caption;
   EXPECT_EQ(caption.find("[0.5, 0.5]"), std::string::npos) << caption;
@@ -70,7 +71,8 @@ TEST(PlotScale, ANarrowRangeIsPrintedWithEnoughDigitsToTellItsEndsApart) {
   const pba::app::PlotScale scale = pba::app::plotScale(series);
   EXPECT_FALSE(scale.deviation);
   EXPECT_EQ(scale.offset, 0.0);
-  EXPECT_NE(pba::app::plotCaption("x", series, scale).find("[1.001, 1.004]"), std::string::npos) << pba::app::plotCaption("x", series, scale);
+  EXPECT_NE(pba::app::plotCaption("x", series, scale).find("[1.001, 1.004]"), std::string::npos)
+      << pba::app::plotCaption("x", series, scale);
 }
 
 TEST(PlotScale, AConstantSeriesGetsABandAroundItsValue) {

@@ -35,7 +35,8 @@ TEST(Params, SetFromTextParsesEveryKindAndValidatesTheRange) {
 
 TEST(Params, SetFromJsonChecksTypesAndPrefixesTheField) {
   ConstantVelocityScene s;
-  EXPECT_EQ(s.params().setFromJson("speed", "fast", "params.").error(), "params.speed: expected a number, got \"fast\"");
+  EXPECT_EQ(s.params().setFromJson("speed", "fast", "params.").error(),
+            "params.speed: expected a number, got \"fast\"");
   EXPECT_EQ(s.params().setFromJson("visible", 1, "params.").error(), "params.visible: expected true or false, got 1");
   EXPECT_NE(s.params().setFromJson("mode", "x", "params.").error().find("params.mode"), std::string::npos);
   EXPECT_EQ(s.params().setFromJson("label", 3, "params.").error(), "params.label: expected a string, got 3");

@@ -79,8 +79,8 @@ class FusedPoolScene final : public Scene {
 };
 
 struct Injection {
-  bool position;           // NaN into the position (else +∞ into the velocity)
-  const char* expected;    // what the guard message must say
+  bool position;                  // NaN into the position (else +∞ into the velocity)
+  const char* expected;           // what the guard message must say
   const char* alsoExpected = "";  // and this (may be empty)
 };
 

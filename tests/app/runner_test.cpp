@@ -96,7 +96,7 @@ TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
 
 TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   SceneRunner r;
-  ASSERT_TRUE(r.load("constant", 1).ok());  // energy 0.5 J at reset
+  ASSERT_TRUE(r.load("constant", 1).ok());                    // energy 0.5 J at reset
   sceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine
   r.advanceFrame(0.1);
   EXPECT_FALSE(r.paused());
@@ -132,8 +132,8 @@ Result<LabOptions> parse(std::vector<const char*> args) {
 }
 
 TEST(CommandLine, ParsesTheContractOfDesignSection4) {
-  auto r = parse({"--scene", "constant", "--headless", "--frames", "12", "--dt", "0.005", "--metrics", "-", "--seed", "9",
-                  "--lecture", "--set", "speed=2", "--substeps=3"});
+  auto r = parse({"--scene", "constant", "--headless", "--frames", "12", "--dt", "0.005", "--metrics", "-", "--seed",
+                  "9", "--lecture", "--set", "speed=2", "--substeps=3"});
   ASSERT_TRUE(r.ok()) << r.error();
   const LabOptions& o = r.value();
   EXPECT_EQ(o.scene, "constant");

@@ -53,8 +53,9 @@ TEST(TargetNudge, ArrowsMoveInTheViewPlaneAndPageKeysAlongTheViewDirection) {
 
 TEST(TargetNudge, NoStandardKeyOfTheLabsNudges) {
   // docs/architecture.md §3: Space/P, O, R, [ ], 1–9, F1/H, F12, L, Tab, F.
-  const int standard[] = {GLFW_KEY_SPACE, GLFW_KEY_P, GLFW_KEY_O, GLFW_KEY_R, GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET,
-                          GLFW_KEY_F1, GLFW_KEY_H, GLFW_KEY_F12, GLFW_KEY_L, GLFW_KEY_TAB, GLFW_KEY_F};
+  const int standard[] = {GLFW_KEY_SPACE,         GLFW_KEY_P,  GLFW_KEY_O, GLFW_KEY_R,   GLFW_KEY_LEFT_BRACKET,
+                          GLFW_KEY_RIGHT_BRACKET, GLFW_KEY_F1, GLFW_KEY_H, GLFW_KEY_F12, GLFW_KEY_L,
+                          GLFW_KEY_TAB,           GLFW_KEY_F};
   for (int key : standard) EXPECT_FALSE(nudgeDirectionForKey(key, 0).has_value()) << "GLFW key " << key;
   for (int key = GLFW_KEY_1; key <= GLFW_KEY_9; ++key) EXPECT_FALSE(nudgeDirectionForKey(key, 0).has_value());
 }

@@ -158,9 +158,15 @@ TEST(OrbitCamera, NoOrbitPanOrZoomTakesTheEyeBelowTheGround) {
   OrbitCamera c;
   for (int i = 0; i < 2000; ++i) {
     switch (i % 3) {
-      case 0: c.rotate(400.0f * u(rng), 400.0f * u(rng)); break;
-      case 1: c.pan(300.0f * u(rng), 300.0f * u(rng), glm::vec2(kW, kH)); break;
-      default: c.zoom(5.0f * u(rng)); break;
+      case 0:
+        c.rotate(400.0f * u(rng), 400.0f * u(rng));
+        break;
+      case 1:
+        c.pan(300.0f * u(rng), 300.0f * u(rng), glm::vec2(kW, kH));
+        break;
+      default:
+        c.zoom(5.0f * u(rng));
+        break;
     }
     ASSERT_GE(c.eye().y, c.groundHeight + 0.99f * c.minEyeHeight()) << "seed 15, step " << i;
     ASSERT_GE(c.target.y, c.groundHeight) << "seed 15, step " << i;

@@ -115,7 +115,8 @@ TEST(Skinning, CpuLinearBlendSkinningMatchesAHandWrittenReference) {
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
       // Reference: blend the matrices first, then transform (algebraically equal to blending points).
       glm::mat4 blended(0.0f);
-      for (int k = 0; k < 4; ++k) blended += mesh.boneWeights[v][k] * skin[static_cast<std::size_t>(mesh.boneIds[v][k])];
+      for (int k = 0; k < 4; ++k)
+        blended += mesh.boneWeights[v][k] * skin[static_cast<std::size_t>(mesh.boneIds[v][k])];
       const glm::vec3 expected = glm::vec3(blended * glm::vec4(mesh.positions[v], 1.0f));
       EXPECT_LT(glm::distance(skinned[v], expected), 1e-5f) << "vertex " << v;
     }
@@ -155,7 +156,8 @@ TEST(ModelImport, MissingFileGivesAnErrorNamingThePath) {
 
 TEST(ModelImport, GarbageFileGivesAnErrorNamingThePathAndDoesNotCrash) {
   for (const char* ext : {".gltf", ".obj", ".fbx", ".bvh", ".dae", ".xyz"}) {
-    const std::string path = (std::filesystem::temp_directory_path() / (std::string("pba_garbage_model") + ext)).string();
+    const std::string path =
+        (std::filesystem::temp_directory_path() / (std::string("pba_garbage_model") + ext)).string();
     {
       std::ofstream out(path, std::ios::binary);
       for (int i = 0; i < 997; ++i) out.put(static_cast<char>((i * 7919 + 13) % 251));

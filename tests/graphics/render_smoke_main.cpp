@@ -42,8 +42,9 @@ void drawScene(gfx::DebugRenderer& debug) {
   glm::vec3 prev(-3.2f, 2.8f, -1.6f);
   debug.point(prev, 12.0f, colors::kDark);
   for (int i = 1; i <= 6; ++i) {
-    const glm::vec3 p = glm::vec3(-3.2f + 0.35f * static_cast<float>(i), 2.8f - 0.12f * static_cast<float>(i * i) * 0.5f,
-                                  -1.6f + 0.1f * static_cast<float>(i));
+    const glm::vec3 p =
+        glm::vec3(-3.2f + 0.35f * static_cast<float>(i), 2.8f - 0.12f * static_cast<float>(i * i) * 0.5f,
+                  -1.6f + 0.1f * static_cast<float>(i));
     debug.line(prev, p, colors::kDark);
     debug.point(p, 10.0f, colors::categorical(i));
     prev = p;
@@ -58,8 +59,8 @@ void drawBvhSkeleton(gfx::DebugRenderer& debug, const gfx::Model& bvh, float t) 
   if (bvh.animations.empty()) return;
   const auto global = gfx::globalTransforms(bvh, gfx::sampleAnimation(bvh, bvh.animations[0], t));
   // CMU BVH files are in inches-ish units (~ 0.056 m); place the figure behind the primitives.
-  const glm::mat4 place = glm::translate(glm::mat4(1.0f), glm::vec3(-3.8f, 0.0f, -2.5f)) *
-                          glm::scale(glm::mat4(1.0f), glm::vec3(0.056f));
+  const glm::mat4 place =
+      glm::translate(glm::mat4(1.0f), glm::vec3(-3.8f, 0.0f, -2.5f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.056f));
   for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
     const int parent = bvh.nodes[i].parent;
     if (parent < 0) continue;
@@ -138,10 +139,11 @@ int main(int argc, char** argv) {
     }
     renderer->beginFrame(camera, size.x, size.y);
     debug.flush(*renderer);
-    const auto pose = gfx::sampleAnimation(*skin, skin->animations.empty() ? gfx::Animation{} : skin->animations[0], 0.5f);
+    const auto pose =
+        gfx::sampleAnimation(*skin, skin->animations.empty() ? gfx::Animation{} : skin->animations[0], 0.5f);
     const auto skinning = gfx::skinningMatrices(*skin, gfx::globalTransforms(*skin, pose));
-    const glm::mat4 place = glm::translate(glm::mat4(1.0f), glm::vec3(3.6f, 0.0f, -1.6f)) *
-                            glm::scale(glm::mat4(1.0f), glm::vec3(0.9f));
+    const glm::mat4 place =
+        glm::translate(glm::mat4(1.0f), glm::vec3(3.6f, 0.0f, -1.6f)) * glm::scale(glm::mat4(1.0f), glm::vec3(0.9f));
     for (const auto& mesh : skinMeshes) renderer->drawSkinned(*mesh, skinning, place, colors::kPink);
     renderer->endFrame();
     if (frame + 1 == frames) {

@@ -13,8 +13,10 @@ TEST(ShaderLog, MesaNvidiaAndGenericLinesAreMappedToFileAndLine) {
   const std::vector<std::string> files = {"/s/lit.frag", "/s/lighting.glsl"};
   // Lines of the included file k are numbered k * 100000 + L by preprocessShaderFile.
   EXPECT_EQ(gfx::mapShaderLog("0:12(3): error: `x' undeclared\n", files), "/s/lit.frag:12: error: `x' undeclared\n");
-  EXPECT_EQ(gfx::mapShaderLog("0:100045(9): error: `x' undeclared\n", files), "/s/lighting.glsl:45: error: `x' undeclared\n");
-  EXPECT_EQ(gfx::mapShaderLog("0(100007) : error C0000: syntax error\n", files), "/s/lighting.glsl:7: error C0000: syntax error\n");
+  EXPECT_EQ(gfx::mapShaderLog("0:100045(9): error: `x' undeclared\n", files),
+            "/s/lighting.glsl:45: error: `x' undeclared\n");
+  EXPECT_EQ(gfx::mapShaderLog("0(100007) : error C0000: syntax error\n", files),
+            "/s/lighting.glsl:7: error C0000: syntax error\n");
   EXPECT_EQ(gfx::mapShaderLog("ERROR: 0:4: 'y' : undeclared\n", files), "/s/lit.frag:4: ERROR: 'y' : undeclared\n");
   EXPECT_EQ(gfx::mapShaderLog("plain text\n", files), "plain text\n");
 }

@@ -39,7 +39,8 @@ TEST(IkCharacterSkin, VerticesBoundToOneBoneMoveRigidlyWithItsJoint) {
     ASSERT_EQ(posed[m].positions.size(), mesh.positions.size());
     if (!mesh.skinned()) continue;
     for (size_t v = 0; v < mesh.positions.size(); ++v) {
-      const int k = static_cast<int>(std::max_element(&mesh.boneWeights[v][0], &mesh.boneWeights[v][0] + 4) - &mesh.boneWeights[v][0]);
+      const int k = static_cast<int>(std::max_element(&mesh.boneWeights[v][0], &mesh.boneWeights[v][0] + 4) -
+                                     &mesh.boneWeights[v][0]);
       if (mesh.boneWeights[v][k] < 0.9999f) continue;
       const auto node = static_cast<size_t>(skin.model->bones[static_cast<size_t>(mesh.boneIds[v][k])].node);
       // Coordinates in the joint's frame are the same in both poses.
@@ -65,7 +66,9 @@ TEST(IkCharacterSkin, AtRestTheMeshSurroundsTheSkeleton) {
     for (const Vec3& p : surface.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   int inside = 0;
   const Vec3 margin(0.02 * desc.height);
-  for (const Frame& f : rest) inside += glm::all(glm::greaterThanEqual(f.position, lo - margin)) && glm::all(glm::lessThanEqual(f.position, hi + margin));
+  for (const Frame& f : rest)
+    inside += glm::all(glm::greaterThanEqual(f.position, lo - margin)) &&
+              glm::all(glm::lessThanEqual(f.position, hi + margin));
   EXPECT_GE(inside, static_cast<int>(0.9 * static_cast<double>(rest.size()))) << "of " << rest.size() << " joints";
 }
 

@@ -24,7 +24,8 @@ TEST(IkComparisonLegend, EveryMethodHasAnEntryThatReadsOnWhite) {
   const std::vector<app::LegendEntry> legend = scene->legend();
   ASSERT_GE(legend.size(), 8u) << "one entry per method";
   for (const app::LegendEntry& e : legend)
-    EXPECT_GE(contrastOnWhite(e.color), 3.0) << e.text << ": rgb " << e.color.r << ", " << e.color.g << ", " << e.color.b;
+    EXPECT_GE(contrastOnWhite(e.color), 3.0)
+        << e.text << ": rgb " << e.color.r << ", " << e.color.g << ", " << e.color.b;
 }
 
 }  // namespace

@@ -41,11 +41,13 @@ int checkMetrics(const std::string& path, const std::string& lab, const std::str
   if (m.value("lab", "") != lab) return bad("lab is not '" + lab + "'");
   if (!m.contains("scene") || !m["scene"].is_string()) return bad("scene missing");
   if (!scene.empty() && m["scene"] != scene) return bad("scene is not '" + scene + "'");
-  if (!m.contains("frames") || !m["frames"].is_number_integer() || m["frames"].get<long>() < 1) return bad("frames missing or < 1");
+  if (!m.contains("frames") || !m["frames"].is_number_integer() || m["frames"].get<long>() < 1)
+    return bad("frames missing or < 1");
   if (!m.contains("sim_time_s") || !m["sim_time_s"].is_number() || !(m["sim_time_s"].get<double>() > 0.0))
     return bad("sim_time_s missing or not > 0");
   for (const char* k : {"median", "p95", "max"}) {
-    if (!m.contains("step_ms") || !m["step_ms"].contains(k) || !m["step_ms"][k].is_number() || m["step_ms"][k].get<double>() < 0.0)
+    if (!m.contains("step_ms") || !m["step_ms"].contains(k) || !m["step_ms"][k].is_number() ||
+        m["step_ms"][k].get<double>() < 0.0)
       return bad(std::string("step_ms.") + k + " missing or negative");
   }
   if (!(m["step_ms"]["median"].get<double>() <= m["step_ms"]["p95"].get<double>() &&
@@ -55,7 +57,8 @@ int checkMetrics(const std::string& path, const std::string& lab, const std::str
   if (!m.contains(lab) || !m[lab].is_object() || m[lab].empty()) return bad("no scene metrics under '" + lab + "'");
   for (const auto& [key, value] : m[lab].items()) {
     if (value.is_null()) return bad("scene metric " + key + " is null (non-finite)");
-    if (value.is_number_float() && !std::isfinite(value.get<double>())) return bad("scene metric " + key + " is not finite");
+    if (value.is_number_float() && !std::isfinite(value.get<double>()))
+      return bad("scene metric " + key + " is not finite");
   }
   return 0;
 }

@@ -101,5 +101,32 @@ case "$check" in
     done
     echo "ok: screenshots of every scene are not blank"
     ;;
+  record)
+    # --record: an MP4 of 2 s has 120 frames of the window's size, a PNG folder one file a frame, a GIF
+    # is a GIF; no ffmpeg on PATH: exit 2 naming the package; bad paths and --headless: exit 2.
+    expect_exit 2 "--record: expected FILE.mp4, FILE.gif or DIR/" --record "$work/a.avi"
+    expect_exit 2 "--record needs a window" --headless --record "$work/a.mp4"
+    run=()
+    [[ -z "${DISPLAY:-}" ]] && run=(xvfb-run -a -s "-screen 0 1280x720x24")
+    "${run[@]}" "$exe" --record "$work/a.mp4" --seconds 2 --metrics "$work/a.json" 2>"$work/a.err" ||
+      fail "--record a.mp4 exited $?: $(cat "$work/a.err")"
+    probe="$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=codec_name,width,height,nb_read_frames -of csv=p=0 "$work/a.mp4")"
+    [[ "$probe" == "h264,1280,720,120" ]] || fail "a.mp4: ffprobe says '$probe', expected h264,1280,720,120"
+    grep -q '"frames": 120' "$work/a.json" || fail "the metrics do not report the 120 recorded frames"
+    "${run[@]}" "$exe" --record "$work/frames/" --frames 10 --record-ui on 2>"$work/png.err" ||
+      fail "--record frames/ exited $?: $(cat "$work/png.err")"
+    n="$(find "$work/frames" -name 'frame-*.png' | wc -l)"
+    [[ "$n" -eq 10 ]] || fail "frames/: $n PNG files, expected 10"
+    "$checker" image "$work/frames/frame-000010.png" || fail "frames/frame-000010.png looks blank"
+    "${run[@]}" "$exe" --record "$work/a.gif" --frames 20 2>"$work/gif.err" || fail "--record a.gif exited $?: $(cat "$work/gif.err")"
+    [[ "$(ffprobe -v error -select_streams v:0 -show_entries stream=codec_name -of csv=p=0 "$work/a.gif")" == gif ]] ||
+      fail "a.gif is not a GIF"
+    "${run[@]}" env PATH=/nonexistent "$exe" --record "$work/b.mp4" --frames 5 2>"$work/noff.err"
+    rc=$?
+    [[ $rc -eq 2 ]] || fail "without ffmpeg --record b.mp4 exited $rc, expected 2"
+    grep -q "b.mp4: recording MP4 or GIF needs ffmpeg, which is not installed (apt-get install ffmpeg)" "$work/noff.err" ||
+      fail "without ffmpeg the message is: $(cat "$work/noff.err")"
+    echo "ok: MP4 (120 frames, 1280x720), 10 PNG files, a GIF; no ffmpeg: exit 2 naming the package"
+    ;;
   *) fail "unknown check $check" ;;
 esac

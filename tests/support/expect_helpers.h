@@ -4,10 +4,10 @@
 
 #include "physics/core/types.h"
 
-#define EXPECT_VEC3_NEAR(actual, expected, tolerance)        \
-  do {                                                       \
-    const ::pba::Vec3 pbaActual_ = (actual);                 \
-    const ::pba::Vec3 pbaExpected_ = (expected);             \
+#define EXPECT_VEC3_NEAR(actual, expected, tolerance)                          \
+  do {                                                                         \
+    const ::pba::Vec3 pbaActual_ = (actual);                                   \
+    const ::pba::Vec3 pbaExpected_ = (expected);                               \
     EXPECT_NEAR(pbaActual_.x, pbaExpected_.x, (tolerance)) << "x of " #actual; \
     EXPECT_NEAR(pbaActual_.y, pbaExpected_.y, (tolerance)) << "y of " #actual; \
     EXPECT_NEAR(pbaActual_.z, pbaExpected_.z, (tolerance)) << "z of " #actual; \

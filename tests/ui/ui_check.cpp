@@ -100,7 +100,8 @@ void checkScenes(const std::string& exe, const std::string& work) {
 
 /// Parameter values agree: numbers to 1e-9 relative (angles pass through radians), others exactly.
 bool sameValue(const json& a, const json& b) {
-  if (a.is_number() && b.is_number()) return near(a.get<double>(), b.get<double>(), 1e-9 * std::max(1.0, std::abs(b.get<double>())));
+  if (a.is_number() && b.is_number())
+    return near(a.get<double>(), b.get<double>(), 1e-9 * std::max(1.0, std::abs(b.get<double>())));
   return a == b;
 }
 
@@ -124,11 +125,13 @@ void checkPresets(const std::string& exe, const std::string& work) {
       const json& preset = presets[static_cast<size_t>(k - 1)];
       lab.key(std::to_string(k));
       const std::string message = "Preset " + std::to_string(k) + ": " + preset["name"].get<std::string>();
-      const json s = lab.waitFor([&](const json& st) { return st["message"] == message; }, "key " + std::to_string(k) + " on " + list[index]);
+      const json s = lab.waitFor([&](const json& st) { return st["message"] == message; },
+                                 "key " + std::to_string(k) + " on " + list[index]);
       for (const auto& [name, value] : defaults.items()) {
         const json& want = preset["params"].contains(name) ? preset["params"][name] : value;
-        expect(sameValue(s["params"][name], want), list[index] + " preset " + std::to_string(k) + ": parameter " + name + " is " +
-                                                         s["params"][name].dump() + ", expected " + want.dump());
+        expect(sameValue(s["params"][name], want), list[index] + " preset " + std::to_string(k) + ": parameter " +
+                                                       name + " is " + s["params"][name].dump() + ", expected " +
+                                                       want.dump());
       }
       ++checked;
     }
@@ -155,25 +158,68 @@ void checkHelp(const std::string& exe, const std::string& work) {
 void checkScreenshot(const std::string& exe, const std::string& work) {
   LabWindow lab(exe, {}, work);
   lab.key("F12");
-  const json s = lab.waitFor([](const json& st) { return !st["last_screenshot"].get<std::string>().empty(); }, "F12 to save");
+  const json s =
+      lab.waitFor([](const json& st) { return !st["last_screenshot"].get<std::string>().empty(); }, "F12 to save");
   const std::string file = s["last_screenshot"];
   const json shown = lab.waitFor(
-      [&](const json& st) { return st["notice"].get<std::string>().find(file) != std::string::npos && hasWindow(st, "##notice"); },
+      [&](const json& st) {
+        return st["notice"].get<std::string>().find(file) != std::string::npos && hasWindow(st, "##notice");
+      },
       "the notice naming " + file);
   std::ifstream png(fs::path(work) / file, std::ios::binary);
   char magic[8] = {};
   png.read(magic, 8);
   expect(png && std::string(magic + 1, 3) == "PNG", file + " is not a PNG in " + work);
   const double shownAt = shown["frame"].get<double>();
-  const json gone = lab.waitFor([](const json& st) { return st["notice"].get<std::string>().empty(); }, "the notice to go", 10.0);
+  const json gone =
+      lab.waitFor([](const json& st) { return st["notice"].get<std::string>().empty(); }, "the notice to go", 10.0);
   expect(gone["frame"].get<double>() > shownAt, "the notice vanished at once");
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
+// F9 starts a recording (MP4 with ffmpeg, else PNG files) and F9 stops it: every recorded frame is
+// exactly one display frame (1/60 s) of simulated time, so the clock advanced by frames / 60 while it
+// ran, whatever the wall clock did; the file is named on screen and exists.
+void checkRecord(const std::string& exe, const std::string& work) {
+  LabWindow lab(exe, {}, work);
+  lab.frames(2);
+  lab.key("F9");
+  const json started =
+      lab.waitFor([](const json& st) { return !st["recording"].get<std::string>().empty(); }, "F9 to start recording");
+  const json later = lab.waitFor(
+      [&](const json& st) { return st["frame"].get<long>() >= started["frame"].get<long>() + 20; }, "20 frames");
+  lab.key("F9");
+  const json stopped = lab.waitFor(
+      [](const json& st) { return st["message"].get<std::string>().rfind("Recorded ", 0) == 0; }, "F9 to stop");
+  expect(stopped["recording"].get<std::string>().empty(), "the recording indicator stayed on");
+  const std::string message = stopped["message"];
+  long frames = 0;
+  char path[512] = {};
+  expect(std::sscanf(message.c_str(), "Recorded %ld frames (%*f s at %*d frames/s) to %511s", &frames, path) == 2,
+         "the message does not name the frames and the file: " + message);
+  expect(frames >= 20, "only " + std::to_string(frames) + " frames recorded in 20 displayed frames");
+  const fs::path file = fs::path(work) / path;
+  expect(fs::exists(file) && (fs::is_directory(file) ? !fs::is_empty(file) : fs::file_size(file) > 0),
+         file.string() + " was not written");
+  // Every recorded frame advanced the clock by exactly one display frame (1/60 s), whatever the wall
+  // clock did: the simulated time between the status that showed the recording start and the one that
+  // showed it stopped is frames / 60.
+  const double recorded = stopped["sim_time_s"].get<double>() - started["sim_time_s"].get<double>();
+  expect(std::abs(recorded - static_cast<double>(frames) / 60.0) < 1e-9,
+         "the clock advanced " + std::to_string(recorded) + " s while " + std::to_string(frames) +
+             " frames were recorded (expected frames / 60 s)");
+  expect(later["sim_time_s"].get<double>() > started["sim_time_s"].get<double>(),
+         "the scene did not run while recording");
+  expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
 json setLecture(LabWindow& lab, const std::string& how, bool want) {
-  if (how == "key") lab.key("l");
-  else lab.clickWidget("lecture_checkbox", "View");
-  json s = lab.waitFor([want](const json& st) { return st["lecture"] == want; }, how + (want ? " lecture on" : " lecture off"));
+  if (how == "key")
+    lab.key("l");
+  else
+    lab.clickWidget("lecture_checkbox", "View");
+  json s = lab.waitFor([want](const json& st) { return st["lecture"] == want; },
+                       how + (want ? " lecture on" : " lecture off"));
   return lab.frames(2);  // a few whole frames in the new mode: it renders, nothing aborts
 }
 
@@ -248,8 +294,8 @@ void checkFrame(const std::string& exe, const std::string& work) {
   const long at = lab.status()["frame"];
   const json s = lab.waitFor([at](const json& st) { return st["frame"].get<long>() > at + 2; }, "F to frame");
   const double pitch = s["camera"]["pitch"];
-  expect(near(pitch, initialPitch, 1e-4), "F left the pitch at " + std::to_string(pitch) + " rad, not the framing's " +
-                                              std::to_string(initialPitch));
+  expect(near(pitch, initialPitch, 1e-4),
+         "F left the pitch at " + std::to_string(pitch) + " rad, not the framing's " + std::to_string(initialPitch));
   expect(eyeHeight(s) > 0.0, "after F the eye is below the ground");
   expect(!s["scene_rect"].is_null(), "after F nothing of the scene is in front of the camera");
   const Rect scene = Rect::fromJson(s["scene_rect"]);
@@ -286,7 +332,8 @@ json sceneWithHandle(LabWindow& lab, const std::vector<std::string>& list, doubl
     lab.key("bracketright");
     lab.waitFor([&](const json& st) { return st["scene"] != current; }, "] to switch scenes");
   }
-  if (most == 0 && !anyReported) throw NothingToCheck("no scene of this lab reports its draggable objects (Scene::dragHandles)");
+  if (most == 0 && !anyReported)
+    throw NothingToCheck("no scene of this lab reports its draggable objects (Scene::dragHandles)");
   expect(most > 0, "no scene of this lab shows a draggable object away from the panels");
   for (size_t i = 0; i < list.size() && lab.status()["scene"] != best; ++i) {
     const std::string current = lab.status()["scene"];
@@ -313,7 +360,8 @@ void checkDrag(const std::string& exe, const std::string& work) {
   lab.frames(2);
   lab.press(1);
   const int handle = h["handle"];
-  lab.waitFor([handle](const json& s) { return !s["picked"].is_null() && s["picked"]["handle"] == handle; }, "the pick");
+  lab.waitFor([handle](const json& s) { return !s["picked"].is_null() && s["picked"]["handle"] == handle; },
+              "the pick");
   for (int i = 1; i <= 4; ++i) {
     lab.move(px + dx * i / 4, py + dy * i / 4);
     lab.frames(2);
@@ -338,8 +386,9 @@ void checkDrag(const std::string& exe, const std::string& work) {
     along += moved[k] * vecAt(cam["forward"], k);
   }
   // 12 %: the pick point lies on the object's surface, nearer than its centre by up to its radius.
-  std::printf("scene %s handle %d moved %.4f m, expected %.4f m, error %.4f m\n", s["scene"].get<std::string>().c_str(), handle,
-              std::sqrt(moved[0] * moved[0] + moved[1] * moved[1] + moved[2] * moved[2]), std::sqrt(length), std::sqrt(error));
+  std::printf("scene %s handle %d moved %.4f m, expected %.4f m, error %.4f m\n", s["scene"].get<std::string>().c_str(),
+              handle, std::sqrt(moved[0] * moved[0] + moved[1] * moved[1] + moved[2] * moved[2]), std::sqrt(length),
+              std::sqrt(error));
   expect(std::sqrt(error) <= 0.12 * std::sqrt(length), "the dragged object did not follow the cursor");
   expect(std::abs(along) <= 0.05 * std::sqrt(length), "the drag moved the object toward or away from the camera");
   expect(lab.close() == 0, "the lab did not exit cleanly");
@@ -355,17 +404,19 @@ void checkOrbitAndZoom(const std::string& exe, const std::string& work) {
   const json s1 = lab.frames(1);
   const double turned = std::remainder(s1["camera"]["yaw"].get<double>() - yaw0, 2.0 * M_PI);
   const double speed = s1["camera"]["rotate_speed"];
-  expect(near(turned, -100 * speed, 0.05 * 100 * speed), "a 100 px right drag turned the yaw by " + std::to_string(turned) + " rad");
+  expect(near(turned, -100 * speed, 0.05 * 100 * speed),
+         "a 100 px right drag turned the yaw by " + std::to_string(turned) + " rad");
   expect(near(s1["camera"]["pitch"], pitch0, 1e-6), "a horizontal right drag changed the pitch");
   const double d0 = s1["camera"]["distance"];
   lab.move(x, y);
   lab.frames(2);
   lab.wheel(3);
   const double factor = std::pow(s1["camera"]["zoom_factor"].get<double>(), 3);
-  const json s2 = lab.waitFor([&](const json& s) { return s["camera"]["distance"].get<double>() < d0 * (1.0 + factor) / 2.0; }, "the wheel");
+  const json s2 = lab.waitFor(
+      [&](const json& s) { return s["camera"]["distance"].get<double>() < d0 * (1.0 + factor) / 2.0; }, "the wheel");
   const json s3 = lab.frames(2);
-  expect(near(s3["camera"]["distance"].get<double>() / d0, factor, 1e-4), "three wheel steps zoomed by " +
-                                                                             std::to_string(s3["camera"]["distance"].get<double>() / d0));
+  expect(near(s3["camera"]["distance"].get<double>() / d0, factor, 1e-4),
+         "three wheel steps zoomed by " + std::to_string(s3["camera"]["distance"].get<double>() / d0));
   (void)s2;
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
@@ -391,11 +442,13 @@ void checkBadSceneFile(const std::string& exe, const std::string& work) {
   lab.type(bad);
   lab.frames(2);
   lab.clickWidget("load_button", "Scene file");
-  const json s = lab.waitFor([](const json& st) { return st["file_error"].get<std::string>().find("bad.json") != std::string::npos; },
-                             "the file's error");
+  const json s = lab.waitFor(
+      [](const json& st) { return st["file_error"].get<std::string>().find("bad.json") != std::string::npos; },
+      "the file's error");
   expect(s["scene"] == scene, "the bad file replaced the scene");
   const long steps = s["steps"];
-  lab.waitFor([steps](const json& st) { return st["steps"].get<long>() > steps && st["paused"] == false; }, "the scene to keep running");
+  lab.waitFor([steps](const json& st) { return st["steps"].get<long>() > steps && st["paused"] == false; },
+              "the scene to keep running");
   std::cout << "error shown: " << s["file_error"].get<std::string>() << '\n';
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
@@ -432,29 +485,46 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
     std::erase_if(all, [](const auto& w) { return w.first == "##banner"; });
     for (size_t a = 0; a < all.size(); ++a)
       for (size_t b = a + 1; b < all.size(); ++b)
-        expect(all[a].second.intersect(all[b].second).area() <= 0.01 * std::min(all[a].second.area(), all[b].second.area()),
+        expect(all[a].second.intersect(all[b].second).area() <=
+                   0.01 * std::min(all[a].second.area(), all[b].second.area()),
                list[index] + ": the windows " + all[a].first + " and " + all[b].first + " overlap");
-    std::printf("%-14s panel %.0f%% of the width; free %.0f%% of the screen, largest window %.0f%%; %.0f%% of the scene covered\n",
-                list[index].c_str(), 100 * panelWidth / view.width(), 100 * free / view.area(), 100 * largest / view.area(),
-                100 * covered / std::max(picture.area(), 1.0));
+    std::printf(
+        "%-14s panel %.0f%% of the width; free %.0f%% of the screen, largest window %.0f%%; %.0f%% of the scene "
+        "covered\n",
+        list[index].c_str(), 100 * panelWidth / view.width(), 100 * free / view.area(), 100 * largest / view.area(),
+        100 * covered / std::max(picture.area(), 1.0));
     expect(panelWidth <= 0.30 * view.width(), list[index] + ": the lecture panel takes more than 30 % of the width");
     expect(free >= largest, list[index] + ": a window is larger than the part of the screen left to the scene");
     expect(free >= 0.4 * view.area(), list[index] + ": the windows leave the scene less than 40 % of the screen");
-    expect(covered <= kMaxCovered * picture.area(), list[index] + ": windows cover more than a third of the scene's picture");
+    expect(covered <= kMaxCovered * picture.area(),
+           list[index] + ": windows cover more than a third of the scene's picture");
     if (keep) {
       lab.key("F12");
-      lab.waitFor([&](const json& st) { return st["last_screenshot"].get<std::string>().find(list[index]) != std::string::npos; }, "F12");
+      lab.waitFor(
+          [&](const json& st) {
+            return st["last_screenshot"].get<std::string>().find(list[index]) != std::string::npos;
+          },
+          "F12");
     }
   }
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
-const std::map<std::string, Check> kChecks = {
-    {"pause", checkPause},        {"step", checkStep},       {"reset", checkReset},
-    {"scenes", checkScenes},      {"presets", checkPresets}, {"help", checkHelp},
-    {"screenshot", checkScreenshot}, {"lecture", checkLecture}, {"tab", checkTab},
-    {"frame", checkFrame},        {"drag", checkDrag},       {"orbit-zoom", checkOrbitAndZoom},
-    {"bad-scene-file", checkBadSceneFile}, {"lecture-layout", checkLectureLayout}};
+const std::map<std::string, Check> kChecks = {{"pause", checkPause},
+                                              {"step", checkStep},
+                                              {"reset", checkReset},
+                                              {"scenes", checkScenes},
+                                              {"presets", checkPresets},
+                                              {"help", checkHelp},
+                                              {"screenshot", checkScreenshot},
+                                              {"record", checkRecord},
+                                              {"lecture", checkLecture},
+                                              {"tab", checkTab},
+                                              {"frame", checkFrame},
+                                              {"drag", checkDrag},
+                                              {"orbit-zoom", checkOrbitAndZoom},
+                                              {"bad-scene-file", checkBadSceneFile},
+                                              {"lecture-layout", checkLectureLayout}};
 
 }  // namespace
 }  // namespace pba::uitest

@@ -42,7 +42,8 @@ std::string quote(const std::string& s) {
 std::string brief(const json& status) {
   if (!status.is_object()) return "(no status yet)";
   json b = json::object();
-  for (const char* k : {"frame", "scene", "steps", "sim_time_s", "paused", "lecture", "ui_hidden", "help_shown", "message", "notice"})
+  for (const char* k :
+       {"frame", "scene", "steps", "sim_time_s", "paused", "lecture", "ui_hidden", "help_shown", "message", "notice"})
     if (status.contains(k)) b[k] = status[k];
   return b.dump();
 }
@@ -56,7 +57,9 @@ Rect Rect::intersect(const Rect& o) const {
   return r;
 }
 
-Rect Rect::fromJson(const json& j) { return Rect{j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>(), j.at(3).get<double>()}; }
+Rect Rect::fromJson(const json& j) {
+  return Rect{j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>(), j.at(3).get<double>()};
+}
 
 void expect(bool condition, const std::string& message) {
   if (!condition) throw CheckFailed(message);
@@ -145,14 +148,16 @@ json LabWindow::waitFor(const std::function<bool(const json&)>& ready, const std
                         "; its stderr: " + text.str());
     }
     if (Clock::now() > deadline)
-      throw CheckFailed("timed out after " + std::to_string(seconds) + " s waiting for " + what + "; last status " + brief(s));
+      throw CheckFailed("timed out after " + std::to_string(seconds) + " s waiting for " + what + "; last status " +
+                        brief(s));
     std::this_thread::sleep_for(kPollInterval);
   }
 }
 
 json LabWindow::frames(int n) {
   const long target = status().value("frame", 0L) + n;
-  return waitFor([target](const json& s) { return s.value("frame", 0L) >= target; }, std::to_string(n) + " more frames");
+  return waitFor([target](const json& s) { return s.value("frame", 0L) >= target; },
+                 std::to_string(n) + " more frames");
 }
 
 void LabWindow::xdotool(const std::string& arguments) {
@@ -163,7 +168,8 @@ void LabWindow::xdotool(const std::string& arguments) {
 void LabWindow::key(const std::string& name) { xdotool("key --clearmodifiers " + name); }
 void LabWindow::type(const std::string& text) { xdotool("type --delay 1 " + quote(text)); }
 void LabWindow::move(double x, double y) {
-  xdotool("mousemove --window " + window_ + " " + std::to_string(std::lround(x)) + " " + std::to_string(std::lround(y)));
+  xdotool("mousemove --window " + window_ + " " + std::to_string(std::lround(x)) + " " +
+          std::to_string(std::lround(y)));
 }
 void LabWindow::press(int button) { xdotool("mousedown " + std::to_string(button)); }
 void LabWindow::release(int button) { xdotool("mouseup " + std::to_string(button)); }
@@ -209,11 +215,13 @@ void LabWindow::clickWidget(const std::string& name, const std::string& headerTo
     const json& widgets = s.at("widgets");
     if (widgets.contains(name) && wholeInWindow(s, Rect::fromJson(widgets[name]))) {
       const Rect r = Rect::fromJson(widgets[name]);
-      click(r.x0 + std::min(0.5 * r.width(), 0.5 * r.height()), 0.5 * (r.y0 + r.y1));  // a checkbox's box, a field's start
+      click(r.x0 + std::min(0.5 * r.width(), 0.5 * r.height()),
+            0.5 * (r.y0 + r.y1));  // a checkbox's box, a field's start
       return;
     }
     const std::string header = "header:" + headerToOpen;
-    if (!headerClicked && !widgets.contains(name) && widgets.contains(header) && wholeInWindow(s, Rect::fromJson(widgets[header]))) {
+    if (!headerClicked && !widgets.contains(name) && widgets.contains(header) &&
+        wholeInWindow(s, Rect::fromJson(widgets[header]))) {
       const Rect h = Rect::fromJson(widgets[header]);
       click(h.x0 + 0.5 * h.height(), 0.5 * (h.y0 + h.y1));  // on the arrow
       headerClicked = true;
@@ -250,7 +258,8 @@ std::vector<std::string> listScenes(const std::string& exe) {
 
 std::vector<std::pair<std::string, Rect>> windows(const json& status) {
   std::vector<std::pair<std::string, Rect>> out;
-  for (const json& w : status.at("windows")) out.emplace_back(w.at("name").get<std::string>(), Rect::fromJson(w.at("rect")));
+  for (const json& w : status.at("windows"))
+    out.emplace_back(w.at("name").get<std::string>(), Rect::fromJson(w.at("rect")));
   return out;
 }
 

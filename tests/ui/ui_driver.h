@@ -52,11 +52,11 @@ class LabWindow {
 
   void key(const std::string& name);  ///< xdotool key names: space, bracketright, F1, ctrl+a, …
   void type(const std::string& text);
-  void move(double x, double y);      ///< cursor to window pixel (x, y)
-  void press(int button);             ///< 1 left, 2 middle, 3 right
+  void move(double x, double y);  ///< cursor to window pixel (x, y)
+  void press(int button);         ///< 1 left, 2 middle, 3 right
   void release(int button);
-  void wheel(int steps);              ///< > 0 up (zoom in), < 0 down
-  void click(double x, double y);     ///< left click at window pixel (x, y), a frame between each event
+  void wheel(int steps);           ///< > 0 up (zoom in), < 0 down
+  void click(double x, double y);  ///< left click at window pixel (x, y), a frame between each event
   /// Moves to `from`, presses `button`, moves to `to` in `steps` equal moves (a frame apart), releases.
   void drag(int button, double fromX, double fromY, double toX, double toY, int steps = 4);
   /// Clicks the named widget of the status ("load_button", ...), scrolling the panel until it shows.

@@ -25,9 +25,12 @@ void refreshInverseMasses(Cloth& cloth) {
 std::vector<std::uint32_t> gridPinned(const GridDesc& d) {
   const auto nx = static_cast<std::uint32_t>(d.resolutionX);
   switch (d.pins) {
-    case GridPins::None: return {};
-    case GridPins::TopCorners: return {0, nx - 1};
-    case GridPins::TopCornersAndMiddle: return {0, (nx - 1) / 2, nx - 1};
+    case GridPins::None:
+      return {};
+    case GridPins::TopCorners:
+      return {0, nx - 1};
+    case GridPins::TopCornersAndMiddle:
+      return {0, (nx - 1) / 2, nx - 1};
     case GridPins::TopRow: {
       std::vector<std::uint32_t> row(nx);
       for (std::uint32_t i = 0; i < nx; ++i) row[i] = i;
@@ -75,10 +78,12 @@ Status validate(const ClothMaterial& m) {
 
 Status validate(const GridDesc& d) {
   if (d.resolutionX < 2 || d.resolutionX > kMaxResolution) {
-    return Error{"resolutionX: must be in [2, " + std::to_string(kMaxResolution) + "], got " + std::to_string(d.resolutionX)};
+    return Error{"resolutionX: must be in [2, " + std::to_string(kMaxResolution) + "], got " +
+                 std::to_string(d.resolutionX)};
   }
   if (d.resolutionY < 2 || d.resolutionY > kMaxResolution) {
-    return Error{"resolutionY: must be in [2, " + std::to_string(kMaxResolution) + "], got " + std::to_string(d.resolutionY)};
+    return Error{"resolutionY: must be in [2, " + std::to_string(kMaxResolution) + "], got " +
+                 std::to_string(d.resolutionY)};
   }
   if (Status s = checkPositive("width", d.width); !s) return s;
   if (Status s = checkPositive("height", d.height); !s) return s;
@@ -124,7 +129,8 @@ Real Cloth::totalMass() const {
   return m;
 }
 
-Result<Cloth> buildCloth(const TriangleMesh& mesh, const ClothMaterial& material, std::span<const std::uint32_t> pinned) {
+Result<Cloth> buildCloth(const TriangleMesh& mesh, const ClothMaterial& material,
+                         std::span<const std::uint32_t> pinned) {
   return assemble(mesh, material, pinned, 0, 0, SpringLayout::Mesh);
 }
 
@@ -171,7 +177,8 @@ void pin(Cloth& cloth, std::uint32_t particle, const Vec3& target) {
 
 void unpin(Cloth& cloth, std::uint32_t particle) {
   std::erase_if(cloth.pins, [particle](const Pin& p) { return p.particle == particle; });
-  if (particle < cloth.inverseMass.size() && cloth.mass[particle] > 0.0) cloth.inverseMass[particle] = 1.0 / cloth.mass[particle];
+  if (particle < cloth.inverseMass.size() && cloth.mass[particle] > 0.0)
+    cloth.inverseMass[particle] = 1.0 / cloth.mass[particle];
 }
 
 std::optional<std::string> describeNonFinite(const Cloth& cloth) {

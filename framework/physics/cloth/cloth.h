@@ -38,8 +38,8 @@ struct Link {
 
 /// An edge of the triangle mesh with the triangles on either side (the second is absent on the border).
 struct Edge {
-  std::uint32_t a = 0, b = 0;            ///< a < b
-  std::uint32_t oppositeA = 0;           ///< vertex of the first triangle not on the edge
+  std::uint32_t a = 0, b = 0;              ///< a < b
+  std::uint32_t oppositeA = 0;             ///< vertex of the first triangle not on the edge
   std::optional<std::uint32_t> oppositeB;  ///< vertex of the second triangle, if any
 };
 
@@ -69,9 +69,9 @@ struct ClothMaterial {
   Real springDamping = 0.02;       ///< [N·s/m] along every spring (resists the rate of change of length)
   Real stretchCompliance = 0.0;    ///< α [m/N] XPBD distance constraints (0 = inextensible); 1/k of a spring
   Real shearCompliance = 0.0;      ///< α [m/N] for edges that are quad diagonals of a grid
-  Real bendCompliance = 1000.0;    ///< α [1/(N·m)] isometric bending: 1/k_b, k_b [N·m] ≈ 10⁻⁵ (silk) – 10⁻³ (denim)
-  Real bendLinkCompliance = 1.0;   ///< α [m/N] distance bending (TMP #14–15: across every inner edge)
-  Real thickness = 0.01;           ///< [m] particles keep this distance from each other and half of it from colliders
+  Real bendCompliance = 1000.0;  ///< α [1/(N·m)] isometric bending: 1/k_b, k_b [N·m] ≈ 10⁻⁵ (silk) – 10⁻³ (denim)
+  Real bendLinkCompliance = 1.0;  ///< α [m/N] distance bending (TMP #14–15: across every inner edge)
+  Real thickness = 0.01;          ///< [m] particles keep this distance from each other and half of it from colliders
 };
 Status validate(const ClothMaterial& material);
 
@@ -90,13 +90,13 @@ enum class GridPins { None, TopCorners, TopRow, TopCornersAndMiddle };
 /// A rectangular cloth of resolutionX × resolutionY particles. Particle (i, j) sits at
 /// center + (i/(nx−1) − ½) width û + (j/(ny−1) − ½) height v̂; row j = 0 is the "top" that GridPins names.
 struct GridDesc {
-  int resolutionX = 32;           ///< particles along û, ≥ 2
-  int resolutionY = 32;           ///< particles along v̂, ≥ 2
-  Real width = 1.0;               ///< [m] along û
-  Real height = 1.0;              ///< [m] along v̂
-  Vec3 center{0.0, 1.5, 0.0};     ///< [m]
-  Vec3 axisU{1.0, 0.0, 0.0};      ///< unit, the row direction
-  Vec3 axisV{0.0, 0.0, 1.0};      ///< unit, ⟂ axisU; (0, −1, 0) hangs the cloth with row 0 on top
+  int resolutionX = 32;        ///< particles along û, ≥ 2
+  int resolutionY = 32;        ///< particles along v̂, ≥ 2
+  Real width = 1.0;            ///< [m] along û
+  Real height = 1.0;           ///< [m] along v̂
+  Vec3 center{0.0, 1.5, 0.0};  ///< [m]
+  Vec3 axisU{1.0, 0.0, 0.0};   ///< unit, the row direction
+  Vec3 axisV{0.0, 0.0, 1.0};   ///< unit, ⟂ axisU; (0, −1, 0) hangs the cloth with row 0 on top
   GridDiagonals diagonals = GridDiagonals::Alternating;
   GridPins pins = GridPins::TopCorners;
   SpringLayout layout = SpringLayout::Grid;
@@ -119,11 +119,11 @@ struct Cloth {
   std::vector<Real> mass;          ///< [kg] lumped: a third of each adjacent triangle's rest area × massPerArea
   std::vector<Real> inverseMass;   ///< [1/kg]; 0 while pinned
   std::vector<Triangle> triangles;
-  std::vector<Edge> edges;                 ///< unique mesh edges
-  std::vector<Link> constraints;           ///< XPBD/PBD: one distance constraint per edge
-  std::vector<Link> springs;               ///< mass-spring model
-  std::vector<BendingStencil> bending;     ///< XPBD/PBD isometric bending, one per inner edge
-  std::vector<Link> bendLinks;             ///< XPBD/PBD distance bending: the opposite vertices of each inner edge
+  std::vector<Edge> edges;              ///< unique mesh edges
+  std::vector<Link> constraints;        ///< XPBD/PBD: one distance constraint per edge
+  std::vector<Link> springs;            ///< mass-spring model
+  std::vector<BendingStencil> bending;  ///< XPBD/PBD isometric bending, one per inner edge
+  std::vector<Link> bendLinks;          ///< XPBD/PBD distance bending: the opposite vertices of each inner edge
   std::vector<Pin> pins;
   ClothMaterial material;
   SpringLayout layout = SpringLayout::Mesh;

@@ -27,10 +27,17 @@ Prepared prepare(const Collider& c) {
   p.q = glm::normalize(c.orientation);
   p.axis = p.q * Vec3(0.0, 1.0, 0.0);
   switch (c.shape) {
-    case ColliderShape::Plane: break;
-    case ColliderShape::Sphere: p.bound = c.radius; break;
-    case ColliderShape::Capsule: p.bound = c.radius + c.halfLength; break;
-    case ColliderShape::Box: p.bound = glm::length(c.halfExtents); break;
+    case ColliderShape::Plane:
+      break;
+    case ColliderShape::Sphere:
+      p.bound = c.radius;
+      break;
+    case ColliderShape::Capsule:
+      p.bound = c.radius + c.halfLength;
+      break;
+    case ColliderShape::Box:
+      p.bound = glm::length(c.halfExtents);
+      break;
   }
   return p;
 }
@@ -65,14 +72,16 @@ Vec3 capsuleCore(const Prepared& p, const Vec3& x) {
 SurfacePoint surfaceOf(const Prepared& p, const Vec3& x) {
   const Collider& c = *p.c;
   switch (c.shape) {
-    case ColliderShape::Plane: return {glm::dot(p.axis, x - c.center), p.axis};
+    case ColliderShape::Plane:
+      return {glm::dot(p.axis, x - c.center), p.axis};
     case ColliderShape::Sphere:
     case ColliderShape::Capsule: {
       const Vec3 r = x - (c.shape == ColliderShape::Capsule ? capsuleCore(p, x) : c.center);
       const Real l = glm::length(r);
       return {l - c.radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
     }
-    case ColliderShape::Box: return boxSurface(p, x);
+    case ColliderShape::Box:
+      return boxSurface(p, x);
   }
   return {};
 }
@@ -121,14 +130,16 @@ Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real m
   const Vec3 previous = xPrev + h * c.velocity;  // friction sees the motion relative to the collider
   const Real mu = frictionScale * c.friction;
   if (c.shape == ColliderShape::Sphere) return projectOutOfSphere(x, previous, c.center, c.radius + margin, mu);
-  if (c.shape == ColliderShape::Capsule) return projectOutOfSphere(x, previous, capsuleCore(p, x), c.radius + margin, mu);
+  if (c.shape == ColliderShape::Capsule)
+    return projectOutOfSphere(x, previous, capsuleCore(p, x), c.radius + margin, mu);
   // Plane and box: the tangent sphere of radius R at the closest surface point (see the header).
   const Real R = std::max(1.0, -2.0 * s.distance);
   return projectOutOfSphere(x, previous, x - (s.distance + R) * s.normal, R + margin, mu);
 }
 }  // namespace
 
-Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth, Real frictionScale) {
+Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth,
+             Real frictionScale) {
   return collidePrepared(prepare(c), x, xPrev, margin, h, depth, frictionScale);
 }
 

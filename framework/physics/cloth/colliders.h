@@ -20,13 +20,13 @@ enum class ColliderShape { Plane, Sphere, Capsule, Box };
 
 struct Collider {
   ColliderShape shape = ColliderShape::Plane;
-  Vec3 center{0.0};                       ///< [m] sphere, capsule and box centre; a point of a plane
-  Quat orientation{1.0, 0.0, 0.0, 0.0};   ///< capsule axis = local y; box axes; plane normal = local y
-  Real radius = 0.5;                      ///< [m] sphere and capsule
-  Real halfLength = 0.5;                  ///< [m] capsule: half the distance between its end-sphere centres
-  Vec3 halfExtents{0.5};                  ///< [m] box
-  Vec3 velocity{0.0};                     ///< [m/s] of a moving collider (friction acts on relative motion)
-  Real friction = 0.5;                    ///< μ, Coulomb: static and kinetic alike
+  Vec3 center{0.0};                      ///< [m] sphere, capsule and box centre; a point of a plane
+  Quat orientation{1.0, 0.0, 0.0, 0.0};  ///< capsule axis = local y; box axes; plane normal = local y
+  Real radius = 0.5;                     ///< [m] sphere and capsule
+  Real halfLength = 0.5;                 ///< [m] capsule: half the distance between its end-sphere centres
+  Vec3 halfExtents{0.5};                 ///< [m] box
+  Vec3 velocity{0.0};                    ///< [m/s] of a moving collider (friction acts on relative motion)
+  Real friction = 0.5;                   ///< μ, Coulomb: static and kinetic alike
 };
 
 /// Signed distance of x to the surface [m] (negative inside) and the outward unit normal there.

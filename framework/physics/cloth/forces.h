@@ -24,12 +24,12 @@ namespace pba::cloth {
 /// What acts on the cloth from outside. Wind acts through the aerodynamic model only.
 struct ClothEnvironment {
   Vec3 gravity{0.0, -kStandardGravity, 0.0};  ///< [m/s²]
-  Real massDamping = 0.0;       ///< c [1/s]: force −c m v on every particle (Rayleigh's mass term); typical 0–1
-  bool aerodynamics = false;    ///< per-triangle drag and lift (CLOTH-3) relative to the wind
-  particles::WindDesc wind;     ///< [m/s] wind field with travelling gusts (particles/forces.h)
-  Real airDensity = 1.2;        ///< ρ [kg/m³] air at 20 °C
-  Real dragCoefficient = 1.0;   ///< C_D of a flat plate facing the flow ≈ 1.1–1.3
-  Real liftCoefficient = 0.5;   ///< C_L of the lift model below
+  Real massDamping = 0.0;      ///< c [1/s]: force −c m v on every particle (Rayleigh's mass term); typical 0–1
+  bool aerodynamics = false;   ///< per-triangle drag and lift (CLOTH-3) relative to the wind
+  particles::WindDesc wind;    ///< [m/s] wind field with travelling gusts (particles/forces.h)
+  Real airDensity = 1.2;       ///< ρ [kg/m³] air at 20 °C
+  Real dragCoefficient = 1.0;  ///< C_D of a flat plate facing the flow ≈ 1.1–1.3
+  Real liftCoefficient = 0.5;  ///< C_L of the lift model below
 };
 
 /// Stiffness [N/m] of the springs of each LinkKind, indexed by the kind.

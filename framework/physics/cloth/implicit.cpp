@@ -99,8 +99,8 @@ void implicitSystemProduct([[maybe_unused]] std::span<const SpringJacobian> spri
     const Vec3 n = J.direction;
     const Vec3 stretch = y[J.j] - y[J.i];
     // h² K_s Δy + h D_s Δy, with K_s Δy = lateral Δy + (k − lateral) n (n·Δy) and D_s Δy = k_d n (n·Δy)
-    const Vec3 coupling = h * h * J.lateral * stretch +
-                          (h * h * (J.stiffness - J.lateral) + h * J.damping) * glm::dot(n, stretch) * n;
+    const Vec3 coupling =
+        h * h * J.lateral * stretch + (h * h * (J.stiffness - J.lateral) + h * J.damping) * glm::dot(n, stretch) * n;
     out[J.i] -= coupling;
     out[J.j] += coupling;
   }

@@ -67,7 +67,7 @@ struct ImplicitWorkspace {
   std::vector<std::uint32_t> colour;
   std::uint32_t colours = 0;
   std::size_t colouredSprings = ~std::size_t{0};  ///< spring count the colouring was made for
-  std::vector<char> released;                    ///< contacts released for the next step (adhesion)
+  std::vector<char> released;                     ///< contacts released for the next step (adhesion)
   PcgWorkspace pcg;
 };
 

@@ -30,10 +30,14 @@ void preconditionAll(std::span<const Mat3> inverse, std::span<const Vec3> r, std
 
 Vec3 applyFilter(const ParticleFilter& f, const Vec3& y) {
   switch (f.kind) {
-    case ParticleFilter::Kind::Free: return y;
-    case ParticleFilter::Kind::OneDirection: return y - glm::dot(f.p, y) * f.p;
-    case ParticleFilter::Kind::TwoDirections: return y - glm::dot(f.p, y) * f.p - glm::dot(f.q, y) * f.q;
-    case ParticleFilter::Kind::Fixed: return Vec3(0.0);
+    case ParticleFilter::Kind::Free:
+      return y;
+    case ParticleFilter::Kind::OneDirection:
+      return y - glm::dot(f.p, y) * f.p;
+    case ParticleFilter::Kind::TwoDirections:
+      return y - glm::dot(f.p, y) * f.p - glm::dot(f.q, y) * f.q;
+    case ParticleFilter::Kind::Fixed:
+      return Vec3(0.0);
   }
   return y;
 }

@@ -62,8 +62,8 @@ void ClothSolver::solveConstraints(Cloth& cloth, const ClothSolverSettings& s, R
   for (int it = 0; it < s.iterations; ++it) {
     sweepDistanceConstraints(cloth.constraints, alpha, mode, h, cloth.position, cloth.inverseMass, lambda_);
     if (s.bending == BendingModel::Isometric) {
-      sweepIsometricBending(cloth.bending, cloth.material.bendCompliance, bendMode, h, cloth.position, cloth.inverseMass,
-                            bendLambda_);
+      sweepIsometricBending(cloth.bending, cloth.material.bendCompliance, bendMode, h, cloth.position,
+                            cloth.inverseMass, bendLambda_);
     } else if (s.bending == BendingModel::Distance) {
       sweepDistanceConstraints(cloth.bendLinks, alpha, bendMode, h, cloth.position, cloth.inverseMass, bendLinkLambda_);
     }

@@ -9,10 +9,14 @@ namespace pba::cloth {
 
 std::string_view solverName(ClothSolverKind kind) {
   switch (kind) {
-    case ClothSolverKind::Explicit: return "explicit";
-    case ClothSolverKind::Implicit: return "implicit";
-    case ClothSolverKind::Pbd: return "pbd";
-    case ClothSolverKind::Xpbd: return "xpbd";
+    case ClothSolverKind::Explicit:
+      return "explicit";
+    case ClothSolverKind::Implicit:
+      return "implicit";
+    case ClothSolverKind::Pbd:
+      return "pbd";
+    case ClothSolverKind::Xpbd:
+      return "xpbd";
   }
   return "?";
 }
@@ -30,11 +34,15 @@ std::vector<std::string> solverNames() {
   return names;
 }
 
-bool usesSprings(ClothSolverKind kind) { return kind == ClothSolverKind::Explicit || kind == ClothSolverKind::Implicit; }
+bool usesSprings(ClothSolverKind kind) {
+  return kind == ClothSolverKind::Explicit || kind == ClothSolverKind::Implicit;
+}
 
 Status validate(const ClothSolverSettings& s) {
-  if (s.substeps < 1 || s.substeps > 1000) return Error{"substeps: must be in [1, 1000], got " + std::to_string(s.substeps)};
-  if (s.iterations < 1 || s.iterations > 1000) return Error{"iterations: must be in [1, 1000], got " + std::to_string(s.iterations)};
+  if (s.substeps < 1 || s.substeps > 1000)
+    return Error{"substeps: must be in [1, 1000], got " + std::to_string(s.substeps)};
+  if (s.iterations < 1 || s.iterations > 1000)
+    return Error{"iterations: must be in [1, 1000], got " + std::to_string(s.iterations)};
   if (!(s.pbdStiffness > 0.0 && s.pbdStiffness <= 1.0)) return Error{"pbdStiffness: must be in (0, 1]"};
   if (!(s.pbdBendStiffness >= 0.0 && s.pbdBendStiffness <= 1.0)) return Error{"pbdBendStiffness: must be in [0, 1]"};
   if (!(s.selfFriction >= 0.0 && s.selfFriction <= 1.0)) return Error{"selfFriction: must be in [0, 1]"};
@@ -61,7 +69,8 @@ Real clothEnergy(const Cloth& cloth, const ClothEnvironment& env, ClothSolverKin
   Real e = kineticEnergy(cloth) + gravityEnergy(cloth, env.gravity);
   if (usesSprings(kind)) return e + springEnergy(cloth.springs, cloth.material, cloth.position);
   e += constraintEnergy(cloth.constraints, cloth.position, cloth.material);
-  if (bending == BendingModel::Isometric) e += bendingEnergy(cloth.bending, cloth.position, cloth.material.bendCompliance);
+  if (bending == BendingModel::Isometric)
+    e += bendingEnergy(cloth.bending, cloth.position, cloth.material.bendCompliance);
   if (bending == BendingModel::Distance) e += constraintEnergy(cloth.bendLinks, cloth.position, cloth.material);
   return e;
 }
@@ -105,12 +114,15 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
     const Real fraction = static_cast<Real>(k + 1) / n;
     const Real time = t + k * h;
     switch (s.kind) {
-      case ClothSolverKind::Explicit: explicitSubstep(cloth, env, colliders, s, h, time, fraction, stats); break;
+      case ClothSolverKind::Explicit:
+        explicitSubstep(cloth, env, colliders, s, h, time, fraction, stats);
+        break;
       case ClothSolverKind::Implicit: {
         // Pins move along their path within the step: each implicit substep aims at its share of it.
         std::vector<Pin> finalPins = cloth.pins;
         for (std::size_t p = 0; p < cloth.pins.size(); ++p) {
-          cloth.pins[p].target = fraction >= 1.0 ? finalPins[p].target : pinStart_[p] + fraction * (finalPins[p].target - pinStart_[p]);
+          cloth.pins[p].target =
+              fraction >= 1.0 ? finalPins[p].target : pinStart_[p] + fraction * (finalPins[p].target - pinStart_[p]);
         }
         previous_ = cloth.position;
         const ImplicitStats is = implicitStep(cloth, env, colliders, s.implicit, h, time, implicit_);
@@ -121,7 +133,9 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
         break;
       }
       case ClothSolverKind::Pbd:
-      case ClothSolverKind::Xpbd: positionBasedSubstep(cloth, env, colliders, s, h, time, fraction, stats); break;
+      case ClothSolverKind::Xpbd:
+        positionBasedSubstep(cloth, env, colliders, s, h, time, fraction, stats);
+        break;
     }
   }
   stats.constraintIterations = usesSprings(s.kind) ? 0 : n * s.iterations;
@@ -150,7 +164,8 @@ void ClothSolver::beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s,
 }
 
 void ClothSolver::explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
-                                  const ClothSolverSettings& s, Real h, Real t, Real pinFraction, ClothStepStats& stats) {
+                                  const ClothSolverSettings& s, Real h, Real t, Real pinFraction,
+                                  ClothStepStats& stats) {
   // Symplectic Euler (Lobb notes, "simple loop"): v += h M⁻¹ f(x, v), then x += h v with the new v.
   const std::size_t n = cloth.size();
   force_.assign(n, Vec3(0.0));

@@ -42,14 +42,14 @@ enum class BendingModel {
 
 struct ClothSolverSettings {
   ClothSolverKind kind = ClothSolverKind::Xpbd;
-  int substeps = 10;              ///< per step: symplectic Euler / PBD / XPBD substeps, implicit steps
-  int iterations = 1;             ///< PBD/XPBD constraint sweeps per substep
-  Real pbdStiffness = 1.0;        ///< PBD stretch stiffness s ∈ (0, 1] per projection
-  Real pbdBendStiffness = 0.05;   ///< PBD bending stiffness ∈ [0, 1] per projection
+  int substeps = 10;                               ///< per step: symplectic Euler / PBD / XPBD substeps, implicit steps
+  int iterations = 1;                              ///< PBD/XPBD constraint sweeps per substep
+  Real pbdStiffness = 1.0;                         ///< PBD stretch stiffness s ∈ (0, 1] per projection
+  Real pbdBendStiffness = 0.05;                    ///< PBD bending stiffness ∈ [0, 1] per projection
   BendingModel bending = BendingModel::Isometric;  ///< PBD/XPBD
   ImplicitSettings implicit;
   bool selfCollision = false;
-  Real selfFriction = 0.1;        ///< TMP #15 velocity averaging ∈ [0, 1]
+  Real selfFriction = 0.1;  ///< TMP #15 velocity averaging ∈ [0, 1]
   /// TMP #15's speed limit with self-collision: at most this many thicknesses per substep (0 = none).
   /// It bounds how far a particle travels in a frame, so the pair list of the frame stays complete.
   Real selfCollisionMaxTravel = 0.2;

@@ -11,7 +11,9 @@
 namespace pba::cloth {
 namespace {
 
-Real strain(const Cloth& c, const Link& l) { return (glm::length(c.position[l.i] - c.position[l.j]) - l.restLength) / l.restLength; }
+Real strain(const Cloth& c, const Link& l) {
+  return (glm::length(c.position[l.i] - c.position[l.j]) - l.restLength) / l.restLength;
+}
 
 /// Splits vertex a by the plane through x_a with normal `pull`; true when both sides had triangles.
 bool splitVertex(Cloth& cloth, std::uint32_t a, const Vec3& pull, std::vector<std::vector<std::uint32_t>>& around) {
@@ -75,7 +77,8 @@ std::string checkMeshConsistency(const Cloth& c) {
   }
   std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
   for (const Link& l : c.constraints) {
-    if (l.i >= n || l.j >= n || l.i == l.j) return "constraint (" + std::to_string(l.i) + ", " + std::to_string(l.j) + ") is invalid";
+    if (l.i >= n || l.j >= n || l.i == l.j)
+      return "constraint (" + std::to_string(l.i) + ", " + std::to_string(l.j) + ") is invalid";
     edges.emplace(std::min(l.i, l.j), std::max(l.i, l.j));
   }
   for (std::size_t t = 0; t < c.triangles.size(); ++t) {
@@ -83,7 +86,8 @@ std::string checkMeshConsistency(const Cloth& c) {
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = tri[k], b = tri[(k + 1) % 3];
       if (a >= n || a == b) return "triangle " + std::to_string(t) + " names an invalid particle";
-      if (!edges.contains({std::min(a, b), std::max(a, b)})) return "triangle " + std::to_string(t) + " has an edge without a constraint";
+      if (!edges.contains({std::min(a, b), std::max(a, b)}))
+        return "triangle " + std::to_string(t) + " has an edge without a constraint";
     }
   }
   for (const Link& s : c.springs) {

@@ -18,7 +18,7 @@ namespace pba::cloth {
 
 struct TearSettings {
   bool enabled = false;
-  Real threshold = 0.5;    ///< strain (l − L)/L of a mesh edge above which the cloth tears; typical 0.3–1
+  Real threshold = 0.5;      ///< strain (l − L)/L of a mesh edge above which the cloth tears; typical 0.3–1
   int maxSplitsPerStep = 8;  ///< bounds the work of one step (the most strained edges go first)
 };
 

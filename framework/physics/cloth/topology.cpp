@@ -46,7 +46,9 @@ Status validateMesh(const TriangleMesh& mesh) {
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle& tri = mesh.triangles[t];
     for (std::uint32_t v : tri) {
-      if (v >= n) return Error{triangleField(t) + ": vertex index " + std::to_string(v) + " out of range (" + std::to_string(n) + " vertices)"};
+      if (v >= n)
+        return Error{triangleField(t) + ": vertex index " + std::to_string(v) + " out of range (" + std::to_string(n) +
+                     " vertices)"};
     }
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return Error{triangleField(t) + ": repeats a vertex"};
     if (triangleArea(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]) < kMinArea) {

@@ -43,9 +43,10 @@ void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::sp
 }
 
 // flatten: CLOTH-2's correction is inlined into the sweep (half the cost of a sweep was the call).
-[[gnu::flatten]] void sweepDistanceConstraints(std::span<const Link> links, const std::array<Real, kLinkKinds>& compliance,
-                                               const SweepMode& mode, Real h, std::span<Vec3> x,
-                                               std::span<const Real> w, std::span<Real> lambda) {
+[[gnu::flatten]] void sweepDistanceConstraints(std::span<const Link> links,
+                                               const std::array<Real, kLinkKinds>& compliance, const SweepMode& mode,
+                                               Real h, std::span<Vec3> x, std::span<const Real> w,
+                                               std::span<Real> lambda) {
   for (std::size_t k = 0; k < links.size(); ++k) {
     const Link& l = links[k];
     const Real alpha = mode.xpbd ? compliance[static_cast<std::size_t>(l.kind)] : 0.0;

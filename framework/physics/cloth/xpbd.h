@@ -22,8 +22,8 @@ namespace pba::cloth {
 
 /// The corrections of one distance-constraint projection.
 struct DistanceCorrection {
-  Vec3 deltaI{0.0};    ///< Δx_i [m]
-  Vec3 deltaJ{0.0};    ///< Δx_j [m]
+  Vec3 deltaI{0.0};        ///< Δx_i [m]
+  Vec3 deltaJ{0.0};        ///< Δx_j [m]
   Real deltaLambda = 0.0;  ///< Δλ [N·s²] (XPBD's multiplier increment; PBD ignores it)
 };
 

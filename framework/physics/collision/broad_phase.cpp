@@ -47,9 +47,15 @@ void BroadPhase::move(int proxy, const Aabb& aabb) {
 void BroadPhase::findPairs(std::vector<std::pair<int, int>>& pairs) {
   pairs.clear();
   switch (kind_) {
-    case BroadPhaseKind::Tree: pairsFromTree(pairs); break;
-    case BroadPhaseKind::SweepAndPrune: pairsFromSweep(pairs); break;
-    case BroadPhaseKind::BruteForce: pairsBruteForce(pairs); break;
+    case BroadPhaseKind::Tree:
+      pairsFromTree(pairs);
+      break;
+    case BroadPhaseKind::SweepAndPrune:
+      pairsFromSweep(pairs);
+      break;
+    case BroadPhaseKind::BruteForce:
+      pairsBruteForce(pairs);
+      break;
   }
   for (auto& [a, b] : pairs)
     if (a > b) std::swap(a, b);
@@ -85,7 +91,8 @@ void BroadPhase::pairsFromSweep(std::vector<std::pair<int, int>>& pairs) {
     sum += c, sum2 += c * c, ++dynamicCount;
   }
   if (dynamicCount > 0) {
-    const Vec3 variance = sum2 / static_cast<Real>(dynamicCount) - (sum * sum) / static_cast<Real>(dynamicCount * dynamicCount);
+    const Vec3 variance =
+        sum2 / static_cast<Real>(dynamicCount) - (sum * sum) / static_cast<Real>(dynamicCount * dynamicCount);
     axis_ = variance.x >= variance.y ? (variance.x >= variance.z ? 0 : 2) : (variance.y >= variance.z ? 1 : 2);
   }
   const int k = axis_;

@@ -77,7 +77,7 @@ class BroadPhase {
   std::vector<int> freeProxies_;
   int live_ = 0;
   DynamicTree trees_[2]{DynamicTree(0.0), DynamicTree(0.0)};  // moving, static; fat boxes as they are
-  std::vector<int> sorted_;  // sweep and prune: live proxies by min along axis_
+  std::vector<int> sorted_;                                   // sweep and prune: live proxies by min along axis_
   int axis_ = 0;
 };
 

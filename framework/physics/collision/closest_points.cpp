@@ -60,7 +60,8 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   const Real vb = d5 * d2 - d1 * d6;
   if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return set(5), a + (d2 / (d2 - d6)) * ac;
   const Real va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) return set(4), b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+    return set(4), b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
   const Real sum = va + vb + vc;
   if (!(sum > 0.0)) return set(0), a;  // degenerate triangle
   const Real denom = 1.0 / sum;

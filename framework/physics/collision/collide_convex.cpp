@@ -95,7 +95,8 @@ Manifold fromFeatures(const SignedDistance& sd, const Feature& fa, Real ra, cons
 Manifold collideConvex(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
   const SignedDistance sd = signedDistance(makeProxy(a), pa, makeProxy(b), pb);
   if (!sd.valid || sd.separation > margin) return {};
-  return fromFeatures(sd, supportingFeature(a, pa, sd.normal), a.radius, supportingFeature(b, pb, -sd.normal), b.radius, margin);
+  return fromFeatures(sd, supportingFeature(a, pa, sd.normal), a.radius, supportingFeature(b, pb, -sd.normal), b.radius,
+                      margin);
 }
 
 void collideConvexMesh(const Shape& convex, const Transform& pc, const Shape& mesh, const Transform& pm, Real margin,
@@ -115,7 +116,8 @@ void collideConvexMesh(const Shape& convex, const Transform& pc, const Shape& me
     const ConvexProxy tri = makeTriangleProxy(world[0], world[1], world[2]);
     const SignedDistance sd = signedDistance(proxy, pc, tri, Transform{});
     if (!sd.valid || sd.separation > margin) return true;
-    Manifold m = fromFeatures(sd, supportingFeature(convex, pc, sd.normal), convex.radius, triangleFeature(world, -sd.normal), 0.0, margin);
+    Manifold m = fromFeatures(sd, supportingFeature(convex, pc, sd.normal), convex.radius,
+                              triangleFeature(world, -sd.normal), 0.0, margin);
     m.key = static_cast<std::uint32_t>(t);
     if (m.count > 0) out.push_back(m);
     return true;

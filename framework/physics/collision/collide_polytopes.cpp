@@ -186,8 +186,8 @@ Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, c
   if (edgeA >= 0 && sepE > std::max(sepA, sepB) + kAxisTolerance) {
     const HullEdge& ea = ha.edges[edgeA];
     const HullEdge& eb = hb.edges[edgeB];
-    Manifold m = edgeContact(wa.vertices[ea.a], wa.vertices[ea.b], wb.vertices[eb.a], wb.vertices[eb.b], edgeAxis, margin,
-                             detail::edgeContactId(edgeA, edgeB));
+    Manifold m = edgeContact(wa.vertices[ea.a], wa.vertices[ea.b], wb.vertices[eb.a], wb.vertices[eb.b], edgeAxis,
+                             margin, detail::edgeContactId(edgeA, edgeB));
     m.separation = sepE;
     return m;
   }

@@ -36,7 +36,8 @@ Manifold collideSpheres(const Shape& a, const Transform& pa, const Shape& b, con
   return fromCorePoints(pa.position, a.radius, pb.position, b.radius, margin, 0, kUp);
 }
 
-Manifold collideSphereCapsule(const Shape& sphere, const Transform& ps, const Shape& capsule, const Transform& pc, Real margin) {
+Manifold collideSphereCapsule(const Shape& sphere, const Transform& ps, const Shape& capsule, const Transform& pc,
+                              Real margin) {
   const Segment s = coreSegment(capsule, pc);
   const Vec3 onSegment = closestPointOnSegment(ps.position, s.p, s.q);
   return fromCorePoints(ps.position, sphere.radius, onSegment, capsule.radius, margin, 0, kUp);
@@ -73,7 +74,8 @@ Manifold collideCapsules(const Shape& a, const Transform& pa, const Shape& b, co
   return two.count ? two : m;
 }
 
-Manifold collideSphereBox(const Shape& sphere, const Transform& ps, const Shape& box, const Transform& pb, Real margin) {
+Manifold collideSphereBox(const Shape& sphere, const Transform& ps, const Shape& box, const Transform& pb,
+                          Real margin) {
   // In the box frame: clamp the centre to the box. Outside: the clamped point is the closest one.
   // Inside: the nearest face gives the normal and the (negative) distance.
   const Vec3 c = pb.applyInverse(ps.position);

@@ -69,7 +69,7 @@ void DynamicTree::insertLeaf(int leaf) {
     const Node& n = nodes_[index];
     const Real area = n.box.area();
     const Real combinedArea = merge(n.box, leafBox).area();
-    const Real cost = 2.0 * combinedArea;                   // new parent of this node and the leaf
+    const Real cost = 2.0 * combinedArea;                  // new parent of this node and the leaf
     const Real inheritance = 2.0 * (combinedArea - area);  // growth pushed onto the ancestors
     auto childCost = [&](int c) {
       const Aabb grown = merge(leafBox, nodes_[c].box);
@@ -92,8 +92,10 @@ void DynamicTree::insertLeaf(int leaf) {
   nodes_[sibling].parent = newParent;
   nodes_[leaf].parent = newParent;
   if (oldParent != kNull) {
-    if (nodes_[oldParent].child1 == sibling) nodes_[oldParent].child1 = newParent;
-    else nodes_[oldParent].child2 = newParent;
+    if (nodes_[oldParent].child1 == sibling)
+      nodes_[oldParent].child1 = newParent;
+    else
+      nodes_[oldParent].child2 = newParent;
   } else {
     root_ = newParent;
   }
@@ -120,8 +122,10 @@ void DynamicTree::removeLeaf(int leaf) {
     freeNode(parent);
     return;
   }
-  if (nodes_[grandParent].child1 == parent) nodes_[grandParent].child1 = sibling;
-  else nodes_[grandParent].child2 = sibling;
+  if (nodes_[grandParent].child1 == parent)
+    nodes_[grandParent].child1 = sibling;
+  else
+    nodes_[grandParent].child2 = sibling;
   nodes_[sibling].parent = grandParent;
   freeNode(parent);
   for (int index = grandParent; index != kNull; index = nodes_[index].parent) {
@@ -150,8 +154,10 @@ int DynamicTree::balance(int iA) {
   A.parent = up;
   if (nodes_[up].parent != kNull) {
     Node& p = nodes_[nodes_[up].parent];
-    if (p.child1 == iA) p.child1 = up;
-    else p.child2 = up;
+    if (p.child1 == iA)
+      p.child1 = up;
+    else
+      p.child2 = up;
   } else {
     root_ = up;
   }
@@ -160,8 +166,10 @@ int DynamicTree::balance(int iA) {
   const int keep = fTaller ? iF : iG;
   const int give = fTaller ? iG : iF;
   nodes_[up].child2 = keep;
-  if (delta > 0) A.child2 = give;
-  else A.child1 = give;
+  if (delta > 0)
+    A.child2 = give;
+  else
+    A.child1 = give;
   nodes_[give].parent = iA;
   A.box = merge(nodes_[other].box, nodes_[give].box);
   A.height = 1 + std::max(nodes_[other].height, nodes_[give].height);

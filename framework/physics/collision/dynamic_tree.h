@@ -94,7 +94,7 @@ class DynamicTree {
     Aabb box;
     int parent = kNull;  // also the free-list link
     int child1 = kNull, child2 = kNull;
-    int height = 0;      // leaf 0, free −1
+    int height = 0;  // leaf 0, free −1
     int userData = -1;
     bool isLeaf() const { return child1 == kNull; }
   };

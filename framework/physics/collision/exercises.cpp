@@ -33,7 +33,8 @@ std::optional<SphereContact> sphereSphereContact(const Vec3& ca, Real ra, const 
 // (2) The sphere touches when that distance is less than the radius; the depth is the difference.
 // (3) The contact point is halfway between the sphere's lowest point and the plane.
 // *****
-std::optional<SphereContact> spherePlaneContact(const Vec3& center, Real radius, const Vec3& planePoint, const Vec3& planeNormal) {
+std::optional<SphereContact> spherePlaneContact(const Vec3& center, Real radius, const Vec3& planePoint,
+                                                const Vec3& planeNormal) {
   // BEGIN SOLUTION
   const Real height = glm::dot(planeNormal, center - planePoint);
   if (height >= radius) return std::nullopt;

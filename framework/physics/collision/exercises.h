@@ -21,13 +21,14 @@ struct SphereContact {
 std::optional<SphereContact> sphereSphereContact(const Vec3& ca, Real ra, const Vec3& cb, Real rb);
 /// A sphere against the plane through `planePoint` with unit normal `planeNormal` (solid below): the
 /// contact when the sphere dips below the plane, else nothing. The normal is the plane's.
-std::optional<SphereContact> spherePlaneContact(const Vec3& center, Real radius, const Vec3& planePoint, const Vec3& planeNormal);
+std::optional<SphereContact> spherePlaneContact(const Vec3& center, Real radius, const Vec3& planePoint,
+                                                const Vec3& planeNormal);
 
 /// An oriented box: centre, rotation (columns of R are its axes in world coordinates), half extents.
 struct Obb {
-  Vec3 center{0.0};        ///< [m]
+  Vec3 center{0.0};  ///< [m]
   Quat rotation{1, 0, 0, 0};
-  Vec3 halfExtents{0.5};   ///< [m]
+  Vec3 halfExtents{0.5};  ///< [m]
 };
 
 // COLL-2

@@ -30,7 +30,8 @@ ConvexProxy makeProxy(const Shape& shape) {
       p.count = static_cast<int>(shape.hull->vertices.size());
       break;
     case ShapeKind::Plane:
-    case ShapeKind::Mesh: break;
+    case ShapeKind::Mesh:
+      break;
   }
   return p;
 }
@@ -113,13 +114,32 @@ void solveTriangle(Simplex& s) {
   int region = 6;
   closestPointOnTriangle(Vec3(0.0), s.v[0].w, s.v[1].w, s.v[2].w, &region);
   switch (region) {
-    case 0: s = sub(s, {0}); s.lambda[0] = 1.0; return;
-    case 1: s = sub(s, {1}); s.lambda[0] = 1.0; return;
-    case 2: s = sub(s, {2}); s.lambda[0] = 1.0; return;
-    case 3: s = sub(s, {0, 1}); solveSegment(s); return;
-    case 4: s = sub(s, {1, 2}); solveSegment(s); return;
-    case 5: s = sub(s, {2, 0}); solveSegment(s); return;
-    default: break;
+    case 0:
+      s = sub(s, {0});
+      s.lambda[0] = 1.0;
+      return;
+    case 1:
+      s = sub(s, {1});
+      s.lambda[0] = 1.0;
+      return;
+    case 2:
+      s = sub(s, {2});
+      s.lambda[0] = 1.0;
+      return;
+    case 3:
+      s = sub(s, {0, 1});
+      solveSegment(s);
+      return;
+    case 4:
+      s = sub(s, {1, 2});
+      solveSegment(s);
+      return;
+    case 5:
+      s = sub(s, {2, 0});
+      solveSegment(s);
+      return;
+    default:
+      break;
   }
   // Face: barycentric coordinates of the origin's projection (Cramer's rule).
   const Vec3 v0 = s.v[1].w - s.v[0].w, v1 = s.v[2].w - s.v[0].w, v2 = -s.v[0].w;
@@ -176,8 +196,10 @@ DistanceResult gjkDistance(const ConvexProxy& a, const Transform& poseA, const C
   Real previous = std::numeric_limits<Real>::max();
   constexpr int kMaxIterations = 64;
   for (out.iterations = 0; out.iterations < kMaxIterations; ++out.iterations) {
-    if (s.count == 2) solveSegment(s);
-    else if (s.count == 3) solveTriangle(s);
+    if (s.count == 2)
+      solveSegment(s);
+    else if (s.count == 3)
+      solveTriangle(s);
     else if (s.count == 4 && !solveTetrahedron(s)) {
       out.overlap = true;
       break;
@@ -299,7 +321,8 @@ PenetrationResult epaPenetration(const ConvexProxy& a, const Transform& poseA, c
   for (out.iterations = 0; out.iterations < kMaxIterations; ++out.iterations) {
     bestFace = -1;
     for (std::size_t i = 0; i < faces.size(); ++i)
-      if (faces[i].alive && (bestFace < 0 || faces[i].distance < faces[bestFace].distance)) bestFace = static_cast<int>(i);
+      if (faces[i].alive && (bestFace < 0 || faces[i].distance < faces[bestFace].distance))
+        bestFace = static_cast<int>(i);
     if (bestFace < 0) return out;
     const EpaFace face = faces[bestFace];
     const SimplexVertex w = support(face.normal);
@@ -315,8 +338,10 @@ PenetrationResult epaPenetration(const ConvexProxy& a, const Transform& poseA, c
       for (int k = 0; k < 3; ++k) {
         const std::pair<int, int> e{f.v[k], f.v[(k + 1) % 3]};
         const auto reverse = std::find(edges.begin(), edges.end(), std::make_pair(e.second, e.first));
-        if (reverse != edges.end()) edges.erase(reverse);
-        else edges.push_back(e);
+        if (reverse != edges.end())
+          edges.erase(reverse);
+        else
+          edges.push_back(e);
       }
     }
     for (const auto& [i, j] : edges) faces.push_back(makeFace(verts, i, j, index));
@@ -341,7 +366,8 @@ PenetrationResult epaPenetration(const ConvexProxy& a, const Transform& poseA, c
   return out;
 }
 
-SignedDistance signedDistance(const ConvexProxy& a, const Transform& poseA, const ConvexProxy& b, const Transform& poseB) {
+SignedDistance signedDistance(const ConvexProxy& a, const Transform& poseA, const ConvexProxy& b,
+                              const Transform& poseB) {
   SignedDistance out;
   const DistanceResult g = gjkDistance(a, poseA, b, poseB);
   const Real radii = a.radius + b.radius;

@@ -47,9 +47,9 @@ struct DistanceResult {
 DistanceResult gjkDistance(const ConvexProxy& a, const Transform& poseA, const ConvexProxy& b, const Transform& poseB);
 
 struct PenetrationResult {
-  bool valid = false;   ///< false only if EPA failed to build a polytope (degenerate input)
-  Vec3 normal{0.0};     ///< unit, from A to B
-  Real depth = 0.0;     ///< of the cores [m], ≥ 0
+  bool valid = false;             ///< false only if EPA failed to build a polytope (degenerate input)
+  Vec3 normal{0.0};               ///< unit, from A to B
+  Real depth = 0.0;               ///< of the cores [m], ≥ 0
   Vec3 pointA{0.0}, pointB{0.0};  ///< deepest points of the cores (world)
   int iterations = 0;
 };
@@ -67,6 +67,7 @@ struct SignedDistance {
   Vec3 normal{0.0, 1.0, 0.0};
   Vec3 pointA{0.0}, pointB{0.0};  ///< on the surfaces of A and B (world)
 };
-SignedDistance signedDistance(const ConvexProxy& a, const Transform& poseA, const ConvexProxy& b, const Transform& poseB);
+SignedDistance signedDistance(const ConvexProxy& a, const Transform& poseA, const ConvexProxy& b,
+                              const Transform& poseB);
 
 }  // namespace pba::collision

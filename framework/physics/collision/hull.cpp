@@ -156,7 +156,8 @@ Result<ConvexHull> buildConvexHull(const std::vector<Vec3>& points, const std::s
       const auto it = edgeOwner.find({tris[t].v[(k + 1) % 3], tris[t].v[k]});
       if (it == edgeOwner.end()) continue;
       const Tri& o = tris[it->second];
-      if (glm::dot(o.normal, tris[t].normal) > 1.0 - angleTolerance && std::abs(o.offset - tris[t].offset) <= 10.0 * eps)
+      if (glm::dot(o.normal, tris[t].normal) > 1.0 - angleTolerance &&
+          std::abs(o.offset - tris[t].offset) <= 10.0 * eps)
         parent[find(static_cast<int>(t))] = find(it->second);
     }
   }

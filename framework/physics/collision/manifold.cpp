@@ -39,7 +39,9 @@ void reduceToFour(const ManifoldPoint* c, int count, const Vec3& n, Manifold& ou
     if (i != i1 && dd > best) best = dd, i2 = i;
   }
   // Signed area (× 2) of triangle (a, b, p) about the normal.
-  auto area = [&](int a, int b, int p) { return glm::dot(glm::cross(c[b].point - c[a].point, c[p].point - c[a].point), n); };
+  auto area = [&](int a, int b, int p) {
+    return glm::dot(glm::cross(c[b].point - c[a].point, c[p].point - c[a].point), n);
+  };
   int i3 = -1;
   best = -1.0;
   for (int i = 0; i < count; ++i) {
@@ -52,7 +54,8 @@ void reduceToFour(const ManifoldPoint* c, int count, const Vec3& n, Manifold& ou
   best = 0.0;
   for (int i = 0; i < count; ++i) {
     if (i == i1 || i == i2 || i == i3) continue;
-    const Real gain = std::max({-orientation * area(i1, i2, i), -orientation * area(i2, i3, i), -orientation * area(i3, i1, i)});
+    const Real gain =
+        std::max({-orientation * area(i1, i2, i), -orientation * area(i2, i3, i), -orientation * area(i3, i1, i)});
     if (gain > best) best = gain, i4 = i;
   }
   for (int i : {i1, i2, i3, i4})

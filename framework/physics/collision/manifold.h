@@ -14,9 +14,9 @@ namespace pba::collision {
 inline constexpr Real kSpeculativeDistance = 0.02;
 
 struct ManifoldPoint {
-  Vec3 point{0.0};         ///< [m] world, midway between the two surfaces
-  Real separation = 0.0;   ///< [m] signed gap along the normal, negative when penetrating
-  std::uint32_t id = 0;    ///< feature id (stable while the same features touch)
+  Vec3 point{0.0};        ///< [m] world, midway between the two surfaces
+  Real separation = 0.0;  ///< [m] signed gap along the normal, negative when penetrating
+  std::uint32_t id = 0;   ///< feature id (stable while the same features touch)
 };
 
 struct Manifold {
@@ -57,7 +57,8 @@ struct ClipPolygon {
 
 /// Sutherland–Hodgman (Ericson §8.3.4): keeps the part of `in` with planeNormal·x ≤ planeOffset. A vertex
 /// made where edge (i → i+1) crosses the plane gets the 17-bit id 0x10000 | (id_i & 0xFF) << 8 | planeCode.
-void clipPolygon(const ClipPolygon& in, const Vec3& planeNormal, Real planeOffset, std::uint32_t planeCode, ClipPolygon& out);
+void clipPolygon(const ClipPolygon& in, const Vec3& planeNormal, Real planeOffset, std::uint32_t planeCode,
+                 ClipPolygon& out);
 
 /// Picks at most 4 of `candidates` (all with the same normal) spanning the largest area: the deepest
 /// point, the one farthest from it, the one making the largest triangle, and the one adding the most

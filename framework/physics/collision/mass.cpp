@@ -110,12 +110,13 @@ FaceIntegrals faceIntegrals(const ConvexHull& hull, const HullFace& face, int A,
   f.Fcc = k3 * (nA * nA * p.Paa + 2 * nA * nB * p.Pab + nB * nB * p.Pbb + w * (2 * (nA * p.Pa + nB * p.Pb) + w * p.P1));
   f.Faaa = k1 * p.Paaa;
   f.Fbbb = k1 * p.Pbbb;
-  f.Fccc = -k4 * (nA * nA * nA * p.Paaa + 3 * nA * nA * nB * p.Paab + 3 * nA * nB * nB * p.Pabb + nB * nB * nB * p.Pbbb +
-                  3 * w * (nA * nA * p.Paa + 2 * nA * nB * p.Pab + nB * nB * p.Pbb) +
+  f.Fccc = -k4 * (nA * nA * nA * p.Paaa + 3 * nA * nA * nB * p.Paab + 3 * nA * nB * nB * p.Pabb +
+                  nB * nB * nB * p.Pbbb + 3 * w * (nA * nA * p.Paa + 2 * nA * nB * p.Pab + nB * nB * p.Pbb) +
                   w * w * (3 * (nA * p.Pa + nB * p.Pb) + w * p.P1));
   f.Faab = k1 * p.Paab;
   f.Fbbc = -k2 * (nA * p.Pabb + nB * p.Pbbb + w * p.Pbb);
-  f.Fcca = k3 * (nA * nA * p.Paaa + 2 * nA * nB * p.Paab + nB * nB * p.Pabb + w * (2 * (nA * p.Paa + nB * p.Pab) + w * p.Pa));
+  f.Fcca = k3 * (nA * nA * p.Paaa + 2 * nA * nB * p.Paab + nB * nB * p.Pabb +
+                 w * (2 * (nA * p.Paa + nB * p.Pab) + w * p.Pa));
   return f;
 }
 
@@ -170,12 +171,16 @@ MassProperties polyhedronMass(const ConvexHull& hull, Real density) {
 
 MassProperties shapeMass(const Shape& shape, Real density) {
   switch (shape.kind) {
-    case ShapeKind::Sphere: return sphereMass(shape.radius, density);
-    case ShapeKind::Capsule: return capsuleMass(shape.halfHeight, shape.radius, density);
+    case ShapeKind::Sphere:
+      return sphereMass(shape.radius, density);
+    case ShapeKind::Capsule:
+      return capsuleMass(shape.halfHeight, shape.radius, density);
     case ShapeKind::Box:
-    case ShapeKind::Hull: return polyhedronMass(*shape.hull, density);
+    case ShapeKind::Hull:
+      return polyhedronMass(*shape.hull, density);
     case ShapeKind::Plane:
-    case ShapeKind::Mesh: break;
+    case ShapeKind::Mesh:
+      break;
   }
   return {};
 }

@@ -6,9 +6,9 @@
 namespace pba::collision {
 
 struct MassProperties {
-  Real mass = 0.0;          ///< [kg]
-  Vec3 centerOfMass{0.0};   ///< [m] local frame
-  Mat3 inertia{0.0};        ///< [kg·m²] about the centre of mass, local axes; symmetric
+  Real mass = 0.0;         ///< [kg]
+  Vec3 centerOfMass{0.0};  ///< [m] local frame
+  Mat3 inertia{0.0};       ///< [kg·m²] about the centre of mass, local axes; symmetric
 };
 
 /// Solid sphere: I = (2/5) m r² on every axis.

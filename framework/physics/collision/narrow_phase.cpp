@@ -12,8 +12,10 @@ Manifold collideConvexPlane(const Shape& convex, const Transform& pc, const Tran
   const Vec3& p0 = planePose.position;
   thread_local std::vector<Vec3> roundCore;
   const std::vector<Vec3>* corePoints = &roundCore;
-  if (convex.hull) corePoints = &convex.hull->vertices;  // boxes and hulls: no copy
-  else coreVertices(convex, roundCore);
+  if (convex.hull)
+    corePoints = &convex.hull->vertices;  // boxes and hulls: no copy
+  else
+    coreVertices(convex, roundCore);
   const std::vector<Vec3>& vertices = *corePoints;
   thread_local std::vector<ManifoldPoint> candidates;
   candidates.clear();
@@ -61,7 +63,8 @@ void collideOrdered(const Shape& a, const Transform& pa, const Shape& b, const T
 
 }  // namespace
 
-void collide(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin, std::vector<Manifold>& out) {
+void collide(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
+             std::vector<Manifold>& out) {
   if (static_cast<int>(a.kind) <= static_cast<int>(b.kind)) {
     collideOrdered(a, pa, b, pb, margin, out);
     return;

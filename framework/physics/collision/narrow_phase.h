@@ -25,7 +25,8 @@
 namespace pba::collision {
 
 Manifold collideSpheres(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);
-Manifold collideSphereCapsule(const Shape& sphere, const Transform& ps, const Shape& capsule, const Transform& pc, Real margin);
+Manifold collideSphereCapsule(const Shape& sphere, const Transform& ps, const Shape& capsule, const Transform& pc,
+                              Real margin);
 Manifold collideCapsules(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);
 Manifold collideSphereBox(const Shape& sphere, const Transform& ps, const Shape& box, const Transform& pb, Real margin);
 Manifold collideBoxes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);
@@ -42,6 +43,7 @@ void collideConvexMesh(const Shape& convex, const Transform& pc, const Shape& me
 
 /// Dispatches on the kinds (swapping and flipping as needed) and appends the non-empty manifolds.
 /// Plane–plane, plane–mesh and mesh–mesh give nothing (static only).
-void collide(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin, std::vector<Manifold>& out);
+void collide(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
+             std::vector<Manifold>& out);
 
 }  // namespace pba::collision

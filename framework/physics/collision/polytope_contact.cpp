@@ -75,7 +75,8 @@ Manifold clipAgainstPolygon(const ClipPolygon& ref, const Vec3& n, const ClipPol
     deepest = std::min(deepest, s);
     if (s > margin) continue;
     // Midway between the incident surface point and its projection on the reference face.
-    candidates[count++] = {a.p[i] - (incidentRadius + 0.5 * s) * n, s, faceContactId(flip, refFaceForIds, incFaceForIds, a.id[i])};
+    candidates[count++] = {a.p[i] - (incidentRadius + 0.5 * s) * n, s,
+                           faceContactId(flip, refFaceForIds, incFaceForIds, a.id[i])};
   }
   Manifold m;
   m.normal = flip ? -n : n;

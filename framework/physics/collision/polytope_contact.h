@@ -14,7 +14,8 @@ inline std::uint32_t faceContactId(bool flip, int refFace, int incFace, std::uin
          ((static_cast<std::uint32_t>(incFace) & 0x7Fu) << 17) | (pointCode & 0x1FFFFu);
 }
 inline std::uint32_t edgeContactId(int edgeA, int edgeB) {
-  return 0x40000000u | ((static_cast<std::uint32_t>(edgeA) & 0x7FFFu) << 15) | (static_cast<std::uint32_t>(edgeB) & 0x7FFFu);
+  return 0x40000000u | ((static_cast<std::uint32_t>(edgeA) & 0x7FFFu) << 15) |
+         (static_cast<std::uint32_t>(edgeB) & 0x7FFFu);
 }
 
 /// The face of `hull` (at `pose`) whose world normal is most anti-parallel to `direction`.

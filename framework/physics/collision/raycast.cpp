@@ -134,7 +134,8 @@ std::optional<RayHit> rayCastMesh(const TriangleMesh& mesh, const Ray& ray, Real
   mesh.tree->rayCast(ray.origin, ray.direction, maxT, [&](int proxy, Real currentMax) {
     const int t = mesh.tree->userData(proxy);
     const auto& tri = mesh.triangles[t];
-    if (std::optional<RayHit> h = rayCastTriangle(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], ray, currentMax)) {
+    if (std::optional<RayHit> h =
+            rayCastTriangle(mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]], ray, currentMax)) {
       h->triangle = t;
       best = h;
       return h->t;
@@ -148,12 +149,24 @@ std::optional<RayHit> rayCast(const Shape& shape, const Transform& pose, const R
   const Ray local{pose.applyInverse(ray.origin), pose.rotateInverse(ray.direction)};
   std::optional<RayHit> hit;
   switch (shape.kind) {
-    case ShapeKind::Sphere: hit = rayCastSphere(shape.radius, local, maxT); break;
-    case ShapeKind::Capsule: hit = rayCastCapsule(shape.halfHeight, shape.radius, local, maxT); break;
-    case ShapeKind::Box: hit = rayCastBox(shape.halfExtents, local, maxT); break;
-    case ShapeKind::Hull: hit = rayCastHull(*shape.hull, local, maxT); break;
-    case ShapeKind::Plane: hit = rayCastPlane(local, maxT); break;
-    case ShapeKind::Mesh: hit = rayCastMesh(*shape.mesh, local, maxT); break;
+    case ShapeKind::Sphere:
+      hit = rayCastSphere(shape.radius, local, maxT);
+      break;
+    case ShapeKind::Capsule:
+      hit = rayCastCapsule(shape.halfHeight, shape.radius, local, maxT);
+      break;
+    case ShapeKind::Box:
+      hit = rayCastBox(shape.halfExtents, local, maxT);
+      break;
+    case ShapeKind::Hull:
+      hit = rayCastHull(*shape.hull, local, maxT);
+      break;
+    case ShapeKind::Plane:
+      hit = rayCastPlane(local, maxT);
+      break;
+    case ShapeKind::Mesh:
+      hit = rayCastMesh(*shape.mesh, local, maxT);
+      break;
   }
   if (hit) {
     hit->point = pose.apply(hit->point);

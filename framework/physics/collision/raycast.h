@@ -11,10 +11,10 @@
 namespace pba::collision {
 
 struct RayHit {
-  Real t = 0.0;          ///< distance along the ray [m]
-  Vec3 point{0.0};       ///< world hit point [m]
-  Vec3 normal{0.0};      ///< unit outward surface normal at the hit (world), against the ray
-  int triangle = -1;     ///< mesh triangle index, else −1
+  Real t = 0.0;       ///< distance along the ray [m]
+  Vec3 point{0.0};    ///< world hit point [m]
+  Vec3 normal{0.0};   ///< unit outward surface normal at the hit (world), against the ray
+  int triangle = -1;  ///< mesh triangle index, else −1
 };
 
 /// First hit of `ray` (world) with `shape` at `pose`, within maxT [m].

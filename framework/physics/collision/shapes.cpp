@@ -11,12 +11,18 @@ namespace pba::collision {
 
 const char* shapeKindName(ShapeKind kind) {
   switch (kind) {
-    case ShapeKind::Sphere: return "sphere";
-    case ShapeKind::Capsule: return "capsule";
-    case ShapeKind::Box: return "box";
-    case ShapeKind::Hull: return "hull";
-    case ShapeKind::Plane: return "plane";
-    case ShapeKind::Mesh: return "mesh";
+    case ShapeKind::Sphere:
+      return "sphere";
+    case ShapeKind::Capsule:
+      return "capsule";
+    case ShapeKind::Box:
+      return "box";
+    case ShapeKind::Hull:
+      return "hull";
+    case ShapeKind::Plane:
+      return "plane";
+    case ShapeKind::Mesh:
+      return "mesh";
   }
   return "?";
 }
@@ -101,8 +107,10 @@ Result<TriangleMesh> buildTriangleMesh(std::vector<Vec3> vertices, std::vector<s
 
 Vec3 coreSupport(const Shape& shape, const Vec3& d) {
   switch (shape.kind) {
-    case ShapeKind::Sphere: return Vec3(0.0);
-    case ShapeKind::Capsule: return Vec3(0.0, d.y >= 0.0 ? shape.halfHeight : -shape.halfHeight, 0.0);
+    case ShapeKind::Sphere:
+      return Vec3(0.0);
+    case ShapeKind::Capsule:
+      return Vec3(0.0, d.y >= 0.0 ? shape.halfHeight : -shape.halfHeight, 0.0);
     case ShapeKind::Box: {
       const Vec3& h = shape.halfExtents;
       return {d.x >= 0.0 ? h.x : -h.x, d.y >= 0.0 ? h.y : -h.y, d.z >= 0.0 ? h.z : -h.z};
@@ -118,7 +126,8 @@ Vec3 coreSupport(const Shape& shape, const Vec3& d) {
       return v[best];
     }
     case ShapeKind::Plane:
-    case ShapeKind::Mesh: break;
+    case ShapeKind::Mesh:
+      break;
   }
   return Vec3(0.0);
 }
@@ -126,15 +135,20 @@ Vec3 coreSupport(const Shape& shape, const Vec3& d) {
 void coreVertices(const Shape& shape, std::vector<Vec3>& out) {
   out.clear();
   switch (shape.kind) {
-    case ShapeKind::Sphere: out.emplace_back(0.0); break;
+    case ShapeKind::Sphere:
+      out.emplace_back(0.0);
+      break;
     case ShapeKind::Capsule:
       out.emplace_back(0.0, -shape.halfHeight, 0.0);
       out.emplace_back(0.0, shape.halfHeight, 0.0);
       break;
     case ShapeKind::Box:
-    case ShapeKind::Hull: out = shape.hull->vertices; break;
+    case ShapeKind::Hull:
+      out = shape.hull->vertices;
+      break;
     case ShapeKind::Plane:
-    case ShapeKind::Mesh: break;
+    case ShapeKind::Mesh:
+      break;
   }
 }
 
@@ -142,7 +156,8 @@ Aabb computeAabb(const Shape& shape, const Transform& pose) {
   const Mat3 r = glm::mat3_cast(pose.rotation);
   Aabb box;
   switch (shape.kind) {
-    case ShapeKind::Sphere: return {pose.position - Vec3(shape.radius), pose.position + Vec3(shape.radius)};
+    case ShapeKind::Sphere:
+      return {pose.position - Vec3(shape.radius), pose.position + Vec3(shape.radius)};
     case ShapeKind::Capsule: {
       const Vec3 axis = shape.halfHeight * r[1];
       const Vec3 e = glm::abs(axis) + Vec3(shape.radius);
@@ -172,31 +187,38 @@ Aabb computeAabb(const Shape& shape, const Transform& pose) {
 Real minimumExtent(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::Sphere:
-    case ShapeKind::Capsule: return shape.radius;
-    case ShapeKind::Box: return std::min({shape.halfExtents.x, shape.halfExtents.y, shape.halfExtents.z});
+    case ShapeKind::Capsule:
+      return shape.radius;
+    case ShapeKind::Box:
+      return std::min({shape.halfExtents.x, shape.halfExtents.y, shape.halfExtents.z});
     case ShapeKind::Hull: {
       Real r = std::numeric_limits<Real>::max();
       for (const HullFace& f : shape.hull->faces) r = std::min(r, f.offset);
       return std::max(r, 0.0);
     }
     case ShapeKind::Plane:
-    case ShapeKind::Mesh: return 0.0;
+    case ShapeKind::Mesh:
+      return 0.0;
   }
   return 0.0;
 }
 
 Real boundingRadius(const Shape& shape) {
   switch (shape.kind) {
-    case ShapeKind::Sphere: return shape.radius;
-    case ShapeKind::Capsule: return shape.halfHeight + shape.radius;
-    case ShapeKind::Box: return glm::length(shape.halfExtents);
+    case ShapeKind::Sphere:
+      return shape.radius;
+    case ShapeKind::Capsule:
+      return shape.halfHeight + shape.radius;
+    case ShapeKind::Box:
+      return glm::length(shape.halfExtents);
     case ShapeKind::Hull: {
       Real r = 0.0;
       for (const Vec3& v : shape.hull->vertices) r = std::max(r, glm::length(v));
       return r;
     }
     case ShapeKind::Plane:
-    case ShapeKind::Mesh: return 0.0;
+    case ShapeKind::Mesh:
+      return 0.0;
   }
   return 0.0;
 }

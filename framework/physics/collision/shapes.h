@@ -58,10 +58,10 @@ class DynamicTree;
 
 /// A static triangle mesh with a bounding-volume tree over its triangles.
 struct TriangleMesh {
-  std::vector<Vec3> vertices;                    ///< [m] local frame
+  std::vector<Vec3> vertices;                           ///< [m] local frame
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise seen from the front
-  std::vector<Vec3> normals;                     ///< unit, one per triangle (front side)
-  std::shared_ptr<const DynamicTree> tree;       ///< triangle AABBs (local frame), leaf data = triangle index
+  std::vector<Vec3> normals;                            ///< unit, one per triangle (front side)
+  std::shared_ptr<const DynamicTree> tree;              ///< triangle AABBs (local frame), leaf data = triangle index
 };
 
 /// Validates and indexes a triangle mesh (indices in range, no degenerate triangle, finite vertices).
@@ -71,9 +71,9 @@ Result<TriangleMesh> buildTriangleMesh(std::vector<Vec3> vertices, std::vector<s
 /// A shape: geometry in its local frame. Cheap to copy (hulls and meshes are shared).
 struct Shape {
   ShapeKind kind = ShapeKind::Sphere;
-  Real radius = 0.0;      ///< [m] sphere and capsule radius (0 for the others)
-  Real halfHeight = 0.0;  ///< [m] capsule: half the length of its segment along local y
-  Vec3 halfExtents{0.0};  ///< [m] box
+  Real radius = 0.0;                       ///< [m] sphere and capsule radius (0 for the others)
+  Real halfHeight = 0.0;                   ///< [m] capsule: half the length of its segment along local y
+  Vec3 halfExtents{0.0};                   ///< [m] box
   std::shared_ptr<const ConvexHull> hull;  ///< box (its polytope, for the general queries) and hull
   std::shared_ptr<const TriangleMesh> mesh;
 

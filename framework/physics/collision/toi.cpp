@@ -31,7 +31,8 @@ SignedDistance toPlane(const Shape& a, const Transform& xa, const Transform& pla
   const Vec3 n = plane.rotate(kUp);
   SignedDistance d;
   d.separation = std::numeric_limits<Real>::max();
-  for (const Vec3& v : vertices) d.separation = std::min(d.separation, glm::dot(n, xa.apply(v) - plane.position) - a.radius);
+  for (const Vec3& v : vertices)
+    d.separation = std::min(d.separation, glm::dot(n, xa.apply(v) - plane.position) - a.radius);
   d.normal = -n;
   return d;
 }
@@ -43,7 +44,8 @@ ToiResult timeOfImpact(const Shape& a, const Sweep& sa, const Shape& b, const Sw
   // Over the whole step, no point of A moves more than |Δc_A| + θ_A r_A (nlerp sweeps the angle
   // monotonically), so along the normal n the gap closes by at most
   //   μ = n·(Δc_A − Δc_B) + θ_A r_A + θ_B r_B   per unit of t.
-  const Real angularBound = rotationAngle(sa.q0, sa.q1) * boundingRadius(a) + rotationAngle(sb.q0, sb.q1) * boundingRadius(b);
+  const Real angularBound =
+      rotationAngle(sa.q0, sa.q1) * boundingRadius(a) + rotationAngle(sb.q0, sb.q1) * boundingRadius(b);
   const Vec3 relative = (sa.c1 - sa.c0) - (sb.c1 - sb.c0);
   ToiResult out;
   Real t = 0.0;

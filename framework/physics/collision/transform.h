@@ -5,8 +5,8 @@
 namespace pba::collision {
 
 struct Transform {
-  Vec3 position{0.0};        ///< [m] world position of the local origin
-  Quat rotation{1, 0, 0, 0}; ///< unit quaternion, local → world
+  Vec3 position{0.0};         ///< [m] world position of the local origin
+  Quat rotation{1, 0, 0, 0};  ///< unit quaternion, local → world
 
   Vec3 apply(const Vec3& local) const { return rotation * local + position; }
   Vec3 applyInverse(const Vec3& world) const { return glm::conjugate(rotation) * (world - position); }

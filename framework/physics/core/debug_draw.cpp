@@ -19,7 +19,8 @@ void DebugDraw::frame(const Vec3& origin, const Quat& q, Real scale) {
   line(origin, origin + q * Vec3(0, 0, scale), colors::kBlue);
 }
 
-void DebugDraw::arc(const Vec3& center, const Vec3& axis, const Vec3& from, Real angle, Real radius, const Color& color) {
+void DebugDraw::arc(const Vec3& center, const Vec3& axis, const Vec3& from, Real angle, Real radius,
+                    const Color& color) {
   const Real axisLength = glm::length(axis);
   if (!(axisLength > 0.0) || !(radius > 0.0)) return;
   const Vec3 n = axis / axisLength;

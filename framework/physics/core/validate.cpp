@@ -11,7 +11,8 @@ std::string describe(Real v) { return formatExact(v); }
 
 Status checkRange(std::string_view field, Real value, Real lo, Real hi) {
   if (isFinite(value) && value >= lo && value <= hi) return Status::success();
-  return Error{std::string(field) + ": must be in [" + describe(lo) + ", " + describe(hi) + "], got " + describe(value)};
+  return Error{std::string(field) + ": must be in [" + describe(lo) + ", " + describe(hi) + "], got " +
+               describe(value)};
 }
 
 Status checkPositive(std::string_view field, Real value) {
@@ -21,7 +22,8 @@ Status checkPositive(std::string_view field, Real value) {
 
 Status checkFinite(std::string_view field, const Vec3& v) {
   if (isFinite(v)) return Status::success();
-  return Error{std::string(field) + ": must be finite, got (" + describe(v.x) + ", " + describe(v.y) + ", " + describe(v.z) + ")"};
+  return Error{std::string(field) + ": must be finite, got (" + describe(v.x) + ", " + describe(v.y) + ", " +
+               describe(v.z) + ")"};
 }
 
 }  // namespace pba

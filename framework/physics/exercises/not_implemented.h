@@ -67,6 +67,6 @@ void runProbes();
 #define PBA_EXERCISE_PROBE_CONCAT_INNER(a, b) a##b
 #define PBA_EXERCISE_PROBE_CONCAT(a, b) PBA_EXERCISE_PROBE_CONCAT_INNER(a, b)
 /// PBA_EXERCISE_PROBE(eulerStep(BallState{}, Vec3(0.0), 0.01)); at namespace scope.
-#define PBA_EXERCISE_PROBE(call)                                                    \
+#define PBA_EXERCISE_PROBE(call)                                             \
   static const bool PBA_EXERCISE_PROBE_CONCAT(pbaExerciseProbe_, __LINE__) = \
       ::pba::exercises::registerProbe([] { static_cast<void>(call); })

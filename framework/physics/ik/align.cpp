@@ -16,7 +16,8 @@ namespace pba::ik::detail {
 
 Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits) {
   const Joint& joint = c.skeleton.joint(j);
-  const bool clampNow = clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
+  const bool clampNow =
+      clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
   Quat applied = wanted;
   if (joint.type == JointType::Ball) {
     if (clampNow) {
@@ -100,15 +101,16 @@ Real shiftInto(Real x, Real lo, Real hi, Real* violation) {
 
 Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
   const Vec3 principal = eulerXYZFromQuat(q);
-  if (principal.x >= joint.lo[0] && principal.x <= joint.hi[0] && principal.y >= joint.lo[1] && principal.y <= joint.hi[1] &&
-      principal.z >= joint.lo[2] && principal.z <= joint.hi[2]) {  // the common case
+  if (principal.x >= joint.lo[0] && principal.x <= joint.hi[0] && principal.y >= joint.lo[1] &&
+      principal.y <= joint.hi[1] && principal.z >= joint.lo[2] && principal.z <= joint.hi[2]) {  // the common case
     if (inside) *inside = true;
     return principal;
   }
   Vec3 out[2] = {principal, Vec3(principal.x + kPi, kPi - principal.y, principal.z + kPi)};
   Real violation[2] = {0.0, 0.0};
   for (int r = 0; r < 2; ++r)
-    for (int k = 0; k < 3; ++k) out[r][k] = shiftInto(std::remainder(out[r][k], 2.0 * kPi), joint.lo[k], joint.hi[k], &violation[r]);
+    for (int k = 0; k < 3; ++k)
+      out[r][k] = shiftInto(std::remainder(out[r][k], 2.0 * kPi), joint.lo[k], joint.hi[k], &violation[r]);
   const int pick = violation[1] < violation[0] ? 1 : 0;
   if (inside) *inside = violation[pick] == 0.0;
   return out[pick];
@@ -130,7 +132,8 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
   if (from.empty()) return Quat(1, 0, 0, 0);
   const Vec3 p = f.position;
   switch (joint.type) {
-    case JointType::Fixed: return Quat(1, 0, 0, 0);
+    case JointType::Fixed:
+      return Quat(1, 0, 0, 0);
     case JointType::Prismatic: {
       const Vec3 a = f.pre * joint.axis;
       Real num = 0.0, den = 0.0;

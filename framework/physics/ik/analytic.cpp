@@ -259,7 +259,8 @@ class Analytic final : public Method {
       const Real P = glm::dot(A, Bperp), Q = glm::dot(A, glm::cross(k, B));
       const Real r = std::hypot(P, Q);
       if (r < 1e-12) continue;
-      const Real x = std::clamp((d * d - glm::dot(A, A) - glm::dot(B, B) - 2.0 * glm::dot(A, Bpar)) / (2.0 * r), -1.0, 1.0);
+      const Real x =
+          std::clamp((d * d - glm::dot(A, A) - glm::dot(B, B) - 2.0 * glm::dot(A, Bpar)) / (2.0 * r), -1.0, 1.0);
       const Real phi = std::atan2(Q, P), delta = std::acos(x);
       Real thetas[2] = {wrapAngle(phi + delta), wrapAngle(phi - delta)};
       if (std::abs(thetas[1]) < std::abs(thetas[0])) std::swap(thetas[0], thetas[1]);
@@ -272,7 +273,8 @@ class Analytic final : public Method {
           ok = !c.options.enforceLimits || (value >= joint.lo[0] && value <= joint.hi[0]);
           if (c.options.enforceLimits) clampJointToLimits(c.skeleton, pose, elbow);
         } else {
-          const Quat local = glm::normalize(glm::conjugate(f.pre) * glm::angleAxis(theta, k) * f.pre * c.local[static_cast<size_t>(elbow)]);
+          const Quat local = glm::normalize(glm::conjugate(f.pre) * glm::angleAxis(theta, k) * f.pre *
+                                            c.local[static_cast<size_t>(elbow)]);
           ok = withinLimits(c, joint, local);
           if (joint.type == JointType::Ball) {
             const Vec3 angles = c.options.enforceLimits ? eulerWithinLimits(joint, local) : eulerXYZFromQuat(local);

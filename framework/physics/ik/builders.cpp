@@ -7,7 +7,8 @@
 namespace pba::ik {
 
 namespace {
-Joint makeJoint(std::string name, int parent, const Vec3& offset, JointType type, Real limit, const Vec3& axis = Vec3(0, 0, 1)) {
+Joint makeJoint(std::string name, int parent, const Vec3& offset, JointType type, Real limit,
+                const Vec3& axis = Vec3(0, 0, 1)) {
   Joint j;
   j.name = std::move(name);
   j.parent = parent;
@@ -130,7 +131,8 @@ Result<Rig> buildDoubleY() {
   auto chain = [&](const std::string& name, int parent, const Vec3& first, int n) {
     int last = parent;
     for (int i = 0; i < n; ++i) {
-      add(rig.skeleton, makeJoint(name + std::to_string(i), last, i == 0 ? first : Vec3(L, 0, 0), JointType::Ball, degToRad(90.0)),
+      add(rig.skeleton,
+          makeJoint(name + std::to_string(i), last, i == 0 ? first : Vec3(L, 0, 0), JointType::Ball, degToRad(90.0)),
           &error);
       last = rig.skeleton.jointCount() - 1;
     }
@@ -158,7 +160,8 @@ Result<Rig> buildDoubleY() {
 Pose randomPose(const Skeleton& s, std::mt19937_64& rng) {
   std::uniform_real_distribution<Real> unit(0.0, 1.0);
   Pose p = s.restPose();
-  for (int i = 0; i < s.dofCount(); ++i) p.dofs[static_cast<size_t>(i)] = s.dofLo(i) + (s.dofHi(i) - s.dofLo(i)) * unit(rng);
+  for (int i = 0; i < s.dofCount(); ++i)
+    p.dofs[static_cast<size_t>(i)] = s.dofLo(i) + (s.dofHi(i) - s.dofLo(i)) * unit(rng);
   for (int j = 0; j < s.jointCount(); ++j) {
     if (s.joint(j).type != JointType::Free) continue;
     const Real z = 2.0 * unit(rng) - 1.0, phi = 2.0 * kPi * unit(rng);

@@ -24,12 +24,12 @@ enum class HingeAxes { Planar, Alternating };
 /// A serial chain along +x from `base`: `links` joints, each followed by a bone of totalLength/links;
 /// one position effector at the tip (Workbook §2.1 tasks 1, 3 and 5).
 struct ChainDesc {
-  int links = 10;                       ///< [1] 1–10,000
-  Real totalLength = 2.0;               ///< [m] > 0: sum of the bone lengths (the reach)
-  JointType joint = JointType::Hinge;   ///< Hinge, Ball, Free or Prismatic (prismatic makes a telescope)
+  int links = 10;                      ///< [1] 1–10,000
+  Real totalLength = 2.0;              ///< [m] > 0: sum of the bone lengths (the reach)
+  JointType joint = JointType::Hinge;  ///< Hinge, Ball, Free or Prismatic (prismatic makes a telescope)
   HingeAxes axes = HingeAxes::Planar;
-  Real limit = degToRad(120.0);         ///< [rad] in (0, π]: every rotational DOF in [−limit, limit]
-  Vec3 base{0.0, 0.0, 0.0};             ///< [m] world position of the first joint
+  Real limit = degToRad(120.0);  ///< [rad] in (0, π]: every rotational DOF in [−limit, limit]
+  Vec3 base{0.0, 0.0, 0.0};      ///< [m] world position of the first joint
 };
 Status validate(const ChainDesc& d);
 Result<Rig> buildIkChain(const ChainDesc& d);
@@ -39,8 +39,8 @@ Result<Rig> buildSingleJoint(Real length = 1.0);
 
 /// Shoulder (ball, ±limit) + elbow (hinge about z, [0, 150°]) + wrist effector; bones along +x.
 struct TwoBoneDesc {
-  Real upper = 0.9;   ///< [m] shoulder → elbow
-  Real lower = 0.8;   ///< [m] elbow → wrist
+  Real upper = 0.9;              ///< [m] shoulder → elbow
+  Real lower = 0.8;              ///< [m] elbow → wrist
   Vec3 shoulder{0.0, 1.0, 0.0};  ///< [m]
 };
 Result<Rig> buildTwoBoneArm(const TwoBoneDesc& d);

@@ -38,7 +38,7 @@
 namespace pba::ik::detail {
 namespace {
 
-constexpr int kGoldenIterations = 30; // the bracket shrinks by 0.618³⁰ ≈ 5·10⁻⁷
+constexpr int kGoldenIterations = 30;            // the bracket shrinks by 0.618³⁰ ≈ 5·10⁻⁷
 constexpr Real kInvGolden = 0.6180339887498949;  // (√5 − 1) / 2
 constexpr Real kCurvatureEpsilon = 1e-10;        // relative sᵀy below which a pair is skipped
 
@@ -64,7 +64,8 @@ class DescentMethod final : public Method {
     if (maxAbs(g) == 0.0) return;  // stationary point, or every DOF blocked: the driver sees a stall
 
     std::vector<Real> d = lbfgs ? lbfgsDirection(g) : g;
-    if (!lbfgs) for (Real& x : d) x = -x;
+    if (!lbfgs)
+      for (Real& x : d) x = -x;
     for (size_t i = 0; i < n; ++i)
       if (frozen[i]) d[i] = 0.0;
     Real slope = dot(g, d);  // ∇f · d < 0 for a descent direction
@@ -94,7 +95,8 @@ class DescentMethod final : public Method {
     } else if (!lbfgs && c.options.lineSearch == LineSearch::GoldenSection) {
       accepted = golden(f, f0, alphaMax);
     }
-    if (!accepted) accepted = backtrack(f, f0, lbfgs && !memory_.empty() ? std::min<Real>(1.0, alphaMax) : alpha0, slope);
+    if (!accepted)
+      accepted = backtrack(f, f0, lbfgs && !memory_.empty() ? std::min<Real>(1.0, alphaMax) : alpha0, slope);
     if (!accepted) {
       c.pose = start_;  // no decrease found: the driver reports a stall
       memory_.clear();
@@ -157,7 +159,8 @@ class DescentMethod final : public Method {
   }
 
   // Adds the pair of the previous step (s, y = g − g_prev) to the memory, or restarts it.
-  void remember(const Context& c, const LeastSquaresSystem& sys, const std::vector<Real>& g, const std::vector<char>& frozen) {
+  void remember(const Context& c, const LeastSquaresSystem& sys, const std::vector<Real>& g,
+                const std::vector<char>& frozen) {
     if (!havePrevious_) return;
     havePrevious_ = false;
     if (frozen != previousFrozen_ || previousHadFree_ || !sys.layout.freeJoints.empty() || g.size() != s_.size()) {

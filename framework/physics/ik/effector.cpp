@@ -12,7 +12,8 @@ Residual residual(const std::vector<Effector>& effectors, const std::vector<Fram
   Residual r;
   for (const Effector& e : effectors) {
     r.position = std::max(r.position, glm::length(e.targetPosition - effectorPosition(e, frames)));
-    if (e.kind == EffectorKind::PositionOrientation) r.orientation = std::max(r.orientation, glm::length(orientationError(e, frames)));
+    if (e.kind == EffectorKind::PositionOrientation)
+      r.orientation = std::max(r.orientation, glm::length(orientationError(e, frames)));
   }
   return r;
 }
@@ -26,7 +27,8 @@ bool isAncestorOrSelf(const Skeleton& s, int ancestor, int joint) {
 std::vector<std::vector<int>> effectorsBelowJoints(const Skeleton& s, const std::vector<Effector>& effectors) {
   std::vector<std::vector<int>> below(static_cast<size_t>(s.jointCount()));
   for (size_t k = 0; k < effectors.size(); ++k)
-    for (int j = effectors[k].joint; j >= 0; j = s.joint(j).parent) below[static_cast<size_t>(j)].push_back(static_cast<int>(k));
+    for (int j = effectors[k].joint; j >= 0; j = s.joint(j).parent)
+      below[static_cast<size_t>(j)].push_back(static_cast<int>(k));
   return below;
 }
 

@@ -14,12 +14,12 @@ namespace pba::ik {
 enum class EffectorKind { Position, PositionOrientation };
 
 struct Effector {
-  int joint = 0;                         ///< the joint the effector point is fixed to
-  Vec3 localOffset{0.0};                 ///< [m] in that joint's frame, e.g. (bone length, 0, 0) for a tip
+  int joint = 0;          ///< the joint the effector point is fixed to
+  Vec3 localOffset{0.0};  ///< [m] in that joint's frame, e.g. (bone length, 0, 0) for a tip
   EffectorKind kind = EffectorKind::Position;
-  Vec3 targetPosition{0.0};              ///< [m] world goal g
-  Quat targetOrientation{1, 0, 0, 0};    ///< world goal frame G (PositionOrientation only)
-  Real weight = 1.0;                     ///< [1] > 0: relative importance among effectors
+  Vec3 targetPosition{0.0};            ///< [m] world goal g
+  Quat targetOrientation{1, 0, 0, 0};  ///< world goal frame G (PositionOrientation only)
+  Real weight = 1.0;                   ///< [1] > 0: relative importance among effectors
 };
 
 /// World position of the effector point: p_j + R_j · offset.

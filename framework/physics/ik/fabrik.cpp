@@ -149,7 +149,8 @@ class Fabrik final : public Method {
       const int parent = c.skeleton.joint(j).parent;
       if (c.active[static_cast<size_t>(j)] && parent >= 0) kids_[static_cast<size_t>(parent)].push_back(j);
     }
-    for (int e = 0; e < E; ++e) effectorsOn_[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)].push_back(e);
+    for (int e = 0; e < E; ++e)
+      effectorsOn_[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)].push_back(e);
     target_.resize(static_cast<size_t>(E));
     for (int e = 0; e < E; ++e) target_[static_cast<size_t>(e)] = c.effectors[static_cast<size_t>(e)].targetPosition;
     // Points only: one chain from the root to a single position effector through ball or free joints
@@ -218,7 +219,9 @@ class Fabrik final : public Method {
     const Quat restInverse = glm::conjugate(joint.restRotation);
     const bool clamp = c.options.enforceLimits;
     switch (joint.type) {
-      case JointType::Fixed: *Rp = Rk * restInverse; break;
+      case JointType::Fixed:
+        *Rp = Rk * restInverse;
+        break;
       case JointType::Prismatic: {
         // No rotation: body j's orientation follows; the displacement puts its pivot nearest oldP.
         *Rp = Rk * restInverse;
@@ -389,7 +392,8 @@ class Fabrik final : public Method {
       const Quat oldInverse = glm::conjugate(old.rotation);
       for (int n : deeper) {
         const bool effector = n >= J;
-        const Vec3 now = effector ? effectorPosition(c.effectors[static_cast<size_t>(n - J)], c.frames) : c.frames[static_cast<size_t>(n)].position;
+        const Vec3 now = effector ? effectorPosition(c.effectors[static_cast<size_t>(n - J)], c.frames)
+                                  : c.frames[static_cast<size_t>(n)].position;
         from_.push_back(oldInverse * (now - old.position));
         to_.push_back(effector ? target_[static_cast<size_t>(n - J)] : P_[static_cast<size_t>(n)]);
         w_.push_back(lookaheadWeight_[static_cast<size_t>(j)]);
@@ -446,7 +450,7 @@ class Fabrik final : public Method {
   bool built_ = false, pointsOnly_ = false, pointsLoaded_ = false;
   std::vector<std::vector<int>> kids_, effectorsOn_;  // per joint: active child joints, effectors
   std::vector<Real> lookaheadWeight_;                 // per joint: weight of its look-ahead points
-  std::vector<std::vector<int>> deeper_;             // per joint: look-ahead nodes (see buildLookahead)
+  std::vector<std::vector<int>> deeper_;              // per joint: look-ahead nodes (see buildLookahead)
   std::vector<int> chain_;                            // points only: the joints from the root
   std::vector<Vec3> P_;                               // per joint: body pivot after the backward pass
   std::vector<Quat> R_;                               // per joint: body rotation after the backward pass

@@ -8,7 +8,8 @@
 
 namespace pba::ik::detail {
 
-Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w, const Quat& reference) {
+Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w,
+                 const Quat& reference) {
   // Horn 1987: Σ wᵢ toᵢ · (R fromᵢ) = qᵀ N q over unit quaternions q, with N built from
   // S = Σ wᵢ fromᵢ toᵢᵀ; the maximum is N's top eigenvector. When the top eigenvalue is (nearly)
   // repeated, every unit q in its eigenspace is optimal: take the one nearest the reference (its
@@ -21,12 +22,12 @@ Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, con
     scale += w[i] * glm::length(from[i]) * glm::length(to[i]);
   }
   if (!(scale > 0.0)) return reference;
-  const Real xx = S[0][0], xy = S[0][1], xz = S[0][2], yx = S[1][0], yy = S[1][1], yz = S[1][2], zx = S[2][0], zy = S[2][1],
-             zz = S[2][2];
+  const Real xx = S[0][0], xy = S[0][1], xz = S[0][2], yx = S[1][0], yy = S[1][1], yz = S[1][2], zx = S[2][0],
+             zy = S[2][1], zz = S[2][2];
   Eigen::Matrix4d N;
   N << xx + yy + zz, yz - zy, zx - xz, xy - yx,  //
-      yz - zy, xx - yy - zz, xy + yx, zx + xz,     //
-      zx - xz, xy + yx, -xx + yy - zz, yz + zy,    //
+      yz - zy, xx - yy - zz, xy + yx, zx + xz,   //
+      zx - xz, xy + yx, -xx + yy - zz, yz + zy,  //
       xy - yx, zx + xz, yz + zy, -xx - yy + zz;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(N);  // eigenvalues ascending
   const Eigen::Vector4d& values = eigen.eigenvalues();

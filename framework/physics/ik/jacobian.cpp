@@ -88,8 +88,8 @@ Matrix jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>
   }
   for (size_t k = 0; k < L.freeJoints.size(); ++k) {
     const int j = L.freeJoints[k];
-    fillColumn(J, s.dofCount() + static_cast<int>(k), below[static_cast<size_t>(j)], L.freeAxes[k], frames[static_cast<size_t>(j)].position, true,
-               effectors, frames, L, scale);
+    fillColumn(J, s.dofCount() + static_cast<int>(k), below[static_cast<size_t>(j)], L.freeAxes[k],
+               frames[static_cast<size_t>(j)].position, true, effectors, frames, L, scale);
   }
   return J;
 }
@@ -126,7 +126,8 @@ Matrix numericalJacobian(const Skeleton& s, const Pose& pose, const std::vector<
       const Vec3 dp = (effectorPosition(e, fp) - effectorPosition(e, fm)) / (2.0 * h);
       for (int i = 0; i < 3; ++i) J(row + i, col) = dp[i];
       if (e.kind == EffectorKind::PositionOrientation) {
-        const Vec3 w = rotationVector(effectorOrientation(e, fp) * glm::inverse(effectorOrientation(e, fm))) / (2.0 * h);
+        const Vec3 w =
+            rotationVector(effectorOrientation(e, fp) * glm::inverse(effectorOrientation(e, fm))) / (2.0 * h);
         for (int i = 0; i < 3; ++i) J(row + 3 + i, col) = scale * w[i];
       }
     }

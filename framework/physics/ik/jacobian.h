@@ -20,9 +20,9 @@ namespace pba::ik {
 struct JacobianLayout {
   int rows = 0;
   int cols = 0;
-  std::vector<int> rowOfEffector;   ///< first row of each effector
-  std::vector<int> freeJoints;      ///< joint of column dofCount + k
-  std::vector<Vec3> freeAxes;       ///< world axis of each free-joint column (unit or zero)
+  std::vector<int> rowOfEffector;  ///< first row of each effector
+  std::vector<int> freeJoints;     ///< joint of column dofCount + k
+  std::vector<Vec3> freeAxes;      ///< world axis of each free-joint column (unit or zero)
 };
 
 /// World axis of scalar DOF k (0–2) of joint j for rotational DOFs, or the translation axis.

@@ -37,7 +37,8 @@ namespace pba::ik {
 // (4) Return Δθ = Jᵀ f with multiplyTransposed(J, f) (J.cols entries).
 //     With λ = 0 this is the pseudo-inverse step Jᵀ (J Jᵀ)⁻¹ Δe of Workbook §2.5.
 // *****
-std::vector<Real> dampedLeastSquaresStep([[maybe_unused]] const Matrix& J, [[maybe_unused]] const std::vector<Real>& error,
+std::vector<Real> dampedLeastSquaresStep([[maybe_unused]] const Matrix& J,
+                                         [[maybe_unused]] const std::vector<Real>& error,
                                          [[maybe_unused]] Real lambda) {
   // BEGIN SOLUTION
   Matrix A = gram(J);
@@ -67,7 +68,8 @@ class JacobianMethod final : public Method {
     weights_ = std::move(sys.dofWeights);
     Matrix& J = sys.J;
     std::vector<Real> delta = step(c, J, sys.residual, sys.clamped);
-    if (c.options.enforceLimits && c.options.limitMode == JacobianLimitMode::ZeroColumns && zeroBlockedColumns(c, J, delta))
+    if (c.options.enforceLimits && c.options.limitMode == JacobianLimitMode::ZeroColumns &&
+        zeroBlockedColumns(c, J, delta))
       delta = step(c, J, sys.residual, sys.clamped);
     // α: 1 for pinv, DLS and SDLS; Buss's step length for JT. slope: ∇f·Δ for JT's Armijo test, 0
     // (ask only for decrease) for the others, whose step is not a multiple of the gradient.
@@ -87,13 +89,22 @@ class JacobianMethod final : public Method {
 
  private:
   // Δθ = W Δỹ for the method; JT returns the unscaled direction W J̃ᵀ r (α comes separately).
-  std::vector<Real> step(const Context& c, const Matrix& J, const std::vector<Real>& full, const std::vector<Real>& clamped) const {
+  std::vector<Real> step(const Context& c, const Matrix& J, const std::vector<Real>& full,
+                         const std::vector<Real>& clamped) const {
     std::vector<Real> dy;
     switch (kind_) {
-      case SolverKind::JacobianTranspose: dy = multiplyTransposed(J, full); break;
-      case SolverKind::DampedLeastSquares: dy = dampedLeastSquaresStep(J, clamped, c.options.damping); break;
-      case SolverKind::PseudoInverse: dy = pseudoInverseStep(J, clamped, c.options.singularCutoff); break;
-      default: dy = selectivelyDampedStep(J, clamped); break;
+      case SolverKind::JacobianTranspose:
+        dy = multiplyTransposed(J, full);
+        break;
+      case SolverKind::DampedLeastSquares:
+        dy = dampedLeastSquaresStep(J, clamped, c.options.damping);
+        break;
+      case SolverKind::PseudoInverse:
+        dy = pseudoInverseStep(J, clamped, c.options.singularCutoff);
+        break;
+      default:
+        dy = selectivelyDampedStep(J, clamped);
+        break;
     }
     for (size_t i = 0; i < dy.size(); ++i) dy[i] *= weights_[i];
     return dy;
@@ -117,7 +128,8 @@ class JacobianMethod final : public Method {
     // ρⱼ = Σₖ |J_kj| (3-row blocks: each effector's position, and orientation, rows).
     std::vector<Real> rho(static_cast<size_t>(n), 0.0);
     for (int r = 0; r + 2 < J.rows; r += 3)
-      for (int col = 0; col < n; ++col) rho[static_cast<size_t>(col)] += glm::length(Vec3(J(r, col), J(r + 1, col), J(r + 2, col)));
+      for (int col = 0; col < n; ++col)
+        rho[static_cast<size_t>(col)] += glm::length(Vec3(J(r, col), J(r + 1, col), J(r + 2, col)));
     std::vector<Real> total(static_cast<size_t>(n), 0.0);
     for (size_t i = 0; i < d.sigma.size(); ++i) {
       if (d.v[i].empty()) continue;  // σᵢ = 0: no response (Buss & Kim sum over σᵢ ≠ 0)
@@ -142,7 +154,8 @@ class JacobianMethod final : public Method {
     bool any = false;
     for (int i = 0; i < c.skeleton.dofCount(); ++i) {
       const Real v = c.pose.dofs[static_cast<size_t>(i)], d = delta[static_cast<size_t>(i)];
-      const bool blocked = (v <= c.skeleton.dofLo(i) + 1e-12 && d < 0.0) || (v >= c.skeleton.dofHi(i) - 1e-12 && d > 0.0);
+      const bool blocked =
+          (v <= c.skeleton.dofLo(i) + 1e-12 && d < 0.0) || (v >= c.skeleton.dofHi(i) - 1e-12 && d > 0.0);
       if (!blocked) continue;
       for (int r = 0; r < J.rows; ++r) J(r, i) = 0.0;
       any = true;

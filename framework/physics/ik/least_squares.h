@@ -43,7 +43,7 @@ Real maxAbs(const std::vector<Real>& v);
 /// Scales v uniformly so that its largest |entry| is at most `limit` (Buss & Kim 2005, ClampMaxAbs).
 void clampMaxAbs(std::vector<Real>& v, Real limit);
 
-inline constexpr Real kArmijo = 1e-4;  ///< c₁ of Armijo's sufficient-decrease condition (Nocedal & Wright §3.1)
+inline constexpr Real kArmijo = 1e-4;    ///< c₁ of Armijo's sufficient-decrease condition (Nocedal & Wright §3.1)
 inline constexpr int kMaxHalvings = 30;  ///< a backtracking search gives up after α has shrunk by 2³⁰
 
 /// Backtracking line search (Nocedal & Wright 2006, Algorithm 3.1): tries α, α/2, α/4, … and

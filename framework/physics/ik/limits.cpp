@@ -19,7 +19,8 @@ namespace pba::ik {
 //     store the quaternion of the shortened vector (quatFromRotationVector).
 // (4) Fixed joints have nothing to clamp.
 // *****
-void clampJointToLimits([[maybe_unused]] const Skeleton& skeleton, [[maybe_unused]] Pose& pose, [[maybe_unused]] int j) {
+void clampJointToLimits([[maybe_unused]] const Skeleton& skeleton, [[maybe_unused]] Pose& pose,
+                        [[maybe_unused]] int j) {
   // BEGIN SOLUTION
   const Joint& joint = skeleton.joint(j);
   for (int k = 0; k < dofCount(joint.type); ++k) {
@@ -29,7 +30,8 @@ void clampJointToLimits([[maybe_unused]] const Skeleton& skeleton, [[maybe_unuse
   if (joint.type == JointType::Free) {
     const Vec3 r = rotationVector(pose.rotations[static_cast<size_t>(j)]);
     const Real angle = glm::length(r);
-    if (angle > joint.maxRotation) pose.rotations[static_cast<size_t>(j)] = quatFromRotationVector(r * (joint.maxRotation / angle));
+    if (angle > joint.maxRotation)
+      pose.rotations[static_cast<size_t>(j)] = quatFromRotationVector(r * (joint.maxRotation / angle));
   }
   return;
   // END SOLUTION

@@ -19,7 +19,9 @@ using ConstVectorMap = Eigen::Map<const Eigen::VectorXd>;
 using VectorMap = Eigen::Map<Eigen::VectorXd>;
 
 ConstMatrixMap view(const Matrix& J) { return ConstMatrixMap(J.data.data(), J.rows, J.cols); }
-ConstVectorMap view(const std::vector<Real>& x) { return ConstVectorMap(x.data(), static_cast<Eigen::Index>(x.size())); }
+ConstVectorMap view(const std::vector<Real>& x) {
+  return ConstVectorMap(x.data(), static_cast<Eigen::Index>(x.size()));
+}
 }  // namespace
 
 Real dot(const std::vector<Real>& a, const std::vector<Real>& b) { return view(a).dot(view(b)); }

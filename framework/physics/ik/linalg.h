@@ -15,8 +15,12 @@ struct Matrix {
 
   Matrix() = default;
   Matrix(int r, int c) : rows(r), cols(c), data(static_cast<size_t>(r) * static_cast<size_t>(c), 0.0) {}
-  Real& operator()(int r, int c) { return data[static_cast<size_t>(r) * static_cast<size_t>(cols) + static_cast<size_t>(c)]; }
-  Real operator()(int r, int c) const { return data[static_cast<size_t>(r) * static_cast<size_t>(cols) + static_cast<size_t>(c)]; }
+  Real& operator()(int r, int c) {
+    return data[static_cast<size_t>(r) * static_cast<size_t>(cols) + static_cast<size_t>(c)];
+  }
+  Real operator()(int r, int c) const {
+    return data[static_cast<size_t>(r) * static_cast<size_t>(cols) + static_cast<size_t>(c)];
+  }
 };
 
 /// y = J x (x has J.cols entries).
@@ -41,9 +45,9 @@ bool solveSpd(const Matrix& A, const std::vector<Real>& b, std::vector<Real>& x)
 /// σ sorted decreasing. Singular values at or below max(rows, cols) · ε · σ_max (Eigen's rank
 /// threshold) are numerically zero: reported as exactly 0, with an empty vᵢ.
 struct Svd {
-  std::vector<Real> sigma;            ///< singular values, decreasing, ≥ 0
-  std::vector<std::vector<Real>> u;   ///< left singular vectors (J.rows entries each)
-  std::vector<std::vector<Real>> v;   ///< right singular vectors (J.cols entries each); empty where σ = 0
+  std::vector<Real> sigma;           ///< singular values, decreasing, ≥ 0
+  std::vector<std::vector<Real>> u;  ///< left singular vectors (J.rows entries each)
+  std::vector<std::vector<Real>> v;  ///< right singular vectors (J.cols entries each); empty where σ = 0
 };
 Svd svd(const Matrix& J);
 

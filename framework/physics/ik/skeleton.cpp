@@ -12,21 +12,29 @@ namespace pba::ik {
 int dofCount(JointType type) {
   switch (type) {
     case JointType::Hinge:
-    case JointType::Prismatic: return 1;
-    case JointType::Ball: return 3;
+    case JointType::Prismatic:
+      return 1;
+    case JointType::Ball:
+      return 3;
     case JointType::Fixed:
-    case JointType::Free: return 0;
+    case JointType::Free:
+      return 0;
   }
   return 0;
 }
 
 const char* jointTypeName(JointType type) {
   switch (type) {
-    case JointType::Fixed: return "fixed";
-    case JointType::Hinge: return "hinge";
-    case JointType::Ball: return "ball";
-    case JointType::Free: return "free";
-    case JointType::Prismatic: return "prismatic";
+    case JointType::Fixed:
+      return "fixed";
+    case JointType::Hinge:
+      return "hinge";
+    case JointType::Ball:
+      return "ball";
+    case JointType::Free:
+      return "free";
+    case JointType::Prismatic:
+      return "prismatic";
   }
   return "?";
 }
@@ -34,7 +42,8 @@ const char* jointTypeName(JointType type) {
 Result<int> Skeleton::add(Joint j) {
   const int index = jointCount();
   const std::string field = "joint[" + std::to_string(index) + "]" + (j.name.empty() ? "" : " '" + j.name + "'");
-  if (j.parent < -1 || j.parent >= index) return Error{field + ".parent: must be -1 or an earlier joint, got " + std::to_string(j.parent)};
+  if (j.parent < -1 || j.parent >= index)
+    return Error{field + ".parent: must be -1 or an earlier joint, got " + std::to_string(j.parent)};
   if (Status s = checkFinite(field + ".offset", j.offset); !s) return Error{s.error()};
   // Every test puts isFinite first: an ordered comparison with NaN raises the invalid-operation trap.
   const Real axisLength = isFinite(j.axis) ? glm::length(j.axis) : 0.0;
@@ -43,14 +52,18 @@ Result<int> Skeleton::add(Joint j) {
   if (isFinite(axisLength) && axisLength > 1e-12) j.axis /= axisLength;
   const glm::dvec4 q(j.restRotation.x, j.restRotation.y, j.restRotation.z, j.restRotation.w);
   const Real qLength = isFinite(q.w) && isFinite(Vec3(q.x, q.y, q.z)) ? glm::length(q) : 0.0;
-  if (!(isFinite(qLength) && qLength > 1e-12)) return Error{field + ".restRotation: must be a non-zero finite quaternion"};
-  j.restRotation = Quat(j.restRotation.w / qLength, j.restRotation.x / qLength, j.restRotation.y / qLength, j.restRotation.z / qLength);
+  if (!(isFinite(qLength) && qLength > 1e-12))
+    return Error{field + ".restRotation: must be a non-zero finite quaternion"};
+  j.restRotation = Quat(j.restRotation.w / qLength, j.restRotation.x / qLength, j.restRotation.y / qLength,
+                        j.restRotation.z / qLength);
   for (int k = 0; k < ik::dofCount(j.type); ++k) {
     if (!isFinite(j.lo[k]) || !isFinite(j.hi[k]) || j.lo[k] > j.hi[k])
       return Error{field + ".limits[" + std::to_string(k) + "]: need finite lo <= hi"};
-    if (!isFinite(j.weight[k]) || !(j.weight[k] > 0.0)) return Error{field + ".weight[" + std::to_string(k) + "]: must be > 0"};
+    if (!isFinite(j.weight[k]) || !(j.weight[k] > 0.0))
+      return Error{field + ".weight[" + std::to_string(k) + "]: must be > 0"};
   }
-  if (!isFinite(j.maxRotation) || j.maxRotation < 0.0 || j.maxRotation > kPi) return Error{field + ".maxRotation: must be in [0, pi]"};
+  if (!isFinite(j.maxRotation) || j.maxRotation < 0.0 || j.maxRotation > kPi)
+    return Error{field + ".maxRotation: must be in [0, pi]"};
   j.firstDof = dofTotal_;
   for (int k = 0; k < ik::dofCount(j.type); ++k) dofJoint_.push_back(index);
   dofTotal_ += ik::dofCount(j.type);
@@ -89,9 +102,11 @@ Pose Skeleton::restPose() const {
 
 Status validate(const Skeleton& s, const Pose& p) {
   if (static_cast<int>(p.dofs.size()) != s.dofCount())
-    return Error{"pose.dofs: expected " + std::to_string(s.dofCount()) + " values, got " + std::to_string(p.dofs.size())};
+    return Error{"pose.dofs: expected " + std::to_string(s.dofCount()) + " values, got " +
+                 std::to_string(p.dofs.size())};
   if (static_cast<int>(p.rotations.size()) != s.jointCount())
-    return Error{"pose.rotations: expected " + std::to_string(s.jointCount()) + " values, got " + std::to_string(p.rotations.size())};
+    return Error{"pose.rotations: expected " + std::to_string(s.jointCount()) + " values, got " +
+                 std::to_string(p.rotations.size())};
   for (size_t i = 0; i < p.dofs.size(); ++i)
     if (!isFinite(p.dofs[i])) return Error{"pose.dofs[" + std::to_string(i) + "]: must be finite"};
   for (size_t j = 0; j < p.rotations.size(); ++j) {
@@ -105,17 +120,22 @@ Status validate(const Skeleton& s, const Pose& p) {
 Quat jointRotation(const Joint& j, const Pose& p, int jointIndex) {
   const Real* d = p.dofs.data() + j.firstDof;
   switch (j.type) {
-    case JointType::Hinge: return glm::angleAxis(d[0], j.axis);
-    case JointType::Ball: return quatFromEulerXYZ(Vec3(d[0], d[1], d[2]));
-    case JointType::Free: return p.rotations[static_cast<size_t>(jointIndex)];
+    case JointType::Hinge:
+      return glm::angleAxis(d[0], j.axis);
+    case JointType::Ball:
+      return quatFromEulerXYZ(Vec3(d[0], d[1], d[2]));
+    case JointType::Free:
+      return p.rotations[static_cast<size_t>(jointIndex)];
     case JointType::Fixed:
-    case JointType::Prismatic: break;
+    case JointType::Prismatic:
+      break;
   }
   return Quat(1, 0, 0, 0);
 }
 
 Vec3 jointTranslation(const Joint& j, const Pose& p) {
-  if (j.type == JointType::Prismatic) return j.offset + j.restRotation * (j.axis * p.dofs[static_cast<size_t>(j.firstDof)]);
+  if (j.type == JointType::Prismatic)
+    return j.offset + j.restRotation * (j.axis * p.dofs[static_cast<size_t>(j.firstDof)]);
   return j.offset;
 }
 
@@ -191,7 +211,8 @@ Quat shortestArc(const Vec3& u, const Vec3& v) {
   if (glm::dot(u, u) < 1e-24 || glm::dot(v, v) < 1e-24) return Quat(1, 0, 0, 0);
   // Eigen handles the opposite case (a half turn about a perpendicular axis found by its SVD);
   // renormalised, since near-opposite vectors leave Eigen's half-angle form a little off unit length.
-  const Eigen::Quaterniond q = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(u.x, u.y, u.z), Eigen::Vector3d(v.x, v.y, v.z));
+  const Eigen::Quaterniond q =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(u.x, u.y, u.z), Eigen::Vector3d(v.x, v.y, v.z));
   return glm::normalize(Quat(q.w(), q.x(), q.y(), q.z()));
 }
 

@@ -35,29 +35,29 @@ const char* jointTypeName(JointType type);
 /// One joint. Angles [rad], lengths [m]; limits per scalar DOF.
 struct Joint {
   std::string name;
-  int parent = -1;                  ///< index of the parent joint, −1 for the root; always < own index
-  Vec3 offset{0.0};                 ///< [m] rest position in the parent's frame (root: world position)
-  Quat restRotation{1, 0, 0, 0};    ///< rest orientation relative to the parent's frame
+  int parent = -1;                ///< index of the parent joint, −1 for the root; always < own index
+  Vec3 offset{0.0};               ///< [m] rest position in the parent's frame (root: world position)
+  Quat restRotation{1, 0, 0, 0};  ///< rest orientation relative to the parent's frame
   JointType type = JointType::Hinge;
-  Vec3 axis{0.0, 0.0, 1.0};         ///< unit; hinge/prismatic axis in the pre-rotation frame
-  int firstDof = 0;                 ///< index of this joint's first DOF in Pose::dofs (set by Skeleton::add)
-  Real lo[3] = {-kPi, -kPi, -kPi};  ///< [rad] or [m] lower limit per DOF
-  Real hi[3] = {kPi, kPi, kPi};     ///< [rad] or [m] upper limit per DOF
-  Real weight[3] = {1.0, 1.0, 1.0}; ///< [1] > 0: a larger weight lets the DOF move more (IK slides, "Units")
-  Real maxRotation = kPi;           ///< [rad] Free joints only: largest rotation angle away from rest
+  Vec3 axis{0.0, 0.0, 1.0};          ///< unit; hinge/prismatic axis in the pre-rotation frame
+  int firstDof = 0;                  ///< index of this joint's first DOF in Pose::dofs (set by Skeleton::add)
+  Real lo[3] = {-kPi, -kPi, -kPi};   ///< [rad] or [m] lower limit per DOF
+  Real hi[3] = {kPi, kPi, kPi};      ///< [rad] or [m] upper limit per DOF
+  Real weight[3] = {1.0, 1.0, 1.0};  ///< [1] > 0: a larger weight lets the DOF move more (IK slides, "Units")
+  Real maxRotation = kPi;            ///< [rad] Free joints only: largest rotation angle away from rest
 };
 
 /// The DOF values of one configuration of a skeleton.
 struct Pose {
-  std::vector<Real> dofs;        ///< [rad] or [m], Skeleton::dofCount() entries
-  std::vector<Quat> rotations;   ///< per joint; used by Free joints only (identity otherwise)
+  std::vector<Real> dofs;       ///< [rad] or [m], Skeleton::dofCount() entries
+  std::vector<Quat> rotations;  ///< per joint; used by Free joints only (identity otherwise)
 };
 
 /// A joint's world frame after forward kinematics.
 struct Frame {
-  Vec3 position{0.0};       ///< [m] world position of the joint (its pivot)
-  Quat rotation{1, 0, 0, 0};///< world orientation of the joint's frame (after its own DOFs)
-  Quat pre{1, 0, 0, 0};     ///< R_pre = R_parent · Q_rest: the frame of the DOF axes
+  Vec3 position{0.0};         ///< [m] world position of the joint (its pivot)
+  Quat rotation{1, 0, 0, 0};  ///< world orientation of the joint's frame (after its own DOFs)
+  Quat pre{1, 0, 0, 0};       ///< R_pre = R_parent · Q_rest: the frame of the DOF axes
 };
 
 class Skeleton {

@@ -88,22 +88,26 @@ const std::vector<std::string>& jacobianSourceNames() {
 
 Status validate(const SolveOptions& o) {
   const Status checks[] = {
-      static_cast<size_t>(o.solver) < kSolvers.size() ? Status::success() : Status(Error{"options.solver: no such method"}),
+      static_cast<size_t>(o.solver) < kSolvers.size() ? Status::success()
+                                                      : Status(Error{"options.solver: no such method"}),
       checkPositive("options.tolerance", o.tolerance),
       checkPositive("options.angleTolerance", o.angleTolerance),
       checkAtLeast("options.maxIterations", o.maxIterations, 1),
       checkNonNegative("options.maxSeconds", o.maxSeconds),
       checkAtLeast("options.stallIterations", o.stallIterations, 0),
       checkBelowOne("options.stallRatio", o.stallRatio),
-      inTable(o.limitMode, jacobianLimitModeNames()) ? Status::success() : Status(Error{"options.limitMode: no such mode"}),
-      inTable(o.jacobian, jacobianSourceNames()) ? Status::success() : Status(Error{"options.jacobian: no such source"}),
+      inTable(o.limitMode, jacobianLimitModeNames()) ? Status::success()
+                                                     : Status(Error{"options.limitMode: no such mode"}),
+      inTable(o.jacobian, jacobianSourceNames()) ? Status::success()
+                                                 : Status(Error{"options.jacobian: no such source"}),
       checkNonNegative("options.damping", o.damping),
       checkBelowOne("options.singularCutoff", o.singularCutoff),
       checkNonNegative("options.maxErrorStep", o.maxErrorStep),
       checkNonNegative("options.maxJointStep", o.maxJointStep),
       checkNonNegative("options.orientationScale", o.orientationScale),
       checkFinite("options.polePoint", o.polePoint),
-      inTable(o.lineSearch, lineSearchNames()) ? Status::success() : Status(Error{"options.lineSearch: no such line search"}),
+      inTable(o.lineSearch, lineSearchNames()) ? Status::success()
+                                               : Status(Error{"options.lineSearch: no such line search"}),
       checkPositive("options.gradientStep", o.gradientStep),
       checkPositive("options.lineSearchMaxStep", o.lineSearchMaxStep),
       checkAtLeast("options.lbfgsMemory", o.lbfgsMemory, 1),

@@ -17,13 +17,20 @@ namespace pba::ik {
 
 const char* statusName(SolveStatus s) {
   switch (s) {
-    case SolveStatus::Success: return "success";
-    case SolveStatus::Unreachable: return "unreachable";
-    case SolveStatus::Stalled: return "stalled";
-    case SolveStatus::IterationCap: return "iteration_cap";
-    case SolveStatus::TimeCap: return "time_cap";
-    case SolveStatus::NotApplicable: return "not_applicable";
-    case SolveStatus::InvalidInput: return "invalid_input";
+    case SolveStatus::Success:
+      return "success";
+    case SolveStatus::Unreachable:
+      return "unreachable";
+    case SolveStatus::Stalled:
+      return "stalled";
+    case SolveStatus::IterationCap:
+      return "iteration_cap";
+    case SolveStatus::TimeCap:
+      return "time_cap";
+    case SolveStatus::NotApplicable:
+      return "not_applicable";
+    case SolveStatus::InvalidInput:
+      return "invalid_input";
   }
   return "?";
 }
@@ -52,7 +59,8 @@ void Context::refresh() {
   flushPose();
   staleEuler.assign(static_cast<size_t>(skeleton.jointCount()), 0);
   local.resize(static_cast<size_t>(skeleton.jointCount()));
-  for (int j = 0; j < skeleton.jointCount(); ++j) local[static_cast<size_t>(j)] = jointRotation(skeleton.joint(j), pose, j);
+  for (int j = 0; j < skeleton.jointCount(); ++j)
+    local[static_cast<size_t>(j)] = jointRotation(skeleton.joint(j), pose, j);
   refreshFrames();
 }
 
@@ -88,7 +96,6 @@ Frame Context::frameFromParent(int j) const {
   return frameFrom(j, parent >= 0 ? &frames[static_cast<size_t>(parent)] : nullptr);
 }
 
-
 void stretchToward(Context& c, const Effector& e) {
   // Root → tip along the path to the effector: each joint turns so that the next point of the path
   // (child joint or the effector) lies on the ray from the path's first joint toward the goal.
@@ -103,7 +110,8 @@ void stretchToward(Context& c, const Effector& e) {
     const int j = path[i];
     if (c.skeleton.joint(j).type == JointType::Fixed) continue;
     const Frame& f = c.frames[static_cast<size_t>(j)];
-    const Vec3 next = i + 1 < path.size() ? c.frames[static_cast<size_t>(path[i + 1])].position : effectorPosition(e, c.frames);
+    const Vec3 next =
+        i + 1 < path.size() ? c.frames[static_cast<size_t>(path[i + 1])].position : effectorPosition(e, c.frames);
     const Real along = glm::dot(f.position - base, dir);
     const Real lever = glm::length(next - f.position);
     if (lever < 1e-12) continue;
@@ -118,7 +126,8 @@ void stretchToward(Context& c, const Effector& e) {
 
 namespace {
 
-Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o) {
+Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
+                      const SolveOptions& o) {
   if (s.jointCount() == 0) return Error{"skeleton: has no joints"};
   if (Status st = validate(s, pose); !st) return st;
   for (size_t k = 0; k < effectors.size(); ++k) {
@@ -131,7 +140,8 @@ Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Eff
     const Quat& q = e.targetOrientation;
     // isFinite first: an ordered comparison with NaN would raise the invalid-operation trap.
     const bool unit = isFinite(q.w) && isFinite(Vec3(q.x, q.y, q.z)) && std::abs(glm::dot(q, q) - 1.0) < 1e-6;
-    if (e.kind == EffectorKind::PositionOrientation && !unit) return Error{f + ".targetOrientation: must be a unit quaternion"};
+    if (e.kind == EffectorKind::PositionOrientation && !unit)
+      return Error{f + ".targetOrientation: must be a unit quaternion"};
   }
   return validate(o);
 }
@@ -158,25 +168,32 @@ class RestartRng {
 void randomizeActiveJoints(detail::Context& c, RestartRng& rng) {
   const Skeleton& s = c.skeleton;
   for (int i = 0; i < s.dofCount(); ++i)
-    if (c.active[static_cast<size_t>(s.dofJoint(i))]) c.pose.dofs[static_cast<size_t>(i)] = s.dofLo(i) + (s.dofHi(i) - s.dofLo(i)) * rng.uniform();
+    if (c.active[static_cast<size_t>(s.dofJoint(i))])
+      c.pose.dofs[static_cast<size_t>(i)] = s.dofLo(i) + (s.dofHi(i) - s.dofLo(i)) * rng.uniform();
   for (int j = 0; j < s.jointCount(); ++j) {
     const Joint& joint = s.joint(j);
     if (c.active[static_cast<size_t>(j)] && joint.type == JointType::Free) {
       const Real z = 2.0 * rng.uniform() - 1.0, phi = 2.0 * kPi * rng.uniform();
       const Real rxy = std::sqrt(std::max(0.0, 1.0 - z * z));
-      c.pose.rotations[static_cast<size_t>(j)] = glm::angleAxis(joint.maxRotation * rng.uniform(), Vec3(rxy * std::cos(phi), rxy * std::sin(phi), z));
+      c.pose.rotations[static_cast<size_t>(j)] =
+          glm::angleAxis(joint.maxRotation * rng.uniform(), Vec3(rxy * std::cos(phi), rxy * std::sin(phi), z));
     }
   }
 }
 
 std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string* why) {
   switch (c.options.solver) {
-    case SolverKind::Analytic: return detail::makeAnalytic(c, why);
-    case SolverKind::Ccd: return detail::makeCcd();
-    case SolverKind::Fabrik: return detail::makeFabrik();
+    case SolverKind::Analytic:
+      return detail::makeAnalytic(c, why);
+    case SolverKind::Ccd:
+      return detail::makeCcd();
+    case SolverKind::Fabrik:
+      return detail::makeFabrik();
     case SolverKind::GradientDescent:
-    case SolverKind::Lbfgs: return detail::makeDescentMethod(c.options.solver);
-    default: return detail::makeJacobianMethod(c.options.solver);
+    case SolverKind::Lbfgs:
+      return detail::makeDescentMethod(c.options.solver);
+    default:
+      return detail::makeJacobianMethod(c.options.solver);
   }
 }
 
@@ -265,7 +282,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   for (const Effector& e : effectors) {
     int root = e.joint;
     while (skeleton.joint(root).parent >= 0) root = skeleton.joint(root).parent;
-    if (glm::length(e.targetPosition - c.frames[static_cast<size_t>(root)].position) > reach(skeleton, root, e) + 1e-12) unreachable = true;
+    if (glm::length(e.targetPosition - c.frames[static_cast<size_t>(root)].position) > reach(skeleton, root, e) + 1e-12)
+      unreachable = true;
   }
   if (unreachable && effectors.size() == 1 && effectors[0].kind == EffectorKind::Position) {
     detail::stretchToward(c, effectors[0]);
@@ -330,7 +348,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     }
     // A restart needs iterations to get anywhere: at least 2k must remain (an interactive solve with
     // a cap of 30 keeps refining its warm start instead of jumping to a random pose it cannot finish).
-    if ((stalled || slow) && !unreachable && result.restarts < o.restarts && o.maxIterations - it >= 2 * std::max(k, 1) &&
+    if ((stalled || slow) && !unreachable && result.restarts < o.restarts &&
+        o.maxIterations - it >= 2 * std::max(k, 1) &&
         !(o.maxSeconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > o.maxSeconds)) {
       // A local minimum short of a reachable goal: keep this attempt if it is the best, then start
       // again from a random pose of the joints that move the effectors, with a fresh method.
@@ -353,9 +372,14 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
       return stop(SolveStatus::TimeCap);
     method->iterate(c);
     switch (method->framesAfterIterate()) {
-      case detail::Method::FramesAfterIterate::Refresh: c.refresh(); break;
-      case detail::Method::FramesAfterIterate::FromCache: c.refreshFrames(); break;
-      case detail::Method::FramesAfterIterate::Current: break;
+      case detail::Method::FramesAfterIterate::Refresh:
+        c.refresh();
+        break;
+      case detail::Method::FramesAfterIterate::FromCache:
+        c.refreshFrames();
+        break;
+      case detail::Method::FramesAfterIterate::Current:
+        break;
     }
     result.iterations = it + 1;
     std::tie(r, score) = measure();

@@ -21,8 +21,8 @@ enum class SolverKind {
   PseudoInverse,       ///< Δθ = J⁺ Δe, J⁺ from the SVD with a singular-value cut-off (Workbook §2.5)
   DampedLeastSquares,  ///< Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe
   SelectivelyDamped,   ///< Buss & Kim 2005: per-singular-vector damping, clamped by γ_max = π/4
-  GradientDescent,     ///< CMU asst4: descent on ½|g − e|², step by SolveOptions::lineSearch, projected on the limits
-  Lbfgs,               ///< quasi-Newton L-BFGS (CMU asst4 extension; Nocedal & Wright Alg. 7.4), projected
+  GradientDescent,  ///< CMU asst4: descent on ½|g − e|², step by SolveOptions::lineSearch, projected on the limits
+  Lbfgs,            ///< quasi-Newton L-BFGS (CMU asst4 extension; Nocedal & Wright Alg. 7.4), projected
 };
 
 /// The one table of the methods' names, in SolverKind order: menus, command-line choices, metrics
@@ -50,13 +50,13 @@ const std::vector<std::string>& lineSearchNames();
 const char* lineSearchName(LineSearch search);
 
 enum class SolveStatus {
-  Success,       ///< every effector within tolerance
-  Unreachable,   ///< a goal lies beyond the reach of its effector: the chain was stretched toward it
-  Stalled,       ///< the residual stopped decreasing for `stallIterations` iterations (local minimum)
-  IterationCap,  ///< maxIterations reached
-  TimeCap,       ///< maxSeconds reached
-  NotApplicable, ///< the method cannot handle this skeleton (e.g. analytic on a 5-link chain)
-  InvalidInput,  ///< bad skeleton, pose, effector or option: see SolveResult::message
+  Success,        ///< every effector within tolerance
+  Unreachable,    ///< a goal lies beyond the reach of its effector: the chain was stretched toward it
+  Stalled,        ///< the residual stopped decreasing for `stallIterations` iterations (local minimum)
+  IterationCap,   ///< maxIterations reached
+  TimeCap,        ///< maxSeconds reached
+  NotApplicable,  ///< the method cannot handle this skeleton (e.g. analytic on a 5-link chain)
+  InvalidInput,   ///< bad skeleton, pose, effector or option: see SolveResult::message
 };
 const char* statusName(SolveStatus status);
 
@@ -80,36 +80,37 @@ inline constexpr Real kJacobianStep = 1e-6;  ///< [rad or m] h of JacobianSource
 /// marked "departure" are safeguards of ours, off by default (docs/workbook/01-inverse-kinematics.md).
 struct SolveOptions {
   SolverKind solver = SolverKind::DampedLeastSquares;
-  Real tolerance = 1e-4;          ///< [m] > 0: success when every effector is this close
-  Real angleTolerance = 1e-3;     ///< [rad] > 0: and 6-DOF effectors are this well aligned
-  int maxIterations = 200;        ///< ≥ 1: iteration cap (CCD/FABRIK: passes; Jacobian: steps)
-  Real maxSeconds = 0.0;          ///< [s] ≥ 0: time cap; 0 = none (never used by tests: not deterministic)
-  int stallIterations = 20;       ///< k ≥ 0: stalled when the residual has not dropped by stallRatio in k iterations; 0 = never
-  Real stallRatio = 1e-3;         ///< [1] in [0, 1): relative progress that counts as progress
-  bool fromRest = false;          ///< repeatability (IK slides): start every solve from the rest pose
-  bool enforceLimits = true;      ///< clamp to joint limits (IK-6; CCD/FABRIK/analytic) or per limitMode
+  Real tolerance = 1e-4;       ///< [m] > 0: success when every effector is this close
+  Real angleTolerance = 1e-3;  ///< [rad] > 0: and 6-DOF effectors are this well aligned
+  int maxIterations = 200;     ///< ≥ 1: iteration cap (CCD/FABRIK: passes; Jacobian: steps)
+  Real maxSeconds = 0.0;       ///< [s] ≥ 0: time cap; 0 = none (never used by tests: not deterministic)
+  int stallIterations =
+      20;  ///< k ≥ 0: stalled when the residual has not dropped by stallRatio in k iterations; 0 = never
+  Real stallRatio = 1e-3;     ///< [1] in [0, 1): relative progress that counts as progress
+  bool fromRest = false;      ///< repeatability (IK slides): start every solve from the rest pose
+  bool enforceLimits = true;  ///< clamp to joint limits (IK-6; CCD/FABRIK/analytic) or per limitMode
   JacobianLimitMode limitMode = JacobianLimitMode::ZeroColumns;
   JacobianSource jacobian = JacobianSource::Analytic;
-  Real damping = 0.05;            ///< [m] ≥ 0: λ of DLS; typical 0.01–0.5 × the bone length
-  Real singularCutoff = 1e-3;     ///< [1] in [0, 1): pinv drops singular values below cutoff · σ_max
-  Real maxErrorStep = 0.0;        ///< [m] ≥ 0: clamp of each effector's error per step (Buss's D_max; Buss & Kim
-                                  ///< 2005 clamp the targets the same way); 0 = automatic (mean bone length)
+  Real damping = 0.05;         ///< [m] ≥ 0: λ of DLS; typical 0.01–0.5 × the bone length
+  Real singularCutoff = 1e-3;  ///< [1] in [0, 1): pinv drops singular values below cutoff · σ_max
+  Real maxErrorStep = 0.0;     ///< [m] ≥ 0: clamp of each effector's error per step (Buss's D_max; Buss & Kim
+                               ///< 2005 clamp the targets the same way); 0 = automatic (mean bone length)
   /// Departure (ours): [rad] ≥ 0, clamp of the largest DOF change of one JT, pinv, DLS or SDLS step
   /// (uniform scaling of the step); 0 = none, as published. SDLS always applies its own γ_max = π/4.
   Real maxJointStep = 0.0;
   /// Departure (ours): JT, pinv, DLS, SDLS halve each step until the objective decreases (JT: by
   /// Armijo's amount, from Buss's α); no acceptable step leaves the pose unchanged (a stall).
   bool jacobianLineSearch = false;
-  Real orientationScale = 0.0;    ///< [m/rad] ≥ 0: weight of orientation rows; 0 = automatic (mean bone length)
-  bool usePole = false;           ///< analytic two-bone: bend toward polePoint (else keep the current bend plane)
-  Vec3 polePoint{0.0};            ///< [m] finite: world point the elbow should point toward (the "pole target")
-  bool recordHistory = false;     ///< keep the residual and effector position of every iteration
+  Real orientationScale = 0.0;  ///< [m/rad] ≥ 0: weight of orientation rows; 0 = automatic (mean bone length)
+  bool usePole = false;         ///< analytic two-bone: bend toward polePoint (else keep the current bend plane)
+  Vec3 polePoint{0.0};          ///< [m] finite: world point the elbow should point toward (the "pole target")
+  bool recordHistory = false;   ///< keep the residual and effector position of every iteration
   LineSearch lineSearch = LineSearch::GoldenSection;  ///< gradient descent's step length
-  Real gradientStep = 0.2;        ///< [rad²/m²] > 0: α of LineSearch::Fixed: Δθ = −α ∇f, f in m²; stable below
-                                  ///< 2/λ_max(JᵀJ) (≈ 0.5 for a 1 m, 10-link chain); typical 0.05–0.5
-  Real lineSearchMaxStep = 0.5;   ///< [rad] > 0: gradient descent and L-BFGS: the largest DOF change of one
-                                  ///< step (the golden-section bracket; caps fixed and backtracking steps)
-  int lbfgsMemory = 7;            ///< ≥ 1: pairs (s, y) L-BFGS remembers; typical 5–10
+  Real gradientStep = 0.2;  ///< [rad²/m²] > 0: α of LineSearch::Fixed: Δθ = −α ∇f, f in m²; stable below
+                            ///< 2/λ_max(JᵀJ) (≈ 0.5 for a 1 m, 10-link chain); typical 0.05–0.5
+  Real lineSearchMaxStep = 0.5;  ///< [rad] > 0: gradient descent and L-BFGS: the largest DOF change of one
+                                 ///< step (the golden-section bracket; caps fixed and backtracking steps)
+  int lbfgsMemory = 7;           ///< ≥ 1: pairs (s, y) L-BFGS remembers; typical 5–10
   /// Departure (IK slides, "Stopping": when stuck, randomise the pose or switch algorithm), ≥ 0, off
   /// by default. With joint limits or one-sided hinges a method can stall in a local minimum short
   /// of a reachable goal, or crawl toward it (CCD along a limit). On a stall, or a crawl too slow to
@@ -133,10 +134,10 @@ struct SolveResult {
   Real positionResidual = 0.0;     ///< [m] largest effector distance to its goal at the end
   Real orientationResidual = 0.0;  ///< [rad] largest 6-DOF orientation error at the end
   int restarts = 0;                ///< stall recoveries used (SolveOptions::restarts)
-  Real seconds = 0.0;              ///< [s] wall time of the solve (measurement only, never used for control unless maxSeconds)
-  std::string message;             ///< for InvalidInput / NotApplicable
-  std::vector<Real> residualHistory;           ///< [m] position residual after each iteration (recordHistory)
-  std::vector<std::vector<Vec3>> effectorPath; ///< per effector: world positions after each iteration (recordHistory)
+  Real seconds = 0.0;   ///< [s] wall time of the solve (measurement only, never used for control unless maxSeconds)
+  std::string message;  ///< for InvalidInput / NotApplicable
+  std::vector<Real> residualHistory;            ///< [m] position residual after each iteration (recordHistory)
+  std::vector<std::vector<Vec3>> effectorPath;  ///< per effector: world positions after each iteration (recordHistory)
 };
 
 /// Solves in place: moves `pose` toward the goals of `effectors`. Never throws; never produces NaN.
@@ -147,6 +148,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
 /// of the automatic error clamp and orientation weight.
 Real meanBoneLength(const Skeleton& skeleton, const std::vector<Effector>& effectors);
 /// [m/rad] The orientation-row weight solve() uses: options.orientationScale, or the mean bone length.
-Real resolvedOrientationScale(const Skeleton& skeleton, const std::vector<Effector>& effectors, const SolveOptions& options);
+Real resolvedOrientationScale(const Skeleton& skeleton, const std::vector<Effector>& effectors,
+                              const SolveOptions& options);
 
 }  // namespace pba::ik

@@ -30,7 +30,8 @@ struct Context {
   std::vector<int> belowStart, belowList;
   std::span<const int> effectorsBelow(int j) const {
     const auto first = static_cast<size_t>(belowStart[static_cast<size_t>(j)]);
-    return std::span<const int>(belowList).subspan(first, static_cast<size_t>(belowStart[static_cast<size_t>(j) + 1]) - first);
+    return std::span<const int>(belowList).subspan(first,
+                                                   static_cast<size_t>(belowStart[static_cast<size_t>(j) + 1]) - first);
   }
   /// Per joint: true when it lies on the path from the root to some effector.
   std::vector<char> active;
@@ -120,7 +121,8 @@ Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits);
 /// The rotation R maximising Σ wᵢ toᵢ·(R fromᵢ) (Horn's quaternion method: the least-squares
 /// rotation carrying the vectors `from` onto `to`), nearest `reference` where the vectors leave a
 /// rotation free (collinear or coincident points). fabrik.cpp.
-Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w, const Quat& reference);
+Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w,
+                 const Quat& reference);
 
 /// XYZ Euler angles (a, b, c) of a ball joint's local rotation q in the representation its limits
 /// admit. Every rotation has two, the principal one (b in [−π/2, π/2], eulerXYZFromQuat) and

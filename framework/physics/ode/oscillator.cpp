@@ -30,9 +30,8 @@ void HarmonicOscillator::force(Real, std::span<const Real> q, std::span<const Re
   for (std::size_t i = 0; i < q.size(); ++i) out[i] = -desc_.stiffness * q[i];
 }
 
-void HarmonicOscillator::forceDifferential(Real, std::span<const Real>, std::span<const Real>,
-                                           std::span<const Real> dq, std::span<const Real>,
-                                           std::span<Real> out) const {
+void HarmonicOscillator::forceDifferential(Real, std::span<const Real>, std::span<const Real>, std::span<const Real> dq,
+                                           std::span<const Real>, std::span<Real> out) const {
   for (std::size_t i = 0; i < dq.size(); ++i) out[i] = -desc_.stiffness * dq[i];  // K = −k I, D = 0
 }
 
@@ -42,7 +41,8 @@ KeplerOrbit::KeplerOrbit(const OrbitDesc& d)
       desc_(d) {}
 
 Real KeplerOrbit::energy() const {
-  return 0.5 * desc_.planetMass * glm::dot(velocity(), velocity()) - desc_.gm * desc_.planetMass / glm::length(position());
+  return 0.5 * desc_.planetMass * glm::dot(velocity(), velocity()) -
+         desc_.gm * desc_.planetMass / glm::length(position());
 }
 
 Vec3 KeplerOrbit::angularMomentum() const { return desc_.planetMass * glm::cross(position(), velocity()); }

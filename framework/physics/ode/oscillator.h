@@ -43,10 +43,10 @@ class HarmonicOscillator final : public OwnedStateSystem {
 };
 
 struct OrbitDesc {
-  Real gm = 1.0;            ///< [m³/s²] G·M of the sun (scaled units: a 1 m orbit has period 2π s)
-  Real planetMass = 1.0;    ///< [kg]
-  Vec3 position{1.0, 0.0, 0.0};  ///< [m] initial, relative to the sun at the origin
-  Vec3 velocity{0.0, 0.0, -1.2}; ///< [m/s] initial (1.0 would be circular; 1.2 gives e ≈ 0.44)
+  Real gm = 1.0;                  ///< [m³/s²] G·M of the sun (scaled units: a 1 m orbit has period 2π s)
+  Real planetMass = 1.0;          ///< [kg]
+  Vec3 position{1.0, 0.0, 0.0};   ///< [m] initial, relative to the sun at the origin
+  Vec3 velocity{0.0, 0.0, -1.2};  ///< [m/s] initial (1.0 would be circular; 1.2 gives e ≈ 0.44)
 };
 
 class KeplerOrbit final : public OwnedStateSystem {

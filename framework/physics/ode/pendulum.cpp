@@ -8,9 +8,10 @@
 namespace pba::ode {
 
 Status validate(const PendulumDesc& d) {
-  for (Status s : {checkPositive("pendulum.mass", d.mass), checkPositive("pendulum.comOffset length", comDistance(d)),
-                   checkRange("pendulum.inertiaCm", d.inertiaCm, 0.0, 1e6), checkRange("pendulum.damping", d.damping, 0.0, 1e3),
-                   checkRange("pendulum.gravity", d.gravity, 0.0, 1e3)}) {
+  for (Status s :
+       {checkPositive("pendulum.mass", d.mass), checkPositive("pendulum.comOffset length", comDistance(d)),
+        checkRange("pendulum.inertiaCm", d.inertiaCm, 0.0, 1e6), checkRange("pendulum.damping", d.damping, 0.0, 1e3),
+        checkRange("pendulum.gravity", d.gravity, 0.0, 1e3)}) {
     if (!s) return s;
   }
   return Status::success();
@@ -38,7 +39,8 @@ Real angularAcceleration(const PendulumDesc& d, const PendulumState& s, const Ve
   const Vec3 y = centerOfMassOffset(d, s.angle);
   const Vec3 yPerp(-y.y, y.x, 0.0);  // y rotated by +90° about z
   // In the pivot's frame the body feels gravity plus the fictitious force −m a_p at its centre of mass.
-  const Real torque = -d.mass * glm::dot(ap, yPerp) - d.mass * d.gravity * comDistance(d) * std::sin(s.angle + comOffsetAngle(d));
+  const Real torque =
+      -d.mass * glm::dot(ap, yPerp) - d.mass * d.gravity * comDistance(d) * std::sin(s.angle + comOffsetAngle(d));
   return torque / pivotInertia(d);
 }
 

@@ -32,10 +32,10 @@
 namespace pba::ode {
 
 struct PendulumDesc {
-  Real mass = 1.0;            ///< [kg] > 0
-  Vec3 comOffset{0.0, -1.0, 0.0};  ///< y = C − c [m] at θ = 0 (xy; z ignored), |y| > 0: straight down by default
-  Real inertiaCm = 0.02;      ///< I_cm [kg·m²] ≥ 0 about the centre of mass
-  Real damping = 0.1;         ///< a [1/s] ≥ 0
+  Real mass = 1.0;                  ///< [kg] > 0
+  Vec3 comOffset{0.0, -1.0, 0.0};   ///< y = C − c [m] at θ = 0 (xy; z ignored), |y| > 0: straight down by default
+  Real inertiaCm = 0.02;            ///< I_cm [kg·m²] ≥ 0 about the centre of mass
+  Real damping = 0.1;               ///< a [1/s] ≥ 0
   Real gravity = kStandardGravity;  ///< [m/s²]
 };
 Status validate(const PendulumDesc& desc);

@@ -74,7 +74,9 @@ std::span<Real> flat(std::vector<Vec3>& v) { return {reinterpret_cast<Real*>(v.d
 std::span<const Real> flat(const std::vector<Vec3>& v) {
   return {reinterpret_cast<const Real*>(v.data()), 3 * v.size()};
 }
-std::span<const Vec3> asVec3(std::span<const Real> f) { return {reinterpret_cast<const Vec3*>(f.data()), f.size() / 3}; }
+std::span<const Vec3> asVec3(std::span<const Real> f) {
+  return {reinterpret_cast<const Vec3*>(f.data()), f.size() / 3};
+}
 std::span<Vec3> asVec3(std::span<Real> f) { return {reinterpret_cast<Vec3*>(f.data()), f.size() / 3}; }
 
 std::optional<std::string> describeNonFinite(const Particles& p) {

@@ -35,9 +35,9 @@ class SpatialHash {
   Real inverseCell_ = 1.0;
   std::vector<std::uint32_t> cellStart_;  ///< T + 1 prefix sums
   std::vector<std::uint32_t> entries_;    ///< particle indices grouped by bucket
-  std::vector<std::uint32_t> bucketOf_;   ///< scratch of build(): each particle's bucket (kept: no allocation per build)
-  std::vector<std::uint32_t> fill_;       ///< scratch of build(): next free entry per bucket
-  unsigned shift_ = 58;                   ///< 64 − b, where tableSize() = 2^b
+  std::vector<std::uint32_t> bucketOf_;  ///< scratch of build(): each particle's bucket (kept: no allocation per build)
+  std::vector<std::uint32_t> fill_;      ///< scratch of build(): next free entry per bucket
+  unsigned shift_ = 58;                  ///< 64 − b, where tableSize() = 2^b
   // forEachNear()'s record of the buckets it has visited: bucket b was visited by the current query
   // when visited_[b] == query_. One store and one load per cell instead of comparing each of the 27
   // buckets with all earlier ones (27·26/2 comparisons, a third of a collision sweep before).
@@ -94,8 +94,8 @@ class NeighbourList {
   std::size_t builds() const { return builds_; }  ///< rebuilds so far
 
  private:
-  std::vector<Pair> pairs_;     ///< ordered by i, then by j's bucket
-  std::vector<Vec3> builtAt_;   ///< [m] positions at the last build
+  std::vector<Pair> pairs_;    ///< ordered by i, then by j's bucket
+  std::vector<Vec3> builtAt_;  ///< [m] positions at the last build
   Real contactDistance_ = 0.0, skin_ = 0.0;
   std::size_t builds_ = 0;
   bool valid_ = false;

@@ -87,7 +87,8 @@ Result<Body> makeBody(const BodyDesc& d, const std::string& field) {
   }
   if (!(m.mass > 0.0) || !std::isfinite(m.mass)) return fail("shape: has no volume");
   if (d.inertia != Mat3(0.0)) {
-    if (!(glm::determinant(d.inertia) > 0.0) || d.inertia[0][0] <= 0.0 || d.inertia[1][1] <= 0.0 || d.inertia[2][2] <= 0.0)
+    if (!(glm::determinant(d.inertia) > 0.0) || d.inertia[0][0] <= 0.0 || d.inertia[1][1] <= 0.0 ||
+        d.inertia[2][2] <= 0.0)
       return fail("inertia: must be symmetric positive definite");
     m.inertia = d.inertia;
   }
@@ -98,7 +99,8 @@ Result<Body> makeBody(const BodyDesc& d, const std::string& field) {
     const Mat3& I = m.inertia;
     const Real scale = I[0][0] + I[1][1] + I[2][2];
     const Real off = std::abs(I[0][1]) + std::abs(I[0][2]) + std::abs(I[1][2]);
-    b.isotropic = off <= 1e-12 * scale && std::abs(I[0][0] - I[1][1]) <= 1e-12 * scale && std::abs(I[1][1] - I[2][2]) <= 1e-12 * scale;
+    b.isotropic = off <= 1e-12 * scale && std::abs(I[0][0] - I[1][1]) <= 1e-12 * scale &&
+                  std::abs(I[1][1] - I[2][2]) <= 1e-12 * scale;
   }
   b.inverseInertiaBody = glm::inverse(m.inertia);
   b.inverseInertiaWorld = worldInverseInertia(b.orientation, b.inverseInertiaBody);

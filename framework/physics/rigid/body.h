@@ -22,20 +22,20 @@ enum class BodyType { Static, Kinematic, Dynamic };
 struct BodyDesc {
   BodyType type = BodyType::Dynamic;
   collision::Shape shape;
-  Vec3 position{0.0};              ///< [m] world position of the shape's origin; e.g. (0, 1, 0)
-  Quat orientation{1, 0, 0, 0};    ///< unit quaternion, body → world
-  Vec3 linearVelocity{0.0};        ///< [m/s] world
-  Vec3 angularVelocity{0.0};       ///< [rad/s] world
-  Real density = 1000.0;           ///< [kg/m³] water 1000, wood ~600, steel ~7850
+  Vec3 position{0.0};            ///< [m] world position of the shape's origin; e.g. (0, 1, 0)
+  Quat orientation{1, 0, 0, 0};  ///< unit quaternion, body → world
+  Vec3 linearVelocity{0.0};      ///< [m/s] world
+  Vec3 angularVelocity{0.0};     ///< [rad/s] world
+  Real density = 1000.0;         ///< [kg/m³] water 1000, wood ~600, steel ~7850
   /// [kg] when > 0, the mass to use instead of density × volume (the inertia scales with it).
   Real mass = 0.0;
   /// [kg·m²] when not zero, the body-frame inertia about the centre of mass to use instead of the
   /// shape's (a body whose shape is only its collision proxy, e.g. the T-handle of `spinning`).
   Mat3 inertia{0.0};
-  Real friction = 0.6;             ///< Coulomb coefficient μ (combined with the other body's by √(μ₁μ₂))
-  Real restitution = 0.0;          ///< coefficient e ∈ [0, 1] (combined by max)
-  Real linearDamping = 0.0;        ///< [1/s] v ← v / (1 + h c)
-  Real angularDamping = 0.0;       ///< [1/s]
+  Real friction = 0.6;        ///< Coulomb coefficient μ (combined with the other body's by √(μ₁μ₂))
+  Real restitution = 0.0;     ///< coefficient e ∈ [0, 1] (combined by max)
+  Real linearDamping = 0.0;   ///< [1/s] v ← v / (1 + h c)
+  Real angularDamping = 0.0;  ///< [1/s]
   Real gravityScale = 1.0;
   /// Continuous collision (time of impact) against static bodies when the body moves more than half its
   /// smallest extent in a step (Box2D v3's rule for fast bodies). Off: discrete, it may tunnel.
@@ -44,27 +44,27 @@ struct BodyDesc {
   bool bullet = false;
   bool allowSleep = true;
   Color color{0.55f, 0.57f, 0.60f, 1.0f};
-  std::string name;                ///< for messages ("body 'bullet-ccd' position is NaN")
+  std::string name;  ///< for messages ("body 'bullet-ccd' position is NaN")
 };
 
 struct Body {
   BodyType type = BodyType::Dynamic;
   collision::Shape shape;
-  Vec3 position{0.0};            ///< [m] centre of mass, world
-  Quat orientation{1, 0, 0, 0};  ///< body → world
-  Vec3 linearVelocity{0.0};      ///< [m/s]
-  Vec3 angularVelocity{0.0};     ///< [rad/s] world
+  Vec3 position{0.0};                  ///< [m] centre of mass, world
+  Quat orientation{1, 0, 0, 0};        ///< body → world
+  Vec3 linearVelocity{0.0};            ///< [m/s]
+  Vec3 angularVelocity{0.0};           ///< [rad/s] world
   Real mass = 0.0, inverseMass = 0.0;  ///< [kg], [1/kg]; 0 for static and kinematic bodies
-  Mat3 inertiaBody{0.0};         ///< [kg·m²] about the centre of mass, body axes
-  Mat3 inverseInertiaBody{0.0};  ///< [1/(kg·m²)]
-  Mat3 inverseInertiaWorld{0.0}; ///< R I_body⁻¹ Rᵀ, refreshed by the world each step
+  Mat3 inertiaBody{0.0};               ///< [kg·m²] about the centre of mass, body axes
+  Mat3 inverseInertiaBody{0.0};        ///< [1/(kg·m²)]
+  Mat3 inverseInertiaWorld{0.0};       ///< R I_body⁻¹ Rᵀ, refreshed by the world each step
   Real friction = 0.6, restitution = 0.0;
   Real linearDamping = 0.0, angularDamping = 0.0, gravityScale = 1.0;
   bool continuous = true, bullet = false, allowSleep = true;
-  bool isotropic = false;        ///< I_body is a multiple of 1 (a sphere, a cube): no gyroscopic term
+  bool isotropic = false;  ///< I_body is a multiple of 1 (a sphere, a cube): no gyroscopic term
   bool sleeping = false;
-  Real sleepTime = 0.0;          ///< [s] how long the body has been slow enough to sleep
-  int proxy = -1;                ///< broad-phase proxy
+  Real sleepTime = 0.0;  ///< [s] how long the body has been slow enough to sleep
+  int proxy = -1;        ///< broad-phase proxy
   Color color;
   std::string name;
 

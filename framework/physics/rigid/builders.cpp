@@ -6,8 +6,8 @@
 namespace pba::rigid {
 
 namespace {
-const Color kPalette[] = {colors::kBlue, colors::kOrange, colors::kGreen, colors::kPurple, colors::kTeal, colors::kYellow,
-                          colors::kPink, colors::kRed};
+const Color kPalette[] = {colors::kBlue, colors::kOrange, colors::kGreen, colors::kPurple,
+                          colors::kTeal, colors::kYellow, colors::kPink,  colors::kRed};
 Color paletteColor(std::size_t i) { return kPalette[i % (sizeof(kPalette) / sizeof(kPalette[0]))]; }
 
 int add(World& world, const BodyDesc& d) {
@@ -45,7 +45,8 @@ StackBodies buildStack(World& world, const StackDesc& s) {
   // The column, left of the pyramid.
   const Real columnX = -(s.pyramidBase * (2.0 * h + s.gap)) * 0.5 - 4.0 * h;
   for (int i = 0; i < s.columnHeight; ++i) {
-    out.columnTop = addBox(world, Vec3(h), Vec3(columnX, h + 2.0 * h * i, 0.0), identity, 1000.0, s.friction, paletteColor(i));
+    out.columnTop =
+        addBox(world, Vec3(h), Vec3(columnX, h + 2.0 * h * i, 0.0), identity, 1000.0, s.friction, paletteColor(i));
     out.boxes.push_back(out.columnTop);
   }
   // The pyramid: row k has base − k boxes, each resting on two below.
@@ -54,8 +55,8 @@ StackBodies buildStack(World& world, const StackDesc& s) {
     const int n = s.pyramidBase - row;
     const Real x0 = -0.5 * (n - 1) * pitch;
     for (int i = 0; i < n; ++i) {
-      out.pyramidTop = addBox(world, Vec3(h), Vec3(x0 + i * pitch, h + 2.0 * h * row, 0.0), identity, 1000.0, s.friction,
-                              paletteColor(row + 3));
+      out.pyramidTop = addBox(world, Vec3(h), Vec3(x0 + i * pitch, h + 2.0 * h * row, 0.0), identity, 1000.0,
+                              s.friction, paletteColor(row + 3));
       out.boxes.push_back(out.pyramidTop);
     }
   }
@@ -149,7 +150,8 @@ std::vector<BodyDesc> benchStack1000() {
     Real z0 = -n * c;
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < n - i; ++j)
-        out.push_back(unitBox(Vec3(x, y, z0 + c * i + j * 2.0 * c), Quat(1, 0, 0, 0), c, 1.0, static_cast<std::size_t>(i + 2)));
+        out.push_back(
+            unitBox(Vec3(x, y, z0 + c * i + j * 2.0 * c), Quat(1, 0, 0, 0), c, 1.0, static_cast<std::size_t>(i + 2)));
       y += 2.0 * c;
     }
   }
@@ -164,7 +166,8 @@ std::vector<BodyDesc> benchStack1000() {
       for (int i = 0; i < perRing; ++i) {
         const Real a = angle + i * step;
         const Quat q = glm::angleAxis(a, kUp);
-        out.push_back(unitBox(Vec3(25.0 + radius * std::sin(a), y, radius * std::cos(a)), q, c, 1.0, static_cast<std::size_t>(k)));
+        out.push_back(unitBox(Vec3(25.0 + radius * std::sin(a), y, radius * std::cos(a)), q, c, 1.0,
+                              static_cast<std::size_t>(k)));
       }
       angle += 0.5 * step;
       y += 2.0 * c;
@@ -298,18 +301,26 @@ std::vector<int> buildPile(World& world, int count, unsigned seed) {
   for (int i = 0; i < count; ++i) {
     const int ix = i % side, iz = (i / side) % side, iy = i / (side * side);
     BodyDesc d;
-    d.position = Vec3((ix - 0.5 * side) * pitch + 0.05 * u(rng), 0.6 + iy * pitch, (iz - 0.5 * side) * pitch + 0.05 * u(rng));
+    d.position =
+        Vec3((ix - 0.5 * side) * pitch + 0.05 * u(rng), 0.6 + iy * pitch, (iz - 0.5 * side) * pitch + 0.05 * u(rng));
     d.orientation = glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
     d.density = 800.0;
     d.color = paletteColor(static_cast<std::size_t>(i + i / 8));  // every kind in every colour
     // One in eight a sphere, one a capsule, three boxes, three hulls (round shapes are the costly ones to
     // draw under software rendering).
     switch (i % 8) {
-      case 0: d.shape = collision::makeSphere(0.15 + 0.08 * std::abs(u(rng))).value(); break;
-      case 1: d.shape = collision::makeCapsule(0.12 + 0.05 * std::abs(u(rng)), 0.1).value(); break;
+      case 0:
+        d.shape = collision::makeSphere(0.15 + 0.08 * std::abs(u(rng))).value();
+        break;
+      case 1:
+        d.shape = collision::makeCapsule(0.12 + 0.05 * std::abs(u(rng)), 0.1).value();
+        break;
       case 2:
       case 3:
-      case 4: d.shape = collision::makeBox(Vec3(0.12 + 0.08 * std::abs(u(rng)), 0.12 + 0.05 * std::abs(u(rng)), 0.15)).value(); break;
+      case 4:
+        d.shape =
+            collision::makeBox(Vec3(0.12 + 0.08 * std::abs(u(rng)), 0.12 + 0.05 * std::abs(u(rng)), 0.15)).value();
+        break;
       default: {
         std::vector<Vec3> pts;
         for (int k = 0; k < 10; ++k) pts.push_back(0.22 * glm::normalize(Vec3(n(rng), n(rng), n(rng))));

@@ -15,11 +15,11 @@ int addBox(World& world, const Vec3& halfExtents, const Vec3& position, const Qu
            Real friction, const Color& color);
 
 struct StackDesc {
-  int columnHeight = 10;    ///< boxes in the vertical stack
-  int pyramidBase = 20;     ///< boxes in the pyramid's bottom row (base 20: 210 boxes)
-  Real halfExtent = 0.5;    ///< [m] cube half size
+  int columnHeight = 10;  ///< boxes in the vertical stack
+  int pyramidBase = 20;   ///< boxes in the pyramid's bottom row (base 20: 210 boxes)
+  Real halfExtent = 0.5;  ///< [m] cube half size
   Real friction = 0.6;
-  Real gap = 0.01;          ///< [m] horizontal gap between neighbours in a pyramid row
+  Real gap = 0.01;  ///< [m] horizontal gap between neighbours in a pyramid row
 };
 struct StackBodies {
   int columnTop = -1, pyramidTop = -1;
@@ -31,8 +31,8 @@ StackBodies buildStack(World& world, const StackDesc& desc);
 /// `halfExtent` at rest on it, both with friction μ (their combination √(μμ) is μ).
 struct Incline {
   int ramp = -1, box = -1;
-  Vec3 start{0.0};      ///< [m] the cube's centre at rest
-  Vec3 downhill{0.0};   ///< unit, along the slope
+  Vec3 start{0.0};     ///< [m] the cube's centre at rest
+  Vec3 downhill{0.0};  ///< unit, along the slope
   Quat rotation{1, 0, 0, 0};
 };
 Incline buildIncline(World& world, Real angle, Real friction, Real halfExtent = 0.25);
@@ -53,7 +53,7 @@ std::vector<int> addAll(World& world, const std::vector<BodyDesc>& descs);
 struct THandle {
   int body = -1;
   Vec3 barCenter{0.0}, barHalf{0.0}, shaftCenter{0.0}, shaftHalf{0.0};  ///< [m] body frame
-  Vec3 principalMoments{0.0};                                            ///< [kg·m²] I_x, I_y, I_z
+  Vec3 principalMoments{0.0};                                           ///< [kg·m²] I_x, I_y, I_z
 };
 THandle buildTHandle(World& world, Real spin = 6.0, Real perturbation = 0.01);
 

@@ -103,7 +103,8 @@ void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const C
         case PositionCorrection::Baumgarte:
           bias = std::max(s.baumgarte * inv_h * std::min(0.0, sep + s.linearSlop), -s.contactPushSpeed);
           break;
-        case PositionCorrection::None: break;
+        case PositionCorrection::None:
+          break;
       }
     }
     const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);

@@ -27,20 +27,20 @@ struct ContactPoint {
   // r × d and I⁻¹(r × d) for d = n, t₁, t₂ (index 0, 1, 2).
   Vec3 rAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, rBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
   Vec3 iArAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, iBrBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
-  Real separation = 0.0;          ///< [m] at the start of the step
+  Real separation = 0.0;  ///< [m] at the start of the step
   Real normalMass = 0.0;
   Real tangentMass[2] = {0.0, 0.0};  ///< 1/K of each tangent row
-  Real normalImpulse = 0.0;       ///< [N·s] accumulated
+  Real normalImpulse = 0.0;          ///< [N·s] accumulated
   Real tangentImpulse[2] = {0.0, 0.0};
-  Real maxNormalImpulse = 0.0;    ///< largest normal impulse of the step (restitution needs > 0)
-  Real relativeVelocity = 0.0;    ///< [m/s] n·v_rel at the start of the step
+  Real maxNormalImpulse = 0.0;  ///< largest normal impulse of the step (restitution needs > 0)
+  Real relativeVelocity = 0.0;  ///< [m/s] n·v_rel at the start of the step
   std::uint32_t id = 0;
 };
 
 struct ContactConstraint {
   int bodyA = -1, bodyB = -1;
   bool againstStatic = false;  ///< one side cannot move (set when prepared)
-  std::uint32_t key = 0;      ///< manifold key (mesh triangle)
+  std::uint32_t key = 0;       ///< manifold key (mesh triangle)
   Vec3 normal{0.0};
   Vec3 tangent[2]{Vec3(0.0), Vec3(0.0)};
   Real friction = 0.0, restitution = 0.0;
@@ -60,9 +60,9 @@ struct ContactConstraint {
 /// Per-substep solver inputs.
 struct ContactSolverStep {
   const WorldSettings* settings = nullptr;
-  Real h = 0.0;               ///< [s] substep
-  Softness soft;              ///< contact softness between two moving bodies at this substep
-  Softness staticSoft;        ///< against static bodies: twice the frequency (Box2D v3's staticSoftness)
+  Real h = 0.0;         ///< [s] substep
+  Softness soft;        ///< contact softness between two moving bodies at this substep
+  Softness staticSoft;  ///< against static bodies: twice the frequency (Box2D v3's staticSoftness)
 };
 
 /// Builds the solver data of `c` from its manifold and the bodies at the start of the step. Impulses

@@ -60,7 +60,8 @@ Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h) {
 // (3) The denominator: both inverse masses plus, for each body, n · ((I⁻¹ (r × n)) × r).
 // (4) j = −(1 + e) v_rel / denominator.
 // *****
-Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real restitution) {
+Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
+                      Real restitution) {
   // BEGIN SOLUTION
   const Vec3 ra = point - a.position, rb = point - b.position;
   const Real vrel = glm::dot(normal, a.velocityAt(point) - b.velocityAt(point));
@@ -82,8 +83,8 @@ Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& po
 // (3) Coulomb: the friction impulse can be at most μ times the normal impulse; clamp its size.
 // (4) Return it as a vector acting on A (it points against the sliding).
 // *****
-Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real normalImpulse,
-                     Real friction) {
+Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
+                     Real normalImpulse, Real friction) {
   // BEGIN SOLUTION
   const Vec3 ra = point - a.position, rb = point - b.position;
   const Vec3 vr = a.velocityAt(point) - b.velocityAt(point);
@@ -104,9 +105,9 @@ Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& poi
 PBA_EXERCISE_PROBE(boxInertiaTensor(1.0, Vec3(0.5)));
 PBA_EXERCISE_PROBE(worldInertiaTensor(Mat3(1.0), Quat(1, 0, 0, 0)));
 PBA_EXERCISE_PROBE(integrateOrientation(Quat(1, 0, 0, 0), Vec3(0.0, 1.0, 0.0), 0.01));
-PBA_EXERCISE_PROBE(collisionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(0.0, -1.0, 0.0), Vec3(0.0)}, ImpulseBody{},
-                                    Vec3(0.0), kUp, 0.5));
-PBA_EXERCISE_PROBE(frictionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(1.0, -1.0, 0.0), Vec3(0.0)}, ImpulseBody{},
-                                   Vec3(0.0), kUp, 1.0, 0.5));
+PBA_EXERCISE_PROBE(collisionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(0.0, -1.0, 0.0), Vec3(0.0)},
+                                    ImpulseBody{}, Vec3(0.0), kUp, 0.5));
+PBA_EXERCISE_PROBE(frictionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(1.0, -1.0, 0.0), Vec3(0.0)},
+                                   ImpulseBody{}, Vec3(0.0), kUp, 1.0, 0.5));
 
 }  // namespace pba::rigid

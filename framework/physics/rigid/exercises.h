@@ -25,23 +25,24 @@ Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h);
 
 /// What the impulse formulas need of a body.
 struct ImpulseBody {
-  Real inverseMass = 0.0;          ///< [1/kg], 0 for static
-  Mat3 inverseInertia{0.0};        ///< [1/(kg·m²)] world axes
-  Vec3 position{0.0};              ///< [m] centre of mass
-  Vec3 velocity{0.0};              ///< [m/s]
-  Vec3 angularVelocity{0.0};       ///< [rad/s]
+  Real inverseMass = 0.0;     ///< [1/kg], 0 for static
+  Mat3 inverseInertia{0.0};   ///< [1/(kg·m²)] world axes
+  Vec3 position{0.0};         ///< [m] centre of mass
+  Vec3 velocity{0.0};         ///< [m/s]
+  Vec3 angularVelocity{0.0};  ///< [rad/s]
   Vec3 velocityAt(const Vec3& p) const { return velocity + glm::cross(angularVelocity, p - position); }
 };
 
 // RIGID-3
 /// Magnitude j ≥ 0 of the collision impulse with restitution e (0 when not approaching):
 ///   j = −(1 + e) v_rel / (1/m_A + 1/m_B + n·((I_A⁻¹(r_A × n)) × r_A) + n·((I_B⁻¹(r_B × n)) × r_B)).
-Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real restitution);
+Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
+                      Real restitution);
 
 // RIGID-4
 /// The Coulomb friction impulse on A (−it on B) that accompanies a normal impulse j: it opposes the
 /// tangential relative velocity, stops it if that takes at most μ j, and is clamped to μ j otherwise.
-Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal, Real normalImpulse,
-                     Real friction);
+Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
+                     Real normalImpulse, Real friction);
 
 }  // namespace pba::rigid

@@ -10,13 +10,20 @@ namespace pba::rigid {
 
 const char* jointKindName(JointKind kind) {
   switch (kind) {
-    case JointKind::Ball: return "ball";
-    case JointKind::Hinge: return "hinge";
-    case JointKind::ConeTwist: return "cone-twist";
-    case JointKind::Fixed: return "fixed";
-    case JointKind::Slider: return "slider";
-    case JointKind::Distance: return "distance";
-    case JointKind::Mouse: return "mouse";
+    case JointKind::Ball:
+      return "ball";
+    case JointKind::Hinge:
+      return "hinge";
+    case JointKind::ConeTwist:
+      return "cone-twist";
+    case JointKind::Fixed:
+      return "fixed";
+    case JointKind::Slider:
+      return "slider";
+    case JointKind::Distance:
+      return "distance";
+    case JointKind::Mouse:
+      return "mouse";
   }
   return "?";
 }
@@ -48,7 +55,8 @@ Status initJoint(Joint& j, const std::vector<SolverBody>& bodies, const std::str
   j.target = anchorB;
   if (d.kind == JointKind::Distance) {
     j.restLength = d.length >= 0.0 ? d.length : glm::length(anchorB - d.anchor);
-    if (!(j.restLength >= 0.0) || !(d.minLength <= d.maxLength)) return Error{field + ".length: invalid length or limits"};
+    if (!(j.restLength >= 0.0) || !(d.minLength <= d.maxLength))
+      return Error{field + ".length: invalid length or limits"};
   }
   return Status::success();
 }
@@ -65,15 +73,22 @@ void warmStartJoint(const Joint& j, std::vector<SolverBody>& bodies) {
       angular = j.angularImpulse.x * j.hingeBasis[0] + j.angularImpulse.y * j.hingeBasis[1] +
                 (j.motorImpulse + j.lowerImpulse - j.upperImpulse) * u;
       break;
-    case JointKind::ConeTwist: angular = (j.lowerImpulse - j.upperImpulse) * u - j.swingImpulse * j.hingeBasis[0]; break;
-    case JointKind::Slider: linear = j.pointImpulse + (j.motorImpulse + j.lowerImpulse - j.upperImpulse) * u; break;
+    case JointKind::ConeTwist:
+      angular = (j.lowerImpulse - j.upperImpulse) * u - j.swingImpulse * j.hingeBasis[0];
+      break;
+    case JointKind::Slider:
+      linear = j.pointImpulse + (j.motorImpulse + j.lowerImpulse - j.upperImpulse) * u;
+      break;
     case JointKind::Distance:
       linear = (j.springImpulse + j.lowerImpulse - j.upperImpulse) * u;
       angular = Vec3(0.0);
       break;
     case JointKind::Ball:
-    case JointKind::Mouse: angular = Vec3(0.0); break;
-    case JointKind::Fixed: break;
+    case JointKind::Mouse:
+      angular = Vec3(0.0);
+      break;
+    case JointKind::Fixed:
+      break;
   }
   // A slider's linear rows act on A at the arm r_A + d (see joint_slider below); the others at r_A.
   const Vec3 armA = j.desc.kind == JointKind::Slider ? detail::anchorB(j, B) - A.c : j.rA;
@@ -97,8 +112,10 @@ Real jointPositionError(const Joint& j, const std::vector<SolverBody>& bodies) {
       const Vec3 u = A.q * j.axisA;
       return glm::length(d - glm::dot(d, u) * u);
     }
-    case JointKind::Mouse: return 0.0;
-    default: return glm::length(d);
+    case JointKind::Mouse:
+      return 0.0;
+    default:
+      return glm::length(d);
   }
 }
 

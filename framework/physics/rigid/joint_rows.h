@@ -44,11 +44,13 @@ inline Vec3 lockError(const Joint& j, const SolverBody& A, const SolverBody& B) 
 /// One scalar row along world unit direction u acting on the angular velocities only,
 /// Ċ = sign·u·(ω_B − ω_A), with a one-sided (λ ≥ 0) accumulated impulse: a joint limit. C is the
 /// distance to the limit (> 0: inside, speculative).
-inline void solveAngularLimit(SolverBody& A, SolverBody& B, const Vec3& u, Real sign, Real C, Real mass, Real& accumulated,
-                              const Softness& soft, Real h, bool useBias) {
+inline void solveAngularLimit(SolverBody& A, SolverBody& B, const Vec3& u, Real sign, Real C, Real mass,
+                              Real& accumulated, const Softness& soft, Real h, bool useBias) {
   Real bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-  if (C > 0.0) bias = C / h;
-  else if (useBias) bias = soft.biasRate * C, massScale = soft.massScale, impulseScale = soft.impulseScale;
+  if (C > 0.0)
+    bias = C / h;
+  else if (useBias)
+    bias = soft.biasRate * C, massScale = soft.massScale, impulseScale = soft.impulseScale;
   const Real cdot = sign * glm::dot(u, B.w - A.w);
   Real impulse = -mass * massScale * (cdot + bias) - impulseScale * accumulated;
   const Real next = std::max(accumulated + impulse, 0.0);

@@ -97,8 +97,10 @@ void solveHingeAxis(Joint& j, SolverBody& A, SolverBody& B, const Softness& soft
 void solveLinearRow(SolverBody& A, SolverBody& B, const Vec3& armA, const Vec3& rB, const Vec3& u, Real sign, Real C,
                     Real mass, Real& accumulated, const Softness& soft, Real h, bool useBias, bool limit) {
   Real bias = 0.0, massScale = 1.0, impulseScale = 0.0;
-  if (limit && C > 0.0) bias = C / h;
-  else if (useBias) bias = soft.biasRate * C, massScale = soft.massScale, impulseScale = soft.impulseScale;
+  if (limit && C > 0.0)
+    bias = C / h;
+  else if (useBias)
+    bias = soft.biasRate * C, massScale = soft.massScale, impulseScale = soft.impulseScale;
   const Real cdot = sign * glm::dot(u, B.v + glm::cross(B.w, rB) - A.v - glm::cross(A.w, armA));
   Real impulse = -mass * massScale * (cdot + bias) - impulseScale * accumulated;
   if (limit) {
@@ -165,7 +167,9 @@ void prepareJoint(Joint& j, const std::vector<SolverBody>& bodies, const JointSt
       break;
     }
     case JointKind::Ball:
-    case JointKind::Mouse: j.pointMass = detail::pointMass(A, B, j.rA, j.rB); break;
+    case JointKind::Mouse:
+      j.pointMass = detail::pointMass(A, B, j.rA, j.rB);
+      break;
   }
   if (!step.warmStarting) {
     j.pointImpulse = j.angularImpulse = Vec3(0.0);
@@ -183,7 +187,9 @@ void solveJoint(Joint& j, std::vector<SolverBody>& bodies, const JointStep& step
   j.rB = B.q * j.localB;
   if (d.kind != JointKind::Slider && d.kind != JointKind::Distance) j.pointMass = detail::pointMass(A, B, j.rA, j.rB);
   switch (d.kind) {
-    case JointKind::Ball: solvePoint(j, A, B, step.soft, useBias); break;
+    case JointKind::Ball:
+      solvePoint(j, A, B, step.soft, useBias);
+      break;
     case JointKind::Hinge:
       solveMotorAndLimits(j, A, B, step, useBias, detail::twistAngle(j, A, B));
       solveHingeAxis(j, A, B, step.soft, useBias);
@@ -198,8 +204,8 @@ void solveJoint(Joint& j, std::vector<SolverBody>& bodies, const JointStep& step
         j.hingeBasis[0] = n / sinSwing;
         const Real swing = std::atan2(sinSwing, glm::dot(a, b));
         const Real k = glm::dot(j.hingeBasis[0], (A.invI + B.invI) * j.hingeBasis[0]);
-        detail::solveAngularLimit(A, B, j.hingeBasis[0], -1.0, d.swingSpan - swing, k > 0.0 ? 1.0 / k : 0.0, j.swingImpulse,
-                                  step.soft, step.h, useBias);
+        detail::solveAngularLimit(A, B, j.hingeBasis[0], -1.0, d.swingSpan - swing, k > 0.0 ? 1.0 / k : 0.0,
+                                  j.swingImpulse, step.soft, step.h, useBias);
       }
       solvePoint(j, A, B, step.soft, useBias);
       break;
@@ -225,16 +231,18 @@ void solveJoint(Joint& j, std::vector<SolverBody>& bodies, const JointStep& step
         applyImpulse(B, j.rB, impulse * u, 1.0);
       }
       if (d.enableLimit) {
-        solveLinearRow(A, B, armA, j.rB, u, 1.0, t - d.lower, j.axialMass, j.lowerImpulse, step.soft, step.h, useBias, true);
-        solveLinearRow(A, B, armA, j.rB, u, -1.0, d.upper - t, j.axialMass, j.upperImpulse, step.soft, step.h, useBias, true);
+        solveLinearRow(A, B, armA, j.rB, u, 1.0, t - d.lower, j.axialMass, j.lowerImpulse, step.soft, step.h, useBias,
+                       true);
+        solveLinearRow(A, B, armA, j.rB, u, -1.0, d.upper - t, j.axialMass, j.upperImpulse, step.soft, step.h, useBias,
+                       true);
       }
       solveLock(j, A, B, step.soft, useBias);
       for (int k = 0; k < 2; ++k) {
         const Vec3& p = j.hingeBasis[k];
         Real accumulated = glm::dot(j.pointImpulse, p);
         const Real before = accumulated;
-        solveLinearRow(A, B, armA, j.rB, p, 1.0, glm::dot(dvec, p), rowMass(A, B, armA, j.rB, p), accumulated, step.soft,
-                       step.h, useBias, false);
+        solveLinearRow(A, B, armA, j.rB, p, 1.0, glm::dot(dvec, p), rowMass(A, B, armA, j.rB, p), accumulated,
+                       step.soft, step.h, useBias, false);
         j.pointImpulse += (accumulated - before) * p;
       }
       break;
@@ -249,23 +257,28 @@ void solveJoint(Joint& j, std::vector<SolverBody>& bodies, const JointStep& step
       if (d.hertz > 0.0) {
         // A spring always acts, with its own softness (and no relax: it is a force, not an error).
         const Softness spring = makeSoft(d.hertz, d.dampingRatio, step.h);
-        solveLinearRow(A, B, j.rA, j.rB, u, 1.0, l - j.restLength, j.axialMass, j.springImpulse, spring, step.h, true, false);
-      } else {
-        solveLinearRow(A, B, j.rA, j.rB, u, 1.0, l - j.restLength, j.axialMass, j.springImpulse, step.soft, step.h, useBias,
+        solveLinearRow(A, B, j.rA, j.rB, u, 1.0, l - j.restLength, j.axialMass, j.springImpulse, spring, step.h, true,
                        false);
+      } else {
+        solveLinearRow(A, B, j.rA, j.rB, u, 1.0, l - j.restLength, j.axialMass, j.springImpulse, step.soft, step.h,
+                       useBias, false);
       }
       if (d.minLength > 0.0)
-        solveLinearRow(A, B, j.rA, j.rB, u, 1.0, l - d.minLength, j.axialMass, j.lowerImpulse, step.soft, step.h, useBias, true);
+        solveLinearRow(A, B, j.rA, j.rB, u, 1.0, l - d.minLength, j.axialMass, j.lowerImpulse, step.soft, step.h,
+                       useBias, true);
       if (d.maxLength < 1e29)
-        solveLinearRow(A, B, j.rA, j.rB, u, -1.0, d.maxLength - l, j.axialMass, j.upperImpulse, step.soft, step.h, useBias, true);
+        solveLinearRow(A, B, j.rA, j.rB, u, -1.0, d.maxLength - l, j.axialMass, j.upperImpulse, step.soft, step.h,
+                       useBias, true);
       break;
     }
     case JointKind::Mouse: {
       // Box2D's mouse joint: a soft point constraint to the target with its own spring, force-limited.
-      const Softness spring = makeSoft(d.hertz > 0.0 ? d.hertz : 5.0, d.dampingRatio > 0.0 ? d.dampingRatio : 0.7, step.h);
+      const Softness spring =
+          makeSoft(d.hertz > 0.0 ? d.hertz : 5.0, d.dampingRatio > 0.0 ? d.dampingRatio : 0.7, step.h);
       const Vec3 C = anchorB(j, B) - j.target;
       const Vec3 cdot = B.v + glm::cross(B.w, j.rB);
-      Vec3 impulse = -spring.massScale * (j.pointMass * (cdot + spring.biasRate * C)) - spring.impulseScale * j.pointImpulse;
+      Vec3 impulse =
+          -spring.massScale * (j.pointMass * (cdot + spring.biasRate * C)) - spring.impulseScale * j.pointImpulse;
       Vec3 next = j.pointImpulse + impulse;
       const Real maxImpulse = d.maxForce * step.h;
       if (glm::length(next) > maxImpulse) next *= maxImpulse / glm::length(next);

@@ -35,38 +35,38 @@ std::vector<std::string> gyroscopicModeNames();
 
 struct WorldSettings {
   Vec3 gravity{0.0, -kStandardGravity, 0.0};  ///< [m/s²]
-  int substeps = 4;                ///< per step (Box2D v3 default 4); each solves then relaxes
-  int iterations = 1;              ///< velocity iterations per substep (with bias)
-  int relaxIterations = 1;         ///< per substep, without bias (Soft only)
-  bool warmStarting = true;        ///< start from last step's impulses (matched by feature id)
+  int substeps = 4;                           ///< per step (Box2D v3 default 4); each solves then relaxes
+  int iterations = 1;                         ///< velocity iterations per substep (with bias)
+  int relaxIterations = 1;                    ///< per substep, without bias (Soft only)
+  bool warmStarting = true;                   ///< start from last step's impulses (matched by feature id)
   PositionCorrection positionCorrection = PositionCorrection::Soft;
   FrictionModel friction = FrictionModel::Cone;
   GyroscopicMode gyroscopic = GyroscopicMode::Implicit;
-  Real contactHertz = 30.0;        ///< [Hz] contact stiffness (capped at a quarter of the substep rate)
-  Real contactDampingRatio = 10.0; ///< contact damping ratio ζ (heavily over-damped, no bounce)
-  Real jointHertz = 120.0;         ///< [Hz] joint stiffness (Box2D 60; 120 holds a 10-link chain within 1 mm)
+  Real contactHertz = 30.0;         ///< [Hz] contact stiffness (capped at a quarter of the substep rate)
+  Real contactDampingRatio = 10.0;  ///< contact damping ratio ζ (heavily over-damped, no bounce)
+  Real jointHertz = 120.0;          ///< [Hz] joint stiffness (Box2D 60; 120 holds a 10-link chain within 1 mm)
   Real jointDampingRatio = 2.0;
-  Real contactPushSpeed = 3.0;     ///< [m/s] the fastest a soft contact pushes bodies apart
-  Real baumgarte = 0.2;            ///< β of the Baumgarte bias
-  Real linearSlop = 0.005;         ///< [m] penetration allowed without correction
-  Real speculativeDistance = 0.02; ///< [m] contact points are made this far before touching
-  Real restitutionThreshold = 1.0; ///< [m/s] slower impacts do not bounce
+  Real contactPushSpeed = 3.0;      ///< [m/s] the fastest a soft contact pushes bodies apart
+  Real baumgarte = 0.2;             ///< β of the Baumgarte bias
+  Real linearSlop = 0.005;          ///< [m] penetration allowed without correction
+  Real speculativeDistance = 0.02;  ///< [m] contact points are made this far before touching
+  Real restitutionThreshold = 1.0;  ///< [m/s] slower impacts do not bounce
   /// Passes of the restitution stage (Box2D: 1). More let a bounce travel along a row of touching bodies
   /// (Newton's cradle) instead of being shared out.
   int restitutionIterations = 1;
-  Real aabbMargin = 0.1;           ///< [m] broad-phase fattening
+  Real aabbMargin = 0.1;  ///< [m] broad-phase fattening
   /// Contact cache (Jolt's body-pair cache): a pair whose relative pose moved less than these since its
   /// manifold was made keeps that manifold (moved with the bodies) instead of running the narrow phase.
   /// 0 turns the cache off.
   Real contactCacheDistance = 1e-3;  ///< [m]
   Real contactCacheAngle = 0.035;    ///< [rad] (2°)
   collision::BroadPhaseKind broadPhase = collision::BroadPhaseKind::Tree;
-  bool continuous = true;          ///< time of impact against static bodies for fast bodies (and bullets)
+  bool continuous = true;  ///< time of impact against static bodies for fast bodies (and bullets)
   bool sleeping = true;
-  Real sleepLinearSpeed = 0.05;    ///< [m/s] below this (and the angular bound) a body may sleep
-  Real sleepAngularSpeed = 0.05;   ///< [rad/s]
-  Real timeToSleep = 0.5;          ///< [s] an island sleeps when all its bodies were slow this long
-  Real maxLinearSpeed = 400.0;     ///< [m/s] clamp (Box2D's b2_huge guard against explosions)
+  Real sleepLinearSpeed = 0.05;   ///< [m/s] below this (and the angular bound) a body may sleep
+  Real sleepAngularSpeed = 0.05;  ///< [rad/s]
+  Real timeToSleep = 0.5;         ///< [s] an island sleeps when all its bodies were slow this long
+  Real maxLinearSpeed = 400.0;    ///< [m/s] clamp (Box2D's b2_huge guard against explosions)
 };
 
 }  // namespace pba::rigid

@@ -14,7 +14,7 @@
 namespace pba::rigid {
 
 struct Softness {
-  Real biasRate = 0.0;      ///< [1/s]
+  Real biasRate = 0.0;  ///< [1/s]
   Real massScale = 1.0;
   Real impulseScale = 0.0;
 };

@@ -9,14 +9,14 @@
 namespace pba::rigid {
 
 struct SolverBody {
-  Vec3 v{0.0};                   ///< [m/s]
-  Vec3 w{0.0};                   ///< [rad/s] world
-  Vec3 c{0.0};                   ///< [m] centre of mass (updated every substep)
+  Vec3 v{0.0};  ///< [m/s]
+  Vec3 w{0.0};  ///< [rad/s] world
+  Vec3 c{0.0};  ///< [m] centre of mass (updated every substep)
   Quat q{1, 0, 0, 0};
-  Vec3 dp{0.0};                  ///< [m] displacement since the start of the step (contact separations)
-  Vec3 dtheta{0.0};              ///< [rad] rotation vector Σ ω h since the start of the step
-  Real invMass = 0.0;            ///< [1/kg]
-  Mat3 invI{0.0};                ///< [1/(kg·m²)] world, fixed over the step
+  Vec3 dp{0.0};        ///< [m] displacement since the start of the step (contact separations)
+  Vec3 dtheta{0.0};    ///< [rad] rotation vector Σ ω h since the start of the step
+  Real invMass = 0.0;  ///< [1/kg]
+  Mat3 invI{0.0};      ///< [1/(kg·m²)] world, fixed over the step
 };
 
 /// Applies the impulse P [N·s] at arm r (from the centre of mass) with sign +1 (body B) or −1 (body A).

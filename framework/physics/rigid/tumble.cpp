@@ -21,7 +21,8 @@ void tumbleStep(TumbleBox& box, const TumbleSettings& s, Real h, std::vector<Tum
   const Vec3 n = kUp;
   for (int i = 0; i < 8; ++i) {
     const Vec3& e = box.halfExtents;
-    const Vec3 corner = box.position + box.orientation * Vec3(i & 1 ? e.x : -e.x, i & 2 ? e.y : -e.y, i & 4 ? e.z : -e.z);
+    const Vec3 corner =
+        box.position + box.orientation * Vec3(i & 1 ? e.x : -e.x, i & 2 ? e.y : -e.y, i & 4 ? e.z : -e.z);
     // Corners within a millimetre count as touching, so a box at rest keeps its contacts from step to step.
     constexpr Real kTouching = 1e-3;  // [m]
     if (corner.y < kTouching) contacts.push_back({corner, std::max(0.0, -corner.y), 0.0, Vec3(0.0)});
@@ -46,7 +47,8 @@ void tumbleStep(TumbleBox& box, const TumbleSettings& s, Real h, std::vector<Tum
   // Safety net (a no-op once RIGID-3 is solved): a box touching the ground never keeps sinking.
   if (!contacts.empty() && a.velocity.y < 0.0 && glm::length(a.velocity) < 1e3) {
     bool anyApproach = false;
-    for (const TumbleContact& c : contacts) anyApproach |= glm::dot(n, a.velocityAt(c.point)) < 0.0 && c.normalImpulse == 0.0;
+    for (const TumbleContact& c : contacts)
+      anyApproach |= glm::dot(n, a.velocityAt(c.point)) < 0.0 && c.normalImpulse == 0.0;
     if (anyApproach) a.velocity.y = 0.0;
   }
   box.velocity = a.velocity;
@@ -58,7 +60,8 @@ void tumbleStep(TumbleBox& box, const TumbleSettings& s, Real h, std::vector<Tum
 Real tumbleEnergy(const TumbleBox& box, const TumbleSettings& s) {
   const Mat3 inertia = worldInertiaTensor(boxInertiaTensor(box.mass, box.halfExtents), box.orientation);
   return 0.5 * box.mass * glm::dot(box.velocity, box.velocity) +
-         0.5 * glm::dot(box.angularVelocity, inertia * box.angularVelocity) - box.mass * glm::dot(s.gravity, box.position);
+         0.5 * glm::dot(box.angularVelocity, inertia * box.angularVelocity) -
+         box.mass * glm::dot(s.gravity, box.position);
 }
 
 }  // namespace pba::rigid

@@ -23,23 +23,23 @@ struct TumbleBox {
   Real mass = 1.0;                  ///< [kg]
   Vec3 position{0.0, 1.5, 0.0};     ///< [m] centre of mass
   Quat orientation{1, 0, 0, 0};
-  Vec3 velocity{0.0};               ///< [m/s]
-  Vec3 angularVelocity{0.0};        ///< [rad/s] world
+  Vec3 velocity{0.0};         ///< [m/s]
+  Vec3 angularVelocity{0.0};  ///< [rad/s] world
 };
 
 struct TumbleSettings {
   Vec3 gravity{0.0, -kStandardGravity, 0.0};  ///< [m/s²]
   Real restitution = 0.4;
   Real friction = 0.5;
-  Real restingSpeed = 0.2;   ///< [m/s] slower impacts get restitution 0
-  int sweeps = 8;            ///< passes over the contacts per step
+  Real restingSpeed = 0.2;  ///< [m/s] slower impacts get restitution 0
+  int sweeps = 8;           ///< passes over the contacts per step
 };
 
 struct TumbleContact {
-  Vec3 point{0.0};             ///< [m] the corner
-  Real depth = 0.0;            ///< [m] below the ground
-  Real normalImpulse = 0.0;    ///< [N·s] summed over the sweeps
-  Vec3 frictionImpulse{0.0};   ///< [N·s]
+  Vec3 point{0.0};            ///< [m] the corner
+  Real depth = 0.0;           ///< [m] below the ground
+  Real normalImpulse = 0.0;   ///< [N·s] summed over the sweeps
+  Vec3 frictionImpulse{0.0};  ///< [N·s]
 };
 
 /// Advances the box by h; `contacts` receives this step's corner contacts.

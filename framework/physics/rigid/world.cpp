@@ -8,7 +8,8 @@
 
 namespace pba::rigid {
 
-World::World(const WorldSettings& settings) : settings_(settings), broadPhase_(settings.broadPhase, settings.aabbMargin) {}
+World::World(const WorldSettings& settings)
+    : settings_(settings), broadPhase_(settings.broadPhase, settings.aabbMargin) {}
 
 namespace {
 collision::Aabb bodyAabb(const Body& b, Real speculative) {
@@ -66,7 +67,8 @@ void World::rebuildBroadPhase() {
 void World::updateBroadPhase() {
   if (broadPhase_.kind() != settings_.broadPhase) rebuildBroadPhase();
   for (const Body& b : bodies_)
-    if (b.type != BodyType::Static && !b.sleeping) broadPhase_.move(b.proxy, bodyAabb(b, settings_.speculativeDistance));
+    if (b.type != BodyType::Static && !b.sleeping)
+      broadPhase_.move(b.proxy, bodyAabb(b, settings_.speculativeDistance));
 }
 
 void World::placeDragged() {
@@ -137,7 +139,8 @@ void World::solve(Real dt) {
     if (c.manifold.count == 0 || !(awake_[c.bodyA] || awake_[c.bodyB])) continue;
     prepareContact(c, solverBodies_);
     if (!s.warmStarting)
-      for (int k = 0; k < c.count; ++k) c.points[k].normalImpulse = c.points[k].tangentImpulse[0] = c.points[k].tangentImpulse[1] = 0.0;
+      for (int k = 0; k < c.count; ++k)
+        c.points[k].normalImpulse = c.points[k].tangentImpulse[0] = c.points[k].tangentImpulse[1] = 0.0;
     active.push_back(&c);
   }
   std::vector<Joint*> joints;
@@ -167,7 +170,8 @@ void World::solve(Real dt) {
       sb.v = (sb.v + h * b.gravityScale * s.gravity) / (1.0 + h * b.linearDamping);
       sb.w /= (1.0 + h * b.angularDamping);
       // ω × Iω vanishes when I is a multiple of 1 (spheres, cubes): skip the Newton step there.
-      if (s.gyroscopic == GyroscopicMode::Implicit && !b.isotropic) sb.w = gyroscopicImplicitStep(sb.q, b.inertiaBody, sb.w, h);
+      if (s.gyroscopic == GyroscopicMode::Implicit && !b.isotropic)
+        sb.w = gyroscopicImplicitStep(sb.q, b.inertiaBody, sb.w, h);
     }
     if (s.warmStarting) {
       for (Joint* j : joints) warmStartJoint(*j, solverBodies_);

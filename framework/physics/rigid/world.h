@@ -36,28 +36,28 @@ struct WorldRayHit {
 /// Live measurements of the world (the lab's metrics under "rigid").
 struct WorldStats {
   int bodies = 0, dynamicBodies = 0, sleeping = 0;
-  int contacts = 0;              ///< contact points in touching manifolds
+  int contacts = 0;  ///< contact points in touching manifolds
   int manifolds = 0;
-  Real kineticEnergy = 0.0;      ///< [J]
-  Real potentialEnergy = 0.0;    ///< [J] −Σ m g·x
-  Vec3 momentum{0.0};            ///< [kg·m/s] Σ m v
-  Vec3 angularMomentum{0.0};     ///< [kg·m²/s] about the world origin: Σ x × m v + I ω
-  Real maxPenetration = 0.0;     ///< [m] deepest contact point at the start of the last step
-  Real maxJointError = 0.0;      ///< [m] largest anchor separation of any joint after the last step
-  int solverIterations = 0;      ///< velocity iterations per step, relax included
-  int ccdHits = 0;               ///< bodies moved back to their time of impact in the last step
+  Real kineticEnergy = 0.0;    ///< [J]
+  Real potentialEnergy = 0.0;  ///< [J] −Σ m g·x
+  Vec3 momentum{0.0};          ///< [kg·m/s] Σ m v
+  Vec3 angularMomentum{0.0};   ///< [kg·m²/s] about the world origin: Σ x × m v + I ω
+  Real maxPenetration = 0.0;   ///< [m] deepest contact point at the start of the last step
+  Real maxJointError = 0.0;    ///< [m] largest anchor separation of any joint after the last step
+  int solverIterations = 0;    ///< velocity iterations per step, relax included
+  int ccdHits = 0;             ///< bodies moved back to their time of impact in the last step
 };
 
 struct WorldDrawOptions {
   bool shapes = true;
-  bool contacts = true;       ///< points (red: touching, grey: speculative) and normals
-  bool impulses = false;      ///< normal impulses as arrows (scaled)
+  bool contacts = true;   ///< points (red: touching, grey: speculative) and normals
+  bool impulses = false;  ///< normal impulses as arrows (scaled)
   bool aabbTree = false;
-  bool frames = false;        ///< body frames
-  bool joints = true;         ///< anchors, axes, limits
+  bool frames = false;  ///< body frames
+  bool joints = true;   ///< anchors, axes, limits
   bool greySleeping = true;
-  Real impulseScale = 0.05;   ///< [m per N·s] arrow length of the impulses
-  Real normalLength = 0.15;   ///< [m]
+  Real impulseScale = 0.05;  ///< [m per N·s] arrow length of the impulses
+  Real normalLength = 0.15;  ///< [m]
 };
 
 class World {
@@ -123,16 +123,16 @@ class World {
   WorldSettings settings_;
   std::vector<Body> bodies_;
   std::vector<Joint> joints_;
-  std::vector<ContactConstraint> contacts_;  // sorted by (bodyA, bodyB, key)
+  std::vector<ContactConstraint> contacts_;      // sorted by (bodyA, bodyB, key)
   std::vector<ContactConstraint> nextContacts_;  // the next step's, built by collide() and swapped in
-  std::vector<SolverBody> solverBodies_;     // bodies_ + the world (last)
-  std::vector<char> awake_;                  // per body: dynamic and not sleeping this step
+  std::vector<SolverBody> solverBodies_;         // bodies_ + the world (last)
+  std::vector<char> awake_;                      // per body: dynamic and not sleeping this step
   collision::BroadPhase broadPhase_;
   std::vector<std::pair<int, int>> pairs_;
-  std::vector<collision::Sweep> sweeps_;     // per body, this step (continuous collision)
+  std::vector<collision::Sweep> sweeps_;                    // per body, this step (continuous collision)
   std::vector<Vec3> startVelocity_, startAngularVelocity_;  // per body, at the start of the step
-  std::vector<int> islandOf_;                // per body: union-find root this step (−1: not dynamic)
-  std::optional<Joint> mouse_;               // the drag constraint
+  std::vector<int> islandOf_;                               // per body: union-find root this step (−1: not dynamic)
+  std::optional<Joint> mouse_;                              // the drag constraint
   int drag_ = -1;
   Real time_ = 0.0;
   int ccdHits_ = 0;

@@ -21,7 +21,8 @@ bool World::jointConnected(int a, int b) const {
 namespace {
 
 bool movingKinematic(const Body& b) {
-  return b.type == BodyType::Kinematic && (glm::dot(b.linearVelocity, b.linearVelocity) > 0.0 || glm::dot(b.angularVelocity, b.angularVelocity) > 0.0);
+  return b.type == BodyType::Kinematic &&
+         (glm::dot(b.linearVelocity, b.linearVelocity) > 0.0 || glm::dot(b.angularVelocity, b.angularVelocity) > 0.0);
 }
 
 // Carries last step's impulses over to points with the same feature id; friction goes through its world
@@ -71,7 +72,8 @@ bool World::reuseContacts(int a, int b, std::size_t cursor, const collision::Tra
     tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
     for (int i = 0; i < c.count; ++i) {
       ContactPoint& p = c.points[i];
-      const Vec3 friction = p.tangentImpulse[0] * contacts_[k].tangent[0] + p.tangentImpulse[1] * contacts_[k].tangent[1];
+      const Vec3 friction =
+          p.tangentImpulse[0] * contacts_[k].tangent[0] + p.tangentImpulse[1] * contacts_[k].tangent[1];
       p.tangentImpulse[0] = glm::dot(friction, c.tangent[0]);
       p.tangentImpulse[1] = glm::dot(friction, c.tangent[1]);
     }
@@ -81,7 +83,8 @@ bool World::reuseContacts(int a, int b, std::size_t cursor, const collision::Tra
       c.manifold.points[i].separation = glm::dot(c.normal, sb - sa);
     }
     if (!settings_.warmStarting)
-      for (int i = 0; i < c.count; ++i) c.points[i].normalImpulse = c.points[i].tangentImpulse[0] = c.points[i].tangentImpulse[1] = 0.0;
+      for (int i = 0; i < c.count; ++i)
+        c.points[i].normalImpulse = c.points[i].tangentImpulse[0] = c.points[i].tangentImpulse[1] = 0.0;
     next.push_back(c);
   }
   return true;
@@ -100,7 +103,8 @@ void World::collide() {
     if (!A.isDynamic() && !B.isDynamic()) continue;
     if (jointConnected(a, b)) continue;
     while (cursor < contacts_.size() && keyLess(contacts_[cursor], a, b, 0)) ++cursor;
-    const bool awake = (A.isDynamic() && !A.sleeping) || (B.isDynamic() && !B.sleeping) || movingKinematic(A) || movingKinematic(B);
+    const bool awake =
+        (A.isDynamic() && !A.sleeping) || (B.isDynamic() && !B.sleeping) || movingKinematic(A) || movingKinematic(B);
     if (!awake) {
       // Both asleep (or asleep against something static): keep the old contacts as they are.
       for (std::size_t k = cursor; k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b; ++k)
@@ -133,7 +137,8 @@ void World::collide() {
       }
       std::size_t k = cursor;
       while (k < contacts_.size() && keyLess(contacts_[k], a, b, m.key)) ++k;
-      if (k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b && contacts_[k].key == m.key && settings_.warmStarting) {
+      if (k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b && contacts_[k].key == m.key &&
+          settings_.warmStarting) {
         carryImpulses(c, contacts_[k]);
       } else {
         for (int i = 0; i < m.count; ++i) c.points[i] = ContactPoint{}, c.points[i].id = m.points[i].id;
@@ -182,7 +187,8 @@ void World::updateSleepTimers(Real dt) {
   for (int i = 0; i < n; ++i) {
     Body& b = bodies_[i];
     if (!b.isDynamic() || b.sleeping) continue;
-    const bool slow = glm::length(b.linearVelocity) < s.sleepLinearSpeed && glm::length(b.angularVelocity) < s.sleepAngularSpeed;
+    const bool slow =
+        glm::length(b.linearVelocity) < s.sleepLinearSpeed && glm::length(b.angularVelocity) < s.sleepAngularSpeed;
     b.sleepTime = slow && b.allowSleep && i != drag_ ? b.sleepTime + dt : 0.0;
     if (islandOf_[i] >= 0) islandMin[islandOf_[i]] = std::min(islandMin[islandOf_[i]], b.sleepTime);
   }

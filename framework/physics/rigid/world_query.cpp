@@ -113,8 +113,11 @@ struct HullBatch {
   std::vector<std::uint32_t> indices;
 };
 
-void addHull(std::vector<HullBatch>& batches, const collision::ConvexHull& h, const collision::Transform& pose, const Color& color) {
-  auto same = [&](const HullBatch& b) { return b.color.r == color.r && b.color.g == color.g && b.color.b == color.b && b.color.a == color.a; };
+void addHull(std::vector<HullBatch>& batches, const collision::ConvexHull& h, const collision::Transform& pose,
+             const Color& color) {
+  auto same = [&](const HullBatch& b) {
+    return b.color.r == color.r && b.color.g == color.g && b.color.b == color.b && b.color.a == color.a;
+  };
   auto it = std::find_if(batches.begin(), batches.end(), same);
   if (it == batches.end()) it = batches.insert(batches.end(), HullBatch{color, {}, {}, {}});
   std::vector<Vec3>& positions = it->positions;
@@ -125,7 +128,8 @@ void addHull(std::vector<HullBatch>& batches, const collision::ConvexHull& h, co
     const Vec3 n = pose.rotate(f.normal);
     for (int v : f.vertices) positions.push_back(pose.apply(h.vertices[v])), normals.push_back(n);
     for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k)
-      indices.insert(indices.end(), {base, base + static_cast<std::uint32_t>(k), base + static_cast<std::uint32_t>(k + 1)});
+      indices.insert(indices.end(),
+                     {base, base + static_cast<std::uint32_t>(k), base + static_cast<std::uint32_t>(k + 1)});
   }
 }
 
@@ -134,7 +138,8 @@ void drawMesh(DebugDraw& d, const collision::TriangleMesh& m, const collision::T
   std::vector<std::uint32_t> indices;
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     const auto base = static_cast<std::uint32_t>(positions.size());
-    for (std::uint32_t v : m.triangles[t]) positions.push_back(pose.apply(m.vertices[v])), normals.push_back(pose.rotate(m.normals[t]));
+    for (std::uint32_t v : m.triangles[t])
+      positions.push_back(pose.apply(m.vertices[v])), normals.push_back(pose.rotate(m.normals[t]));
     indices.insert(indices.end(), {base, base + 1, base + 2});
   }
   d.triangles(positions, normals, indices, color);
@@ -163,15 +168,23 @@ void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
       const Color color = o.greySleeping && b.sleeping ? greyed(b.color) : b.color;
       const collision::Transform pose = b.pose();
       switch (b.shape.kind) {
-        case collision::ShapeKind::Sphere: d.sphere(b.position, b.shape.radius, color); break;
+        case collision::ShapeKind::Sphere:
+          d.sphere(b.position, b.shape.radius, color);
+          break;
         case collision::ShapeKind::Capsule: {
           const Vec3 axis = pose.rotate(Vec3(0.0, b.shape.halfHeight, 0.0));
           d.capsule(b.position - axis, b.position + axis, b.shape.radius, color);
           break;
         }
-        case collision::ShapeKind::Box: d.box(b.position, b.shape.halfExtents, b.orientation, color); break;
-        case collision::ShapeKind::Hull: addHull(hulls, *b.shape.hull, pose, color); break;
-        case collision::ShapeKind::Mesh: drawMesh(d, *b.shape.mesh, pose, color); break;
+        case collision::ShapeKind::Box:
+          d.box(b.position, b.shape.halfExtents, b.orientation, color);
+          break;
+        case collision::ShapeKind::Hull:
+          addHull(hulls, *b.shape.hull, pose, color);
+          break;
+        case collision::ShapeKind::Mesh:
+          drawMesh(d, *b.shape.mesh, pose, color);
+          break;
         case collision::ShapeKind::Plane: {
           // The renderer's ground grid shows y = 0; a plane elsewhere gets a square outline.
           const Vec3 u = pose.rotate(Vec3(10, 0, 0)), v = pose.rotate(Vec3(0, 0, 10));
@@ -181,7 +194,8 @@ void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
           break;
         }
       }
-      if (o.frames && b.isDynamic()) d.frame(b.position, b.orientation, 0.5 * std::max(collision::boundingRadius(b.shape), 0.1));
+      if (o.frames && b.isDynamic())
+        d.frame(b.position, b.orientation, 0.5 * std::max(collision::boundingRadius(b.shape), 0.1));
     }
     for (const HullBatch& h : hulls) d.triangles(h.positions, h.normals, h.indices, h.color);
   }
@@ -226,10 +240,17 @@ void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
             d.arc(pa, axis, t1, j.desc.upper - j.desc.lower, 0.15, colors::kOrange);
           }
           break;
-        case JointKind::ConeTwist: d.cone(pa, axis, j.desc.swingSpan, 0.25, colors::kOrange); break;
-        case JointKind::Slider: d.line(pa + j.desc.lower * axis, pa + j.desc.upper * axis, colors::kTeal); break;
-        case JointKind::Distance: d.line(pa, pb, j.desc.hertz > 0.0 ? colors::kGreen : colors::kDark); break;
-        default: break;
+        case JointKind::ConeTwist:
+          d.cone(pa, axis, j.desc.swingSpan, 0.25, colors::kOrange);
+          break;
+        case JointKind::Slider:
+          d.line(pa + j.desc.lower * axis, pa + j.desc.upper * axis, colors::kTeal);
+          break;
+        case JointKind::Distance:
+          d.line(pa, pb, j.desc.hertz > 0.0 ? colors::kGreen : colors::kDark);
+          break;
+        default:
+          break;
       }
     }
     if (mouse_) {

@@ -19,7 +19,8 @@ void addSpring(particles::ParticleSystem& sys, std::size_t i, std::size_t j, Rea
 }  // namespace
 
 Status validate(const RopeDesc& d) {
-  if (d.segments < 1 || d.segments > 100000) return Error{"rope.segments: must be in [1, 100000], got " + std::to_string(d.segments)};
+  if (d.segments < 1 || d.segments > 100000)
+    return Error{"rope.segments: must be in [1, 100000], got " + std::to_string(d.segments)};
   if (Status s = checkPositive("rope.mass", d.mass); !s) return s;
   if (Status s = checkFinite("rope.start", d.start); !s) return s;
   if (Status s = checkFinite("rope.end", d.end); !s) return s;
@@ -46,8 +47,10 @@ Result<std::size_t> appendRope(const RopeDesc& d, particles::ParticleSystem& sys
 }
 
 Status validate(const BlobDesc& d) {
-  if (d.surfaceParticles < 8 || d.surfaceParticles > 100000) return Error{"blob.surfaceParticles: must be in [8, 100000]"};
-  if (d.neighbours < 3 || d.neighbours >= d.surfaceParticles) return Error{"blob.neighbours: must be in [3, surfaceParticles)"};
+  if (d.surfaceParticles < 8 || d.surfaceParticles > 100000)
+    return Error{"blob.surfaceParticles: must be in [8, 100000]"};
+  if (d.neighbours < 3 || d.neighbours >= d.surfaceParticles)
+    return Error{"blob.neighbours: must be in [3, surfaceParticles)"};
   if (Status s = checkPositive("blob.radius", d.radius); !s) return s;
   if (Status s = checkPositive("blob.mass", d.mass); !s) return s;
   if (Status s = checkFinite("blob.center", d.center); !s) return s;
@@ -64,7 +67,8 @@ Result<std::size_t> appendBlob(const BlobDesc& d, particles::ParticleSystem& sys
     const Real y = 1.0 - 2.0 * (k + 0.5) / n;
     const Real r = std::sqrt(1.0 - y * y);
     const Real phi = golden * k;
-    sys.particles.add(d.center + d.radius * Vec3(r * std::cos(phi), y, r * std::sin(phi)), Vec3(0.0), m, colors::kPurple);
+    sys.particles.add(d.center + d.radius * Vec3(r * std::cos(phi), y, r * std::sin(phi)), Vec3(0.0), m,
+                      colors::kPurple);
   }
   const std::size_t center = sys.particles.add(d.center, Vec3(0.0), m, colors::kPurple);
   std::vector<std::size_t> order(static_cast<std::size_t>(n));
@@ -102,7 +106,8 @@ Result<std::size_t> appendLattice(const LatticeDesc& d, particles::ParticleSyste
     for (int j = 0; j < d.ny; ++j)
       for (int k = 0; k < d.nz; ++k) {
         const bool pinned = d.pinTopLayer && j == d.ny - 1;
-        sys.particles.add(d.origin + d.spacing * Vec3(i, j, k), Vec3(0.0), pinned ? 0.0 : d.particleMass, colors::kGreen);
+        sys.particles.add(d.origin + d.spacing * Vec3(i, j, k), Vec3(0.0), pinned ? 0.0 : d.particleMass,
+                          colors::kGreen);
       }
   for (int i = 0; i < d.nx; ++i)
     for (int j = 0; j < d.ny; ++j)

@@ -70,7 +70,8 @@ TEST(ClothMesh, BadInputGivesAnErrorNamingTheField) {
   EXPECT_NE(buildCloth(empty, m).error().find("mesh.triangles"), std::string::npos);
 
   TriangleMesh outOfRange{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 7}}};
-  EXPECT_NE(buildCloth(outOfRange, m).error().find("mesh.triangles[0]: vertex index 7 out of range"), std::string::npos);
+  EXPECT_NE(buildCloth(outOfRange, m).error().find("mesh.triangles[0]: vertex index 7 out of range"),
+            std::string::npos);
 
   TriangleMesh degenerate{{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 2}}};
   EXPECT_NE(buildCloth(degenerate, m).error().find("zero area"), std::string::npos);

@@ -47,7 +47,9 @@ TEST(CLOTH_4_Colliders, EveryShapeProjectsOntoItsSurfacePlusTheMargin) {
   for (Collider* c : {&plane, &sphere, &capsule, &box}) c->friction = 0.0;
   // A point just inside each, moving straight in: it must end exactly margin outside, on the normal.
   const std::vector<std::pair<const Collider*, Vec3>> cases = {
-      {&plane, Vec3(0.3, -0.02, 0.1)},  {&sphere, Vec3(0.1, 1.4, 0.2)}, {&capsule, Vec3(0.45, 1.1, 0.05)},
+      {&plane, Vec3(0.3, -0.02, 0.1)},
+      {&sphere, Vec3(0.1, 1.4, 0.2)},
+      {&capsule, Vec3(0.45, 1.1, 0.05)},
       {&capsule, Vec3(0.65, 1.0, 0.0)},  // beyond the axis' end: the end sphere
       {&box, Vec3(0.05, 0.98, 0.02)}};
   for (const auto& [collider, x] : cases) {
@@ -118,7 +120,8 @@ TEST(CLOTH_4_ClothCollisions, NoParticleEndsAStepInsideAnyColliderByMoreThanAMil
       solver.step(c, ClothEnvironment{}, colliders, s, 1.0 / 60.0, t);
       t += 1.0 / 60.0;
       worst = std::min(worst, minColliderDistance(colliders, c.position, 0.5 * m.thickness));
-      nearestToShape = std::min(nearestToShape, minColliderDistance(std::span(&shape, 1), c.position, 0.5 * m.thickness));
+      nearestToShape =
+          std::min(nearestToShape, minColliderDistance(std::span(&shape, 1), c.position, 0.5 * m.thickness));
     }
     EXPECT_GT(worst, -1e-3) << "shape " << static_cast<int>(shape.shape);
     EXPECT_LT(nearestToShape, 1e-3) << "shape " << static_cast<int>(shape.shape) << ": the cloth never touched it";

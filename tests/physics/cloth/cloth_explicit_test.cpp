@@ -40,7 +40,8 @@ TEST(ExplicitCloth, HangingSpringChainSettlesToTheClosedFormStaticSag) {
   const Real g = -env.gravity.y;
   for (int s = 1; s < n; ++s) {
     // Tolerance: the residual motion after 10 s of damping is far below 1e-7 m.
-    EXPECT_NEAR(chainExtension(c, n - 1 - s), s * mass * g / m.stretchStiffness, 1e-7) << "link " << s << " from the bottom";
+    EXPECT_NEAR(chainExtension(c, n - 1 - s), s * mass * g / m.stretchStiffness, 1e-7)
+        << "link " << s << " from the bottom";
   }
 }
 
@@ -119,7 +120,7 @@ TEST(ClothTearing, KeepsTheMeshValidAndFiniteWhilePulledApart) {
     ASSERT_FALSE(describeNonFinite(c).has_value()) << "frame " << f;
   }
   EXPECT_GT(c.torn, 0u);
-  EXPECT_GT(c.size(), 144u);  // particles were split
+  EXPECT_GT(c.size(), 144u);               // particles were split
   EXPECT_NEAR(c.totalMass(), 0.2, 1e-12);  // mass is conserved by the splits
 }
 

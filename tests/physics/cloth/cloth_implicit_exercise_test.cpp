@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "cloth_test_support.h"
 #include "physics/cloth/implicit.h"
@@ -218,7 +218,8 @@ TEST(CLOTH_5_ImplicitChain, SettlesToTheClosedFormStaticSagWithPinsExact) {
   EXPECT_EQ(c.position[0], top);
   for (int k = 1; k < n; ++k) {
     const Real expected = k * mass * kStandardGravity / m.stretchStiffness;  // link k from the bottom
-    EXPECT_NEAR(testing::chainExtension(c, static_cast<std::size_t>(n - 1 - k)), expected, 1e-3 * expected) << "link " << k;
+    EXPECT_NEAR(testing::chainExtension(c, static_cast<std::size_t>(n - 1 - k)), expected, 1e-3 * expected)
+        << "link " << k;
   }
 }
 

@@ -1,8 +1,8 @@
 // The filtered PCG of Baraff & Witkin §5.3 against Eigen's direct solve, and the probed preconditioner.
 #include <random>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "physics/cloth/pcg.h"
 #include "support/expect_helpers.h"
@@ -68,10 +68,17 @@ TEST(FilteredPcg, MatchesEigensDirectSolveOfTheConstrainedSystem) {
     const Vec3 p = glm::normalize(Vec3(u(rng), u(rng), u(rng)));
     const Vec3 q = glm::normalize(glm::cross(p, Vec3(0.3, 1.0, -0.2)));
     switch (i % 5) {  // every kind of constraint
-      case 1: filter[i] = {ParticleFilter::Kind::OneDirection, p, Vec3(0.0)}; break;
-      case 2: filter[i] = {ParticleFilter::Kind::TwoDirections, p, q}; break;
-      case 3: filter[i] = {ParticleFilter::Kind::Fixed, Vec3(0.0), Vec3(0.0)}; break;
-      default: break;
+      case 1:
+        filter[i] = {ParticleFilter::Kind::OneDirection, p, Vec3(0.0)};
+        break;
+      case 2:
+        filter[i] = {ParticleFilter::Kind::TwoDirections, p, q};
+        break;
+      case 3:
+        filter[i] = {ParticleFilter::Kind::Fixed, Vec3(0.0), Vec3(0.0)};
+        break;
+      default:
+        break;
     }
   }
   // Reference: x = S y + (I − S) z with y the solution of the free part: S A (S y + (I−S) z) = S b,

@@ -43,12 +43,19 @@ TEST(CLOTH_1_GridTopology, EachKindJoinsTheRightNeighboursOnceAndStaysInTheGrid)
   for (const GridLink& l : links) {
     ASSERT_LT(l.p, static_cast<std::uint32_t>(nx * ny));
     ASSERT_LT(l.q, static_cast<std::uint32_t>(nx * ny));
-    EXPECT_TRUE(seen.emplace(std::min(l.p, l.q), std::max(l.p, l.q)).second) << "spring " << l.p << "–" << l.q << " twice";
+    EXPECT_TRUE(seen.emplace(std::min(l.p, l.q), std::max(l.p, l.q)).second)
+        << "spring " << l.p << "–" << l.q << " twice";
     const Offset o = offsetOf(l, nx);
     switch (l.kind) {
-      case LinkKind::Stretch: EXPECT_EQ(o.di + o.dj, 1) << l.p << "–" << l.q; break;
-      case LinkKind::Shear: EXPECT_TRUE(o.di == 1 && o.dj == 1) << l.p << "–" << l.q; break;
-      case LinkKind::Bend: EXPECT_TRUE((o.di == 2 && o.dj == 0) || (o.di == 0 && o.dj == 2)) << l.p << "–" << l.q; break;
+      case LinkKind::Stretch:
+        EXPECT_EQ(o.di + o.dj, 1) << l.p << "–" << l.q;
+        break;
+      case LinkKind::Shear:
+        EXPECT_TRUE(o.di == 1 && o.dj == 1) << l.p << "–" << l.q;
+        break;
+      case LinkKind::Bend:
+        EXPECT_TRUE((o.di == 2 && o.dj == 0) || (o.di == 0 && o.dj == 2)) << l.p << "–" << l.q;
+        break;
     }
   }
 }

@@ -60,7 +60,8 @@ TEST(CLOTH_2_XpbdDistance, ComplianceSoftensTheCorrectionByTheScaledComplianceAn
 TEST(CLOTH_2_XpbdDistance, MovesOnlyTheFreeEndAndNothingForCoincidentOrPinnedPairs) {
   const DistanceCorrection same = xpbdDistanceCorrection(Vec3(1.0), Vec3(1.0), 1.0, 1.0, 0.5, 0.0, 0.01, 0.0);
   EXPECT_EQ(same.deltaI, Vec3(0.0));
-  const DistanceCorrection pinned = xpbdDistanceCorrection(Vec3(0.0), Vec3(2.0, 0.0, 0.0), 0.0, 0.0, 1.0, 0.0, 0.01, 0.0);
+  const DistanceCorrection pinned =
+      xpbdDistanceCorrection(Vec3(0.0), Vec3(2.0, 0.0, 0.0), 0.0, 0.0, 1.0, 0.0, 0.01, 0.0);
   EXPECT_EQ(pinned.deltaJ, Vec3(0.0));
   // i pinned, j free and compressed to 0.5 m of a 1 m rest length: j alone moves the whole 0.5 m out.
   const DistanceCorrection one = xpbdDistanceCorrection(Vec3(0.0), Vec3(0.0, 0.5, 0.0), 0.0, 2.0, 1.0, 0.0, 0.01, 0.0);

@@ -21,7 +21,8 @@ TEST(COLL_1_SphereSphere, AgreesWithGjkOnNormalDepthAndPoint) {
     const Vec3 ca(n(rng), n(rng), n(rng)), cb(n(rng), n(rng), n(rng));
     const Real ra = r(rng), rb = r(rng);
     const Shape a = makeSphere(ra).value(), b = makeSphere(rb).value();
-    const SignedDistance ref = signedDistance(makeProxy(a), {ca, Quat(1, 0, 0, 0)}, makeProxy(b), {cb, Quat(1, 0, 0, 0)});
+    const SignedDistance ref =
+        signedDistance(makeProxy(a), {ca, Quat(1, 0, 0, 0)}, makeProxy(b), {cb, Quat(1, 0, 0, 0)});
     const std::optional<SphereContact> c = sphereSphereContact(ca, ra, cb, rb);
     ASSERT_EQ(c.has_value(), ref.separation < 0.0) << "seed 51, trial " << trial;
     if (!c) continue;
@@ -56,8 +57,10 @@ TEST(COLL_2_BoxSeparatingAxis, MatchesTheGapBetweenTheCornersProjections) {
   std::normal_distribution<Real> n(0.0, 1.0);
   std::uniform_real_distribution<Real> h(0.1, 1.0);
   for (int trial = 0; trial < 1000; ++trial) {
-    Obb a{Vec3(n(rng), n(rng), n(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng))), Vec3(h(rng), h(rng), h(rng))};
-    Obb b{Vec3(n(rng), n(rng), n(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng))), Vec3(h(rng), h(rng), h(rng))};
+    Obb a{Vec3(n(rng), n(rng), n(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng))),
+          Vec3(h(rng), h(rng), h(rng))};
+    Obb b{Vec3(n(rng), n(rng), n(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng))),
+          Vec3(h(rng), h(rng), h(rng))};
     const Vec3 axis = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
     auto interval = [&](const Obb& o, Real& lo, Real& hi) {
       lo = 1e9, hi = -1e9;

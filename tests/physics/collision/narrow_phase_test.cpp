@@ -33,7 +33,8 @@ Transform randomPose(std::mt19937_64& rng, Real spread) {
 std::vector<Vec3> randomHullPoints(std::mt19937_64& rng, Real size) {
   std::normal_distribution<Real> n(0.0, 1.0);
   std::vector<Vec3> p;
-  for (int i = 0; i < 12; ++i) p.push_back(size * glm::normalize(Vec3(n(rng), n(rng), n(rng))) * (0.6 + 0.4 * std::abs(n(rng))));
+  for (int i = 0; i < 12; ++i)
+    p.push_back(size * glm::normalize(Vec3(n(rng), n(rng), n(rng))) * (0.6 + 0.4 * std::abs(n(rng))));
   return p;
 }
 
@@ -65,7 +66,8 @@ Agreement compareWithGjk(const Shape& a, const Shape& b, const PairFn& pair, boo
     // No contact point is deeper than the pair. Clipped points measure their depth along the reference
     // face's normal, which may differ from the pair's normal by up to 2.6° (a feature counts as flat
     // within that angle), hence the tolerance.
-    for (int k = 0; k < m.count; ++k) EXPECT_GE(m.points[k].separation, m.separation - 1e-3 * std::abs(m.separation) - 1e-9);
+    for (int k = 0; k < m.count; ++k)
+      EXPECT_GE(m.points[k].separation, m.separation - 1e-3 * std::abs(m.separation) - 1e-9);
   }
   return r;
 }
@@ -84,27 +86,33 @@ const PairFn kDispatch = [](const Shape& a, const Transform& pa, const Shape& b,
 };
 
 TEST(NarrowPhaseAgreesWithGjkEpa, SphereSphere) {
-  expectMostlyExact(compareWithGjk(makeSphere(0.4).value(), makeSphere(0.25).value(), collideSpheres, false, 1), "sphere-sphere");
+  expectMostlyExact(compareWithGjk(makeSphere(0.4).value(), makeSphere(0.25).value(), collideSpheres, false, 1),
+                    "sphere-sphere");
 }
 TEST(NarrowPhaseAgreesWithGjkEpa, SphereCapsule) {
-  expectMostlyExact(compareWithGjk(makeSphere(0.3).value(), makeCapsule(0.5, 0.2).value(), collideSphereCapsule, false, 2),
-                    "sphere-capsule");
+  expectMostlyExact(
+      compareWithGjk(makeSphere(0.3).value(), makeCapsule(0.5, 0.2).value(), collideSphereCapsule, false, 2),
+      "sphere-capsule");
 }
 TEST(NarrowPhaseAgreesWithGjkEpa, CapsuleCapsule) {
-  expectMostlyExact(compareWithGjk(makeCapsule(0.4, 0.15).value(), makeCapsule(0.6, 0.2).value(), collideCapsules, false, 3),
-                    "capsule-capsule");
+  expectMostlyExact(
+      compareWithGjk(makeCapsule(0.4, 0.15).value(), makeCapsule(0.6, 0.2).value(), collideCapsules, false, 3),
+      "capsule-capsule");
 }
 TEST(NarrowPhaseAgreesWithGjkEpa, SphereBox) {
-  expectMostlyExact(compareWithGjk(makeSphere(0.3).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideSphereBox, false, 4),
-                    "sphere-box");
+  expectMostlyExact(
+      compareWithGjk(makeSphere(0.3).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideSphereBox, false, 4),
+      "sphere-box");
 }
 TEST(NarrowPhaseAgreesWithGjkEpa, CapsuleBox) {
-  expectMostlyExact(compareWithGjk(makeCapsule(0.4, 0.15).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideConvex, false, 5),
-                    "capsule-box");
+  expectMostlyExact(
+      compareWithGjk(makeCapsule(0.4, 0.15).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideConvex, false, 5),
+      "capsule-box");
 }
 TEST(NarrowPhaseAgreesWithGjkEpa, BoxBox) {
-  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.5, 0.2)).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideBoxes, true, 6),
-                    "box-box");
+  expectMostlyExact(
+      compareWithGjk(makeBox(Vec3(0.3, 0.5, 0.2)).value(), makeBox(Vec3(0.4, 0.2, 0.6)).value(), collideBoxes, true, 6),
+      "box-box");
 }
 TEST(NarrowPhaseAgreesWithGjkEpa, BoxHullAndHullHull) {
   std::mt19937_64 rng(7);
@@ -118,7 +126,8 @@ TEST(NarrowPhaseAgreesWithGjkEpa, RoundShapesAgainstHullsThroughTheDispatcher) {
   const Shape hull = makeHull(randomHullPoints(rng, 0.5)).value();
   expectMostlyExact(compareWithGjk(makeSphere(0.3).value(), hull, kDispatch, false, 11), "sphere-hull");
   expectMostlyExact(compareWithGjk(hull, makeCapsule(0.3, 0.2).value(), kDispatch, false, 12), "hull-capsule");
-  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.3, 0.1)).value(), makeSphere(0.3).value(), kDispatch, false, 13), "box-sphere");
+  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.3, 0.1)).value(), makeSphere(0.3).value(), kDispatch, false, 13),
+                    "box-sphere");
 }
 
 TEST(BoxBoxManifold, ABoxRestingFlatOnABoxHasFourPointsAtItsCorners) {
@@ -150,19 +159,22 @@ TEST(PlaneManifold, HoldsTheDeepestVerticesOfATiltedBoxAndTheSphereBottom) {
   const Manifold m = collideConvexPlane(box, tilted, Transform{}, 10.0);
   // Reference: heights of all 8 corners.
   Real lowest = 1e9;
-  for (int i = 0; i < 8; ++i) lowest = std::min(lowest, tilted.apply(Vec3(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5)).y);
+  for (int i = 0; i < 8; ++i)
+    lowest = std::min(lowest, tilted.apply(Vec3(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5)).y);
   EXPECT_EQ(m.count, 4);
   EXPECT_NEAR(m.separation, lowest, 1e-12);
   EXPECT_NEAR(m.deepest(), lowest, 1e-12);
   EXPECT_VEC3_NEAR(m.normal, -kUp, 0.0);  // from the box (A) to the plane (B)
-  const Manifold s = collideConvexPlane(makeSphere(0.3).value(), {Vec3(1.0, 0.25, 2.0), Quat(1, 0, 0, 0)}, Transform{}, 0.1);
+  const Manifold s =
+      collideConvexPlane(makeSphere(0.3).value(), {Vec3(1.0, 0.25, 2.0), Quat(1, 0, 0, 0)}, Transform{}, 0.1);
   ASSERT_EQ(s.count, 1);
   EXPECT_NEAR(s.separation, -0.05, 1e-15);
   EXPECT_VEC3_NEAR(s.points[0].point, Vec3(1.0, -0.025, 2.0), 1e-15);
 }
 
 TEST(MeshManifold, ABoxOnATwoTriangleFloorMatchesThePlane) {
-  TriangleMesh mesh = buildTriangleMesh({{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}}, {{0, 2, 1}, {0, 3, 2}}).value();
+  TriangleMesh mesh =
+      buildTriangleMesh({{-5, 0, -5}, {5, 0, -5}, {5, 0, 5}, {-5, 0, 5}}, {{0, 2, 1}, {0, 3, 2}}).value();
   const Shape floor = makeMesh(std::move(mesh));
   const Shape box = makeBox(Vec3(0.4, 0.3, 0.2)).value();
   const Transform pose{Vec3(0.3, 0.29, -0.2), glm::angleAxis(0.2, kUp)};
@@ -181,9 +193,11 @@ TEST(MeshManifold, ABoxOnATwoTriangleFloorMatchesThePlane) {
 }
 
 TEST(MeshManifold, RejectsBadTrianglesNamingTheField) {
-  EXPECT_NE(buildTriangleMesh({{0, 0, 0}, {1, 0, 0}}, {{0, 1, 2}}, "terrain").error().find("terrain.triangles[0]: index 2"),
+  EXPECT_NE(
+      buildTriangleMesh({{0, 0, 0}, {1, 0, 0}}, {{0, 1, 2}}, "terrain").error().find("terrain.triangles[0]: index 2"),
+      std::string::npos);
+  EXPECT_NE(buildTriangleMesh({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 2}}).error().find("degenerate"),
             std::string::npos);
-  EXPECT_NE(buildTriangleMesh({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {{0, 1, 2}}).error().find("degenerate"), std::string::npos);
 }
 
 }  // namespace

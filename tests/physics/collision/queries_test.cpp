@@ -31,7 +31,8 @@ TEST(ClosestPoints, BetweenSegmentsAgreesWithGjkOnTheSegmentsAsCores) {
   std::mt19937_64 rng(2);
   std::normal_distribution<Real> n(0.0, 1.0);
   for (int trial = 0; trial < 500; ++trial) {
-    const Vec3 p1(n(rng), n(rng), n(rng)), q1(n(rng), n(rng), n(rng)), p2(n(rng), n(rng), n(rng)), q2(n(rng), n(rng), n(rng));
+    const Vec3 p1(n(rng), n(rng), n(rng)), q1(n(rng), n(rng), n(rng)), p2(n(rng), n(rng), n(rng)),
+        q2(n(rng), n(rng), n(rng));
     const SegmentPair c = closestPointsSegments(p1, q1, p2, q2);
     ConvexProxy s1, s2;
     s1.inlinePoints = {p1, q1, q1};
@@ -47,12 +48,15 @@ TEST(ClosestPoints, OnATriangleMatchesDenseSamplingOfItsArea) {
   std::mt19937_64 rng(3);
   std::normal_distribution<Real> n(0.0, 1.0);
   for (int trial = 0; trial < 30; ++trial) {
-    const Vec3 a(n(rng), n(rng), n(rng)), b(n(rng), n(rng), n(rng)), c(n(rng), n(rng), n(rng)), p(2 * n(rng), 2 * n(rng), 2 * n(rng));
+    const Vec3 a(n(rng), n(rng), n(rng)), b(n(rng), n(rng), n(rng)), c(n(rng), n(rng), n(rng)),
+        p(2 * n(rng), 2 * n(rng), 2 * n(rng));
     Real best = 1e9;
     const int m = 600;
     for (int i = 0; i <= m; ++i)
-      for (int j = 0; i + j <= m; ++j) best = std::min(best, glm::length(p - (a + (i / Real(m)) * (b - a) + (j / Real(m)) * (c - a))));
-    EXPECT_NEAR(glm::length(p - closestPointOnTriangle(p, a, b, c)), best, 2e-3 * glm::length(b - a) + 1e-9) << "trial " << trial;
+      for (int j = 0; i + j <= m; ++j)
+        best = std::min(best, glm::length(p - (a + (i / Real(m)) * (b - a) + (j / Real(m)) * (c - a))));
+    EXPECT_NEAR(glm::length(p - closestPointOnTriangle(p, a, b, c)), best, 2e-3 * glm::length(b - a) + 1e-9)
+        << "trial " << trial;
     EXPECT_LE(glm::length(p - closestPointOnTriangle(p, a, b, c)), best + 1e-12);
   }
 }
@@ -74,8 +78,10 @@ std::optional<Real> firstRoot(const Sdf& sdf, const Ray& ray, Real maxT) {
     if (f1 <= 0.0) {
       for (int k = 0; k < 80; ++k) {
         const Real mid = 0.5 * (t0 + t1);
-        if (sdf(pointAt(ray, mid)) > 0.0) t0 = mid;
-        else t1 = mid;
+        if (sdf(pointAt(ray, mid)) > 0.0)
+          t0 = mid;
+        else
+          t1 = mid;
       }
       return 0.5 * (t0 + t1);
     }
@@ -99,7 +105,9 @@ TEST(RayCast, EveryShapeMatchesTheRootOfItsSignedDistance) {
   std::normal_distribution<Real> n(0.0, 1.0);
   for (int i = 0; i < 20; ++i) pts.push_back(0.8 * glm::normalize(Vec3(n(rng), n(rng), n(rng))));
   const Shape hull = makeHull(pts).value();
-  auto capsuleSdf = [&](const Vec3& p) { return glm::length(p - closestPointOnSegment(p, Vec3(0, -0.6, 0), Vec3(0, 0.6, 0))) - 0.3; };
+  auto capsuleSdf = [&](const Vec3& p) {
+    return glm::length(p - closestPointOnSegment(p, Vec3(0, -0.6, 0), Vec3(0, 0.6, 0))) - 0.3;
+  };
   auto boxSdf = [&](const Vec3& p) {
     const Vec3 q = glm::abs(p) - box.halfExtents;
     return glm::length(glm::max(q, Vec3(0.0))) + std::min(std::max({q.x, q.y, q.z}), 0.0);
@@ -136,7 +144,8 @@ TEST(RayCast, SphereAndPlaneAndTriangleMatchTheirClosedForms) {
   ASSERT_TRUE(s);
   EXPECT_NEAR(s->t, 4.2, 1e-12);
   // A plane tilted to face the ray, through (0, 0, −1): t = 6.
-  const std::optional<RayHit> p = rayCast(makePlane(), {Vec3(0.0, 0.0, -1.0), glm::angleAxis(0.5 * kPi, Vec3(1, 0, 0))}, ray, 10.0);
+  const std::optional<RayHit> p =
+      rayCast(makePlane(), {Vec3(0.0, 0.0, -1.0), glm::angleAxis(0.5 * kPi, Vec3(1, 0, 0))}, ray, 10.0);
   ASSERT_TRUE(p);
   EXPECT_NEAR(p->t, 6.0, 1e-12);
   EXPECT_VEC3_NEAR(p->normal, Vec3(0.0, 0.0, 1.0), 1e-12);
@@ -156,9 +165,11 @@ TEST(Gjk, DistancesBetweenRandomHullsAreCertifiedBySeparatingPlanes) {
   int separated = 0;
   for (int trial = 0; trial < 300; ++trial) {
     std::vector<Vec3> pa, pb;
-    for (int i = 0; i < 15; ++i) pa.push_back(0.5 * Vec3(n(rng), n(rng), n(rng))), pb.push_back(0.5 * Vec3(n(rng), n(rng), n(rng)));
+    for (int i = 0; i < 15; ++i)
+      pa.push_back(0.5 * Vec3(n(rng), n(rng), n(rng))), pb.push_back(0.5 * Vec3(n(rng), n(rng), n(rng)));
     const Shape a = makeHull(pa).value(), b = makeHull(pb).value();
-    const Transform xa{Vec3(0.0), Quat(1, 0, 0, 0)}, xb{Vec3(1.5 * n(rng), n(rng), n(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)))};
+    const Transform xa{Vec3(0.0), Quat(1, 0, 0, 0)},
+        xb{Vec3(1.5 * n(rng), n(rng), n(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)))};
     const DistanceResult g = gjkDistance(makeProxy(a), xa, makeProxy(b), xb);
     if (g.overlap) continue;
     ++separated;

@@ -28,7 +28,8 @@ Moments quadratureMoments(const ConvexHull& hull, Real density) {
   Moments m;
   for (const HullFace& f : hull.faces) {
     for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k) {
-      const Vec3 p[4] = {apex, hull.vertices[f.vertices[0]], hull.vertices[f.vertices[k]], hull.vertices[f.vertices[k + 1]]};
+      const Vec3 p[4] = {apex, hull.vertices[f.vertices[0]], hull.vertices[f.vertices[k]],
+                         hull.vertices[f.vertices[k + 1]]};
       const Real volume = std::abs(glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0]))) / 6.0;
       for (int q = 0; q < 4; ++q) {
         Vec3 x(0.0);
@@ -82,7 +83,8 @@ TEST(ConvexHull, OfRandomPointsContainsEveryPointAndSatisfiesEuler) {
     ASSERT_TRUE(hull.ok()) << hull.error();
     const ConvexHull& h = hull.value();
     // Euler: V − E + F = 2 for a convex polyhedron.
-    EXPECT_EQ(static_cast<int>(h.vertices.size()) - static_cast<int>(h.edges.size()) + static_cast<int>(h.faces.size()), 2)
+    EXPECT_EQ(static_cast<int>(h.vertices.size()) - static_cast<int>(h.edges.size()) + static_cast<int>(h.faces.size()),
+              2)
         << "seed 11, trial " << trial;
     for (const Vec3& p : pts)
       for (const HullFace& f : h.faces) EXPECT_LE(glm::dot(f.normal, p) - f.offset, 1e-9) << "trial " << trial;

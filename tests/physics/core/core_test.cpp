@@ -1,7 +1,7 @@
 // Tests of the physics core: validation messages, rays, debug-draw helpers, exercise records and
 // the floating-point traps of the test main.
-#include <csignal>
 #include <cmath>
+#include <csignal>
 #include <vector>
 
 #include <gtest/gtest.h>

@@ -78,9 +78,12 @@ TEST(IkSkeleton, AddRejectsBadParentsAxesAndLimitsNamingTheField) {
 TEST(IkSkeleton, AddRejectsNonFiniteValuesNamingTheField) {
   const Real nan = std::numeric_limits<Real>::quiet_NaN();
   const std::vector<std::pair<const char*, std::function<void(Joint&)>>> cases = {
-      {"offset", [nan](Joint& j) { j.offset.y = nan; }},       {"axis", [nan](Joint& j) { j.axis.x = nan; }},
-      {"restRotation", [nan](Joint& j) { j.restRotation.w = nan; }}, {"limits[0]", [nan](Joint& j) { j.lo[0] = nan; }},
-      {"weight[0]", [nan](Joint& j) { j.weight[0] = nan; }},   {"maxRotation", [nan](Joint& j) { j.type = JointType::Free, j.maxRotation = nan; }},
+      {"offset", [nan](Joint& j) { j.offset.y = nan; }},
+      {"axis", [nan](Joint& j) { j.axis.x = nan; }},
+      {"restRotation", [nan](Joint& j) { j.restRotation.w = nan; }},
+      {"limits[0]", [nan](Joint& j) { j.lo[0] = nan; }},
+      {"weight[0]", [nan](Joint& j) { j.weight[0] = nan; }},
+      {"maxRotation", [nan](Joint& j) { j.type = JointType::Free, j.maxRotation = nan; }},
   };
   for (const auto& [field, spoil] : cases) {
     Skeleton s;
@@ -93,7 +96,9 @@ TEST(IkSkeleton, AddRejectsNonFiniteValuesNamingTheField) {
   Rig rig = buildIkChain(ChainDesc{}).value();
   for (int k = 0; k < 3; ++k) {
     std::vector<Effector> effectors = rig.effectors;
-    const char* field = k == 0 ? "effectors[0].weight" : k == 1 ? "effectors[0].targetPosition" : "effectors[0].targetOrientation";
+    const char* field = k == 0   ? "effectors[0].weight"
+                        : k == 1 ? "effectors[0].targetPosition"
+                                 : "effectors[0].targetOrientation";
     if (k == 0) effectors[0].weight = nan;
     if (k == 1) effectors[0].targetPosition.z = nan;
     if (k == 2) effectors[0].kind = EffectorKind::PositionOrientation, effectors[0].targetOrientation.x = nan;
@@ -114,7 +119,8 @@ TEST(IkLinalg, SvdReconstructsAWideMatrixWithOrthonormalFactors) {
   for (int r = 0; r < J.rows; ++r)
     for (int c = 0; c < J.cols; ++c) {
       Real sum = 0.0;
-      for (size_t i = 0; i < d.sigma.size(); ++i) sum += d.sigma[i] * d.u[i][static_cast<size_t>(r)] * d.v[i][static_cast<size_t>(c)];
+      for (size_t i = 0; i < d.sigma.size(); ++i)
+        sum += d.sigma[i] * d.u[i][static_cast<size_t>(r)] * d.v[i][static_cast<size_t>(c)];
       EXPECT_NEAR(sum, J(r, c), 1e-12);
     }
   for (size_t i = 0; i < 6; ++i)
@@ -274,22 +280,29 @@ TEST(IkSolveOptions, EveryFieldIsValidatedAtItsBoundaryNamingTheField) {
       {"options.tolerance", [nan](SolveOptions& o) { o.tolerance = nan; }, nullptr},
       {"options.angleTolerance", [](SolveOptions& o) { o.angleTolerance = -1e-3; }, nullptr},
       {"options.angleTolerance", [inf](SolveOptions& o) { o.angleTolerance = inf; }, nullptr},
-      {"options.maxIterations", [](SolveOptions& o) { o.maxIterations = 0; }, [](SolveOptions& o) { o.maxIterations = 1; }},
-      {"options.maxSeconds", [](SolveOptions& o) { o.maxSeconds = -1e-9; }, [](SolveOptions& o) { o.maxSeconds = 0.0; }},
+      {"options.maxIterations", [](SolveOptions& o) { o.maxIterations = 0; },
+       [](SolveOptions& o) { o.maxIterations = 1; }},
+      {"options.maxSeconds", [](SolveOptions& o) { o.maxSeconds = -1e-9; },
+       [](SolveOptions& o) { o.maxSeconds = 0.0; }},
       {"options.maxSeconds", [nan](SolveOptions& o) { o.maxSeconds = nan; }, nullptr},
-      {"options.stallIterations", [](SolveOptions& o) { o.stallIterations = -1; }, [](SolveOptions& o) { o.stallIterations = 0; }},
+      {"options.stallIterations", [](SolveOptions& o) { o.stallIterations = -1; },
+       [](SolveOptions& o) { o.stallIterations = 0; }},
       {"options.stallRatio", [](SolveOptions& o) { o.stallRatio = 1.0; }, [](SolveOptions& o) { o.stallRatio = 0.0; }},
       {"options.stallRatio", [](SolveOptions& o) { o.stallRatio = -0.1; }, nullptr},
       {"options.limitMode", [](SolveOptions& o) { o.limitMode = static_cast<JacobianLimitMode>(7); }, nullptr},
       {"options.jacobian", [](SolveOptions& o) { o.jacobian = static_cast<JacobianSource>(-1); }, nullptr},
       {"options.damping", [](SolveOptions& o) { o.damping = -1e-9; }, [](SolveOptions& o) { o.damping = 0.0; }},
       {"options.damping", [inf](SolveOptions& o) { o.damping = inf; }, nullptr},
-      {"options.singularCutoff", [](SolveOptions& o) { o.singularCutoff = 1.0; }, [](SolveOptions& o) { o.singularCutoff = 0.0; }},
+      {"options.singularCutoff", [](SolveOptions& o) { o.singularCutoff = 1.0; },
+       [](SolveOptions& o) { o.singularCutoff = 0.0; }},
       {"options.singularCutoff", [nan](SolveOptions& o) { o.singularCutoff = nan; }, nullptr},
-      {"options.maxErrorStep", [](SolveOptions& o) { o.maxErrorStep = -0.1; }, [](SolveOptions& o) { o.maxErrorStep = 0.0; }},
-      {"options.maxJointStep", [](SolveOptions& o) { o.maxJointStep = -0.1; }, [](SolveOptions& o) { o.maxJointStep = 0.0; }},
+      {"options.maxErrorStep", [](SolveOptions& o) { o.maxErrorStep = -0.1; },
+       [](SolveOptions& o) { o.maxErrorStep = 0.0; }},
+      {"options.maxJointStep", [](SolveOptions& o) { o.maxJointStep = -0.1; },
+       [](SolveOptions& o) { o.maxJointStep = 0.0; }},
       {"options.maxJointStep", [nan](SolveOptions& o) { o.maxJointStep = nan; }, nullptr},
-      {"options.orientationScale", [](SolveOptions& o) { o.orientationScale = -1.0; }, [](SolveOptions& o) { o.orientationScale = 0.0; }},
+      {"options.orientationScale", [](SolveOptions& o) { o.orientationScale = -1.0; },
+       [](SolveOptions& o) { o.orientationScale = 0.0; }},
       {"options.polePoint", [nan](SolveOptions& o) { o.polePoint = Vec3(0.0, nan, 0.0); }, nullptr},
       {"options.lineSearch", [](SolveOptions& o) { o.lineSearch = static_cast<LineSearch>(3); }, nullptr},
       {"options.gradientStep", [](SolveOptions& o) { o.gradientStep = 0.0; }, nullptr},
@@ -360,7 +373,8 @@ TEST(IkInternals, EulerWithinLimitsPicksTheRepresentationTheLimitsAdmit) {
   }
   // Outside the limits either way: reported, and the representation that clamping moves least.
   bool inside = true;
-  detail::eulerWithinLimits(joint, glm::angleAxis(kPi, Vec3(0, 0, 1)) * glm::angleAxis(0.9 * kPi, Vec3(1, 0, 0)), &inside);
+  detail::eulerWithinLimits(joint, glm::angleAxis(kPi, Vec3(0, 0, 1)) * glm::angleAxis(0.9 * kPi, Vec3(1, 0, 0)),
+                            &inside);
   EXPECT_FALSE(inside);
 }
 

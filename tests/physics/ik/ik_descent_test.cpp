@@ -51,8 +51,8 @@ TEST(IK_3_GradientDescent, FixedStepFollowsAReferenceLoopOnFiniteDifferenceGradi
   o.lineSearch = LineSearch::Fixed;
   o.gradientStep = kAlpha;
   o.maxIterations = kSteps;
-  o.tolerance = 1e-12;     // never met: exactly kSteps steps
-  o.stallIterations = 0;   // no stall test
+  o.tolerance = 1e-12;         // never met: exactly kSteps steps
+  o.stallIterations = 0;       // no stall test
   o.lineSearchMaxStep = 10.0;  // no step clamp
   o.enforceLimits = false;
   Pose pose = rig.skeleton.restPose();
@@ -121,7 +121,9 @@ TEST(IK_3_GradientDescent, FixedStepConvergesBelowTheStabilityLimitAndNotAboveIt
   optimum.dofs = {0.3, 1.5, 1.5};  // well conditioned: λ₂/λ₁ ≈ 0.31, so α = 1/λ₁ converges in ~50 steps
   std::vector<Effector> effectors = rig.effectors;
   setGoalsFromPose(rig.skeleton, optimum, effectors);
-  const Real sigmaMax = Eigen::JacobiSVD<Eigen::MatrixXd>(testing::centralDifferenceJacobian(rig.skeleton, optimum, effectors)).singularValues()(0);
+  const Real sigmaMax =
+      Eigen::JacobiSVD<Eigen::MatrixXd>(testing::centralDifferenceJacobian(rig.skeleton, optimum, effectors))
+          .singularValues()(0);
   const Real limit = 2.0 / (sigmaMax * sigmaMax);  // [rad²/m²] 2 / λ_max(JᵀJ)
   auto run = [&](Real alpha) {
     SolveOptions o = testing::unlimited(SolverKind::GradientDescent);
@@ -142,7 +144,8 @@ TEST(IK_3_GradientDescent, FixedStepConvergesBelowTheStabilityLimitAndNotAboveIt
     EXPECT_LT(stable.residualHistory[k], stable.residualHistory[k - 1]) << "iteration " << k;
   const SolveResult unstable = run(1.5 * limit);
   ASSERT_GE(unstable.residualHistory.size(), 4u);
-  EXPECT_GT(unstable.residualHistory[3], 2.0 * unstable.residualHistory[0]) << "alpha " << 1.5 * limit << " exceeds the stability limit";
+  EXPECT_GT(unstable.residualHistory[3], 2.0 * unstable.residualHistory[0])
+      << "alpha " << 1.5 * limit << " exceeds the stability limit";
   EXPECT_TRUE(isFinite(unstable.positionResidual));
 }
 

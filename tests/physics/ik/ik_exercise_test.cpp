@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include <Eigen/SVD>
 #include <gtest/gtest.h>
+#include <Eigen/SVD>
 
 #include "physics/ik/builders.h"
 #include "physics/ik/exercises.h"
@@ -66,7 +66,8 @@ TEST(IK_2_CcdJointUpdate, RotatesTheEffectorOntoTheRayToTheTarget) {
 
 TEST(IK_2_CcdJointUpdate, DegenerateCasesGiveUnitQuaternions) {
   const Vec3 p(0.0), x(1, 0, 0);
-  for (const Quat& q : {ccdJointUpdate(p, p, x), ccdJointUpdate(p, x, p), ccdJointUpdate(p, x, 3.0 * x), ccdJointUpdate(p, x, -x)}) {
+  for (const Quat& q :
+       {ccdJointUpdate(p, p, x), ccdJointUpdate(p, x, p), ccdJointUpdate(p, x, 3.0 * x), ccdJointUpdate(p, x, -x)}) {
     EXPECT_NEAR(glm::length(glm::dvec4(q.w, q.x, q.y, q.z)), 1.0, 1e-15);
   }
   EXPECT_VEC3_NEAR(ccdJointUpdate(p, x, -2.0 * x) * x, -x, 1e-15);

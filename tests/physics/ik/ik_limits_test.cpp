@@ -59,8 +59,8 @@ void expectStopsAtTheLimits(const SolveOptions& o) {
 
 void expectWithinLimitsOnRandomTargets(const Rig& rig, const SolveOptions& o, Real minimumRate, const char* label) {
   const testing::BatchStats s = testing::runRandomTargets(rig, o, kTargets, 31);
-  std::printf("[ stats    ] %s (central differences) on %s: %.1f %% of %d, %.1f iterations\n", solverName(o.solver), label,
-              100.0 * s.successRate(), s.solves, s.meanIterations);
+  std::printf("[ stats    ] %s (central differences) on %s: %.1f %% of %d, %.1f iterations\n", solverName(o.solver),
+              label, 100.0 * s.successRate(), s.solves, s.meanIterations);
   SCOPED_TRACE(::testing::Message() << solverName(o.solver) << " on " << label);
   EXPECT_EQ(s.nonFinite, 0);
   EXPECT_LE(s.worstLimitViolation, 1e-9);
@@ -131,8 +131,9 @@ TEST(IK_6_StallRecovery, RestartsFromRandomPosesInsideTheLimitsWithinTheCap) {
   with.restarts = 10;
   const testing::BatchStats a = testing::runRandomTargets(rig, with, kTargets, 99);
   const testing::BatchStats b = testing::runRandomTargets(rig, none, kTargets, 99);
-  std::printf("[ stats    ] pinv on 10 hinges ±120°: %.1f %% with stall recovery (%.3f restarts per solve), %.1f %% without\n",
-              100.0 * a.successRate(), a.meanRestarts, 100.0 * b.successRate());
+  std::printf(
+      "[ stats    ] pinv on 10 hinges ±120°: %.1f %% with stall recovery (%.3f restarts per solve), %.1f %% without\n",
+      100.0 * a.successRate(), a.meanRestarts, 100.0 * b.successRate());
   EXPECT_EQ(b.meanRestarts, 0.0);
   EXPECT_GT(a.meanRestarts, 0.0);
   EXPECT_GT(a.successRate(), b.successRate() + 0.05);

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include <Eigen/SVD>
 #include <gtest/gtest.h>
+#include <Eigen/SVD>
 
 #include "ik_random_targets.h"
 
@@ -45,7 +45,7 @@ TEST(IkMethods, PseudoInverseTakesTheFullGaussNewtonStepByDefault) {
   effectors[0].targetPosition = tip + Vec3(-0.3, 0.2, 0.0);  // 0.36 m < the 0.5 m error clamp
   const Pose after = oneStep(rig, effectors, pose, reference(SolverKind::PseudoInverse));
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(testing::centralDifferenceJacobian(rig.skeleton, pose, effectors),
-                                         Eigen::ComputeThinU | Eigen::ComputeThinV);
+                                        Eigen::ComputeThinU | Eigen::ComputeThinV);
   svd.setThreshold(1e-3);  // SolveOptions::singularCutoff, relative to σ_max as in the solver
   const Vec3 de = effectors[0].targetPosition - tip;
   const Eigen::VectorXd step = svd.solve(Eigen::Vector3d(de.x, de.y, de.z));
@@ -115,7 +115,8 @@ TEST(IkMethods, JacobianLineSearchNeverIncreasesTheResidual) {
       const SolveResult r = solve(rig.skeleton, pose, rig.effectors, o);
       ASSERT_GE(r.residualHistory.size(), 2u);
       for (size_t k = 1; k < r.residualHistory.size(); ++k)
-        EXPECT_LE(r.residualHistory[k], r.residualHistory[k - 1] * (1.0 + 1e-12)) << solverName(kind) << " target " << i;
+        EXPECT_LE(r.residualHistory[k], r.residualHistory[k - 1] * (1.0 + 1e-12))
+            << solverName(kind) << " target " << i;
       EXPECT_LT(r.residualHistory.back(), 0.5 * r.residualHistory.front()) << solverName(kind) << " target " << i;
     }
 }
@@ -137,7 +138,8 @@ TEST(IkMethods, AnalyticHingeChainsReachEveryGoalInOneStep) {
   for (int links : {1, 2}) {
     ChainDesc d;
     d.links = links;
-    const testing::BatchStats s = testing::runRandomTargets(buildIkChain(d).value(), testing::unlimited(SolverKind::Analytic), 500, 1);
+    const testing::BatchStats s =
+        testing::runRandomTargets(buildIkChain(d).value(), testing::unlimited(SolverKind::Analytic), 500, 1);
     EXPECT_EQ(s.successes, s.solves) << links << " hinges";
     EXPECT_LE(s.maxIterations, 1);
   }

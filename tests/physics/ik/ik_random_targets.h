@@ -39,7 +39,8 @@ inline SolveOptions unlimited(SolverKind kind, JacobianSource jacobian = Jacobia
 
 /// J at `pose` by central differences of forward kinematics (orientation scale 1 m/rad), as an Eigen
 /// matrix for reference computations (Eigen's SVD) independent of IK-3 and of linalg.cpp.
-inline Eigen::MatrixXd centralDifferenceJacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors) {
+inline Eigen::MatrixXd centralDifferenceJacobian(const Skeleton& s, const Pose& pose,
+                                                 const std::vector<Effector>& effectors) {
   const JacobianLayout layout = planJacobian(s, pose, effectors, forwardKinematics(s, pose), 1.0);
   const Matrix J = numericalJacobian(s, pose, effectors, layout, 1.0, kJacobianStep);
   Eigen::MatrixXd out(J.rows, J.cols);
@@ -52,12 +53,12 @@ struct BatchStats {
   int solves = 0;
   int successes = 0;
   int nonFinite = 0;
-  Real worstLimitViolation = 0.0;   ///< [rad]
-  Real worstResidual = 0.0;         ///< [m] recomputed from forward kinematics of the returned pose
-  Real worstReportMismatch = 0.0;   ///< [m] largest |reported residual − recomputed residual|
+  Real worstLimitViolation = 0.0;  ///< [rad]
+  Real worstResidual = 0.0;        ///< [m] recomputed from forward kinematics of the returned pose
+  Real worstReportMismatch = 0.0;  ///< [m] largest |reported residual − recomputed residual|
   double meanIterations = 0.0;
-  double meanRestarts = 0.0;        ///< stall recoveries per solve (SolveOptions::restarts)
-  int maxIterations = 0;            ///< largest iteration count of a solve
+  double meanRestarts = 0.0;  ///< stall recoveries per solve (SolveOptions::restarts)
+  int maxIterations = 0;      ///< largest iteration count of a solve
   Real successRate() const { return solves > 0 ? Real(successes) / solves : 0.0; }
 };
 

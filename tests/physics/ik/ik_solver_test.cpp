@@ -32,8 +32,8 @@ namespace pba::ik {
 namespace {
 
 #ifdef NDEBUG
-constexpr int kTargets = 4000;     // per solver and chain
-constexpr int kFdTargets = 1000;   // central differences: 2 FK per Jacobian column
+constexpr int kTargets = 4000;    // per solver and chain
+constexpr int kFdTargets = 1000;  // central differences: 2 FK per Jacobian column
 constexpr int kTreeTargets = 200;
 #else
 constexpr int kTargets = 500;
@@ -44,21 +44,22 @@ constexpr int kTreeTargets = 40;
 using testing::chain;
 using testing::unlimited;
 
-bool farBelowOnAFewGoals(const Rig& rig, const SolveOptions& o, Real minimumRate, std::uint64_t seed, const char* label, int few) {
+bool farBelowOnAFewGoals(const Rig& rig, const SolveOptions& o, Real minimumRate, std::uint64_t seed, const char* label,
+                         int few) {
   const testing::BatchStats probe = testing::runRandomTargets(rig, o, few, seed);
   if (probe.successRate() >= minimumRate - 0.1) return false;
-  ADD_FAILURE() << solverName(o.solver) << " on " << label << ": " << 100.0 * probe.successRate() << " % of the first " << few
-                << " goals, far below the required " << 100.0 * minimumRate << " %";
+  ADD_FAILURE() << solverName(o.solver) << " on " << label << ": " << 100.0 * probe.successRate() << " % of the first "
+                << few << " goals, far below the required " << 100.0 * minimumRate << " %";
   return true;
 }
 
-void expectRandomTargets(const Rig& rig, const SolveOptions& o, Real minimumRate, const char* label, int count = kTargets,
-                         std::uint64_t seed = 2024) {
+void expectRandomTargets(const Rig& rig, const SolveOptions& o, Real minimumRate, const char* label,
+                         int count = kTargets, std::uint64_t seed = 2024) {
   if (farBelowOnAFewGoals(rig, o, minimumRate, seed, label, std::min(count, 50))) return;
   const testing::BatchStats s = testing::runRandomTargets(rig, o, count, seed);
   SCOPED_TRACE(::testing::Message() << solverName(o.solver) << " on " << label << ", seed " << seed);
-  std::printf("[ stats    ] %s on %s: %.2f %% of %d, %.1f iterations\n", solverName(o.solver), label, 100.0 * s.successRate(),
-              s.solves, s.meanIterations);
+  std::printf("[ stats    ] %s on %s: %.2f %% of %d, %.1f iterations\n", solverName(o.solver), label,
+              100.0 * s.successRate(), s.solves, s.meanIterations);
   EXPECT_EQ(s.nonFinite, 0);
   EXPECT_GE(s.successRate(), minimumRate) << "mean iterations " << s.meanIterations;
   EXPECT_LE(s.maxIterations, o.maxIterations);
@@ -71,7 +72,8 @@ TEST(IK_2_CcdSolver, ReachesRandomReachableTargets) {
   expectRandomTargets(chain(JointType::Ball), unlimited(SolverKind::Ccd), 0.99, "10 ball joints");
   expectRandomTargets(chain(JointType::Hinge), unlimited(SolverKind::Ccd), 0.97, "10 hinges");
   // No limit can act, so CCD defers the Euler angles to the end of the solve (Context::flushPose).
-  expectRandomTargets(chain(JointType::Ball, 10, 180.0), unlimited(SolverKind::Ccd), 0.99, "10 unconstrained ball joints");
+  expectRandomTargets(chain(JointType::Ball, 10, 180.0), unlimited(SolverKind::Ccd), 0.99,
+                      "10 unconstrained ball joints");
 }
 
 TEST(IK_2_CcdSolver, IsDeterministicAndRepeatableFromRest) {
@@ -103,7 +105,8 @@ void expectLongChain(SolverKind kind) {
   o.maxIterations = 200;
   const SolveResult r = solve(rig.skeleton, pose, rig.effectors, o);
   EXPECT_EQ(r.status, SolveStatus::Success) << solverName(kind) << " " << statusName(r.status);
-  EXPECT_LE(residual(rig.effectors, forwardKinematics(rig.skeleton, pose)).position, 1e-4 * (1.0 + 1e-9)) << solverName(kind);
+  EXPECT_LE(residual(rig.effectors, forwardKinematics(rig.skeleton, pose)).position, 1e-4 * (1.0 + 1e-9))
+      << solverName(kind);
 }
 TEST(IK_2_CcdSolver, Solves1000LinkChains) { expectLongChain(SolverKind::Ccd); }
 TEST(IK_5_FabrikSolver, Solves1000LinkChains) { expectLongChain(SolverKind::Fabrik); }
@@ -146,7 +149,8 @@ TEST(IK_5_FabrikSolver, DeferredPoseMatchesThePointsAfterEveryNumberOfIterations
   o.maxIterations = 1;
   Pose pose = bone.skeleton.restPose();
   solve(bone.skeleton, pose, goal, o);
-  EXPECT_VEC3_NEAR(effectorPosition(goal[0], forwardKinematics(bone.skeleton, pose)), 2.0 * glm::normalize(goal[0].targetPosition), 1e-9);
+  EXPECT_VEC3_NEAR(effectorPosition(goal[0], forwardKinematics(bone.skeleton, pose)),
+                   2.0 * glm::normalize(goal[0].targetPosition), 1e-9);
 }
 
 // ---- IK-4: DLS on the central-difference Jacobian -----------------------------------------------
@@ -160,7 +164,8 @@ TEST(IK_4_DampedLeastSquaresSolver, ReachesRandomReachableTargets) {
 // ---- IK-3: the other Jacobian methods on IK-3's columns ------------------------------------------
 
 TEST(IK_3_JacobianMethods, ReachRandomReachableTargets) {
-  for (SolverKind kind : {SolverKind::JacobianTranspose, SolverKind::PseudoInverse, SolverKind::SelectivelyDamped, SolverKind::Lbfgs}) {
+  for (SolverKind kind :
+       {SolverKind::JacobianTranspose, SolverKind::PseudoInverse, SolverKind::SelectivelyDamped, SolverKind::Lbfgs}) {
     expectRandomTargets(chain(JointType::Ball), unlimited(kind), 0.99, "10 ball joints");
     expectRandomTargets(chain(JointType::Hinge), unlimited(kind), 0.99, "10 hinges");
   }
@@ -251,14 +256,16 @@ TEST(IK_3_JacobianMethods, SingularPosesGiveFiniteResultsAndAClearStatus) {
 // at once; goals from FK of random poses inside the limits. Measured rates are printed; the
 // thresholds leave a few points of margin.
 void expectTreeTargets(TaggedMethod m, Real doubleYRate, Real handRate) {
-  for (const auto& [rig, name, rate] : {std::tuple{buildDoubleY().value(), "double Y", doubleYRate},
-                                        std::tuple{buildHand().value(), "hand", handRate}})
+  for (const auto& [rig, name, rate] :
+       {std::tuple{buildDoubleY().value(), "double Y", doubleYRate}, std::tuple{buildHand().value(), "hand", handRate}})
     expectRandomTargets(rig, unlimited(m.kind, m.jacobian), rate, name, kTreeTargets, 12);
 }
 TEST(IK_2_CcdSolver, TreesReachTheirGoals) { expectTreeTargets(kCcd, 0.97, 0.9); }
 TEST(IK_5_FabrikSolver, TreesReachTheirGoals) { expectTreeTargets(kFabrik, 0.97, 0.8); }
 TEST(IK_4_DampedLeastSquaresSolver, TreesReachTheirGoals) { expectTreeTargets(kDls, 0.97, 0.9); }
-TEST(IK_3_JacobianMethods, TreesReachTheirGoals) { expectTreeTargets({SolverKind::SelectivelyDamped, JacobianSource::Analytic}, 0.97, 0.9); }
+TEST(IK_3_JacobianMethods, TreesReachTheirGoals) {
+  expectTreeTargets({SolverKind::SelectivelyDamped, JacobianSource::Analytic}, 0.97, 0.9);
+}
 
 // A 6-DOF effector: position and orientation reached together (orientation rows, CCD's and
 // FABRIK's three extra points).
@@ -272,7 +279,8 @@ void expectSixDof(TaggedMethod m) {
     Pose pose = rig.skeleton.restPose();
     const SolveResult r = solve(rig.skeleton, pose, rig.effectors, unlimited(m.kind, m.jacobian));
     const Residual actual = residual(rig.effectors, forwardKinematics(rig.skeleton, pose));
-    successes += r.status == SolveStatus::Success && actual.orientation <= 1e-3 * (1.0 + 1e-9) && actual.position <= 1e-4 * (1.0 + 1e-9);
+    successes += r.status == SolveStatus::Success && actual.orientation <= 1e-3 * (1.0 + 1e-9) &&
+                 actual.position <= 1e-4 * (1.0 + 1e-9);
   }
   std::printf("[ stats    ] 6-DOF %s: %d / 100 solved\n", solverName(m.kind), successes);
   EXPECT_GE(successes, 90) << solverName(m.kind);
@@ -298,7 +306,8 @@ TEST(IK_1_AnalyticSolver, ReachesEveryGoalOfOneAndTwoBallJoints) {
     ChainDesc d;
     d.links = links;
     d.joint = JointType::Ball;
-    const testing::BatchStats s = testing::runRandomTargets(buildIkChain(d).value(), unlimited(SolverKind::Analytic), kTargets / 4, 1);
+    const testing::BatchStats s =
+        testing::runRandomTargets(buildIkChain(d).value(), unlimited(SolverKind::Analytic), kTargets / 4, 1);
     SCOPED_TRACE(::testing::Message() << links << " ball links");
     EXPECT_EQ(s.successes, s.solves);
     EXPECT_EQ(s.nonFinite, 0);

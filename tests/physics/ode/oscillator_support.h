@@ -86,8 +86,7 @@ inline ::testing::AssertionResult multipliesEnergyEachStepBy(HarmonicOscillator&
     const Real ratio = osc.energy() / before;
     if (!(std::abs(ratio - factor) <= tolerance)) {
       return ::testing::AssertionFailure() << integratorName(integrator.kind()) << ", h = " << h << ", step " << i
-                                           << ": energy × " << ratio << ", expected × " << factor << " ± "
-                                           << tolerance;
+                                           << ": energy × " << ratio << ", expected × " << factor << " ± " << tolerance;
     }
   }
   return ::testing::AssertionSuccess();

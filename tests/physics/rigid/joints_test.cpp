@@ -15,7 +15,9 @@ Real anchorGap(const World& w, int j) {
   const Joint& joint = w.joints()[j];
   const Body& b = w.body(joint.desc.bodyB);
   const Vec3 pb = b.position + b.orientation * joint.localB;
-  const Vec3 pa = joint.desc.bodyA < 0 ? joint.localA : w.body(joint.desc.bodyA).position + w.body(joint.desc.bodyA).orientation * joint.localA;
+  const Vec3 pa = joint.desc.bodyA < 0
+                      ? joint.localA
+                      : w.body(joint.desc.bodyA).position + w.body(joint.desc.bodyA).orientation * joint.localA;
   return glm::length(pb - pa);
 }
 
@@ -40,7 +42,8 @@ TEST(HingeChain, TenLinksUnderGravityKeepTheirJointsWithinAMillimetreAtSixtyHert
 }
 
 int addHingedBar(World& w, const JointDesc& extra, Vec3 anchor, int& joint) {
-  const int bar = addBox(w, Vec3(0.5, 0.05, 0.05), anchor + Vec3(0.5, 0.0, 0.0), Quat(1, 0, 0, 0), 500.0, 0.5, colors::kRed);
+  const int bar =
+      addBox(w, Vec3(0.5, 0.05, 0.05), anchor + Vec3(0.5, 0.0, 0.0), Quat(1, 0, 0, 0), 500.0, 0.5, colors::kRed);
   JointDesc j = extra;
   j.kind = JointKind::Hinge;
   j.bodyB = bar;
@@ -110,7 +113,7 @@ TEST(Slider, StaysOnItsAxisWithinItsLimits) {
     const Vec3 offset = w.body(box).position - d.anchor;
     const Real along = glm::dot(offset, axis);
     EXPECT_LT(glm::length(offset - along * axis), 1e-3);  // on the axis
-    EXPECT_LT(along, d.upper + 2e-3);                      // within the limits (2 mm)
+    EXPECT_LT(along, d.upper + 2e-3);                     // within the limits (2 mm)
     EXPECT_GT(along, d.lower - 2e-3);
     // No rotation.
     EXPECT_GT(std::abs(w.body(box).orientation.w), 1.0 - 1e-6);

@@ -116,8 +116,10 @@ TwoBodies randomCollision(std::mt19937_64& rng) {
     }
     return m;
   };
-  t.a = {1.0 / u(rng), worldInverse(ia, qa), Vec3(0.0, 0.5, 0.0), Vec3(n(rng), n(rng) - 2.0, n(rng)), Vec3(n(rng), n(rng), n(rng))};
-  t.b = {1.0 / u(rng), worldInverse(ib, qb), Vec3(0.3, -0.6, 0.2), Vec3(n(rng), n(rng) + 2.0, n(rng)), Vec3(n(rng), n(rng), n(rng))};
+  t.a = {1.0 / u(rng), worldInverse(ia, qa), Vec3(0.0, 0.5, 0.0), Vec3(n(rng), n(rng) - 2.0, n(rng)),
+         Vec3(n(rng), n(rng), n(rng))};
+  t.b = {1.0 / u(rng), worldInverse(ib, qb), Vec3(0.3, -0.6, 0.2), Vec3(n(rng), n(rng) + 2.0, n(rng)),
+         Vec3(n(rng), n(rng), n(rng))};
   t.point = Vec3(0.1 * n(rng), 0.0, 0.1 * n(rng));
   t.normal = glm::normalize(Vec3(0.2 * n(rng), 1.0, 0.2 * n(rng)));  // from B toward A
   return t;
@@ -182,8 +184,8 @@ TEST(RIGID_4_FrictionImpulse, IsExactlyMuJAgainstTheSlipWhenSliding) {
   const ImpulseBody ground{};
   const Vec3 f = frictionImpulse(a, ground, Vec3(0.0), kUp, 0.5, 0.4);
   EXPECT_VEC3_NEAR(f, Vec3(-0.2, 0.0, 0.0), 1e-12);  // μ j = 0.4 × 0.5 against +x
-  EXPECT_VEC3_NEAR(frictionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0, 0.5, 0.0), Vec3(0.0, -1.0, 0.0), Vec3(0.0)}, ground,
-                                   Vec3(0.0), kUp, 0.5, 0.4),
+  EXPECT_VEC3_NEAR(frictionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0, 0.5, 0.0), Vec3(0.0, -1.0, 0.0), Vec3(0.0)},
+                                   ground, Vec3(0.0), kUp, 0.5, 0.4),
                    Vec3(0.0), 0.0);  // no slip: no friction
 }
 
