@@ -78,11 +78,11 @@ bool FrameRecorder::open(const std::string& path, int width, int height, int fps
   }
   const std::string ffmpeg = findFfmpeg();
   if (ffmpeg.empty())
-    return fail("recording MP4 or GIF needs ffmpeg, which is not installed (apt-get install ffmpeg); "
-                "or record PNG files: --record DIR/");
-  const std::string input = " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " +
-                            std::to_string(width) + "x" + std::to_string(height) + " -r " + std::to_string(fps) +
-                            " -i -";
+    return fail(
+        "recording MP4 or GIF needs ffmpeg, which is not installed (apt-get install ffmpeg); "
+        "or record PNG files: --record DIR/");
+  const std::string input = " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " + std::to_string(width) +
+                            "x" + std::to_string(height) + " -r " + std::to_string(fps) + " -i -";
   // MP4: H.264 in yuv420p (players want even sizes); GIF: 30 frames/s (GIF delays are in 1/100 s) with
   // a palette computed from the whole clip.
   const std::string output =
@@ -130,7 +130,8 @@ bool FrameRecorder::close(std::string* error) {
   pipe_ = nullptr;
   if (status != 0) {
     if (error)
-      *error = path_ + ": ffmpeg failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : status) + ")";
+      *error =
+          path_ + ": ffmpeg failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : status) + ")";
     return false;
   }
   return true;

@@ -1,0 +1,278 @@
+// Ragdoll benchmarks (issue 10, docs/performance-ragdoll.md), one thread, thread CPU time:
+//  * the Ragdoll paper's performance tests with both methods, in the paper's unit (percent of real
+//    time: CPU time / simulated time) and ms per step: time step (3 bones, 1 hinge + 1 ball, 10 s
+//    simulated, dt 0.001–0.1), number of bones (chains of 3–120 bones, 2 joints per 3 bones, dt 0.01,
+//    5 iterations), iterations (particle method, 9 boxes, dt 0.01, 1–40) and memory against boxes
+//    (2–4,096 free boxes: the bytes each method keeps per box, counted from its arrays);
+//  * many ragdolls: 136 of the paper's 16-bone humans (Bullet's ragdoll benchmark count) dropped on the
+//    ground, ms per step at dt 1/60 over 10 s, against Debian's Bullet 3.24 in double precision
+//    (pkg-config bullet-float64) with the same boxes, masses and joints (cone-twist for limited balls,
+//    hinges with limits) in the same run, every body kept awake on both sides; and 1,000 particle humans.
+// Run: build/release/bench/pba_ragdoll_bench
+#include <ctime>
+#include <memory>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "physics/ragdoll/builders.h"
+#include "physics/ragdoll/constraint_ragdoll.h"
+#include "physics/ragdoll/particle_ragdoll.h"
+
+#ifdef PBA_HAVE_BULLET
+#include <btBulletDynamicsCommon.h>
+#endif
+
+namespace {
+using namespace pba;
+using namespace pba::ragdoll;
+
+double cpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+void report(benchmark::State& state, double seconds, int steps, Real dt) {
+  state.SetIterationTime(seconds / steps);
+  state.counters["ms_per_step"] = 1e3 * seconds / steps;
+  state.counters["percent_real_time"] = 100.0 * seconds / (steps * dt);
+}
+
+enum class Method { Particle, Constraint };
+
+template <typename Step>
+double timeSteps(int steps, Step&& step) {
+  const double t0 = cpuSeconds();
+  for (int i = 0; i < steps; ++i) step();
+  return cpuSeconds() - t0;
+}
+
+void run(benchmark::State& state, const RagdollDesc& desc, Method method, Real dt, Real seconds, int iterations = 5) {
+  const int steps = static_cast<int>(seconds / dt + 0.5);
+  for (auto _ : state) {
+    double t = 0.0;
+    if (method == Method::Particle) {
+      ParticleSettings s;
+      s.iterations = iterations;
+      ParticleRagdoll r = ParticleRagdoll::build(desc, s).value();
+      t = timeSteps(steps, [&] { r.step(dt); });
+    } else {
+      ConstraintSettings s;
+      s.world.sleeping = false;
+      ConstraintRagdoll r = ConstraintRagdoll::build(desc, s).value();
+      t = timeSteps(steps, [&] { r.step(dt); });
+    }
+    report(state, t, steps, dt);
+    state.counters["bones"] = static_cast<double>(desc.bones.size());
+  }
+}
+
+// The paper's figure: groups of three boxes joined by a hinge and a ball, end to end (2 joints per 3 bones).
+RagdollDesc paperChain(int bones) {
+  ChainDesc c;
+  c.links = bones;
+  c.fixedTop = false;
+  c.start = Vec3(0.0, 1.0, 0.0);
+  RagdollDesc d = buildChain(c);
+  d.joints.clear();
+  for (int i = 1; i < bones; ++i) {
+    if (i % 3 == 0) continue;  // a new group of three starts here
+    JointDesc j;
+    j.kind = i % 3 == 1 ? JointKind::Hinge : JointKind::Ball;
+    j.boneA = i - 1, j.boneB = i;
+    j.anchor = 0.5 * (d.bones[i - 1].center + d.bones[i].center);
+    j.axis = j.kind == JointKind::Hinge ? Vec3(0.0, 0.0, 1.0) : Vec3(1.0, 0.0, 0.0);
+    d.joints.push_back(j);
+  }
+  return d;
+}
+
+void BM_TimeStep(benchmark::State& state, Method m) {
+  run(state, paperChain(3), m, 1.0 / static_cast<Real>(state.range(0)), 10.0);
+}
+BENCHMARK_CAPTURE(BM_TimeStep, particle, Method::Particle)
+    ->Arg(1000)
+    ->Arg(200)
+    ->Arg(100)
+    ->Arg(20)
+    ->Arg(10)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_TimeStep, constraint, Method::Constraint)
+    ->Arg(1000)
+    ->Arg(200)
+    ->Arg(100)
+    ->Arg(20)
+    ->Arg(10)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_Bones(benchmark::State& state, Method m) {
+  run(state, paperChain(static_cast<int>(state.range(0))), m, 0.01, 10.0);
+}
+BENCHMARK_CAPTURE(BM_Bones, particle, Method::Particle)
+    ->Arg(3)
+    ->Arg(15)
+    ->Arg(30)
+    ->Arg(60)
+    ->Arg(120)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Bones, constraint, Method::Constraint)
+    ->Arg(3)
+    ->Arg(15)
+    ->Arg(30)
+    ->Arg(60)
+    ->Arg(120)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_Iterations(benchmark::State& state) {
+  run(state, paperChain(9), Method::Particle, 0.01, 10.0, static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_Iterations)
+    ->Arg(1)
+    ->Arg(5)
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(40)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMicrosecond);
+
+// Memory: free boxes in a row; bytes per box from each method's arrays.
+void BM_Memory(benchmark::State& state) {
+  const auto n = static_cast<int>(state.range(0));
+  RagdollDesc d;
+  for (int i = 0; i < n; ++i) {
+    BoneDesc b;
+    b.center = Vec3(0.3 * i, 0.5, 0.0);
+    d.bones.push_back(b);
+  }
+  for (auto _ : state) {
+    const ParticleRagdoll p = ParticleRagdoll::build(d).value();
+    const ConstraintRagdoll c = ConstraintRagdoll::build(d).value();
+    state.counters["particle_bytes"] = static_cast<double>(p.memoryBytes());
+    state.counters["constraint_bytes"] = static_cast<double>(c.memoryBytes());
+    state.counters["boxes"] = n;
+  }
+}
+BENCHMARK(BM_Memory)->Arg(2)->Arg(16)->Arg(128)->Arg(1024)->Arg(4096)->Iterations(1);
+
+// Many humans on a grid, lying face down, dropped from 0.6 m.
+RagdollDesc humans(int count) {
+  RagdollDesc d;
+  const int columns = 17;
+  for (int k = 0; k < count; ++k) {
+    HumanDesc h;
+    h.position = Vec3(2.2 * (k % columns), 0.6, 2.4 * (k / columns));
+    h.orientation = glm::angleAxis(degToRad(80.0), Vec3(1.0, 0.0, 0.0));
+    append(d, buildHumanRagdoll(h));
+  }
+  return d;
+}
+
+void BM_Humans(benchmark::State& state, Method m, int iterations) {
+  run(state, humans(static_cast<int>(state.range(0))), m, 1.0 / 60.0, 10.0, iterations);
+}
+BENCHMARK_CAPTURE(BM_Humans, particle_20_iterations, Method::Particle, 20)
+    ->Arg(1)
+    ->Arg(136)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Humans, particle_5_iterations, Method::Particle, 5)
+    ->Arg(136)
+    ->Arg(1000)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Humans, constraint, Method::Constraint, 0)
+    ->Arg(1)
+    ->Arg(136)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+#ifdef PBA_HAVE_BULLET
+btVector3 bt(const Vec3& v) { return btVector3(v.x, v.y, v.z); }
+btQuaternion bt(const Quat& q) { return btQuaternion(q.x, q.y, q.z, q.w); }
+
+// A frame at `anchor` whose x axis is `axis` (both world), expressed in the body's frame.
+btTransform jointFrame(const btRigidBody& body, const Vec3& anchor, const Vec3& axis) {
+  const btTransform inverse = body.getWorldTransform().inverse();
+  const btVector3 x = (inverse.getBasis() * bt(axis)).normalized();
+  const btVector3 helper = std::abs(x.x()) < 0.9 ? btVector3(1, 0, 0) : btVector3(0, 1, 0);
+  const btVector3 y = x.cross(helper).normalized(), z = x.cross(y);
+  btMatrix3x3 basis(x.x(), y.x(), z.x(), x.y(), y.y(), z.y(), x.z(), y.z(), z.z());
+  return btTransform(basis, inverse * bt(anchor));
+}
+
+// Bullet's defaults (btDbvtBroadphase, sequential impulses, 10 iterations), the same boxes, masses and
+// joints: btConeTwistConstraint for limited balls (swing spans = the cone, twist ±170°),
+// btPoint2PointConstraint for free balls, btHingeConstraint with the limits; jointed pairs do not collide.
+void BM_BulletHumans(benchmark::State& state) {
+  const RagdollDesc d = humans(static_cast<int>(state.range(0)));
+  const Real dt = 1.0 / 60.0;
+  const int steps = 600;
+  for (auto _ : state) {
+    btDefaultCollisionConfiguration configuration;
+    btCollisionDispatcher dispatcher(&configuration);
+    btDbvtBroadphase broadphase;
+    btSequentialImpulseConstraintSolver solver;
+    btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+    world.setGravity(btVector3(0, -kStandardGravity, 0));
+    btStaticPlaneShape ground(btVector3(0, 1, 0), 0);
+    btRigidBody groundBody(btRigidBody::btRigidBodyConstructionInfo(0.0, nullptr, &ground));
+    groundBody.setFriction(d.friction);
+    world.addRigidBody(&groundBody);
+    std::vector<std::unique_ptr<btBoxShape>> shapes;
+    std::vector<std::unique_ptr<btRigidBody>> bodies;
+    std::vector<std::unique_ptr<btTypedConstraint>> joints;
+    for (const BoneDesc& b : d.bones) {
+      shapes.push_back(std::make_unique<btBoxShape>(bt(b.halfExtents)));
+      btVector3 inertia;
+      shapes.back()->calculateLocalInertia(b.mass, inertia);
+      btRigidBody::btRigidBodyConstructionInfo info(b.mass, nullptr, shapes.back().get(), inertia);
+      info.m_startWorldTransform = btTransform(bt(b.orientation), bt(b.center));
+      info.m_friction = d.friction;
+      bodies.push_back(std::make_unique<btRigidBody>(info));
+      bodies.back()->setActivationState(DISABLE_DEACTIVATION);
+      world.addRigidBody(bodies.back().get());
+    }
+    for (const JointDesc& j : d.joints) {
+      btRigidBody& a = *bodies[j.boneA];
+      btRigidBody& b = *bodies[j.boneB];
+      const btTransform fa = jointFrame(a, j.anchor, j.axis), fb = jointFrame(b, j.anchor, j.axis);
+      if (j.kind == JointKind::Hinge) {
+        auto h = std::make_unique<btHingeConstraint>(a, b, fa.getOrigin(), fb.getOrigin(), fa.getBasis().getColumn(0),
+                                                     fb.getBasis().getColumn(0));
+        if (j.limited) h->setLimit(j.lower, j.upper);
+        joints.push_back(std::move(h));
+      } else if (j.limited) {
+        auto c = std::make_unique<btConeTwistConstraint>(a, b, fa, fb);
+        c->setLimit(j.coneAngle, j.coneAngle, degToRad(170.0));
+        joints.push_back(std::move(c));
+      } else {
+        joints.push_back(std::make_unique<btPoint2PointConstraint>(a, b, fa.getOrigin(), fb.getOrigin()));
+      }
+      world.addConstraint(joints.back().get(), true);
+    }
+    const double t = timeSteps(steps, [&] { world.stepSimulation(dt, 0); });
+    report(state, t, steps, dt);
+    state.counters["bones"] = static_cast<double>(d.bones.size());
+    for (auto& j : joints) world.removeConstraint(j.get());
+    for (auto& b : bodies) world.removeRigidBody(b.get());
+    world.removeRigidBody(&groundBody);
+  }
+}
+BENCHMARK(BM_BulletHumans)->Arg(1)->Arg(136)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+#endif
+
+}  // namespace
+BENCHMARK_MAIN();

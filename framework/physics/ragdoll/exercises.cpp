@@ -1,0 +1,130 @@
+#include "physics/ragdoll/exercises.h"
+
+#include <cmath>
+
+#include "physics/exercises/not_implemented.h"
+
+namespace pba::ragdoll {
+
+// ***** RAG-1: the stick constraint with inverse masses (Ragdoll paper §3.1; Jakobsen 2001, §3) *****
+// (1) The vector from a to b, its length, and the error: length minus rest.
+// (2) Nothing to do when both ends are pinned (wa + wb = 0) or the ends coincide (no direction).
+// (3) Each end moves along the unit direction by the error times its share of wa + wb: a towards b,
+//     b towards a when the stick is too long, apart when too short. The heavier end moves less.
+// *****
+void projectStick(Vec3& a, Vec3& b, Real wa, Real wb, Real rest) {
+  // BEGIN SOLUTION
+  const Vec3 d = b - a;
+  const Real length = glm::length(d);
+  const Real w = wa + wb;
+  if (!(w > 0.0) || !(length > 1e-12)) return;
+  const Vec3 correction = (length - rest) / (length * w) * d;
+  a += wa * correction;
+  b -= wb * correction;
+  // END SOLUTION
+  // STUB: static_cast<void>(exercises::notImplemented("RAG-1", 0, a, b, wa, wb, rest));  // nothing moves
+}
+
+// ***** RAG-2: the hinge limit by half-planes (Ragdoll paper §3.2.2) *****
+// (1) Work with q = p − origin, minus its part along the axis. If q is (almost) on the axis, there is
+//     no angle: report Inside with p as the target.
+// (2) Direction of angle t about the axis: cos t · zero + sin t · (axis × zero). Each limit is the
+//     half-plane from the axis towards its direction; the plane's normal, the direction turned by a
+//     further +90°, tells the sides apart: the signed distance of q from the lower limit's plane
+//     is ≥ 0 on the side of increasing angle; for the upper limit take the opposite normal.
+// (3) When the range upper − lower is at most π, p is inside only when on the inner side of BOTH
+//     planes; above π, when on the inner side of EITHER (the allowed wedge is then the larger one).
+// (4) Outside: the third plane through the axis, the one through the middle of the forbidden wedge
+//     (angle (lower + upper)/2 + π), tells which limit is nearer: the side of increasing angle from
+//     there leads to lower + 2π, the other side to upper.
+// (5) The target: the limit's direction scaled by |q|, plus origin and p's part along the axis.
+// *****
+LimitCorrection hingeLimit(const HingeFrame& frame, const Vec3& p, Real lower, Real upper) {
+  // BEGIN SOLUTION
+  const Vec3 rel = p - frame.origin;
+  const Vec3 along = glm::dot(rel, frame.axis) * frame.axis;
+  const Vec3 q = rel - along;
+  const Real radius = glm::length(q);
+  if (!(radius > 1e-12)) return {LimitSide::Inside, p};
+  const Vec3 side = glm::cross(frame.axis, frame.zero);
+  const auto direction = [&](Real t) { return std::cos(t) * frame.zero + std::sin(t) * side; };
+  const Real aboveLower = glm::dot(q, direction(lower + 0.5 * kPi));
+  const Real belowUpper = -glm::dot(q, direction(upper + 0.5 * kPi));
+  const bool inside =
+      upper - lower <= kPi ? (aboveLower >= 0.0 && belowUpper >= 0.0) : (aboveLower >= 0.0 || belowUpper >= 0.0);
+  if (inside) return {LimitSide::Inside, p};
+  const Real middle = 0.5 * (lower + upper) + kPi;
+  const bool nearerLower = glm::dot(q, direction(middle + 0.5 * kPi)) >= 0.0;
+  const Real limit = nearerLower ? lower : upper;
+  return {nearerLower ? LimitSide::Lower : LimitSide::Upper, frame.origin + along + radius * direction(limit)};
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RAG-2", LimitCorrection{LimitSide::Inside, p}, frame, lower, upper);
+}
+
+// ***** RAG-3: the ball-joint cone limit (Ragdoll paper §3.2.3) *****
+// (1) d = p − apex and its length L (nothing to do when L is 0). The paper's plane has the cone axis
+//     as normal through the apex: the distance of p from it is d·axis; on the cone's rim it would be
+//     c_dist = L cos(halfAngle).
+// (2) Inside when d·axis ≥ c_dist: report Inside with p as the target.
+// (3) Outside: the direction t ⟂ axis in the plane of axis and d (d minus its axial part, normalised;
+//     any ⟂ direction when that is zero). The target is apex + L (cos(halfAngle) axis + sin(halfAngle) t).
+// *****
+LimitCorrection coneLimit(const Vec3& apex, const Vec3& axis, const Vec3& p, Real halfAngle) {
+  // BEGIN SOLUTION
+  const Vec3 d = p - apex;
+  const Real length = glm::length(d);
+  if (!(length > 1e-12)) return {LimitSide::Inside, p};
+  const Real distance = glm::dot(d, axis);
+  if (distance >= length * std::cos(halfAngle)) return {LimitSide::Inside, p};
+  Vec3 t = d - distance * axis;
+  if (glm::length(t) < 1e-12 * length) t = glm::cross(axis, std::abs(axis.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0));
+  t = glm::normalize(t);
+  return {LimitSide::Upper, apex + length * (std::cos(halfAngle) * axis + std::sin(halfAngle) * t)};
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RAG-3", LimitCorrection{LimitSide::Inside, p}, apex, axis, halfAngle);
+}
+
+// ***** RAG-4: the deepest contact spread over the tetrahedron (Ragdoll paper §3.3) *****
+// (1) The whole push is n·depth. Against the ground (b.particles is null) A takes all of it; else A
+//     takes the share M_B/(M_A + M_B) and B the rest, in the opposite direction (the heavier bone
+//     moves less).
+// (2) For each moving side: λ = 1 / Σ c_j², then every particle i moves by c_i λ Δ. (Check: the
+//     contact point Σ c_i x_i then moves by Σ c_i² λ Δ = Δ.)
+// *****
+void resolveDeepestContact(ContactSide& a, ContactSide& b, const Vec3& normal, Real depth) {
+  // BEGIN SOLUTION
+  const Vec3 push = depth * normal;
+  const bool ground = b.particles == nullptr;
+  const Real shareA = ground ? 1.0 : b.mass / (a.mass + b.mass);
+  const auto spread = [](ContactSide& s, const Vec3& delta) {
+    Real sum = 0.0;
+    for (Real c : s.weights) sum += c * c;
+    if (!(sum > 0.0)) return;
+    const Real lambda = 1.0 / sum;
+    for (int i = 0; i < 4; ++i) (*s.particles)[i] += s.weights[i] * lambda * delta;
+  };
+  if (a.particles) spread(a, shareA * push);
+  if (!ground) spread(b, -(1.0 - shareA) * push);
+  // END SOLUTION
+  // STUB: static_cast<void>(exercises::notImplemented("RAG-4", 0, a, b, normal, depth));  // nothing moves
+}
+
+namespace {
+void probeStick() {
+  Vec3 a(0.0), b(2.0, 0.0, 0.0);
+  projectStick(a, b, 1.0, 1.0, 1.0);
+}
+void probeContact() {
+  std::array<Vec3, 4> x{};
+  ContactSide a{&x}, ground{};
+  resolveDeepestContact(a, ground, kUp, 0.1);
+}
+}  // namespace
+
+// Start-up probes: tell the lab which exercises are still stubs.
+PBA_EXERCISE_PROBE(probeStick());
+PBA_EXERCISE_PROBE(hingeLimit(HingeFrame{}, Vec3(0.0, 0.0, 1.0), -0.5, 0.5));
+PBA_EXERCISE_PROBE(coneLimit(Vec3(0.0), kUp, Vec3(1.0, 0.0, 0.0), 0.5));
+PBA_EXERCISE_PROBE(probeContact());
+
+}  // namespace pba::ragdoll

@@ -1,0 +1,167 @@
+// The particle ragdoll's relaxation and projection (particle_ragdoll.h, step 3): sticks, joints, limits,
+// the mouse, contacts. Reference route: every correction is kernels.h's projection along a gradient;
+// StudentKernels route the sticks, limits and contacts through the exercises instead.
+#include <algorithm>
+#include <cmath>
+
+#include "physics/collision/narrow_phase.h"
+#include "physics/ragdoll/exercises.h"
+#include "physics/ragdoll/particle_ragdoll.h"
+
+namespace pba::ragdoll {
+
+void ParticleRagdoll::relax() {
+  for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
+    for (const Stick& s : sticks_) {
+      if (settings_.student.stick) {
+        projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
+        continue;
+      }
+      const Vec3 d = x_[s.b] - x_[s.a];
+      const Real length = glm::length(d);
+      if (!(length > 1e-12)) continue;
+      const Term terms[2] = {{s.a, -1.0}, {s.b, 1.0}};
+      projectAlongGradient(x_, w_, terms, d / length, length - s.rest);
+    }
+}
+
+void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {
+  const Real size = glm::length(delta);
+  if (!(size > 1e-15)) return;
+  // C = −|Δ| along n = Δ/|Δ| for the point of B minus the point of A: B gains, A gives.
+  Term terms[8];
+  for (int k = 0; k < 4; ++k) {
+    terms[k] = {bones_[b].first + k, inB[k]};
+    terms[4 + k] = {bones_[a].first + k, -inA[k]};
+  }
+  projectAlongGradient(x_, w_, terms, delta / size, -size);
+}
+
+void ParticleRagdoll::solveJoints() {
+  for (const Joint& j : joints_)
+    for (const PointPair& p : j.points) {
+      const Vec3 gap = pointOf(j.a, p.inA) - pointOf(j.b, p.inB);
+      pushApart(j.a, p.inA, j.b, p.inB, gap);  // B's copy moves to A's, A's towards B's
+    }
+}
+
+void ParticleRagdoll::solveLimits() {
+  for (const Joint& j : joints_) {
+    if (!j.limited) continue;
+    Vec3 ref(0.0), target(0.0);
+    if (j.kind == JointKind::Hinge) {
+      const auto [frame, p] = hingeMeasure(j);
+      ref = p;
+      if (settings_.student.hinge) {
+        target = hingeLimit(frame, p, j.lower, j.upper).target;
+      } else {
+        const Real angle = unwrapAround(hingeAngle(frame, p), j.lower, j.upper);
+        const Real clamped = std::clamp(angle, j.lower, j.upper);
+        target = clamped == angle ? p : atHingeAngle(frame, p, clamped);
+      }
+    } else {
+      const Vec3 apex = pointOf(j.a, j.origin);
+      const Vec3 axis = glm::normalize(pointOf(j.a, j.axisEnd) - apex);
+      ref = pointOf(j.b, j.reference);
+      if (settings_.student.cone) {
+        target = coneLimit(apex, axis, ref, j.cone).target;
+      } else {
+        target = angleFromAxis(apex, axis, ref) > j.cone ? atAngleFromAxis(apex, axis, ref, j.cone) : ref;
+      }
+    }
+    if (target == ref) continue;
+    // B's reference point moves onto the limit, A is pushed back at the same point (the paper's
+    // "Newton's third law": the limit turns both bones, momentum is kept).
+    pushApart(j.a, weightsOf(j.a, ref), j.b, j.reference, target - ref);
+  }
+}
+
+void ParticleRagdoll::solveDrag() {
+  if (dragBone_ < 0) return;
+  // A stiff pull of the grabbed point halfway to the target per iteration (the mouse has no mass).
+  const Vec3 gap = dragTarget_ - pointOf(dragBone_, dragWeights_);
+  const Real size = glm::length(gap);
+  if (!(size > 1e-12)) return;
+  Term terms[4];
+  for (int k = 0; k < 4; ++k) terms[k] = {bones_[dragBone_].first + k, dragWeights_[k]};
+  projectAlongGradient(x_, w_, terms, gap / size, -0.5 * size);
+}
+
+void ParticleRagdoll::solveContacts(bool record) {
+  if (record) contacts_.clear();
+  // Bone pairs first, the ground last: nothing ends a pass pushed into the floor.
+  for (const auto& [a, b] : pairs_) solveBonePair(a, b, record);
+  if (settings_.ground)
+    for (int b = 0; b < boneCount(); ++b) solveGround(b, record);
+}
+
+void ParticleRagdoll::solveGround(int bone, bool record) {
+  if (bones_[bone].fixed) return;
+  // Moving the deepest corner up by c_i λ Δ also deforms the tetrahedron a little, which can lower
+  // another corner: repeat (at most 4 times) until no corner is below the ground.
+  for (int pass = 0; pass < 4; ++pass)
+    if (!solveGroundOnce(bone, record && pass == 0)) return;
+}
+
+bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
+  const Bone& B = bones_[bone];
+  std::array<Vec3, 4> p = particlesOf(bone);
+  // The deepest corner; equally deep ones (within 0.1 mm) are averaged (paper §3.3).
+  Real deepest = 0.0;
+  for (const Weights& c : B.corners) deepest = std::max(deepest, settings_.groundHeight - embedded(p, c).y);
+  if (!(deepest > 1e-9)) return false;
+  Weights weights{0.0, 0.0, 0.0, 0.0};
+  int count = 0;
+  for (const Weights& c : B.corners)
+    if (settings_.groundHeight - embedded(p, c).y > deepest - 1e-4) {
+      for (int k = 0; k < 4; ++k) weights[k] += c[k];
+      ++count;
+    }
+  for (Real& c : weights) c /= count;
+  touched_[bone] = 1;
+  touchNormal_[bone] = kUp;
+  if (record) contacts_.push_back({embedded(p, weights), kUp});
+  if (settings_.student.contact) {
+    ContactSide side{&p, weights, B.mass}, ground{};
+    resolveDeepestContact(side, ground, kUp, deepest);
+    for (int k = 0; k < 4; ++k) x_[B.first + k] = p[k];
+    return true;
+  }
+  Term terms[4];
+  for (int k = 0; k < 4; ++k) terms[k] = {B.first + k, weights[k]};
+  projectAlongGradient(x_, w_, terms, kUp, -deepest);
+  return true;
+}
+
+void ParticleRagdoll::solveBonePair(int a, int b, bool record) {
+  const collision::Transform ta = boneFrame(a), tb = boneFrame(b);
+  const collision::Manifold m = collision::collideBoxes(bones_[a].shape, ta, bones_[b].shape, tb, 0.0);
+  if (m.count == 0) return;
+  // The deepest point only (paper §3.3), equally deep ones averaged.
+  const Real deepest = m.deepest();
+  if (!(deepest < 0.0)) return;
+  Vec3 point(0.0);
+  int count = 0;
+  for (int k = 0; k < m.count; ++k)
+    if (m.points[k].separation < deepest + 1e-4) point += m.points[k].point, ++count;
+  point /= count;
+  touched_[a] = touched_[b] = 1;
+  touchNormal_[a] = -m.normal, touchNormal_[b] = m.normal;
+  if (record) contacts_.push_back({point, m.normal});
+  const Weights inA = weightsOf(a, point), inB = weightsOf(b, point);
+  if (settings_.student.contact) {
+    // The exercise's convention: the normal points from B to A, so A is the side pushed along +n.
+    std::array<Vec3, 4> pa = particlesOf(a), pb = particlesOf(b);
+    ContactSide sideB{&pb, inB, bones_[b].fixed ? 1e30 : bones_[b].mass};
+    ContactSide sideA{&pa, inA, bones_[a].fixed ? 1e30 : bones_[a].mass};
+    resolveDeepestContact(sideA, sideB, -m.normal, -deepest);
+    for (int k = 0; k < 4; ++k) {
+      if (!bones_[a].fixed) x_[bones_[a].first + k] = pa[k];
+      if (!bones_[b].fixed) x_[bones_[b].first + k] = pb[k];
+    }
+    return;
+  }
+  pushApart(a, inA, b, inB, -deepest * m.normal);
+}
+
+}  // namespace pba::ragdoll

@@ -1,0 +1,44 @@
+#pragma once
+// A bone of the particle ragdoll: a tetrahedron of four equal point masses whose mass, centre of mass
+// and inertia tensor equal those of the box it stands for (the "proper particulating" the Ragdoll paper
+// lists as future work, §6).
+//
+// Derivation. Point masses m_i at r_i (about the centre) have the inertia I = tr(S) 1 − S with the
+// second moment S = Σ m_i r_i r_iᵀ; a solid box of mass M and half extents h has S_box = M/3 diag(h²)
+// (M/12 times the squared full sides). The regular tetrahedron v ∈ {(1,1,1), (1,−1,−1), (−1,1,−1),
+// (−1,−1,1)} has Σ v = 0 and Σ v vᵀ = 4·1. So masses M/4 at r_i = diag(h)/√3 · v_i give Σ m_i r_i = 0
+// and S = M/4 · 4 · diag(h²)/3 = S_box: the same mass, centre and inertia for every box.
+//
+// A point of the bone is carried by the tetrahedron as an affine combination p = Σ c_i x_i with
+// Σ c_i = 1 (its barycentric coordinates, constant while the tetrahedron stays rigid; they may be
+// negative: a box corner lies outside the tetrahedron). These c_i are the paper's per-particle weights
+// of §3.3 in exact form: moving the particles by c_i λ Δ with λ = 1/Σ c_j² moves p by exactly Δ.
+#include <array>
+
+#include "physics/collision/transform.h"
+#include "physics/core/types.h"
+
+namespace pba::ragdoll {
+
+using Weights = std::array<Real, 4>;
+
+/// The four particle positions in the box's frame [m] (see above).
+std::array<Vec3, 4> tetrahedronOffsets(const Vec3& halfExtents);
+
+/// The barycentric coordinates of `point` in the tetrahedron (x0..x3), Σ = 1. The tetrahedron must not
+/// be flat.
+Weights barycentric(const std::array<Vec3, 4>& x, const Vec3& point);
+/// Σ c_i x_i.
+Vec3 embedded(const std::array<Vec3, 4>& x, const Weights& c);
+
+/// The rigid frame that best fits the tetrahedron: centre = mean of the particles, rotation = the polar
+/// factor of the deformation F = [x_k − x_0] [r_k − r_0]⁻¹ against the rest offsets r (Higham's iteration
+/// R ← (R + R⁻ᵀ)/2). The box is drawn and collided in this frame (paper §3.1, "Display").
+collision::Transform fitFrame(const std::array<Vec3, 4>& x, const Mat3& restEdgesInverse);
+/// [r_1 − r_0, r_2 − r_0, r_3 − r_0]⁻¹ of the rest offsets.
+Mat3 restEdgesInverse(const std::array<Vec3, 4>& rest);
+
+/// Inertia tensor of point masses about their centre of mass [kg·m²] (tests compare it with the box).
+Mat3 pointMassInertia(const std::array<Vec3, 4>& x, const Weights& masses);
+
+}  // namespace pba::ragdoll
