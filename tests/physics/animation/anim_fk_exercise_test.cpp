@@ -10,6 +10,7 @@
 
 #include "physics/animation/skeleton.h"
 #include "support/expect_helpers.h"
+#include "support/random_rotation.h"
 
 namespace {
 
@@ -18,10 +19,7 @@ using pba::Real;
 using pba::Vec3;
 namespace an = pba::animation;
 
-Quat randomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<Real> n(0.0, 1.0);
-  return glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
-}
+using pba::test::randomRotation;
 
 TEST(ANIM_3_ForwardKinematics, RandomTreesMatchHomogeneousMatrixProducts) {
   std::mt19937_64 rng(3);

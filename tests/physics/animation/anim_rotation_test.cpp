@@ -7,6 +7,7 @@
 
 #include "physics/animation/rotation.h"
 #include "support/expect_helpers.h"
+#include "support/random_rotation.h"
 
 namespace {
 
@@ -15,10 +16,7 @@ using pba::Real;
 using pba::Vec3;
 namespace an = pba::animation;
 
-Quat randomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<Real> n(0.0, 1.0);
-  return glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
-}
+using pba::test::randomRotation;
 
 void expectSameRotation(const Quat& a, const Quat& b, Real tol) { EXPECT_LT(an::rotationAngle(a, b), tol); }
 

@@ -13,14 +13,12 @@
 #include "physics/collision/mass.h"
 #include "physics/rigid/exercises.h"
 #include "support/expect_helpers.h"
+#include "support/random_rotation.h"
 
 namespace pba::rigid {
 namespace {
 
-Quat randomRotation(std::mt19937_64& rng) {
-  std::normal_distribution<Real> n(0.0, 1.0);
-  return glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
-}
+using pba::test::randomRotation;
 
 void expectMatNear(const Mat3& a, const Mat3& b, Real tol) {
   for (int c = 0; c < 3; ++c)
