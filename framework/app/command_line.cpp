@@ -106,6 +106,19 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       if (!r || r.value() > kMaxFrames)
         return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
       o.frames = r.value();
+    } else if (arg == "--check-rewind") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parseWhole(arg, v, 1);
+      if (!r || r.value() > kMaxFrames)
+        return Error{"--check-rewind: expected a whole number of frames in [1, " + std::to_string(kMaxFrames) +
+                     "], got '" + v + "'"};
+      o.checkRewind = r.value();
+    } else if (arg == "--compare") {
+      if (hasInlineValue) return Error{"--compare: expected two settings after it: --compare \"A\" \"B\""};
+      if (i + 2 >= argc) return Error{"--compare: expected two settings, e.g. --compare \"dt=0.0167\" \"dt=0.0042\""};
+      const std::string a = argv[i + 1], b = argv[i + 2];
+      i += 2;
+      o.compare = std::make_pair(a, b);
     } else if (arg == "--seconds") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parsePositive(arg, v);
@@ -160,6 +173,8 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
   if (o.headless && !o.record.empty())
     return Error{"--record needs a window: drop --headless (use xvfb-run without a display)"};
   if (!o.record.empty() && !o.screenshot.empty()) return Error{"--record and --screenshot: give one or the other"};
+  if (o.checkRewind && !o.headless) return Error{"--check-rewind runs headless: add --headless"};
+  if (o.checkRewind && o.compare) return Error{"--check-rewind and --compare: give one or the other"};
   return o;
 }
 
@@ -170,28 +185,34 @@ std::string overrideError(const ParamOverride& o, const std::string& error) {
 }
 
 std::string usage(const std::string& lab) {
-  std::string text = "Usage: pba-" + lab +
-                     " [options]\n"
-                     "\n"
-                     "  --scene NAME|FILE.json  scene to start (default: the first; see --list-scenes)\n"
-                     "  --headless              no window and no OpenGL: step the scene and exit\n"
-                     "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
-                     "                          (default 300 headless, 120 for --screenshot)\n"
-                     "  --seconds T             simulated seconds instead of --frames (at most 100000)\n"
-                     "  --dt H                  fixed time step in seconds (default: the scene's)\n"
-                     "  --substeps N            split each step into N substeps (1-64)\n"
-                     "  --time-scale S          slow motion or fast forward, 0.1-4\n"
-                     "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
-                     "  --record FILE.mp4|FILE.gif|DIR/\n"
-                     "                          record --frames (default 300) or --seconds of simulated time at 60\n"
-                     "                          frames/s, then exit: MP4 and GIF through ffmpeg, PNG files into DIR/\n"
-                     "  --record-ui on|off      the panels in the recording, or the scene alone (default off)\n"
-                     "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
-                     "  --seed N                random seed (default 1)\n"
-                     "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
-                     "  --lecture               large fonts, high contrast (key L toggles)\n"
-                     "  --list-scenes           print the scenes and exit\n"
-                     "  --help                  this text\n";
+  std::string text =
+      "Usage: pba-" + lab +
+      " [options]\n"
+      "\n"
+      "  --scene NAME|FILE.json  scene to start (default: the first; see --list-scenes)\n"
+      "  --headless              no window and no OpenGL: step the scene and exit\n"
+      "  --frames N              frames of 1/60 s to run headless or before a screenshot\n"
+      "                          (default 300 headless, 120 for --screenshot)\n"
+      "  --seconds T             simulated seconds instead of --frames (at most 100000)\n"
+      "  --dt H                  fixed time step in seconds (default: the scene's)\n"
+      "  --substeps N            split each step into N substeps (1-64)\n"
+      "  --time-scale S          slow motion or fast forward, 0.1-4\n"
+      "  --screenshot FILE.png   open the window, render, save the image, exit (works under xvfb-run)\n"
+      "  --record FILE.mp4|FILE.gif|DIR/\n"
+      "                          record --frames (default 300) or --seconds of simulated time at 60\n"
+      "                          frames/s, then exit: MP4 and GIF through ffmpeg, PNG files into DIR/\n"
+      "  --record-ui on|off      the panels in the recording, or the scene alone (default off)\n"
+      "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
+      "  --seed N                random seed (default 1)\n"
+      "  --compare \"A\" \"B\"       two copies of the scene side by side in lock-step, each with its own\n"
+      "                          settings: NAME=VALUE pairs separated by spaces (dt, substeps,\n"
+      "                          time_scale or scene parameters); headless metrics hold \"a\" and \"b\"\n"
+      "  --check-rewind N        (with --headless) run N frames, save the state, run N, restore, run N\n"
+      "                          again: exit 0 when both runs agree bit for bit, 1 when they differ\n"
+      "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
+      "  --lecture               large fonts, high contrast (key L toggles)\n"
+      "  --list-scenes           print the scenes and exit\n"
+      "  --help                  this text\n";
   if (!labFlags().empty()) {
     text += "\nLab options:\n";
     for (const LabFlag& f : labFlags()) {
@@ -202,7 +223,8 @@ std::string usage(const std::string& lab) {
     }
   }
   text +=
-      "\nKeys: Space/P pause  O step  R reset  [ ] scene  1-9 presets  F1/H help  F12 screenshot  F9 record\n"
+      "\nKeys: Space/P pause  O step  , . rewind / forward one frame  R reset  [ ] scene  1-9 presets\n"
+      "      F1/H help  F12 screenshot  F9 record\n"
       "      L lecture mode  Tab hide UI  F frame scene.  Arrows nudge the target in the view plane,\n"
       "      PageUp/PageDown or Shift+Up/Down away/toward the camera, Ctrl for a fine step.\n"
       "      Mouse: left drag picks, right drag orbits, middle or Shift+right drag pans, wheel zooms.\n"

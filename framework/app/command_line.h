@@ -2,7 +2,7 @@
 // The command line contract of every lab executable (docs/architecture.md §4):
 //   pba-<lab> [--scene NAME|FILE.json] [--headless] [--frames N | --seconds T] [--dt H]
 //             [--screenshot FILE.png] [--metrics FILE|-] [--seed N] [--lecture] [--list-scenes] [--help]
-//             [--record FILE.mp4|FILE.gif|DIR/ [--record-ui on|off]]
+//             [--record FILE.mp4|FILE.gif|DIR/ [--record-ui on|off]] [--compare "A" "B"] [--check-rewind N]
 // plus --substeps N, --time-scale S, --set NAME=VALUE (any scene parameter) and the lab's own flags.
 #include <cstdint>
 #include <optional>
@@ -45,6 +45,11 @@ struct LabOptions {
   bool lecture = false;
   bool listScenes = false;
   bool help = false;
+  /// --compare "A" "B": two runs of the scene side by side, each with its own settings, a list of
+  /// NAME=VALUE separated by spaces (dt, substeps, time_scale or any scene parameter).
+  std::optional<std::pair<std::string, std::string>> compare;
+  /// --check-rewind N (headless): run N frames, save, run N, restore, run N again; the states must agree.
+  std::optional<long> checkRewind;
   /// Parameter overrides in command line order.
   std::vector<ParamOverride> overrides;
   /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.

@@ -91,6 +91,7 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
       std::cerr << "pba-" << lab << ": " << s.error() << '\n';
       return kExitBadInput;
     }
+    if (o.checkRewind) return runRewindCheck(lab, o, runner);
     return o.headless ? runHeadless(lab, o, runner) : runWindow(lab, o, runner);
   } catch (const std::exception& e) {
     std::cerr << "pba-" << lab << ": internal error: " << e.what() << '\n';

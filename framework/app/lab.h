@@ -24,6 +24,9 @@ Status prepareRunner(const std::string& lab, const LabOptions& options, SceneRun
 /// Steps `frames` display frames with no window and no GL; writes metrics when asked.
 int runHeadless(const std::string& lab, const LabOptions& options, SceneRunner& runner);
 
+/// --check-rewind N (rewind_check.cpp): save, run, restore, run again; exit 0 when the runs agree.
+int runRewindCheck(const std::string& lab, const LabOptions& options, SceneRunner& runner);
+
 /// Opens the window (defined by the window module). With options.screenshot set, renders
 /// options.frameCount() frames, saves the PNG and returns.
 int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner);

@@ -1,5 +1,5 @@
 // The windows of drawLabUi that are not the control panel: live plots (lower right), the scene's
-// legend (lower left of the free area, kept while Tab hides the panels), short notices (top centre)
+// legend (lower left of the free area above the timeline, kept while Tab hides the panels), short notices (top centre)
 // and the banners of the instability guard and of exercise stubs.
 #include <algorithm>
 #include <cfloat>
@@ -51,7 +51,7 @@ void plotSeries(const std::string& name, const std::vector<double>& series, ImVe
 
 }  // namespace
 
-float plotPanel(LabSession& session, const UiState& ui) {
+float plotPanel(LabSession& session, const UiState& ui, float* left) {
   // Only the chosen metrics this scene has (a plotted metric of another scene is kept, not shown).
   std::vector<std::pair<std::string, std::vector<double>>> shown;
   for (const std::string& name : session.settings().plotted) {
@@ -59,6 +59,7 @@ float plotPanel(LabSession& session, const UiState& ui) {
     if (!series.empty()) shown.emplace_back(name, std::move(series));
   }
   const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (left) *left = display.x;
   if (shown.empty()) return display.y;
   // Lecture mode: lower and narrower plots, the scene keeps the room.
   const float height = std::min(ImGui::GetFontSize() * (ui.lecture ? 3.6f : 5.0f), display.y * 0.16f);
@@ -67,7 +68,9 @@ float plotPanel(LabSession& session, const UiState& ui) {
   const ImGuiStyle& style = ImGui::GetStyle();
   const float windowHeight = static_cast<float>(shown.size()) * (height + style.ItemSpacing.y) +
                              ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y;
-  ImGui::SetNextWindowSize(ImVec2(display.x * (ui.lecture ? 0.28f : 0.38f), windowHeight), ImGuiCond_Always);
+  const float width = display.x * (ui.lecture ? 0.28f : 0.38f);
+  if (left) *left = display.x - kMargin - width;
+  ImGui::SetNextWindowSize(ImVec2(width, windowHeight), ImGuiCond_Always);
   ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
   for (const auto& [name, series] : shown)
     plotSeries(name, series, ImVec2(ImGui::GetContentRegionAvail().x, height), ui.lecture);
@@ -75,11 +78,10 @@ float plotPanel(LabSession& session, const UiState& ui) {
   return display.y - kMargin - windowHeight;
 }
 
-void legendWindow(const Scene& scene, float left) {
+void legendWindow(const Scene& scene, float left, float bottom) {
   const std::vector<LegendEntry> entries = scene.legend();
   if (entries.empty()) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(left, display.y - kMargin), ImGuiCond_Always, ImVec2(0, 1));
+  ImGui::SetNextWindowPos(ImVec2(left, bottom - kMargin), ImGuiCond_Always, ImVec2(0, 1));
   ImGui::SetNextWindowBgAlpha(0.85f);
   ImGui::Begin("##legend", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |

@@ -2,11 +2,14 @@
 
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
+#include "physics/core/format.h"
 
 namespace pba::app {
 
 LabSession::LabSession(std::string lab, SceneRunner& runner, std::uint64_t seed)
-    : lab_(std::move(lab)), runner_(runner), seed_(seed) {}
+    : lab_(std::move(lab)), runner_(runner), seed_(seed) {
+  restartHistory();
+}
 
 void LabSession::togglePause() {
   if (runner_.guardMessage()) {
@@ -14,18 +17,22 @@ void LabSession::togglePause() {
     return;
   }
   runner_.setPaused(!runner_.paused());
-  message_ = runner_.paused() ? "Paused" : "Running";
+  if (!runner_.paused() && !history_.atNewest())
+    message_ = "Running from t = " + formatFixed(runner_.simTime(), 3) + " s: the later frames are discarded";
+  else
+    message_ = runner_.paused() ? "Paused" : "Running";
 }
 
 void LabSession::singleStep() {
   runner_.setPaused(true);
   runner_.singleStep();
+  afterFrame();
   message_ = "Single step";
 }
 
 void LabSession::reset() {
   runner_.reset();
-  plots_.clear();
+  restartHistory();
   message_ = "Reset";
 }
 
@@ -63,7 +70,7 @@ void LabSession::applyPreset(int index) {
     return;
   }
   runner_.reset();
-  plots_.clear();
+  restartHistory();
   message_ = "Preset " + std::to_string(index + 1) + ": " + preset.name;
 }
 
@@ -116,7 +123,52 @@ bool LabSession::saveSceneFile(const std::string& path) {
   return true;
 }
 
-void LabSession::recordPlots() { plots_.record(runner_.simTime(), runner_.scene().metrics()); }
+void LabSession::afterFrame(bool dragging) {
+  const bool stepped = runner_.steps() != historySteps_;
+  if (!stepped && (runner_.paused() && !dragging)) return;
+  nlohmann::json metrics = runner_.scene().metrics();
+  if (!runner_.paused() || dragging || stepped) plots_.record(runner_.simTime(), metrics);
+  if (stepped) {
+    history_.push(runner_.snapshot(), std::move(metrics));
+    historySteps_ = runner_.steps();
+  }
+}
+
+void LabSession::scrubTo(std::size_t i) {
+  if (history_.empty()) return;
+  i = std::min(i, history_.size() - 1);
+  if (!runner_.restore(history_.at(i).state)) {
+    message_ = "This scene cannot rewind (its state cannot be copied)";
+    return;
+  }
+  runner_.setPaused(true);
+  history_.setCursor(i);
+  historySteps_ = runner_.steps();
+  plots_.clear();
+  const std::size_t first = i + 1 > plots_.capacity() ? i + 1 - plots_.capacity() : 0;
+  for (std::size_t k = first; k <= i; ++k) plots_.record(history_.at(k).state.simTime, history_.at(k).metrics);
+  message_ = "Rewound to t = " + formatFixed(runner_.simTime(), 3) + " s (frame " + std::to_string(i + 1) + " of " +
+             std::to_string(history_.size()) + "): Space runs on from here";
+}
+
+void LabSession::stepBack() {
+  if (history_.empty()) return;
+  const std::size_t i = history_.cursor();
+  if (i == 0) {
+    runner_.setPaused(true);
+    message_ = "The history starts here";
+    return;
+  }
+  scrubTo(i - 1);
+}
+
+void LabSession::stepForward() {
+  if (!history_.atNewest()) {
+    scrubTo(history_.cursor() + 1);
+    return;
+  }
+  singleStep();
+}
 
 bool LabSession::takeFrameRequest() {
   const bool requested = frameRequested_;
@@ -124,8 +176,18 @@ bool LabSession::takeFrameRequest() {
   return requested;
 }
 
-void LabSession::sceneChanged() {
+void LabSession::restartHistory() {
   plots_.clear();
+  history_.clear();
+  historySteps_ = -1;
+  if (!runner_.hasScene()) return;
+  // The first frame of the history is the state at reset, so scrubbing can go back to t = 0.
+  history_.push(runner_.snapshot(), runner_.scene().metrics());
+  historySteps_ = runner_.steps();
+}
+
+void LabSession::sceneChanged() {
+  restartHistory();
   settings_.lastScene = runner_.sceneName();
   frameRequested_ = true;
 }

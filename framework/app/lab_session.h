@@ -9,6 +9,7 @@
 #include "app/exercise_catalog.h"
 #include "app/lab_settings.h"
 #include "app/plot_history.h"
+#include "app/rewind_history.h"
 #include "app/scene_runner.h"
 #include "app/target_nudge.h"
 
@@ -46,8 +47,18 @@ class LabSession {
   /// Saves the current scene's parameters as a scene file.
   bool saveSceneFile(const std::string& path);
 
-  /// Records the current metrics for the plots (once per displayed frame).
-  void recordPlots();
+  /// Once per displayed frame, after the runner advanced: records the metrics for the plots (while
+  /// running or dragging: a paused plot stays still) and, when the scene stepped, its state in the
+  /// rewind history.
+  void afterFrame(bool dragging = false);
+
+  /// Rewind (keys , and . and the timeline strip): shows frame `i` of the history, paused, with its
+  /// state put back and the plots rebuilt up to it. Space resumes from there as a new branch.
+  void scrubTo(std::size_t i);
+  void stepBack();
+  /// One frame forward: the next frame of the history, or a new step when at the newest one.
+  void stepForward();
+  const RewindHistory& history() const { return history_; }
 
   /// A message for the status line (what just happened), and the last scene file error.
   const std::string& message() const { return message_; }
@@ -55,7 +66,9 @@ class LabSession {
   void setMessage(std::string text) { message_ = std::move(text); }
 
   PlotHistory& plots() { return plots_; }
+  const PlotHistory& plots() const { return plots_; }
   LabSettings& settings() { return settings_; }
+  const LabSettings& settings() const { return settings_; }
   const std::vector<ExerciseInfo>& exercises() const { return exercises_; }
   void setExercises(std::vector<ExerciseInfo> list) { exercises_ = std::move(list); }
 
@@ -66,11 +79,15 @@ class LabSession {
 
  private:
   void sceneChanged();
+  /// Forgets the plots and the rewind history (reset, preset, another scene).
+  void restartHistory();
 
   std::string lab_;
   SceneRunner& runner_;
   std::uint64_t seed_;
   PlotHistory plots_;
+  RewindHistory history_;
+  std::int64_t historySteps_ = -1;  ///< the runner's step count at the newest frame pushed
   LabSettings settings_;
   std::vector<ExerciseInfo> exercises_;
   std::string message_;

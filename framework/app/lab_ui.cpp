@@ -28,6 +28,7 @@ constexpr float kOverlayShare = 0.34f, kLectureOverlayShare = 0.26f;
 const char* const kKeys[][2] = {
     {"Space / P", "pause or resume"},
     {"O", "single step (hold to repeat)"},
+    {",  .", "rewind one frame / forward one frame (the timeline strip scrubs)"},
     {"R", "reset the scene"},
     {"[  ]", "previous / next scene"},
     {"1 - 9", "scene presets"},
@@ -387,12 +388,17 @@ void drawLabUi(LabSession& session, UiState& ui) {
   // the picture without covering it. (Pushed and popped within this function: no mode changes here.)
   const bool side = ui.lecture && ui.sideFont;
   const float legendLeft = ui.hideUi ? 8.0f : panelWidthPixels(ui) + 8.0f;  // in the panel's font
-  if (side) ImGui::PushFont(ui.sideFont);
-  detail::legendWindow(session.runner().scene(), legendLeft);
-  if (side) ImGui::PopFont();
+  float plotsTop = ImGui::GetIO().DisplaySize.y, plotsLeft = ImGui::GetIO().DisplaySize.x;
+  float timelineTop = plotsTop;
   if (!ui.hideUi) {
     mainPanel(session, ui);
-    const float plotsTop = detail::plotPanel(session, ui);
+    plotsTop = detail::plotPanel(session, ui, &plotsLeft);
+    timelineTop = detail::timelineStrip(session, ui, legendLeft, plotsLeft - 8.0f);
+  }
+  if (side) ImGui::PushFont(ui.sideFont);
+  detail::legendWindow(session.runner().scene(), legendLeft, timelineTop);
+  if (side) ImGui::PopFont();
+  if (!ui.hideUi) {
     Scene& scene = session.runner().scene();
     if (scene.wantsOverlay()) {
       const float right = ImGui::GetIO().DisplaySize.x - 8.0f;

@@ -75,11 +75,15 @@ LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, floa
 namespace detail {
 inline const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
 inline const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
-/// Draws the plot window in the lower right; returns its top [pixels] (the display height when none).
-float plotPanel(LabSession& session, const UiState& ui);
-/// The scene's legend, its left edge at `left` [pixels] (right of the panel), at the bottom; drawn
-/// also while Tab hides the panels.
-void legendWindow(const Scene& scene, float left);
+/// Draws the plot window in the lower right; returns its top [pixels] (the display height when none)
+/// and its left edge in `left` (the display width when none).
+float plotPanel(LabSession& session, const UiState& ui, float* left = nullptr);
+/// The scene's legend, its left edge at `left` [pixels] (right of the panel), its bottom at `bottom`;
+/// drawn also while Tab hides the panels.
+void legendWindow(const Scene& scene, float left, float bottom);
+/// The rewind timeline along the bottom of the window between `left` and `right` [pixels] (lab_timeline.cpp);
+/// returns its top (the display height when there is none).
+float timelineStrip(LabSession& session, UiState& ui, float left, float right);
 void noticeWindow(const UiState& ui);
 void banners(LabSession& session);
 }  // namespace detail

@@ -1,5 +1,6 @@
 #include "app/metrics_report.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -23,6 +24,32 @@ nlohmann::json metricsReport(const std::string& lab, const SceneRunner& runner, 
   report["not_implemented"] = exercises::notImplementedTags();
   report[lab] = runner.scene().metrics();
   return report;
+}
+
+bool isTimingMetric(const std::string& key) {
+  if (key == "gl_renderer") return true;
+  if (key.size() >= 6 && key.compare(key.size() - 6, 6, "_per_s") == 0) return true;
+  std::size_t start = 0;
+  while (start <= key.size()) {
+    const std::size_t end = std::min(key.find('_', start), key.size());
+    const std::string word = key.substr(start, end - start);
+    if (word == "ms" || word == "us") return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+nlohmann::json withoutTimings(nlohmann::json metrics) {
+  if (!metrics.is_object()) return metrics;
+  for (auto it = metrics.begin(); it != metrics.end();) {
+    if (isTimingMetric(it.key())) {
+      it = metrics.erase(it);
+    } else {
+      *it = withoutTimings(std::move(*it));
+      ++it;
+    }
+  }
+  return metrics;
 }
 
 Status writeMetrics(const nlohmann::json& report, const std::string& target) {

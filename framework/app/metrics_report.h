@@ -11,6 +11,13 @@
 namespace pba::app {
 
 nlohmann::json metricsReport(const std::string& lab, const SceneRunner& runner, long frames);
+/// True for a wall-clock metric, which legitimately differs between runs. By convention (docs/architecture.md,
+/// "Metrics") a timing key has a unit word "ms" or "us" among its '_'-separated words (step_ms,
+/// solve_us_median, fabrik_solve_us) or ends in "_per_s"; gl_renderer names the machine.
+bool isTimingMetric(const std::string& key);
+/// `metrics` without its timing entries, at every depth (what two identical runs must agree on).
+nlohmann::json withoutTimings(nlohmann::json metrics);
+
 /// Writes the report to `target` ("-" = standard output). Error names the path.
 Status writeMetrics(const nlohmann::json& report, const std::string& target);
 

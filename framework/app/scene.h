@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/params.h"
+#include "app/scene_state.h"
 #include "physics/collision/ray.h"
 #include "physics/core/debug_draw.h"
 #include "physics/core/types.h"
@@ -63,6 +64,7 @@ struct ScreenRect {
 
 class Scene {
  public:
+  Scene() = default;
   virtual ~Scene() = default;
 
   /// One sentence: what to look at in this scene.
@@ -121,6 +123,15 @@ class Scene {
   /// Length [m] of one nudge; 0 lets the runner choose 2 % of the scene's drawn size.
   virtual Real nudgeStep() const { return 0.0; }
 
+  /// A copy of the complete simulation state (rewind, A/B runs), or null for a scene made outside the
+  /// registry. Every registered scene has one (scene_state.h): no code in the scene.
+  std::unique_ptr<const SceneState> saveState() const { return stateOps_ ? stateOps_->save(*this) : nullptr; }
+  /// Puts back a state saved from this scene (or one of its type): parameters, seed and simulation.
+  /// False when the state belongs to another scene type.
+  bool restoreState(const SceneState& state) { return stateOps_ && stateOps_->restore(*this, state); }
+  /// Installed by the registry for scenes of its type T.
+  void setStateOps(std::shared_ptr<const SceneStateOps> ops) { stateOps_ = std::move(ops); }
+
   Params& params() { return params_; }
   const Params& params() const { return params_; }
   /// Random seed for scenes with random content (set by the runner before reset()).
@@ -128,10 +139,19 @@ class Scene {
   std::uint64_t seed() const { return seed_; }
 
  protected:
+  // Copies (the saved states) carry the seed but not the parameter table: its accessors point into the
+  // object that declared them, so each scene keeps its own.
+  Scene(const Scene& other) : seed_(other.seed_), stateOps_(other.stateOps_) {}
+  Scene& operator=(const Scene& other) {
+    seed_ = other.seed_;
+    return *this;
+  }
+
   Params params_;
 
  private:
   std::uint64_t seed_ = 1;
+  std::shared_ptr<const SceneStateOps> stateOps_;
 };
 
 }  // namespace pba::app

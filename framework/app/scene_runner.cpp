@@ -40,6 +40,33 @@ void SceneRunner::reset() {
   energyScale_ = e ? std::max(std::abs(*e), 1e-3) : 0.0;
 }
 
+std::size_t RunnerSnapshot::bytes() const {
+  return sizeof(RunnerSnapshot) + (scene ? scene->bytes() : 0) + (guardMessage ? guardMessage->capacity() : 0);
+}
+
+RunnerSnapshot SceneRunner::snapshot() const {
+  RunnerSnapshot s;
+  if (scene_) s.scene = scene_->saveState();
+  s.simTime = simTime_;
+  s.accumulator = accumulator_;
+  s.energyScale = energyScale_;
+  s.steps = steps_;
+  s.finite = finite_;
+  s.guardMessage = guardMessage_;
+  return s;
+}
+
+bool SceneRunner::restore(const RunnerSnapshot& s) {
+  if (!scene_ || !s.scene || !scene_->restoreState(*s.scene)) return false;
+  simTime_ = s.simTime;
+  accumulator_ = s.accumulator;
+  energyScale_ = s.energyScale;
+  steps_ = s.steps;
+  finite_ = s.finite;
+  guardMessage_ = s.guardMessage;
+  return true;
+}
+
 Status SceneRunner::setDt(Real dt, bool keepAcrossScenes) {
   if (Status s = checkRange("dt", dt, kMinDt, kMaxDt); !s) return s;
   dt_ = dt;

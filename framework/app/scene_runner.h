@@ -23,6 +23,20 @@ inline constexpr Real kDisplayFrame = 1.0 / 60.0;  // [s] simulated time per dis
 /// The runaway-energy guard trips when |E| exceeds this multiple of the scale set at reset.
 inline constexpr Real kRunawayEnergyFactor = 100.0;
 
+/// The runner's clock and guard with a copy of the scene's state: one point of the rewind history.
+/// Settings (dt, substeps, time scale, pause) are not part of it: they are the user's, not the run's.
+struct RunnerSnapshot {
+  std::shared_ptr<const SceneState> scene;  ///< null when the scene cannot save its state
+  Real simTime = 0.0;
+  Real accumulator = 0.0;
+  Real energyScale = 0.0;
+  std::int64_t steps = 0;
+  bool finite = true;
+  std::optional<std::string> guardMessage;
+  /// Memory held [bytes].
+  std::size_t bytes() const;
+};
+
 class SceneRunner {
  public:
   /// Creates scene `name` from the registry, applies the seed, resets it. Error names the scene.
@@ -38,6 +52,12 @@ class SceneRunner {
   void advanceFrame(Real frameSeconds, int maxSteps = -1);
   /// One fixed step even while paused (key O).
   void singleStep();
+
+  /// The current state (scene and clock) for the rewind history and A/B runs.
+  RunnerSnapshot snapshot() const;
+  /// Puts a snapshot of this scene back: stepping on reproduces the original run bit for bit. False, and
+  /// nothing changed, when it holds no state or one of another scene type.
+  bool restore(const RunnerSnapshot& snapshot);
 
   bool paused() const { return paused_; }
   void setPaused(bool paused) { paused_ = paused; }

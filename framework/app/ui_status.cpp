@@ -93,7 +93,18 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
   nlohmann::json widgets = nlohmann::json::object();
   for (const auto& [name, r] : ui.widgets) widgets[name] = {r.x0, r.y0, r.x1, r.y1};
   const bool noticeShown = ui.noticeVisible(ImGui::GetTime());
+  const RewindHistory& h = session.history();
+  const nlohmann::json history = {{"frames", h.size()}, {"cursor", h.cursor()},      {"seconds", h.seconds()},
+                                  {"bytes", h.bytes()}, {"max_bytes", h.maxBytes()}, {"max_frames", h.maxFrames()}};
+  // The plotted series as the plot panel has them: their length and last sample.
+  nlohmann::json plots = nlohmann::json::object();
+  for (const std::string& name : session.settings().plotted) {
+    const std::vector<double> series = session.plots().series(name);
+    if (!series.empty()) plots[name] = {{"samples", series.size()}, {"last", series.back()}};
+  }
   return {{"frame", f.frame},
+          {"history", history},
+          {"plots", plots},
           {"steps", runner.steps()},
           {"sim_time_s", runner.simTime()},
           {"paused", runner.paused()},

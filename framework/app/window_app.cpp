@@ -211,7 +211,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     const bool fixedFrames = capture || recording.active();
     runner.advanceFrame(fixedFrames ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds),
                         fixedFrames ? -1 : kMaxStepsPerFrame);
-    if (!runner.paused() || input.dragging()) session.recordPlots();  // a paused plot stays still
+    session.afterFrame(input.dragging());  // plots and the rewind history
 
     renderer->beginFrame(camera, fb.x, fb.y);
     SceneDraw draw(debug);

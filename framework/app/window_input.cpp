@@ -29,7 +29,8 @@ void WindowInput::install(GLFWwindow* window) {
 void WindowInput::keyCallback(GLFWwindow* window, int key, int scancode, int action, int mods) {
   ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
   // Only the single-step and nudge keys repeat while held; a held Space must not toggle pause repeatedly.
-  const bool repeats = key == GLFW_KEY_O || nudgeDirectionForKey(key, mods).has_value();
+  const bool repeats = key == GLFW_KEY_O || key == GLFW_KEY_COMMA || key == GLFW_KEY_PERIOD ||
+                       nudgeDirectionForKey(key, mods).has_value();
   if (action == GLFW_PRESS || (action == GLFW_REPEAT && repeats)) {
     if (auto* self = static_cast<WindowInput*>(glfwGetWindowUserPointer(window))) self->pressed_.push_back({key, mods});
   }
@@ -59,6 +60,12 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
       case GLFW_KEY_O:
         session.singleStep();
         break;  // held: repeats
+      case GLFW_KEY_COMMA:
+        session.stepBack();
+        break;  // held: repeats
+      case GLFW_KEY_PERIOD:
+        session.stepForward();
+        break;
       case GLFW_KEY_R:
         session.reset();
         break;

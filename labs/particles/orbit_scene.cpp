@@ -45,12 +45,12 @@ class OrbitScene final : public app::Scene {
     ode::OrbitDesc desc;
     desc.velocity = Vec3(0.0, 0.0, -speed_);
     for (ode::IntegratorKind k : ode::kAllIntegrators) {
-      Planet p{std::make_unique<ode::KeplerOrbit>(desc), ode::Integrator(k), {}};
+      Planet p{ode::KeplerOrbit(desc), ode::Integrator(k), {}};
       (void)p.integrator.setAdaptiveSettings({.tolerance = 1e-6});  // valid: a constant
       planets_.push_back(std::move(p));
     }
-    e0_ = planets_[0].orbit->energy();
-    l0_ = glm::length(planets_[0].orbit->angularMomentum());
+    e0_ = planets_[0].orbit.energy();
+    l0_ = glm::length(planets_[0].orbit.angularMomentum());
     time_ = clock_ = 0.0;
   }
   void step(Real dt) override {
@@ -63,13 +63,13 @@ class OrbitScene final : public app::Scene {
       time_ = due->end;
       for (Planet& p : planets_) {
         // Stop a method that has crashed into the sun or escaped: the point is made, keep the rest going.
-        if (glm::length(p.orbit->position()) < 0.05 || glm::length(p.orbit->position()) > 50.0) continue;
-        p.integrator.step(*p.orbit, due->h);
+        if (glm::length(p.orbit.position()) < 0.05 || glm::length(p.orbit.position()) > 50.0) continue;
+        p.integrator.step(p.orbit, due->h);
         ++updates;
       }
     }
     for (Planet& p : planets_) {
-      p.trail.push_back(p.orbit->position());
+      p.trail.push_back(p.orbit.position());
       if (p.trail.size() > kTrail) p.trail.pop_front();
     }
     rate_.stop(updates);
@@ -80,7 +80,7 @@ class OrbitScene final : public app::Scene {
     for (std::size_t i = 0; i < planets_.size(); ++i) {
       const auto& t = planets_[i].trail;
       for (std::size_t k = 1; k < t.size(); ++k) d.line(t[k - 1] + kDrawOffset, t[k] + kDrawOffset, kColors[i]);
-      d.sphere(planets_[i].orbit->position() + kDrawOffset, 0.06, kColors[i]);
+      d.sphere(planets_[i].orbit.position() + kDrawOffset, 0.06, kColors[i]);
     }
   }
   // The legend (which colour is which method, and its drift so far), in the panel under the parameters.
@@ -91,7 +91,7 @@ class OrbitScene final : public app::Scene {
     ImGui::TableSetupColumn("ΔL/L₀");
     ImGui::TableHeadersRow();
     for (std::size_t i = 0; i < planets_.size(); ++i) {
-      const ode::KeplerOrbit& o = *planets_[i].orbit;
+      const ode::KeplerOrbit& o = planets_[i].orbit;
       const Color c = kColors[i];
       const std::string name(ode::integratorName(planets_[i].integrator.kind()));
       ImGui::TableNextRow();
@@ -131,20 +131,20 @@ class OrbitScene final : public app::Scene {
   }
   nlohmann::json metrics() const override {
     const Planet& s = planets_[static_cast<std::size_t>(selected_)];
-    nlohmann::json j = lab::baseMetrics(selected_, 1, s.orbit->energy(), e0_, rate_);
+    nlohmann::json j = lab::baseMetrics(selected_, 1, s.orbit.energy(), e0_, rate_);
     j["time_s"] = time_;
-    j["angular_momentum"] = glm::length(s.orbit->angularMomentum());
-    j["angular_momentum_drift"] = (glm::length(s.orbit->angularMomentum()) - l0_) / l0_;
+    j["angular_momentum"] = glm::length(s.orbit.angularMomentum());
+    j["angular_momentum_drift"] = (glm::length(s.orbit.angularMomentum()) - l0_) / l0_;
     for (const Planet& p : planets_) {
       const std::string name(ode::integratorName(p.integrator.kind()));
-      j["energy_drift_" + name] = (p.orbit->energy() - e0_) / std::abs(e0_);
-      j["angular_momentum_drift_" + name] = (glm::length(p.orbit->angularMomentum()) - l0_) / l0_;
+      j["energy_drift_" + name] = (p.orbit.energy() - e0_) / std::abs(e0_);
+      j["angular_momentum_drift_" + name] = (glm::length(p.orbit.angularMomentum()) - l0_) / l0_;
     }
     return j;
   }
   std::optional<std::string> nonFiniteState() const override {
     for (const Planet& p : planets_) {
-      if (!isFinite(p.orbit->position()) || !isFinite(p.orbit->velocity()))
+      if (!isFinite(p.orbit.position()) || !isFinite(p.orbit.velocity()))
         return "the " + std::string(ode::integratorName(p.integrator.kind())) + " planet's state is not finite";
     }
     return std::nullopt;
@@ -156,7 +156,7 @@ class OrbitScene final : public app::Scene {
 
  private:
   struct Planet {
-    std::unique_ptr<ode::KeplerOrbit> orbit;
+    ode::KeplerOrbit orbit;  // a value: the scene copies itself for rewind
     ode::Integrator integrator;
     std::deque<Vec3> trail;
   };

@@ -62,7 +62,7 @@ class OscillatorScene final : public app::Scene {
   void reset() override {
     methods_.clear();
     for (ode::IntegratorKind k : ode::kAllIntegrators) {
-      Method m{std::make_unique<ode::HarmonicOscillator>(), ode::Integrator(k), {}};
+      Method m{ode::HarmonicOscillator(), ode::Integrator(k), {}};
       (void)m.integrator.setAdaptiveSettings({.tolerance = 1e-6});  // valid: a constant
       methods_.push_back(std::move(m));
     }
@@ -79,9 +79,9 @@ class OscillatorScene final : public app::Scene {
       for (std::size_t i = 0; i < methods_.size(); ++i) {
         if (onlySelected_ && !selected(i)) continue;
         Method& m = methods_[i];
-        m.integrator.step(*m.system, due->h);
+        m.integrator.step(m.system, due->h);
         // The schedule's end time exactly (no rounding drift), unless the method fell short of it.
-        if (m.integrator.lastShortfall() == 0.0) m.system->setTime(due->end);
+        if (m.integrator.lastShortfall() == 0.0) m.system.setTime(due->end);
       }
       time_ = due->end;
       updates += onlySelected_ ? 1 : methods_.size();
@@ -101,7 +101,7 @@ class OscillatorScene final : public app::Scene {
       d.line(c - kPhaseLimit * kUp, c + kPhaseLimit * kUp, colors::kGrey);
       const auto& trail = methods_[i].trail;
       for (std::size_t k = 1; k < trail.size(); ++k) d.line(c + onPanel(trail[k - 1]), c + onPanel(trail[k]), color);
-      const ode::HarmonicOscillator& s = *methods_[i].system;
+      const ode::HarmonicOscillator& s = methods_[i].system;
       d.sphere(c + onPanel({s.positions()[0], s.velocities()[0]}), 0.07, color);
       d.sphere(c + onPanel({s.exactPosition(time_), s.exactVelocity(time_)}), 0.05, colors::kGrey);
       const Color labelColor = selected(i) ? colors::kRed : colors::kDark;
@@ -136,21 +136,21 @@ class OscillatorScene final : public app::Scene {
 
   nlohmann::json metrics() const override {
     const Method& m = methods_[index(selected_)];
-    nlohmann::json j = lab::baseMetrics(selected_, 1, m.system->energy(), 0.5, rate_);
+    nlohmann::json j = lab::baseMetrics(selected_, 1, m.system.energy(), 0.5, rate_);
     j["time_s"] = time_;
     j["h"] = h_;
     j["end_time"] = endTime_;
     j["error"] = errorOf(m);
     for (const Method& other : methods_) {
       const std::string name(ode::integratorName(other.integrator.kind()));
-      j["energy_" + name] = other.system->energy();
+      j["energy_" + name] = other.system.energy();
       j["error_" + name] = errorOf(other);
     }
     return j;
   }
   std::optional<std::string> nonFiniteState() const override {
     for (const Method& m : methods_) {
-      if (!isFinite(m.system->positions()[0]) || !isFinite(m.system->velocities()[0]))
+      if (!isFinite(m.system.positions()[0]) || !isFinite(m.system.velocities()[0]))
         return "the " + std::string(ode::integratorName(m.integrator.kind())) + " oscillator's state is not finite";
     }
     return std::nullopt;
@@ -168,7 +168,7 @@ class OscillatorScene final : public app::Scene {
 
  private:
   struct Method {
-    std::unique_ptr<ode::HarmonicOscillator> system;
+    ode::HarmonicOscillator system;  // a value: the scene copies itself for rewind
     ode::Integrator integrator;
     std::deque<Vec2> trail;        // (x, v)
     std::deque<Vec2> energy = {};  // (t, E/E₀)
@@ -199,13 +199,13 @@ class OscillatorScene final : public app::Scene {
     return app::CameraView{Vec3(0.0, 0.5 * (top + kBottom - 0.5), 0.0), distance, kFacingYaw, pitch};
   }
   Real errorOf(const Method& m) const {
-    return std::hypot(m.system->positions()[0] - m.system->exactPosition(time_),
-                      m.system->velocities()[0] - m.system->exactVelocity(time_));
+    return std::hypot(m.system.positions()[0] - m.system.exactPosition(time_),
+                      m.system.velocities()[0] - m.system.exactVelocity(time_));
   }
   void record() {
     for (Method& m : methods_) {
-      m.trail.push_back({m.system->positions()[0], m.system->velocities()[0]});
-      m.energy.push_back({time_, m.system->energy() / 0.5});
+      m.trail.push_back({m.system.positions()[0], m.system.velocities()[0]});
+      m.energy.push_back({time_, m.system.energy() / 0.5});
       if (m.trail.size() > kTrail) m.trail.pop_front();
       if (m.energy.size() > kTrail) m.energy.pop_front();
     }

@@ -39,9 +39,6 @@ class PendulumScene final : public app::Scene {
                             "others integrate the damping torque −a I ω like any force.");
   }
 
-  PendulumScene(const PendulumScene&) = delete;  // system_ calls back into this object
-  PendulumScene& operator=(const PendulumScene&) = delete;
-
   std::string description() const override {
     return "A pendulum hanging from a moving pivot (CMU asst4): it lags, swings up and settles as damping "
            "removes energy. Drag the pivot (dark box) to swing it by hand.";
@@ -75,6 +72,9 @@ class PendulumScene final : public app::Scene {
     if (kind_ == ode::IntegratorKind::SymplecticEuler) {
       state_ = ode::stepPendulum(desc_, state_, acceleration, dt);
     } else {
+      // system_ calls back into this object: bound at each step, so a copy of the scene (rewind) steps
+      // with its own pivot.
+      system_.setPivotAcceleration([this](Real) { return pivotAcceleration_; });
       system_.setDesc(desc_);
       system_.setPendulumState(state_);  // unchanged values: Verlet keeps its history
       system_.setTime(time_);
@@ -159,7 +159,7 @@ class PendulumScene final : public app::Scene {
   ode::IntegratorKind kind_ = ode::IntegratorKind::SymplecticEuler;
   ode::Integrator integrator_;
   // The pivot's acceleration over a step is held at its value at the step's start (time_).
-  ode::PendulumSystem system_{desc_, [this](Real) { return pivotAcceleration_; }};
+  ode::PendulumSystem system_{desc_};
   Vec3 pivot_{0.0, kPivotHeight, 0.0}, previousPivot_{0.0, kPivotHeight, 0.0}, pivotVelocity_{0.0};
   Vec3 target_{0.0, kPivotHeight, 0.0}, pivotAcceleration_{0.0};
   bool byHand_ = false;

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/metrics_report.h"
 #include "graphics/screenshot.h"
 
 namespace {
@@ -63,41 +64,11 @@ int checkMetrics(const std::string& path, const std::string& lab, const std::str
   return 0;
 }
 
-// True for a wall-clock metric. By convention (docs/architecture.md, "Metrics") a timing key has a
-// unit component "ms" or "us" anywhere among its '_'-separated words (step_ms, solve_us_median,
-// fabrik_solve_us) or ends in "_per_s".
-bool isTiming(const std::string& key) {
-  if (key == "gl_renderer") return true;
-  if (key.size() >= 6 && key.compare(key.size() - 6, 6, "_per_s") == 0) return true;
-  size_t start = 0;
-  while (start <= key.size()) {
-    const size_t end = std::min(key.find('_', start), key.size());
-    const std::string word = key.substr(start, end - start);
-    if (word == "ms" || word == "us") return true;
-    start = end + 1;
-  }
-  return false;
-}
-
-// Removes wall-clock measurements, which legitimately differ between runs.
-void dropTimings(json& j) {
-  if (!j.is_object()) return;
-  for (auto it = j.begin(); it != j.end();) {
-    const bool timing = isTiming(it.key());
-    if (timing) {
-      it = j.erase(it);
-    } else {
-      dropTimings(*it);
-      ++it;
-    }
-  }
-}
-
 int checkSame(const std::string& a, const std::string& b) {
   json ja, jb;
   if (!load(a, ja) || !load(b, jb)) return 1;
-  dropTimings(ja);
-  dropTimings(jb);
+  ja = pba::app::withoutTimings(std::move(ja));
+  jb = pba::app::withoutTimings(std::move(jb));
   if (ja == jb) return 0;
   std::cerr << "metrics differ:\n" << json::diff(ja, jb).dump(2) << '\n';
   return 1;

@@ -98,6 +98,48 @@ void checkScenes(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
+// Rewind: , steps one frame back through the rewind history and . one forward; the clock, the step count
+// and the plots go back with the state (each plotted series ends at the metric of the frame shown, one
+// sample per frame up to it); dragging the timeline strip to its left end shows the state at reset; Space
+// runs on from there and the later frames are discarded.
+void checkRewind(const std::string& exe, const std::string& work) {
+  LabWindow lab(exe, {}, work);
+  lab.waitFor([](const json& s) { return s["history"]["frames"].get<long>() >= 30; }, "30 frames of history");
+  pause(lab);
+  const json held = lab.frames(2);
+  const long frames = held["history"]["frames"], newest = held["history"]["cursor"];
+  expect(newest == frames - 1, "paused, the timeline is not at the newest frame");
+  for (long k = 1; k <= 3; ++k) {
+    lab.key("comma");
+    lab.waitFor([&](const json& s) { return s["history"]["cursor"].get<long>() == newest - k; },
+                ", to step back to frame " + std::to_string(newest - k));
+  }
+  const json back = lab.frames(2);
+  expect(back["steps"].get<long>() < held["steps"].get<long>(), "the step count did not go back");
+  expect(back["sim_time_s"].get<double>() < held["sim_time_s"].get<double>(), "the clock did not go back");
+  expect(back["history"]["frames"].get<long>() == frames, "stepping back changed the history's length");
+  for (const auto& [name, plot] : back["plots"].items()) {
+    expect(plot["last"] == back["metrics"][name], "plot " + name + " ends at " + plot["last"].dump() +
+                                                      ", the frame shown has " + back["metrics"][name].dump());
+    expect(plot["samples"].get<long>() == std::min<long>(newest - 3 + 1, 600),
+           "plot " + name + " has " + plot["samples"].dump() + " samples for frame " + std::to_string(newest - 3));
+  }
+  lab.key("period");
+  lab.waitFor([&](const json& s) { return s["history"]["cursor"].get<long>() == newest - 2; }, ". to step forward");
+  const Rect bar = Rect::fromJson(lab.frames(1)["widgets"]["timeline"]);
+  const double y = 0.5 * (bar.y0 + bar.y1);
+  lab.drag(1, bar.x1 - 4, y, bar.x0 - 40, y);
+  const json start =
+      lab.waitFor([](const json& s) { return s["history"]["cursor"] == 0; }, "the timeline dragged to its start");
+  expect(start["steps"] == 0 && start["sim_time_s"].get<double>() == 0.0,
+         "the first frame of the history is not the reset state: t = " + start["sim_time_s"].dump());
+  lab.key("space");
+  const json resumed = lab.waitFor([](const json& s) { return s["paused"] == false && s["steps"].get<long>() > 0; },
+                                   "Space to run on from the start");
+  expect(resumed["history"]["frames"].get<long>() < frames, "running on from the start kept the later frames");
+  expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
 /// Parameter values agree: numbers to 1e-9 relative (angles pass through radians), others exactly.
 bool sameValue(const json& a, const json& b) {
   if (a.is_number() && b.is_number())
@@ -513,6 +555,7 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
 const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"step", checkStep},
                                               {"reset", checkReset},
+                                              {"rewind", checkRewind},
                                               {"scenes", checkScenes},
                                               {"presets", checkPresets},
                                               {"help", checkHelp},

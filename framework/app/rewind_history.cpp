@@ -1,0 +1,32 @@
+#include "app/rewind_history.h"
+
+namespace pba::app {
+
+void RewindHistory::push(RunnerSnapshot state, nlohmann::json metrics) {
+  while (!atNewest()) {
+    bytes_ -= frames_.back().bytes;
+    frames_.pop_back();
+  }
+  Frame frame{std::move(state), std::move(metrics), 0};
+  // The metrics' text is a fair measure of what their tree holds (a few dozen numbers).
+  frame.bytes = frame.state.bytes() + sizeof(Frame) + frame.metrics.dump().size();
+  bytes_ += frame.bytes;
+  frames_.push_back(std::move(frame));
+  while (frames_.size() > 1 && (frames_.size() > maxFrames_ || bytes_ > maxBytes_)) {
+    bytes_ -= frames_.front().bytes;
+    frames_.pop_front();
+  }
+  cursor_ = frames_.size() - 1;
+}
+
+void RewindHistory::clear() {
+  frames_.clear();
+  cursor_ = 0;
+  bytes_ = 0;
+}
+
+double RewindHistory::seconds() const {
+  return frames_.empty() ? 0.0 : frames_.back().state.simTime - frames_.front().state.simTime;
+}
+
+}  // namespace pba::app
