@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <tuple>
 
+#include "app/compare_run.h"
 #include "app/metrics_report.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
@@ -66,6 +68,41 @@ int runHeadless(const std::string& lab, const LabOptions& o, SceneRunner& runner
   return runner.guardMessage() ? kExitGuardPaused : kExitOk;
 }
 
+Status prepareCompare(const std::string& lab, const LabOptions& o, SceneRunner& a, SceneRunner& b) {
+  if (Status s = prepareRunner(lab, o, b); !s) return s;
+  for (const auto& [runner, text, side] :
+       {std::tuple{&a, o.compare->first, "--compare A"}, std::tuple{&b, o.compare->second, "--compare B"}}) {
+    Result<std::vector<CompareSetting>> settings = parseCompareSide(text, side);
+    if (!settings) return Error{settings.error()};
+    if (Status s = applyCompareSide(*runner, settings.value(), side); !s) return s;
+  }
+  return Status::success();
+}
+
+int runCompareHeadless(const std::string& lab, const LabOptions& o, SceneRunner& a, SceneRunner& b) {
+  const long frames = o.frameCount();
+  for (long f = 0; f < frames; ++f) {
+    a.advanceFrame(kDisplayFrame);
+    b.advanceFrame(kDisplayFrame);
+  }
+  for (const auto& [runner, side] : {std::pair{&a, "A"}, std::pair{&b, "B"}})
+    if (runner->guardMessage()) std::cerr << "pba-" << lab << ": " << side << ": " << *runner->guardMessage() << '\n';
+  if (!o.metrics.empty()) {
+    nlohmann::json report = {
+        {"lab", lab},
+        {"scene", a.sceneName()},
+        {"frames", frames},
+        {"compare", {{"a", o.compare->first}, {"b", o.compare->second}, {"differences", compareDifferences(a, b)}}},
+        {"a", metricsReport(lab, a, frames)},
+        {"b", metricsReport(lab, b, frames)}};
+    if (Status s = writeMetrics(report, o.metrics); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+  }
+  return a.guardMessage() || b.guardMessage() ? kExitGuardPaused : kExitOk;
+}
+
 int runLab(const std::string& lab, int argc, const char* const* argv) {
   try {
     Result<LabOptions> parsed = parseCommandLine(argc, argv);
@@ -92,6 +129,14 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
       return kExitBadInput;
     }
     if (o.checkRewind) return runRewindCheck(lab, o, runner);
+    if (o.compare) {
+      SceneRunner partner;
+      if (Status s = prepareCompare(lab, o, runner, partner); !s) {
+        std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+        return kExitBadInput;
+      }
+      return o.headless ? runCompareHeadless(lab, o, runner, partner) : runWindow(lab, o, runner, &partner);
+    }
     return o.headless ? runHeadless(lab, o, runner) : runWindow(lab, o, runner);
   } catch (const std::exception& e) {
     std::cerr << "pba-" << lab << ": internal error: " << e.what() << '\n';

@@ -27,8 +27,16 @@ int runHeadless(const std::string& lab, const LabOptions& options, SceneRunner& 
 /// --check-rewind N (rewind_check.cpp): save, run, restore, run again; exit 0 when the runs agree.
 int runRewindCheck(const std::string& lab, const LabOptions& options, SceneRunner& runner);
 
+/// --compare "A" "B": prepares `b` like `a` (prepareRunner), then applies each side's settings
+/// (compare_run.h) and resets both. Errors name the side and the setting.
+Status prepareCompare(const std::string& lab, const LabOptions& options, SceneRunner& a, SceneRunner& b);
+/// Steps both runners in lock-step for options.frameCount() frames; the metrics hold "a" and "b" (each
+/// the report of one run) and "compare" (the two sides' settings and where B differs).
+int runCompareHeadless(const std::string& lab, const LabOptions& options, SceneRunner& a, SceneRunner& b);
+
 /// Opens the window (defined by the window module). With options.screenshot set, renders
-/// options.frameCount() frames, saves the PNG and returns.
-int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner);
+/// options.frameCount() frames, saves the PNG and returns. With `partner` (an A/B run) both scenes are
+/// shown side by side and step together.
+int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner, SceneRunner* partner = nullptr);
 
 }  // namespace pba::app

@@ -3,6 +3,7 @@
 // and the banners of the instability guard and of exercise stubs.
 #include <algorithm>
 #include <cfloat>
+#include <cstdio>
 
 #include <imgui.h>
 
@@ -16,29 +17,43 @@ constexpr float kMargin = 8.0f;  // [px] between windows and the window's edge
 
 /// A line plot of `series` filling `size`, 2 px wide (3 in lecture mode): ImGui's PlotLines draws 1 px,
 /// which a projector loses. The caption (plotCaption) says what the vertical range is.
-void plotSeries(const std::string& name, const std::vector<double>& series, ImVec2 size, bool lecture) {
-  const PlotScale scale = plotScale(series);
+void plotSeries(const std::string& name, const std::vector<double>& series, const std::vector<double>& seriesB,
+                ImVec2 size, bool lecture) {
+  // A and B of an A/B run share one scale.
+  std::vector<double> both = series;
+  both.insert(both.end(), seriesB.begin(), seriesB.end());
+  const PlotScale scale = plotScale(both);
   const ImVec2 o = ImGui::GetCursorScreenPos();
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(o, ImVec2(o.x + size.x, o.y + size.y), ImGui::GetColorU32(ImGuiCol_FrameBg),
                       ImGui::GetStyle().FrameRounding);
   const float pad = 0.2f * ImGui::GetFontSize();
-  std::vector<ImVec2> points;
-  points.reserve(series.size());
-  const double n = static_cast<double>(std::max<size_t>(series.size() - 1, 1));
-  for (size_t i = 0; i < series.size(); ++i) {
-    const double y = (series[i] - scale.offset - scale.lo) / (scale.hi - scale.lo);
-    points.emplace_back(
-        o.x + pad + (size.x - 2.0f * pad) * static_cast<float>(static_cast<double>(i) / n),
-        o.y + size.y - pad -
-            (size.y - 2.0f * pad - 1.8f * ImGui::GetFontSize()) * static_cast<float>(std::clamp(y, 0.0, 1.0)));
-  }
-  if (points.size() >= 2)
-    draw->AddPolyline(points.data(), static_cast<int>(points.size()), ImGui::GetColorU32(ImGuiCol_PlotLines), 0,
-                      lecture ? 3.0f : 2.0f);
+  const std::size_t samples = std::max(series.size(), seriesB.size());
+  const double n = static_cast<double>(std::max<size_t>(samples - 1, 1));
+  auto line = [&](const std::vector<double>& values, ImU32 colour) {
+    std::vector<ImVec2> points;
+    points.reserve(values.size());
+    for (size_t i = 0; i < values.size(); ++i) {
+      const double y = (values[i] - scale.offset - scale.lo) / (scale.hi - scale.lo);
+      points.emplace_back(
+          o.x + pad + (size.x - 2.0f * pad) * static_cast<float>(static_cast<double>(i) / n),
+          o.y + size.y - pad -
+              (size.y - 2.0f * pad - 1.8f * ImGui::GetFontSize()) * static_cast<float>(std::clamp(y, 0.0, 1.0)));
+    }
+    if (points.size() >= 2)
+      draw->AddPolyline(points.data(), static_cast<int>(points.size()), colour, 0, lecture ? 3.0f : 2.0f);
+  };
+  line(seriesB, ImGui::ColorConvertFloat4ToU32(kCompareB));
+  line(series, ImGui::GetColorU32(ImGuiCol_PlotLines));
   // The caption on two lines, so a narrow (lecture) plot never cuts the range off: "name = value" on
   // top, the range (and the mean of a deviation plot) below it in a smaller size.
-  const std::string caption = plotCaption(name, series, scale);
+  std::string caption = plotCaption(name, both, scale);
+  if (!seriesB.empty() && !series.empty()) {  // "name = A's last | B's last  [range]"
+    const std::string rest = caption.substr(std::min(caption.find("  "), caption.size()));
+    char values[96];
+    std::snprintf(values, sizeof values, "%s = %.4g | B %.4g", name.c_str(), series.back(), seriesB.back());
+    caption = values + rest;
+  }
   const size_t split = caption.find("  ");
   const float font = ImGui::GetFontSize();
   draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text),
@@ -58,6 +73,10 @@ float plotPanel(LabSession& session, const UiState& ui, float* left) {
     std::vector<double> series = session.plots().series(name);
     if (!series.empty()) shown.emplace_back(name, std::move(series));
   }
+  std::vector<std::vector<double>> shownB;
+  for (const auto& [name, series] : shown) {
+    shownB.push_back(session.comparing() ? session.partnerPlots().series(name) : std::vector<double>());
+  }
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   if (left) *left = display.x;
   if (shown.empty()) return display.y;
@@ -72,8 +91,9 @@ float plotPanel(LabSession& session, const UiState& ui, float* left) {
   if (left) *left = display.x - kMargin - width;
   ImGui::SetNextWindowSize(ImVec2(width, windowHeight), ImGuiCond_Always);
   ImGui::Begin("Plots", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
-  for (const auto& [name, series] : shown)
-    plotSeries(name, series, ImVec2(ImGui::GetContentRegionAvail().x, height), ui.lecture);
+  for (std::size_t i = 0; i < shown.size(); ++i)
+    plotSeries(shown[i].first, shown[i].second, shownB[i], ImVec2(ImGui::GetContentRegionAvail().x, height),
+               ui.lecture);
   ImGui::End();
   return display.y - kMargin - windowHeight;
 }

@@ -1,5 +1,6 @@
 #include "app/lab_session.h"
 
+#include "app/compare_run.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
 #include "physics/core/format.h"
@@ -17,6 +18,7 @@ void LabSession::togglePause() {
     return;
   }
   runner_.setPaused(!runner_.paused());
+  if (partner_) partner_->setPaused(runner_.paused());
   if (!runner_.paused() && !history_.atNewest())
     message_ = "Running from t = " + formatFixed(runner_.simTime(), 3) + " s: the later frames are discarded";
   else
@@ -26,12 +28,17 @@ void LabSession::togglePause() {
 void LabSession::singleStep() {
   runner_.setPaused(true);
   runner_.singleStep();
+  if (partner_) {
+    partner_->setPaused(true);
+    partner_->singleStep();
+  }
   afterFrame();
   message_ = "Single step";
 }
 
 void LabSession::reset() {
   runner_.reset();
+  if (partner_) partner_->reset();
   restartHistory();
   message_ = "Reset";
 }
@@ -48,6 +55,7 @@ void LabSession::switchScene(int index) {
     return;
   }
   runner_.setPaused(wasPaused);
+  rebuildPartner();
   sceneChanged();
 }
 
@@ -70,24 +78,33 @@ void LabSession::applyPreset(int index) {
     return;
   }
   runner_.reset();
+  rebuildPartner();
   restartHistory();
   message_ = "Preset " + std::to_string(index + 1) + ": " + preset.name;
 }
 
 void LabSession::drag(int handle, const Vec3& target) {
-  runner_.scene().drag(handle, target);
-  if (runner_.paused()) runner_.scene().refresh();
+  for (SceneRunner* r : {&runner_, partner_.get()}) {
+    if (!r) continue;
+    r->scene().drag(handle, target);
+    if (r->paused()) r->scene().refresh();
+  }
 }
 
 void LabSession::release(int handle) {
-  runner_.scene().release(handle);
-  if (runner_.paused()) runner_.scene().refresh();
+  for (SceneRunner* r : {&runner_, partner_.get()}) {
+    if (!r) continue;
+    r->scene().release(handle);
+    if (r->paused()) r->scene().refresh();
+  }
 }
 
 bool LabSession::nudge(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real sceneSize,
                        bool fine) {
   if (!nudgeScene(runner_.scene(), direction, right, up, forward, sceneSize, fine)) return false;
   if (runner_.paused()) runner_.scene().refresh();
+  if (partner_ && nudgeScene(partner_->scene(), direction, right, up, forward, sceneSize, fine) && partner_->paused())
+    partner_->scene().refresh();
   return true;
 }
 
@@ -109,6 +126,7 @@ bool LabSession::loadSceneFile(const std::string& path) {
   runner_.adopt(std::move(scene.scene), scene.name);
   fileError_.clear();
   message_ = "Loaded " + path;
+  rebuildPartner();
   sceneChanged();
   return true;
 }
@@ -127,9 +145,18 @@ void LabSession::afterFrame(bool dragging) {
   const bool stepped = runner_.steps() != historySteps_;
   if (!stepped && (runner_.paused() && !dragging)) return;
   nlohmann::json metrics = runner_.scene().metrics();
-  if (!runner_.paused() || dragging || stepped) plots_.record(runner_.simTime(), metrics);
+  nlohmann::json partnerMetrics = partner_ ? partner_->scene().metrics() : nlohmann::json();
+  if (!runner_.paused() || dragging || stepped) {
+    plots_.record(runner_.simTime(), metrics);
+    if (partner_) partnerPlots_.record(partner_->simTime(), partnerMetrics);
+  }
   if (stepped) {
-    history_.push(runner_.snapshot(), std::move(metrics));
+    RewindHistory::Frame frame{runner_.snapshot(), std::move(metrics)};
+    if (partner_) {
+      frame.partner = partner_->snapshot();
+      frame.partnerMetrics = std::move(partnerMetrics);
+    }
+    history_.push(std::move(frame));
     historySteps_ = runner_.steps();
   }
 }
@@ -142,11 +169,21 @@ void LabSession::scrubTo(std::size_t i) {
     return;
   }
   runner_.setPaused(true);
+  const RewindHistory::Frame& shown = history_.at(i);
+  if (partner_ && shown.partner) {
+    partner_->restore(*shown.partner);
+    partner_->setPaused(true);
+  }
   history_.setCursor(i);
   historySteps_ = runner_.steps();
   plots_.clear();
+  partnerPlots_.clear();
   const std::size_t first = i + 1 > plots_.capacity() ? i + 1 - plots_.capacity() : 0;
-  for (std::size_t k = first; k <= i; ++k) plots_.record(history_.at(k).state.simTime, history_.at(k).metrics);
+  for (std::size_t k = first; k <= i; ++k) {
+    const RewindHistory::Frame& f = history_.at(k);
+    plots_.record(f.state.simTime, f.metrics);
+    if (partner_ && f.partner) partnerPlots_.record(f.partner->simTime, f.partnerMetrics);
+  }
   message_ = "Rewound to t = " + formatFixed(runner_.simTime(), 3) + " s (frame " + std::to_string(i + 1) + " of " +
              std::to_string(history_.size()) + "): Space runs on from here";
 }
@@ -178,12 +215,78 @@ bool LabSession::takeFrameRequest() {
 
 void LabSession::restartHistory() {
   plots_.clear();
+  partnerPlots_.clear();
   history_.clear();
   historySteps_ = -1;
   if (!runner_.hasScene()) return;
   // The first frame of the history is the state at reset, so scrubbing can go back to t = 0.
-  history_.push(runner_.snapshot(), runner_.scene().metrics());
+  RewindHistory::Frame frame{runner_.snapshot(), runner_.scene().metrics()};
+  if (partner_ && partner_->hasScene()) {
+    frame.partner = partner_->snapshot();
+    frame.partnerMetrics = partner_->scene().metrics();
+  }
+  history_.push(std::move(frame));
   historySteps_ = runner_.steps();
+}
+
+void LabSession::startCompare(std::unique_ptr<SceneRunner> b, std::string sideA, std::string sideB) {
+  partner_ = std::move(b);
+  sideA_ = std::move(sideA);
+  sideB_ = std::move(sideB);
+  partner_->setPaused(runner_.paused());
+  restartHistory();
+}
+
+void LabSession::duplicateAsB() {
+  partner_ = std::make_unique<SceneRunner>();
+  sideA_.clear();
+  sideB_.clear();
+  rebuildPartner();
+  runner_.reset();
+  editingB_ = true;
+  restartHistory();
+  message_ = "B is a copy of A, both from the start: the panel now edits B";
+}
+
+void LabSession::endCompare() {
+  partner_.reset();
+  editingB_ = false;
+  restartHistory();
+  message_ = "A/B comparison ended";
+}
+
+void LabSession::rebuildPartner() {
+  if (!partner_) return;
+  // A keeps its own side's settings over a preset or another scene; B starts from A's parameters.
+  std::string problem;
+  auto apply = [&problem](SceneRunner& r, const std::string& text, const std::string& side) {
+    Result<std::vector<CompareSetting>> settings = parseCompareSide(text, side);
+    if (!settings) {
+      problem = settings.error();
+      return;
+    }
+    std::vector<CompareSetting> known;
+    for (const CompareSetting& c : settings.value())
+      if (c.name == "dt" || c.name == "substeps" || c.name == "time_scale" || r.scene().params().find(c.name))
+        known.push_back(c);
+    if (Status s = applyCompareSide(r, known, side); !s) problem = s.error();
+  };
+  apply(runner_, sideA_, "A");
+  auto b = std::make_unique<SceneRunner>();
+  if (Status s = b->load(runner_.sceneName(), seed_); !s) {
+    message_ = "B: " + s.error();
+    partner_.reset();
+    return;
+  }
+  b->setDt(runner_.dt());
+  b->setSubsteps(runner_.substeps());
+  b->setTimeScale(runner_.timeScale());
+  if (Status s = applyParams(b->scene(), runner_.scene().params().toJson(), "B"); !s) problem = s.error();
+  apply(*b, sideB_, "B");
+  b->reset();
+  b->setPaused(runner_.paused());
+  partner_ = std::move(b);
+  if (!problem.empty()) message_ = problem;
 }
 
 void LabSession::sceneChanged() {

@@ -3,6 +3,7 @@
 // reset, scene switch, presets, scene files). No GL and no ImGui here, so the actions are tested
 // headless (tests/app/lab_session_test.cpp).
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,23 @@ class LabSession {
   void stepForward();
   const RewindHistory& history() const { return history_; }
 
+  /// A/B runs (compare_run.h): B steps with A (pause, step, reset, presets, scene switches, drags and
+  /// rewind act on both), each side keeping its own settings.
+  void startCompare(std::unique_ptr<SceneRunner> b, std::string sideA, std::string sideB);
+  /// "Duplicate as B": B gets A's scene, parameters and settings; both start again from reset.
+  void duplicateAsB();
+  void endCompare();
+  bool comparing() const { return partner_ != nullptr; }
+  SceneRunner* partner() { return partner_.get(); }
+  const SceneRunner* partner() const { return partner_.get(); }
+  const PlotHistory& partnerPlots() const { return partnerPlots_; }
+  /// The side the parameter panel edits.
+  bool editingB() const { return editingB_ && partner_; }
+  void setEditingB(bool b) { editingB_ = b; }
+  SceneRunner& editedRunner() { return editingB() ? *partner_ : runner_; }
+  /// What A and B were started with ("dt=0.0167"); empty for a duplicate.
+  const std::string& sideText(bool b) const { return b ? sideB_ : sideA_; }
+
   /// A message for the status line (what just happened), and the last scene file error.
   const std::string& message() const { return message_; }
   const std::string& fileError() const { return fileError_; }
@@ -87,6 +105,12 @@ class LabSession {
   std::uint64_t seed_;
   PlotHistory plots_;
   RewindHistory history_;
+  std::unique_ptr<SceneRunner> partner_;
+  PlotHistory partnerPlots_;
+  std::string sideA_, sideB_;
+  bool editingB_ = false;
+  /// After a scene switch, preset or scene file: B takes the scene A has now, then each side its settings.
+  void rebuildPartner();
   std::int64_t historySteps_ = -1;  ///< the runner's step count at the newest frame pushed
   LabSettings settings_;
   std::vector<ExerciseInfo> exercises_;

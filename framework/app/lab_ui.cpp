@@ -13,6 +13,7 @@ namespace pba::app {
 namespace {
 
 using detail::kAlertRed;
+using detail::kCompareB;
 using detail::kWarnOrange;
 
 constexpr float kPanelWidth = 400.0f;         // [px at UI scale 1]
@@ -60,12 +61,26 @@ void helpMarker(const std::string& text) {
 }
 
 void parameterWidgets(LabSession& session) {
-  Scene& scene = session.runner().scene();
+  // In an A/B run the panel edits the side chosen under Simulation; a parameter where B differs from A
+  // has its name in B's colour.
+  Scene& scene = session.editedRunner().scene();
+  const nlohmann::json other = !session.comparing() ? nlohmann::json()
+                               : session.editingB() ? session.runner().scene().params().toJson()
+                                                    : session.partner()->scene().params().toJson();
+  const nlohmann::json mine = session.comparing() ? scene.params().toJson() : nlohmann::json();
   bool resetNeeded = false;
   for (Param& p : scene.params().all()) {
     if (p.shown && !p.shown()) continue;
     ImGui::PushID(p.name.c_str());
     const std::string label = p.unit.empty() ? p.name : p.name + " [" + p.unit + "]";
+    const bool differs = session.comparing() && other.contains(p.name) && other[p.name] != mine[p.name];
+    if (differs) ImGui::PushStyleColor(ImGuiCol_Text, kCompareB);
+    struct PopOnExit {
+      bool on;
+      ~PopOnExit() {
+        if (on) ImGui::PopStyleColor();
+      }
+    } pop{differs};
     if (p.kind == ParamKind::Text) {
       // Applied on Enter, so that a half-typed path is never loaded.
       char buffer[2048];  // long enough for a list of every joint name of a character
@@ -151,13 +166,32 @@ void sameLineIfFits(const char* nextLabel) {
   if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
 }
 
+void compareControls(LabSession& session) {
+  if (!session.comparing()) {
+    if (ImGui::Button("Duplicate as B")) session.duplicateAsB();
+    helpMarker(
+        "A/B run: a second copy of this scene beside the first, stepping with it. Change B's parameters "
+        "and watch both. From the command line: --compare \"dt=0.0167\" \"dt=0.0042\".");
+    return;
+  }
+  int side = session.editingB() ? 1 : 0;
+  ImGui::TextUnformatted("A/B: edit");
+  ImGui::SameLine();
+  if (ImGui::RadioButton("A", &side, 0)) session.setEditingB(false);
+  ImGui::SameLine();
+  if (ImGui::RadioButton("B", &side, 1)) session.setEditingB(true);
+  sameLineIfFits("End A/B");
+  if (ImGui::Button("End A/B")) session.endCompare();
+}
+
 void simulationControls(LabSession& session) {
-  SceneRunner& runner = session.runner();
+  SceneRunner& runner = session.editedRunner();
   if (ImGui::Button(runner.paused() ? "Run (Space)" : "Pause (Space)")) session.togglePause();
   sameLineIfFits("Step (O)");
   if (ImGui::Button("Step (O)")) session.singleStep();
   sameLineIfFits("Reset (R)");
   if (ImGui::Button("Reset (R)")) session.reset();
+  compareControls(session);
 
   double dt = runner.dt();
   const double dtMin = kMinDt * 10, dtMax = kMaxDt;
@@ -178,15 +212,27 @@ void simulationControls(LabSession& session) {
   ImGui::Text("t = %.3f s   steps = %lld", runner.simTime(), static_cast<long long>(runner.steps()));
 }
 
+void metricValue(const nlohmann::json& value) {
+  if (value.is_number_float())
+    ImGui::Text("%.5g", value.get<double>());
+  else if (value.is_string())
+    ImGui::TextUnformatted(value.get<std::string>().c_str());
+  else
+    ImGui::TextUnformatted(value.dump().c_str());
+}
+
 void metricsTable(LabSession& session, const UiState& ui) {
   const SceneRunner& runner = session.runner();
   ImGui::Text("frame %.2f ms   physics %.3f ms", ui.frameMs, runner.frameStats().last());
   const nlohmann::json metrics = runner.scene().metrics();
+  // An A/B run shows B's value beside A's, in B's colour.
+  const nlohmann::json metricsB = session.comparing() ? session.partner()->scene().metrics() : nlohmann::json();
   auto& plotted = session.settings().plotted;
-  if (ImGui::BeginTable("metrics", 3, ImGuiTableFlags_RowBg)) {
+  if (ImGui::BeginTable("metrics", session.comparing() ? 4 : 3, ImGuiTableFlags_RowBg)) {
     // Name and value share the width; the plot box keeps a fixed column so it is never cut off.
     ImGui::TableSetupColumn("metric", ImGuiTableColumnFlags_WidthStretch, 1.3f);
     ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    if (session.comparing()) ImGui::TableSetupColumn("B", ImGuiTableColumnFlags_WidthStretch, 1.0f);
     ImGui::TableSetupColumn("plot", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFrameHeight());
     for (const auto& [key, value] : metrics.items()) {
       ImGui::TableNextRow();
@@ -194,12 +240,13 @@ void metricsTable(LabSession& session, const UiState& ui) {
       ImGui::TextUnformatted(key.c_str());
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (tick the box to plot it)", key.c_str());
       ImGui::TableNextColumn();
-      if (value.is_number_float())
-        ImGui::Text("%.5g", value.get<double>());
-      else if (value.is_string())
-        ImGui::TextUnformatted(value.get<std::string>().c_str());
-      else
-        ImGui::TextUnformatted(value.dump().c_str());
+      metricValue(value);
+      if (session.comparing()) {
+        ImGui::TableNextColumn();
+        ImGui::PushStyleColor(ImGuiCol_Text, kCompareB);
+        if (metricsB.contains(key)) metricValue(metricsB[key]);
+        ImGui::PopStyleColor();
+      }
       ImGui::TableNextColumn();
       if (value.is_number() || value.is_boolean()) {
         bool on = std::find(plotted.begin(), plotted.end(), key) != plotted.end();

@@ -74,6 +74,8 @@ LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, floa
 // Pieces of drawLabUi in lab_overlays.cpp (plots, legend, notice, banners).
 namespace detail {
 inline const ImVec4 kAlertRed{0.80f, 0.12f, 0.10f, 1.0f};
+/// B's colour in A/B runs (captions, plot lines, metric values, differing parameters); A keeps the plot blue.
+inline const ImVec4 kCompareB{0.82f, 0.40f, 0.0f, 1.0f};
 inline const ImVec4 kWarnOrange{0.85f, 0.45f, 0.0f, 1.0f};
 /// Draws the plot window in the lower right; returns its top [pixels] (the display height when none)
 /// and its left edge in `left` (the display width when none).

@@ -54,7 +54,8 @@ int runRewindCheck(const std::string& lab, const LabOptions& o, SceneRunner& run
     }
   }
   std::cout << "rewind ok: " << lab << "/" << runner.sceneName() << ": state " << formatFixed(bytes / 1024.0, 1)
-            << " KiB saved in " << formatFixed(saveMs, 3) << " ms; " << n << " frames run again twice after restoring agree bit for bit (draw hash "
+            << " KiB saved in " << formatFixed(saveMs, 3) << " ms; " << n
+            << " frames run again twice after restoring agree bit for bit (draw hash "
             << a["draw_hash"].get<std::string>() << ", " << a["steps"] << " steps)\n";
   return kExitOk;
 }

@@ -2,14 +2,14 @@
 
 namespace pba::app {
 
-void RewindHistory::push(RunnerSnapshot state, nlohmann::json metrics) {
+void RewindHistory::push(Frame frame) {
   while (!atNewest()) {
     bytes_ -= frames_.back().bytes;
     frames_.pop_back();
   }
-  Frame frame{std::move(state), std::move(metrics), 0};
   // The metrics' text is a fair measure of what their tree holds (a few dozen numbers).
   frame.bytes = frame.state.bytes() + sizeof(Frame) + frame.metrics.dump().size();
+  if (frame.partner) frame.bytes += frame.partner->bytes() + frame.partnerMetrics.dump().size();
   bytes_ += frame.bytes;
   frames_.push_back(std::move(frame));
   while (frames_.size() > 1 && (frames_.size() > maxFrames_ || bytes_ > maxBytes_)) {

@@ -5,6 +5,7 @@
 // goes on from the scrubbed point as a new branch. No GL, no ImGui: tested headless.
 #include <cstddef>
 #include <deque>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -20,8 +21,10 @@ class RewindHistory {
  public:
   struct Frame {
     RunnerSnapshot state;
-    nlohmann::json metrics;  ///< the scene's metrics at that frame (the plots are rebuilt from them)
-    std::size_t bytes = 0;   ///< state and metrics [bytes]
+    nlohmann::json metrics;                 ///< the scene's metrics at that frame (the plots are rebuilt from them)
+    std::size_t bytes = 0;                  ///< state and metrics [bytes], both sides of an A/B run
+    std::optional<RunnerSnapshot> partner;  ///< B's state in an A/B run
+    nlohmann::json partnerMetrics;
   };
 
   explicit RewindHistory(std::size_t maxBytes = kRewindMaxBytes, std::size_t maxFrames = kRewindMaxFrames)
@@ -30,7 +33,8 @@ class RewindHistory {
   /// Appends the state after a frame; first drops the frames after the cursor, then the oldest ones
   /// beyond the bounds (the newest frame is always kept, even alone over the byte bound). The cursor
   /// moves to the new frame.
-  void push(RunnerSnapshot state, nlohmann::json metrics);
+  void push(RunnerSnapshot state, nlohmann::json metrics) { push(Frame{std::move(state), std::move(metrics)}); }
+  void push(Frame frame);
   void clear();
 
   std::size_t size() const { return frames_.size(); }

@@ -102,8 +102,18 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
     const std::vector<double> series = session.plots().series(name);
     if (!series.empty()) plots[name] = {{"samples", series.size()}, {"last", series.back()}};
   }
+  nlohmann::json compare = nullptr;
+  if (const SceneRunner* b = session.partner())
+    compare = {{"steps", b->steps()},
+               {"sim_time_s", b->simTime()},
+               {"paused", b->paused()},
+               {"scene", b->sceneName()},
+               {"params", b->scene().params().toJson()},
+               {"metrics", b->scene().metrics()},
+               {"editing_b", session.editingB()}};
   return {{"frame", f.frame},
           {"history", history},
+          {"compare", compare},
           {"plots", plots},
           {"steps", runner.steps()},
           {"sim_time_s", runner.simTime()},

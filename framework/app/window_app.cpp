@@ -15,6 +15,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include "app/compare_run.h"
 #include "app/lab.h"
 #include "app/lab_session.h"
 #include "app/lab_ui.h"
@@ -63,13 +64,13 @@ struct ImGuiContextGuard {
 // of its anchor so it never covers what it labels, on a light halo for contrast, and kept inside
 // `area` (the part of the window the panels leave free) so none runs off an edge.
 void drawLabels(const graphics::DebugRenderer& debug, const graphics::OrbitCamera& camera, float w, float h,
-                const LabelBox& area) {
+                const LabelBox& area, float offsetX) {
   ImDrawList* list = ImGui::GetBackgroundDrawList();
   const float gap = 0.3f * ImGui::GetFontSize(), halo = 0.15f * ImGui::GetFontSize();
   for (const graphics::ScreenLabel& label : debug.projectLabels(camera, w, h)) {
     if (!label.visible) continue;
     const ImVec2 size = ImGui::CalcTextSize(label.text.c_str());
-    const LabelBox box = placeLabel(label.pixel.x, label.pixel.y, size.x, size.y, gap, area);
+    const LabelBox box = placeLabel(label.pixel.x + offsetX, label.pixel.y, size.x, size.y, gap, area);
     list->AddRectFilled(ImVec2(box.x0 - halo, box.y0 - halo), ImVec2(box.x1 + halo, box.y1 + halo),
                         IM_COL32(255, 255, 255, 190), halo);
     const ImU32 colour =
@@ -89,12 +90,14 @@ std::string timestampedScreenshotName(const std::string& lab, const std::string&
 // plot panel in the lower right corner, so that neither covers it.
 // Frames the scene's bounds in the part of the window the panels leave free: the controls on the
 // left (panelPixels), a scene's own column on the right (overlayPixels), the plots at the bottom.
+// A scene's preferred view is made for the free part of a full window; a narrower view (one half of an
+// A/B run) steps back by `widen` so the same picture fits.
 void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 viewport, float panelPixels,
-                 float overlayPixels, bool plotsShown) {
+                 float overlayPixels, bool plotsShown, float widen = 1.0f) {
   const float aspect = viewport.y > 0.0f ? viewport.x / viewport.y : 1.0f;
   if (const std::optional<CameraView> view = scene.preferredView()) {
     camera.target = glm::vec3(view->target);
-    camera.distance = static_cast<float>(view->distance);
+    camera.distance = static_cast<float>(view->distance) * widen;
     camera.yaw = static_cast<float>(view->yaw);
     camera.pitch = static_cast<float>(view->pitch);
     camera.clampState();
@@ -117,13 +120,41 @@ void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 vi
   }
 }
 
+// An A/B run's caption at the top of its view: which side, and what it was started with or where it differs.
+void compareCaption(const std::string& text, float x0, float width, bool b) {
+  ImDrawList* list = ImGui::GetBackgroundDrawList();
+  const float pad = 0.4f * ImGui::GetFontSize();
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  const ImVec2 at(x0 + 0.5f * (width - size.x), pad);
+  list->AddRectFilled(ImVec2(at.x - pad, at.y - 0.5f * pad), ImVec2(at.x + size.x + pad, at.y + size.y + 0.5f * pad),
+                      b ? IM_COL32(255, 236, 214, 230) : IM_COL32(222, 234, 255, 230), pad);
+  list->AddText(at, b ? IM_COL32(150, 70, 0, 255) : IM_COL32(20, 60, 140, 255), text.c_str());
+  if (b)  // the seam between the two views
+    list->AddLine(ImVec2(x0, 0.0f), ImVec2(x0, ImGui::GetIO().DisplaySize.y), IM_COL32(90, 90, 90, 255), 2.0f);
+}
+
+std::string compareText(const LabSession& session, bool b) {
+  std::string text = b ? "B" : "A";
+  const std::string& side = session.sideText(b);
+  if (!side.empty()) return text + "   " + side;
+  if (!b) return text;
+  std::string differences;
+  for (const std::string& d : compareDifferences(session.runner(), *session.partner()))
+    differences += (differences.empty() ? "" : "  ") + d;
+  return text + "   " + (differences.empty() ? "same as A" : differences);
+}
+
 }  // namespace
 
-int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner) {
+int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& runner, SceneRunner* partner) {
   const bool recordCli = !options.record.empty();
   const bool capture = !options.screenshot.empty() || recordCli;
   const std::string settingsDir = capture ? std::string() : settingsDirectory(lab);
   LabSession session(lab, runner, options.seed);
+  if (partner)
+    session.startCompare(std::make_unique<SceneRunner>(std::move(*partner)),
+                         options.compare ? options.compare->first : std::string(),
+                         options.compare ? options.compare->second : std::string());
   session.settings() = loadLabSettings(settingsDir);
   session.setExercises(loadExercises(std::string(PBA_RESOURCE_DIR) + "/exercises.tsv", lab));
   if (!capture && options.scene.empty() && !session.settings().lastScene.empty()) {
@@ -199,32 +230,54 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
 
-    if (!capture) input.update(session, ui, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
     const float panelPixels = ui.hideUi ? 0.0f : panelWidthPixels(ui);
     const float overlayPixels = ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(ui);
+    // A/B: the part of the window the panels leave free, split in two views with one camera.
+    const bool split = session.comparing();
+    const float viewLeft = split ? panelPixels : 0.0f;
+    const float viewWidth = split ? 0.5f * (static_cast<float>(ws.x) - overlayPixels - panelPixels) : float(ws.x);
+    input.setSplit(split ? std::optional<std::pair<float, float>>({viewLeft, viewWidth}) : std::nullopt);
+    if (!capture) input.update(session, ui, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
     if (session.takeFrameRequest() || ui.frameRequested) {
-      frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels,
-                  !ui.hideUi && !session.settings().plotted.empty());
+      if (split)
+        frameCamera(camera, runner.scene(), glm::vec2(viewWidth, ws.y), 0.0f, 0.0f, false,
+                    (static_cast<float>(ws.x) - panelPixels - overlayPixels) / std::max(viewWidth, 1.0f));
+      else
+        frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels,
+                    !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }
     // Captures and recordings advance exactly one display frame of simulated time per frame.
     const bool fixedFrames = capture || recording.active();
-    runner.advanceFrame(fixedFrames ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds),
-                        fixedFrames ? -1 : kMaxStepsPerFrame);
+    const Real frameSeconds = fixedFrames ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds);
+    runner.advanceFrame(frameSeconds, fixedFrames ? -1 : kMaxStepsPerFrame);
+    if (SceneRunner* b = session.partner()) b->advanceFrame(frameSeconds, fixedFrames ? -1 : kMaxStepsPerFrame);
     session.afterFrame(input.dragging());  // plots and the rewind history
 
-    renderer->beginFrame(camera, fb.x, fb.y);
-    SceneDraw draw(debug);
-    runner.scene().draw(draw);
-    debug.flush(*renderer);
-    const LabelBox labelArea{panelPixels, 0.0f, static_cast<float>(ws.x) - overlayPixels, static_cast<float>(ws.y)};
-    drawLabels(debug, camera, static_cast<float>(ws.x), static_cast<float>(ws.y), labelArea);
+    // One view, or A and B side by side: each drawn into its own viewport (framebuffer pixels).
+    const float toFb = ws.x > 0 ? static_cast<float>(fb.x) / static_cast<float>(ws.x) : 1.0f;
     UiFrame status{frame + 1, glm::vec2(ws), input.pickedHandle()};
-    status.hasBounds = debug.bounds(&status.boundsMin, &status.boundsMax);
-    debug.clear();
+    auto drawView = [&](const Scene& scene, float x0, bool first) {
+      renderer->beginFrame(camera, static_cast<int>(viewWidth * toFb), fb.y, static_cast<int>(x0 * toFb), 0);
+      SceneDraw draw(debug);
+      scene.draw(draw);
+      debug.flush(*renderer);
+      const LabelBox area =
+          split ? LabelBox{x0, 0.0f, x0 + viewWidth, static_cast<float>(ws.y)}
+                : LabelBox{panelPixels, 0.0f, static_cast<float>(ws.x) - overlayPixels, static_cast<float>(ws.y)};
+      drawLabels(debug, camera, viewWidth, static_cast<float>(ws.y), area, x0);
+      if (first) status.hasBounds = debug.bounds(&status.boundsMin, &status.boundsMax);
+      debug.clear();
+      renderer->endFrame();
+    };
+    drawView(runner.scene(), viewLeft, true);
+    if (split) {
+      drawView(session.partner()->scene(), viewLeft + viewWidth, false);
+      compareCaption(compareText(session, false), viewLeft, viewWidth, false);
+      compareCaption(compareText(session, true), viewLeft + viewWidth, viewWidth, true);
+    }
     drawLabUi(session, ui);
     ImGui::Render();
-    renderer->endFrame();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     ++frame;

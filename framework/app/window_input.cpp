@@ -104,7 +104,12 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
 
 void WindowInput::mouse(LabSession& session, graphics::OrbitCamera& camera, float w, float h) {
   const ImGuiIO& io = ImGui::GetIO();
-  const ImVec2 cursor = io.MousePos;
+  ImVec2 cursor = io.MousePos;
+  if (split_) {  // the cursor in the coordinates of the view it is over
+    const auto [x0, width] = *split_;
+    cursor.x -= cursor.x >= x0 + width ? x0 + width : x0;
+    w = width;
+  }
   const bool overUi = io.WantCaptureMouse && !handle_;
   Scene& scene = session.runner().scene();
 

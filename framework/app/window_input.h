@@ -2,6 +2,7 @@
 // Keys and mouse of docs/architecture.md §3, the same in every lab. Reads ImGui's input state (ImGui 1.86:
 // keys are indexed by GLFW key codes) so that typing in a text field never triggers a lab key.
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "app/lab_session.h"
@@ -20,6 +21,9 @@ class WindowInput {
   void install(GLFWwindow* window);
   /// Handles this frame's keys and mouse. viewport: window size in screen coordinates.
   void update(LabSession& session, UiState& ui, graphics::OrbitCamera& camera, float viewportW, float viewportH);
+  /// A/B runs: two views side by side, each `width` wide, the first from x = x0 [screen coordinates]. The
+  /// cursor is read in the view it is over; both views share the camera, so a pick there is the same ray.
+  void setSplit(std::optional<std::pair<float, float>> x0AndWidth) { split_ = x0AndWidth; }
   bool dragging() const { return handle_.has_value(); }
   /// The object being dragged, else the one dragged last (the UI status reports it).
   std::optional<int> pickedHandle() const { return handle_ ? handle_ : lastHandle_; }
@@ -40,6 +44,7 @@ class WindowInput {
   Vec3 planePoint_{0.0};           ///< the drag plane faces the camera through the picked point
   Vec3 planeNormal_{0.0, 0.0, 1.0};
   Vec3 grabOffset_{0.0};  ///< [m] object position − grab point (Scene::dragHandles), kept while dragging
+  std::optional<std::pair<float, float>> split_;
 };
 
 }  // namespace pba::app

@@ -105,9 +105,10 @@ Renderer::~Renderer() {
 
 float Renderer::lineWidth() const { return settings_.lineWidthPx * (settings_.lectureMode ? 2.0f : 1.0f); }
 
-void Renderer::beginFrame(const OrbitCamera& camera, int viewportW, int viewportH) {
+void Renderer::beginFrame(const OrbitCamera& camera, int viewportW, int viewportH, int originX, int originY) {
   camera_ = camera;
   viewport_ = glm::ivec2(std::max(viewportW, 1), std::max(viewportH, 1));
+  origin_ = glm::ivec2(originX, originY);
   viewProj_ = camera.projection(static_cast<float>(viewport_.x) / static_cast<float>(viewport_.y)) * camera.view();
   for (MeshBatch& batch : batches_) batch.instances.clear();
   skinned_.clear();
@@ -287,7 +288,9 @@ void Renderer::drawGrid() {
 
 void Renderer::colorPass() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, viewport_.x, viewport_.y);
+  glViewport(origin_.x, origin_.y, viewport_.x, viewport_.y);
+  glEnable(GL_SCISSOR_TEST);  // the clear below stays inside this view
+  glScissor(origin_.x, origin_.y, viewport_.x, viewport_.y);
   glDepthMask(GL_TRUE);
   const glm::vec3 top = settings_.lectureMode ? kLectureBackgroundTop : settings_.backgroundTop;
   const glm::vec3 bottom = settings_.lectureMode ? kLectureBackgroundBottom : settings_.backgroundBottom;
@@ -334,6 +337,7 @@ void Renderer::colorPass() {
   building_.drawCalls += (lines_->lineCount() > 0 ? 1 : 0) + (lines_->pointCount() > 0 ? 1 : 0);
   glDepthMask(GL_TRUE);
   glActiveTexture(GL_TEXTURE0);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void Renderer::endFrame() {

@@ -49,7 +49,10 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  void beginFrame(const OrbitCamera& camera, int viewportW, int viewportH);
+  /// Starts a frame in the viewport of viewportW × viewportH pixels whose lower-left corner is at
+  /// (originX, originY) of the framebuffer (GL's convention); only that rectangle is cleared, so two
+  /// views side by side (A/B runs) are two frames into one framebuffer.
+  void beginFrame(const OrbitCamera& camera, int viewportW, int viewportH, int originX = 0, int originY = 0);
   void drawSphere(const glm::vec3& center, float radius, const glm::vec4& color);
   void drawBox(const glm::vec3& center, const glm::vec3& halfExtents, const glm::quat& rotation,
                const glm::vec4& color);
@@ -113,6 +116,7 @@ class Renderer {
   std::size_t streamedUsed_ = 0;
   OrbitCamera camera_;
   glm::ivec2 viewport_{1, 1};
+  glm::ivec2 origin_{0, 0};
   glm::mat4 viewProj_{1.0f};
   glm::vec3 boundsMin_{0.0f}, boundsMax_{0.0f};
   bool inFrame_ = false;

@@ -2,6 +2,7 @@
 //   pba_lab_check metrics FILE LAB [SCENE]   the metrics JSON has the shape of docs/architecture.md §4
 //   pba_lab_check same A B                   two metrics files agree except for timings
 //   pba_lab_check image FILE.png             the screenshot is not blank
+//   pba_lab_check same-sides|different-sides FILE LAB   an A/B report's runs agree / differ
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -74,6 +75,30 @@ int checkSame(const std::string& a, const std::string& b) {
   return 1;
 }
 
+// An A/B report (--compare): "a" and "b" are each a full report of their run, "compare" says what the sides
+// were; `same` says whether the two runs must agree (timings aside) or differ.
+int checkSides(const std::string& path, const std::string& lab, bool same) {
+  json m;
+  if (!load(path, m)) return 1;
+  for (const char* k : {"a", "b", "compare"}) {
+    if (!m.contains(k) || !m[k].is_object()) {
+      std::cerr << path << ": no \"" << k << "\" object\n";
+      return 1;
+    }
+  }
+  if (!m["a"].contains(lab) || !m["b"].contains(lab)) {
+    std::cerr << path << ": a or b has no scene metrics under '" << lab << "'\n";
+    return 1;
+  }
+  const json a = pba::app::withoutTimings(m["a"]), b = pba::app::withoutTimings(m["b"]);
+  if ((a == b) != same) {
+    std::cerr << path << ": A and B " << (same ? "differ" : "agree") << (same ? ": " + json::diff(a, b).dump() : "")
+              << '\n';
+    return 1;
+  }
+  return 0;
+}
+
 int checkImage(const std::string& path) {
   std::string error;
   pba::graphics::ImageStats s;
@@ -100,6 +125,9 @@ int main(int argc, char** argv) {
   if (mode == "metrics" && (argc == 4 || argc == 5)) return checkMetrics(argv[2], argv[3], argc == 5 ? argv[4] : "");
   if (mode == "same" && argc == 4) return checkSame(argv[2], argv[3]);
   if (mode == "image" && argc == 3) return checkImage(argv[2]);
-  std::cerr << "usage: pba_lab_check metrics FILE LAB [SCENE] | same A B | image FILE.png\n";
+  if ((mode == "same-sides" || mode == "different-sides") && argc == 4)
+    return checkSides(argv[2], argv[3], mode == "same-sides");
+  std::cerr << "usage: pba_lab_check metrics FILE LAB [SCENE] | same A B | image FILE.png | same-sides FILE LAB | "
+               "different-sides FILE LAB\n";
   return 2;
 }

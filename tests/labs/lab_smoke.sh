@@ -76,6 +76,24 @@ case "$check" in
     done
     echo "ok: every scene restores its state and runs on bit for bit"
     ;;
+  compare)
+    # A/B runs headless: equal sides give equal runs in every scene; a different dt gives different runs
+    # (checked on scenes that move with time: the metrics of the first 30 frames change); bad sides exit 2.
+    for s in $(scenes); do
+      "$exe" --headless --scene "$s" --frames 30 --compare "" "" --metrics "$work/$s.json" 2>"$work/$s.err"
+      ran_ok $? "$work/$s.json" || fail "scene $s --compare: $(cat "$work/$s.err")"
+      "$checker" same-sides "$work/$s.json" "$lab" || fail "scene $s: equal sides gave different runs"
+    done
+    first="$(scenes | head -n 1)"
+    "$exe" --headless --scene "$first" --frames 30 --compare "dt=0.01" "dt=0.002" --metrics "$work/dt.json" 2>"$work/dt.err"
+    ran_ok $? "$work/dt.json" || fail "--compare dt: $(cat "$work/dt.err")"
+    grep -q '"differences"' "$work/dt.json" || fail "--compare: the report does not say where B differs"
+    "$checker" different-sides "$work/dt.json" "$lab" || fail "scene $first: dt=0.01 and dt=0.002 gave equal runs"
+    expect_exit 2 "--compare B: no_such_param: not a parameter" --headless --compare "" "no_such_param=1"
+    expect_exit 2 "--compare A: dt: must be in" --headless --compare "dt=7" ""
+    expect_exit 2 "--compare A: expected NAME=VALUE" --headless --compare "dt" ""
+    echo "ok: A/B runs with equal sides agree in every scene; bad sides exit 2"
+    ;;
   bad-scene-file)
     first="$(scenes | head -n 1)"
     printf '{\n  "lab": "%s",\n  "scene": "%s",,\n}\n' "$lab" "$first" >"$work/syntax.json"
@@ -136,7 +154,11 @@ case "$check" in
     [[ $rc -eq 2 ]] || fail "without ffmpeg --record b.mp4 exited $rc, expected 2"
     grep -q "b.mp4: recording MP4 or GIF needs ffmpeg, which is not installed (apt-get install ffmpeg)" "$work/noff.err" ||
       fail "without ffmpeg the message is: $(cat "$work/noff.err")"
-    echo "ok: MP4 (120 frames, 1280x720), 10 PNG files, a GIF; no ffmpeg: exit 2 naming the package"
+    # The A/B window: two views side by side, the metrics of both sides.
+    "${run[@]}" "$exe" --compare "dt=0.0167" "dt=0.004" --frames 60 --screenshot "$work/ab.png" --metrics "$work/ab.json" \
+      2>"$work/ab.err" || fail "--compare window exited $?: $(cat "$work/ab.err")"
+    "$checker" image "$work/ab.png" || fail "ab.png looks blank"
+    echo "ok: MP4 (120 frames, 1280x720), 10 PNG files, a GIF; no ffmpeg: exit 2 naming the package; an A/B window"
     ;;
   *) fail "unknown check $check" ;;
 esac
