@@ -138,6 +138,12 @@ pba_cmd_sweep() {
   "$(pba_python)" "$ROOT/tools/sweep.py" "$@"
 }
 
+pba_cmd_demo() {
+  pba_ensure_packages
+  pba_build release
+  bash "$ROOT/tools/demo.sh" "$ROOT" "$ROOT/build/release" "$@"
+}
+
 pba_cmd_screenshots() {
   pba_ensure_packages
   pba_build release

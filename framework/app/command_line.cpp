@@ -106,6 +106,18 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       if (!r || r.value() > kMaxFrames)
         return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
       o.frames = r.value();
+    } else if (arg == "--demo") {
+      s = next(o.demo);
+    } else if (arg == "--demo-next") {
+      s = next(o.demoNext);
+    } else if (arg == "--demo-check") {
+      s = flagOnly();
+      o.demoCheck = true;
+    } else if (arg == "--demo-step") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parseWhole(arg, v, 1);
+      if (!r || r.value() > 10000) return Error{"--demo-step: expected a step number in [1, 10000], got '" + v + "'"};
+      o.demoStep = r.value();
     } else if (arg == "--check-rewind") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
@@ -175,6 +187,10 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
   if (!o.record.empty() && !o.screenshot.empty()) return Error{"--record and --screenshot: give one or the other"};
   if (o.checkRewind && !o.headless) return Error{"--check-rewind runs headless: add --headless"};
   if (o.checkRewind && o.compare) return Error{"--check-rewind and --compare: give one or the other"};
+  if (o.demo.empty() && (o.demoCheck || !o.demoNext.empty()))
+    return Error{"--demo-check and --demo-next go with --demo FILE"};
+  if (!o.demo.empty() && (!o.scene.empty() || o.compare))
+    return Error{"--demo: the script chooses the scenes (drop --scene and --compare)"};
   return o;
 }
 

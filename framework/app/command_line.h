@@ -50,6 +50,13 @@ struct LabOptions {
   std::optional<std::pair<std::string, std::string>> compare;
   /// --check-rewind N (headless): run N frames, save, run N, restore, run N again; the states must agree.
   std::optional<long> checkRewind;
+  /// --demo FILE: play a lecture demo script (demo_script.h) from step demoStep (1-based); --demo-next PATH
+  /// receives the step to go on with when the next one belongs to another lab (./pba demo starts it);
+  /// --demo-check validates this lab's steps and exits.
+  std::string demo;
+  long demoStep = 1;
+  std::string demoNext;
+  bool demoCheck = false;
   /// Parameter overrides in command line order.
   std::vector<ParamOverride> overrides;
   /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.

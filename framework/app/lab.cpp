@@ -124,6 +124,7 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
     }
     exercises::runProbes();  // stubs record themselves: banner, Exercises panel, "not_implemented"
     SceneRunner runner;
+    if (!o.demo.empty()) return runDemo(lab, o, runner);
     if (Status s = prepareRunner(lab, o, runner); !s) {
       std::cerr << "pba-" << lab << ": " << s.error() << '\n';
       return kExitBadInput;

@@ -34,6 +34,12 @@ Status prepareCompare(const std::string& lab, const LabOptions& options, SceneRu
 /// the report of one run) and "compare" (the two sides' settings and where B differs).
 int runCompareHeadless(const std::string& lab, const LabOptions& options, SceneRunner& a, SceneRunner& b);
 
+struct DemoScript;
+/// --demo FILE (demo_run.cpp): validates this lab's steps (--demo-check) or opens on step --demo-step.
+int runDemo(const std::string& lab, const LabOptions& options, SceneRunner& runner);
+/// Loads step `index` of a demo script into `runner` (scene, parameters, dt, paused). Errors name the step.
+Status prepareDemoStep(SceneRunner& runner, const DemoScript& script, std::size_t index, std::uint64_t seed);
+
 /// Opens the window (defined by the window module). With options.screenshot set, renders
 /// options.frameCount() frames, saves the PNG and returns. With `partner` (an A/B run) both scenes are
 /// shown side by side and step together.

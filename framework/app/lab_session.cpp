@@ -108,6 +108,12 @@ bool LabSession::nudge(NudgeDirection direction, const Vec3& right, const Vec3& 
   return true;
 }
 
+void LabSession::adoptScene(std::unique_ptr<Scene> scene, std::string name) {
+  runner_.adopt(std::move(scene), std::move(name));
+  rebuildPartner();
+  sceneChanged();
+}
+
 bool LabSession::loadSceneFile(const std::string& path) {
   Result<LoadedScene> loaded = app::loadSceneFile(path, lab_);
   if (!loaded) {
@@ -126,13 +132,15 @@ bool LabSession::loadSceneFile(const std::string& path) {
   runner_.adopt(std::move(scene.scene), scene.name);
   fileError_.clear();
   message_ = "Loaded " + path;
+  if (scene.camera) cameraRequest_ = scene.camera;
   rebuildPartner();
   sceneChanged();
   return true;
 }
 
 bool LabSession::saveSceneFile(const std::string& path) {
-  if (Status s = app::saveSceneFile(path, lab_, runner_.sceneName(), runner_.scene(), runner_.dt()); !s) {
+  if (Status s = app::saveSceneFile(path, lab_, runner_.sceneName(), runner_.scene(), runner_.dt(), currentCamera_);
+      !s) {
     fileError_ = s.error();
     return false;
   }

@@ -43,6 +43,8 @@ class LabSession {
   bool nudge(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real sceneSize,
              bool fine);
 
+  /// Shows an already configured scene (a demo step): adopted, reset, B rebuilt, the camera framed.
+  void adoptScene(std::unique_ptr<Scene> scene, std::string name);
   /// Loads a scene file. On error the running scene stays and the error is kept for the UI.
   bool loadSceneFile(const std::string& path);
   /// Saves the current scene's parameters as a scene file.
@@ -90,6 +92,16 @@ class LabSession {
   const std::vector<ExerciseInfo>& exercises() const { return exercises_; }
   void setExercises(std::vector<ExerciseInfo> list) { exercises_ = std::move(list); }
 
+  /// Camera bookmarks: the window reports its camera every frame (saved with a scene file), and takes
+  /// the camera of a scene file that has one once it is loaded.
+  void setCurrentCamera(const CameraView& view) { currentCamera_ = view; }
+  void requestCamera(const CameraView& view) { cameraRequest_ = view; }
+  std::optional<CameraView> takeCameraRequest() {
+    std::optional<CameraView> v = cameraRequest_;
+    cameraRequest_.reset();
+    return v;
+  }
+
   /// Set when another scene is loaded (switch or scene file): the window frames the camera on it.
   /// A reset keeps the camera where the user put it.
   bool takeFrameRequest();
@@ -109,6 +121,8 @@ class LabSession {
   PlotHistory partnerPlots_;
   std::string sideA_, sideB_;
   bool editingB_ = false;
+  std::optional<CameraView> currentCamera_;
+  std::optional<CameraView> cameraRequest_;
   /// After a scene switch, preset or scene file: B takes the scene A has now, then each side its settings.
   void rebuildPartner();
   std::int64_t historySteps_ = -1;  ///< the runner's step count at the newest frame pushed

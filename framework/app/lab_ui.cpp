@@ -41,6 +41,7 @@ const char* const kKeys[][2] = {
     {"F", "frame the scene"},
     {"Arrow keys", "nudge the target (IK goal) in the view plane"},
     {"PageUp / PageDown, Shift + Up / Down", "nudge the target away from / toward the camera"},
+    {"PageDown / PageUp (demo)", "next / previous step of a demo script; N shows or hides the notes"},
     {"Ctrl + nudge key", "fine nudge (one fifth of the step)"},
     {"Left drag", "pick and drag an object"},
     {"Right drag", "orbit the camera"},

@@ -3,6 +3,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/camera_json.h"
 #include "app/scene_registry.h"
 #include "app/scene_runner.h"
 
@@ -50,8 +51,8 @@ Result<LoadedScene> parseSceneJson(const std::string& text, const std::string& p
   }
   if (!doc.is_object()) return fileError(path, "expected a JSON object at the top level");
   for (const auto& [key, value] : doc.items()) {
-    if (key != "lab" && key != "scene" && key != "dt" && key != "params" && key != "description")
-      return fileError(path, key + ": unknown key (expected lab, scene, dt, params, description)");
+    if (key != "lab" && key != "scene" && key != "dt" && key != "params" && key != "description" && key != "camera")
+      return fileError(path, key + ": unknown key (expected lab, scene, dt, params, camera, description)");
   }
   if (!doc.contains("lab") || !doc["lab"].is_string()) return fileError(path, "lab: missing or not a string");
   if (doc["lab"].get<std::string>() != lab)
@@ -71,6 +72,11 @@ Result<LoadedScene> parseSceneJson(const std::string& text, const std::string& p
   if (doc.contains("params")) {
     if (Status s = applyParams(*out.scene, doc["params"], "params"); !s) return fileError(path, s.error());
   }
+  if (doc.contains("camera")) {
+    Result<CameraView> camera = cameraFromJson(doc["camera"], "camera");
+    if (!camera) return fileError(path, camera.error());
+    out.camera = camera.value();
+  }
   return out;
 }
 
@@ -82,21 +88,22 @@ Result<LoadedScene> loadSceneFile(const std::string& path, const std::string& la
   return parseSceneJson(buffer.str(), path, lab);
 }
 
-nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene,
-                           std::optional<Real> dt) {
+nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene, std::optional<Real> dt,
+                           std::optional<CameraView> camera) {
   nlohmann::json doc;
   doc["lab"] = lab;
   doc["scene"] = name;
   if (dt) doc["dt"] = *dt;
   doc["params"] = scene.params().toJson();
+  if (camera) doc["camera"] = cameraToJson(*camera);
   return doc;
 }
 
 Status saveSceneFile(const std::string& path, const std::string& lab, const std::string& name, const Scene& scene,
-                     std::optional<Real> dt) {
+                     std::optional<Real> dt, std::optional<CameraView> camera) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) return fileError(path, "cannot write the file");
-  out << sceneToJson(lab, name, scene, dt).dump(2) << '\n';
+  out << sceneToJson(lab, name, scene, dt, camera).dump(2) << '\n';
   if (!out) return fileError(path, "write failed");
   return Status::success();
 }

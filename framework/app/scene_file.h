@@ -14,9 +14,10 @@
 namespace pba::app {
 
 struct LoadedScene {
-  std::unique_ptr<Scene> scene;  ///< created and configured, not yet reset
-  std::string name;              ///< registered scene name
-  std::optional<Real> dt;        ///< [s] when the file sets one
+  std::unique_ptr<Scene> scene;      ///< created and configured, not yet reset
+  std::string name;                  ///< registered scene name
+  std::optional<Real> dt;            ///< [s] when the file sets one
+  std::optional<CameraView> camera;  ///< the file's camera bookmark, when it has one (camera_json.h)
 };
 
 /// Builds a scene from a file. Errors read "<path>: <field>: <problem>" (with the line for syntax errors).
@@ -25,10 +26,11 @@ Result<LoadedScene> loadSceneFile(const std::string& path, const std::string& la
 Result<LoadedScene> parseSceneJson(const std::string& text, const std::string& path, const std::string& lab);
 
 /// The file contents for the scene's current parameters.
-nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene, std::optional<Real> dt);
+nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene, std::optional<Real> dt,
+                           std::optional<CameraView> camera = std::nullopt);
 /// Writes sceneToJson() pretty-printed. Error names the path.
 Status saveSceneFile(const std::string& path, const std::string& lab, const std::string& name, const Scene& scene,
-                     std::optional<Real> dt);
+                     std::optional<Real> dt, std::optional<CameraView> camera = std::nullopt);
 
 /// Applies a JSON object of parameters (scene file "params" or a preset); messages use fieldPrefix.
 Status applyParams(Scene& scene, const nlohmann::json& params, const std::string& fieldPrefix);

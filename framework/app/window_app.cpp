@@ -21,9 +21,11 @@
 #include "app/lab_ui.h"
 #include "app/metrics_report.h"
 #include "app/scene_draw.h"
+#include "app/scene_file.h"
 #include "app/scene_registry.h"
 #include "app/ui_status.h"
 #include "app/ui_style.h"
+#include "app/window_demo.h"
 #include "app/window_input.h"
 #include "app/window_recording.h"
 #include "graphics/debug_renderer.h"
@@ -90,6 +92,18 @@ std::string timestampedScreenshotName(const std::string& lab, const std::string&
 // plot panel in the lower right corner, so that neither covers it.
 // Frames the scene's bounds in the part of the window the panels leave free: the controls on the
 // left (panelPixels), a scene's own column on the right (overlayPixels), the plots at the bottom.
+void applyView(graphics::OrbitCamera& camera, const CameraView& view) {
+  camera.target = glm::vec3(view.target);
+  camera.distance = static_cast<float>(view.distance);
+  camera.yaw = static_cast<float>(view.yaw);
+  camera.pitch = static_cast<float>(view.pitch);
+  camera.clampState();
+}
+
+CameraView viewOf(const graphics::OrbitCamera& camera) {
+  return CameraView{Vec3(camera.target), camera.distance, camera.yaw, camera.pitch};
+}
+
 // A scene's preferred view is made for the free part of a full window; a narrower view (one half of an
 // A/B run) steps back by `widen` so the same picture fits.
 void frameCamera(graphics::OrbitCamera& camera, const Scene& scene, glm::vec2 viewport, float panelPixels,
@@ -157,7 +171,18 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
                          options.compare ? options.compare->second : std::string());
   session.settings() = loadLabSettings(settingsDir);
   session.setExercises(loadExercises(std::string(PBA_RESOURCE_DIR) + "/exercises.tsv", lab));
-  if (!capture && options.scene.empty() && !session.settings().lastScene.empty()) {
+  if (looksLikeSceneFile(options.scene)) {  // the file's camera bookmark
+    Result<LoadedScene> file = loadSceneFile(options.scene, lab);
+    if (file && file.value().camera) session.requestCamera(*file.value().camera);
+  }
+  WindowDemo demo;
+  if (!options.demo.empty()) {
+    if (Status s = demo.open(lab, options.demo, options.demoStep, options.demoNext); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+  }
+  if (!capture && options.scene.empty() && options.demo.empty() && !session.settings().lastScene.empty()) {
     const int index = sceneIndex(session.settings().lastScene);
     if (index >= 0) session.switchScene(index);
   }
@@ -190,6 +215,8 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
 
   UiState ui;
   ui.lecture = options.lecture || (!capture && session.settings().lecture);
+  ui.demoActive = demo.active();
+  if (demo.active()) demo.printNotes();
   graphics::OrbitCamera camera;
   graphics::DebugRenderer debug;
   WindowInput input;
@@ -207,6 +234,8 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   std::string title = desc.title;
   std::string statusPath = uiStatusPath();  // tests/ui: the machine-readable status of every frame
   long frame = 0;
+  bool demoRecording = false;  // the running recording is a demo step's
+  bool leaveDemo = false;      // the next demo step is another lab's: close after this frame
   auto last = std::chrono::steady_clock::now();
   int exitCode = kExitOk;
 
@@ -238,6 +267,26 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     const float viewWidth = split ? 0.5f * (static_cast<float>(ws.x) - overlayPixels - panelPixels) : float(ws.x);
     input.setSplit(split ? std::optional<std::pair<float, float>>({viewLeft, viewWidth}) : std::nullopt);
     if (!capture) input.update(session, ui, camera, static_cast<float>(ws.x), static_cast<float>(ws.y));
+    // Demo steps: the recording of a step ends with it; another lab's step closes the window after this frame.
+    if (demo.active() && (ui.demoMove != 0 || frame == 0)) {
+      const int delta = ui.demoMove;
+      ui.demoMove = 0;
+      const WindowDemo::Move moved = delta == 0 ? WindowDemo::Move::Shown : demo.move(delta, session);
+      if (moved != WindowDemo::Move::None && demoRecording && recording.active()) {
+        Result<std::string> done = recording.finish();
+        session.setMessage(done ? done.value() : done.error());
+        demoRecording = false;
+      }
+      if (moved == WindowDemo::Move::Leave) leaveDemo = true;
+      if (moved == WindowDemo::Move::Shown) {
+        if (delta != 0) demo.printNotes();
+        if (!demo.step().record.empty() && !recording.active() && !capture) {
+          const Status s = recording.start(demo.step().record, fb.x, fb.y, 0);
+          session.setMessage(s ? "Recording this step to " + demo.step().record : s.error());
+          demoRecording = static_cast<bool>(s);
+        }
+      }
+    }
     if (session.takeFrameRequest() || ui.frameRequested) {
       if (split)
         frameCamera(camera, runner.scene(), glm::vec2(viewWidth, ws.y), 0.0f, 0.0f, false,
@@ -247,6 +296,10 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
                     !ui.hideUi && !session.settings().plotted.empty());
       ui.frameRequested = false;
     }
+    // A camera bookmark (scene file, demo step) replaces the framing.
+    if (std::optional<CameraView> view = session.takeCameraRequest()) applyView(camera, *view);
+    if (std::optional<CameraView> view = demo.active() ? demo.takeCamera() : std::nullopt) applyView(camera, *view);
+    session.setCurrentCamera(viewOf(camera));
     // Captures and recordings advance exactly one display frame of simulated time per frame.
     const bool fixedFrames = capture || recording.active();
     const Real frameSeconds = fixedFrames ? kDisplayFrame : std::min(wallSeconds, kMaxFrameSeconds);
@@ -277,6 +330,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
       compareCaption(compareText(session, true), viewLeft + viewWidth, viewWidth, true);
     }
     drawLabUi(session, ui);
+    if (demo.active() && !ui.hideUi) demo.notesWindow(ui, static_cast<float>(ws.x) - overlayPixels);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
@@ -326,7 +380,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
       }
     }
     window->swapBuffers();
-    if (captureNow) break;
+    if (captureNow || leaveDemo) break;
   }
 
   nlohmann::json recorded = nullptr;

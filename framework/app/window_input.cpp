@@ -46,6 +46,14 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
   keys.swap(pressed_);
   if (ImGui::GetIO().WantCaptureKeyboard) return;  // typing in a text field
   for (const auto [key, mods] : keys) {
+    if (ui.demoActive && (key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_PAGE_UP)) {  // a presenter's clicker
+      ui.demoMove += key == GLFW_KEY_PAGE_DOWN ? 1 : -1;
+      continue;
+    }
+    if (ui.demoActive && key == GLFW_KEY_N) {
+      ui.showNotes = !ui.showNotes;
+      continue;
+    }
     if (const std::optional<NudgeDirection> d = nudgeDirectionForKey(key, mods)) {
       const Real size = drawnSize(session.runner().scene());
       if (!session.nudge(*d, Vec3(camera.right()), Vec3(camera.up()), Vec3(camera.forward()), size, nudgeIsFine(mods)))

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <thread>
 
 #include "ui_driver.h"
 
@@ -138,6 +139,53 @@ void checkRewind(const std::string& exe, const std::string& work) {
                                    "Space to run on from the start");
   expect(resumed["history"]["frames"].get<long>() < frames, "running on from the start kept the later frames");
   expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
+// A demo script (--demo): the first step's scene, camera and notes window; PageDown / PageUp (xdotool
+// Next / Prior) move between this lab's steps; N hides the notes; PageDown onto another lab's step closes
+// the window with exit 0 and leaves that step's number in the --demo-next file for ./pba demo.
+void checkDemo(const std::string& exe, const std::string& work) {
+  const std::vector<std::string> list = listScenes(exe);
+  fs::create_directories(work);
+  const std::string lab = fs::path(exe).filename().string().substr(4);  // pba-<lab>
+  const std::string other = lab == "hello" ? "ik" : "hello";
+  const std::string second = list.size() > 1 ? list[1] : list[0];
+  const std::string script = work + "/demo.json", next = work + "/next.txt";
+  std::ofstream(script)
+      << json{{"title", "UI check"},
+              {"steps",
+               {{{"lab", lab},
+                 {"scene", list[0]},
+                 {"title", "first"},
+                 {"camera", {{"target", {0.5, 1.0, -0.5}}, {"distance", 7.5}, {"yaw_deg", 20}, {"pitch_deg", 25}}},
+                 {"notes", "the first step"}},
+                {{"lab", lab}, {"scene", second}, {"notes", "the second step"}},
+                {{"lab", other}, {"scene", "any"}, {"notes", "another lab"}}}}}
+             .dump(2);
+  fs::remove(next);
+  LabWindow w(exe, {"--demo", script, "--demo-next", next}, work);
+  const json first = w.waitFor([&](const json& s) { return s["scene"] == list[0] && hasWindow(s, "Step 1 of 3"); },
+                               "step 1 with its notes window");
+  expect(first["lecture"] == true, "a demo does not start in lecture mode");
+  expect(near(first["camera"]["distance"].get<double>(), 7.5, 1e-4) &&
+             near(vecAt(first["camera"]["target"], 1), 1.0, 1e-4),
+         "step 1's camera was not applied: " + first["camera"].dump());
+  w.key("Next");
+  w.waitFor([&](const json& s) { return s["scene"] == second && hasWindow(s, "Step 2 of 3"); }, "PageDown to step 2");
+  w.key("Prior");
+  w.waitFor([&](const json& s) { return s["scene"] == list[0] && hasWindow(s, "Step 1 of 3"); }, "PageUp to step 1");
+  w.key("n");
+  w.waitFor([&](const json& s) { return !hasWindow(s, "Step 1 of 3"); }, "N to hide the notes");
+  w.key("Next");
+  w.waitFor([&](const json& s) { return hasWindow(s, "Step 2 of 3") || s["scene"] == second; }, "PageDown to step 2");
+  w.key("Next");
+  for (int i = 0; i < 600 && w.running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  expect(!w.running(), "PageDown onto another lab's step did not close the window");
+  expect(w.close() == 0, "the lab did not exit cleanly when handing over");
+  std::ifstream in(next);
+  std::string step;
+  in >> step;
+  expect(step == "3", "the hand-off file says '" + step + "', expected 3");
 }
 
 /// Parameter values agree: numbers to 1e-9 relative (angles pass through radians), others exactly.
@@ -556,6 +604,7 @@ const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"step", checkStep},
                                               {"reset", checkReset},
                                               {"rewind", checkRewind},
+                                              {"demo", checkDemo},
                                               {"scenes", checkScenes},
                                               {"presets", checkPresets},
                                               {"help", checkHelp},
