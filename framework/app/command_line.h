@@ -45,6 +45,8 @@ struct LabOptions {
   bool lecture = false;
   bool listScenes = false;
   bool help = false;
+  /// Test mode: every numeric parameter of every scene at its extremes (app/param_extremes.h).
+  bool checkExtremes = false;
   /// Parameter overrides in command line order.
   std::vector<ParamOverride> overrides;
   /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.
