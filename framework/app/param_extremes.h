@@ -4,7 +4,8 @@
 // over its registered scenes, so a new scene or parameter is covered without writing a test.
 //   - at the declared minimum and maximum (through the command line's --set path): the scene must load,
 //     run `frames` display frames and stay finite (state and metrics), or be paused by the
-//     instability guard, which is the guard's job;
+//     instability guard, which is the guard's job (a maximum marked Params::workload(), an amount of
+//     work such as a batch's number of solves, is not run);
 //   - just below the minimum and just above the maximum (the next double, or ±1 for integers), and an
 //     unknown name for flags and choices: --set and a scene file's "params" must refuse the value with
 //     one line naming the parameter.

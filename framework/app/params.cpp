@@ -74,6 +74,11 @@ Params& Params::needsReset() {
   return *this;
 }
 
+Params& Params::workload() {
+  if (!params_.empty()) params_.back().workload = true;
+  return *this;
+}
+
 Params& Params::logarithmic() {
   if (!params_.empty()) params_.back().logarithmic = true;
   return *this;

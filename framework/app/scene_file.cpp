@@ -160,6 +160,9 @@ Result<LoadedScene> loadSceneFile(const std::string& path, const std::string& la
   namespace fs = std::filesystem;
   std::error_code ec;
   if (fs::is_directory(path, ec)) return fileError(path, "is a directory, not a scene file");
+  // A device or a pipe (/dev/zero, /dev/stdin) would be read until it ends, which may be never.
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec))
+    return fileError(path, "is not a regular file (a device or a pipe?)");
   std::ifstream in(path, std::ios::binary);
   if (!in) return fileError(path, "cannot open the file");
   if (const auto size = fs::file_size(path, ec); !ec && size > kMaxSceneFileBytes)

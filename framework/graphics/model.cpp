@@ -265,6 +265,8 @@ std::optional<Model> loadModel(const std::string& path, std::string* error) {
   };
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return fail("is a directory, not a model file");
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    return fail("is not a regular file (a device or a pipe?)");
   if (!std::filesystem::is_regular_file(path, ec)) return fail("no such file");
   if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxModelFileBytes)
     return fail("is " + std::to_string(size) + " bytes; model files are read up to " +

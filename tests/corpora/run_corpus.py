@@ -73,7 +73,13 @@ def many_frames_bvh(path):
         f.write("0 0 0\n" * frames)  # one frame short: the file ends before its last frame
 
 
+def link_to(target):
+    return lambda path: os.symlink(target, path)
+
+
 GENERATORS = {
+    "dev-zero.json": link_to("/dev/zero"),
+    "dev-zero.bvh": link_to("/dev/zero"),
     "deep-nesting.json": deep_nesting,
     "million-byte-key.json": long_key,
     "huge-sparse.json": sparse(1 << 30),

@@ -1,19 +1,16 @@
 #include "physics/core/format.h"
 
+#include <charconv>
 #include <cstdio>
-#include <cstdlib>
 
 namespace pba {
 
 std::string formatExact(Real value) {
-  // The fewest significant digits that read back to the same double (-0.1, not -0.10000000000000001);
-  // 17 always do.
+  // std::to_chars without a format is the shortest text that reads back to the same double, in fixed or
+  // scientific notation, whichever is shorter (-0.1, not -0.10000000000000001; 10, not 1e+01).
   char buf[40];
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(buf, sizeof buf, "%.*g", digits, value);
-    if (std::strtod(buf, nullptr) == value) break;
-  }
-  return buf;
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, r.ptr);
 }
 
 std::string formatShort(Real value) {
