@@ -14,8 +14,9 @@ ClothScene::ClothScene() {
                      "Switch live: explicit (symplectic Euler on the springs, stable only for small steps), implicit "
                      "(Baraff & Witkin: backward Euler, one Newton step, filtered PCG), pbd (Müller 2006, stiffness "
                      "depends on iterations) or xpbd (Macklin 2016, compliance).");
-  params_.integer("iterations", &settings_.iterations, 1, 100, "",
-                  "PBD/XPBD constraint sweeps per substep. Small Steps (Macklin 2019): prefer substeps. Typical 1.")
+  params_
+      .integer("iterations", &settings_.iterations, 1, 100, "",
+               "PBD/XPBD constraint sweeps per substep. Small Steps (Macklin 2019): prefer substeps. Typical 1.")
       .workload();  // 100 sweeps on every scene: 8 s of the extremes check per scene for no new state
   params_.integer("substeps", &settings_.substeps, 1, 200, "",
                   "Substeps per step (explicit: symplectic Euler steps; pbd/xpbd: predict-solve-update cycles; "
