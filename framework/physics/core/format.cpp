@@ -11,7 +11,7 @@ std::string formatExact(Real value) {
   // scientific notation, whichever is shorter (-0.1, not -0.10000000000000001; 10, not 1e+01).
   // Whole numbers below 2^53 print as integers (2000000, not 2e+06), as "%.17g" did.
   char buf[40];
-  const bool whole = std::abs(value) < 9007199254740992.0 && value == std::floor(value);
+  const bool whole = std::isfinite(value) && std::abs(value) < 9007199254740992.0 && value == std::floor(value);
   const std::to_chars_result r = whole ? std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed)
                                        : std::to_chars(buf, buf + sizeof buf, value);
   return std::string(buf, r.ptr);
