@@ -149,6 +149,7 @@ pba_cmd_fuzz() {
     [[ -d "$ROOT/tests/corpora/fuzz/$target" ]] && seeds+=("$ROOT/tests/corpora/fuzz/$target")
     pba_say "fuzzing $target for $seconds s"
     ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:handle_sigfpe=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+      LSAN_OPTIONS="suppressions=$ROOT/tests/support/lsan.supp:print_suppressions=0" \
       "$ROOT/build/fuzz/bin/pba_fuzz_$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
       -max_len=1048576 -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" "${seeds[@]}" \
       >"$work/log.txt" 2>&1
