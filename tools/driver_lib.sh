@@ -3,7 +3,8 @@
 
 PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-dev libimgui-dev
   libassimp-dev nlohmann-json3-dev libstb-dev libeigen3-dev googletest libgtest-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels fonts-dejavu-core python3 python3-matplotlib ccache xdotool clang-format ffmpeg)
+  xvfb xauth assimp-testmodels fonts-dejavu-core python3 python3-matplotlib ccache xdotool clang-format ffmpeg
+  clang libclang-rt-14-dev)
 PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 pba_say() {
@@ -119,6 +120,53 @@ pba_cmd_grade() {
 pba_cmd_student_release() {
   [[ $# -eq 1 ]] || pba_die "usage: ./pba student-release DIR" 2
   bash "$ROOT/tools/student_release.sh" "$ROOT" "$1"
+}
+
+# ./pba fuzz [SECONDS]: builds the fuzz preset (clang, libFuzzer, ASan + UBSan) and runs each target
+# for SECONDS (default 60), seeded from the repository and Debian's assimp-testmodels (read in place,
+# never copied). Fails on any sanitizer report, property violation, hang or memory blow-up, and copies
+# the input that caused it to tests/corpora/fuzz/TARGET/ (the replay ctest's regression inputs).
+pba_cmd_fuzz() {
+  local seconds="${1:-60}"
+  [[ "$seconds" =~ ^[0-9]+$ && "$seconds" -ge 1 ]] || pba_die "usage: ./pba fuzz [SECONDS] (a whole number >= 1)" 2
+  pba_ensure_packages
+  pba_build fuzz pba_fuzz_targets
+  local models=/usr/share/assimp/models failed=0 target  # where Debian's assimp-testmodels puts them
+  for target in scene_file command_line model_import ik_skeleton; do
+    local work="$ROOT/build/fuzz/runs/$target" seeds=()
+    rm -rf "$work" && mkdir -p "$work/corpus" "$work/artifacts"
+    case "$target" in
+      scene_file) seeds=("$ROOT/resources/scenes" "$ROOT/tests/corpora/scenes") ;;
+      command_line) seeds=("$ROOT/tests/fuzz/seeds/command_line") ;;
+      model_import) seeds=("$ROOT/tests/fuzz/seeds/model_import" "$ROOT/resources/models" "$ROOT/tests/corpora/models") ;;
+      ik_skeleton) seeds=("$ROOT/resources/models" "$ROOT/tests/corpora/models") ;;
+    esac
+    # Debian's test models of the formats the labs import (inputs are cut at -max_len, 1 MiB).
+    local sub subs=()
+    [[ "$target" == model_import ]] && subs=(BVH OBJ glTF2 Collada FBX X)
+    [[ "$target" == ik_skeleton ]] && subs=(BVH)
+    for sub in "${subs[@]}"; do [[ -d "$models/$sub" ]] && seeds+=("$models/$sub"); done
+    [[ -d "$ROOT/tests/corpora/fuzz/$target" ]] && seeds+=("$ROOT/tests/corpora/fuzz/$target")
+    pba_say "fuzzing $target for $seconds s"
+    ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:handle_sigfpe=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+      LSAN_OPTIONS="suppressions=$ROOT/tests/support/lsan.supp:print_suppressions=0" \
+      "$ROOT/build/fuzz/bin/pba_fuzz_$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
+      -max_len=1048576 -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" "${seeds[@]}" \
+      >"$work/log.txt" 2>&1
+    local rc=$?
+    local runs speed
+    runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$work/log.txt" | grep -o '[0-9]*$')"
+    speed="$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$work/log.txt" | grep -o '[0-9]*$')"
+    echo "$target: ${runs:-?} runs, ${speed:-?} exec/s, exit $rc (log: $work/log.txt)"
+    if [[ $rc -ne 0 ]] || compgen -G "$work/artifacts/*" >/dev/null; then
+      failed=1
+      mkdir -p "$ROOT/tests/corpora/fuzz/$target"
+      cp "$work"/artifacts/* "$ROOT/tests/corpora/fuzz/$target/" 2>/dev/null
+      pba_say "$target failed: the input is in tests/corpora/fuzz/$target/; the report is in $work/log.txt"
+    fi
+  done
+  [[ $failed -eq 0 ]] || pba_die "fuzzing found a defect"
+  pba_say "every fuzz target ran $seconds s clean"
 }
 
 pba_cmd_bench() {

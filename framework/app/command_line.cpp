@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "app/message_text.h"
 #include "app/scene_registry.h"
 #include "app/scene_runner.h"
 #include "graphics/frame_recorder.h"
@@ -16,7 +17,7 @@ Result<long> parseWhole(const std::string& option, const std::string& text, long
   errno = 0;
   const long v = std::strtol(text.c_str(), &end, 10);
   if (text.empty() || *end != '\0' || errno != 0 || v < min)
-    return Error{option + ": expected a whole number >= " + std::to_string(min) + ", got '" + text + "'"};
+    return Error{option + ": expected a whole number >= " + std::to_string(min) + ", got '" + shownText(text) + "'"};
   return v;
 }
 
@@ -24,7 +25,7 @@ Result<double> parsePositive(const std::string& option, const std::string& text)
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v) || v <= 0.0)
-    return Error{option + ": expected a number > 0, got '" + text + "'"};
+    return Error{option + ": expected a number > 0, got '" + shownText(text) + "'"};
   return v;
 }
 
@@ -65,12 +66,12 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
         out = value;
         return Status::success();
       }
-      if (i + 1 >= argc) return Error{arg + ": missing value"};
+      if (i + 1 >= argc) return Error{shownText(arg) + ": missing value"};
       out = argv[++i];
       return Status::success();
     };
     auto flagOnly = [&]() -> Status {
-      return hasInlineValue ? Status(Error{arg + ": takes no value"}) : Status::success();
+      return hasInlineValue ? Status(Error{shownText(arg) + ": takes no value"}) : Status::success();
     };
     std::string v;
     Status s;
@@ -83,6 +84,9 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     } else if (arg == "--lecture") {
       s = flagOnly();
       o.lecture = true;
+    } else if (arg == "--check-extremes") {
+      s = flagOnly();
+      o.checkExtremes = true;
     } else if (arg == "--list-scenes") {
       s = flagOnly();
       o.listScenes = true;
@@ -93,10 +97,10 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     } else if (arg == "--record") {
       if (!(s = next(o.record))) return Error{s.error()};
       if (!graphics::recordFormatOf(o.record))
-        return Error{"--record: expected FILE.mp4, FILE.gif or DIR/ (PNG files), got '" + o.record + "'"};
+        return Error{"--record: expected FILE.mp4, FILE.gif or DIR/ (PNG files), got '" + shownText(o.record) + "'"};
     } else if (arg == "--record-ui") {
       if (!(s = next(v))) return Error{s.error()};
-      if (v != "on" && v != "off") return Error{"--record-ui: expected on or off, got '" + v + "'"};
+      if (v != "on" && v != "off") return Error{"--record-ui: expected on or off, got '" + shownText(v) + "'"};
       o.recordUi = v == "on";
     } else if (arg == "--metrics") {
       s = next(o.metrics);
@@ -104,7 +108,8 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
       if (!r || r.value() > kMaxFrames)
-        return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" + v + "'"};
+        return Error{"--frames: expected a whole number in [1, " + std::to_string(kMaxFrames) + "], got '" +
+                     shownText(v) + "'"};
       o.frames = r.value();
     } else if (arg == "--demo") {
       s = next(o.demo);
@@ -134,28 +139,29 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     } else if (arg == "--seconds") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parsePositive(arg, v);
-      if (!r || r.value() > kMaxSeconds) return Error{"--seconds: expected a number in (0, 100000] s, got '" + v + "'"};
+      if (!r || r.value() > kMaxSeconds)
+        return Error{"--seconds: expected a number in (0, 100000] s, got '" + shownText(v) + "'"};
       o.seconds = r.value();
     } else if (arg == "--dt") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parsePositive(arg, v);
       if (!r) return Error{r.error()};
       if (r.value() < kMinDt || r.value() > kMaxDt)
-        return Error{"--dt: must be in [" + std::to_string(kMinDt) + ", " + std::to_string(kMaxDt) + "] s, got '" + v +
-                     "'"};
+        return Error{"--dt: must be in [" + std::to_string(kMinDt) + ", " + std::to_string(kMaxDt) + "] s, got '" +
+                     shownText(v) + "'"};
       o.dt = r.value();
     } else if (arg == "--substeps") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
       if (!r || r.value() > kMaxSubsteps)
-        return Error{"--substeps: expected a whole number in [1, " + std::to_string(kMaxSubsteps) + "], got '" + v +
-                     "'"};
+        return Error{"--substeps: expected a whole number in [1, " + std::to_string(kMaxSubsteps) + "], got '" +
+                     shownText(v) + "'"};
       o.substeps = static_cast<int>(r.value());
     } else if (arg == "--time-scale") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parsePositive(arg, v);
       if (!r || r.value() < kMinTimeScale || r.value() > kMaxTimeScale)
-        return Error{"--time-scale: expected a number in [0.1, 4], got '" + v + "'"};
+        return Error{"--time-scale: expected a number in [0.1, 4], got '" + shownText(v) + "'"};
       o.timeScale = r.value();
     } else if (arg == "--seed") {
       if (!(s = next(v))) return Error{s.error()};
@@ -165,7 +171,7 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     } else if (arg == "--set") {
       if (!(s = next(v))) return Error{s.error()};
       const auto eq = v.find('=');
-      if (eq == std::string::npos || eq == 0) return Error{"--set: expected NAME=VALUE, got '" + v + "'"};
+      if (eq == std::string::npos || eq == 0) return Error{"--set: expected NAME=VALUE, got '" + shownText(v) + "'"};
       o.overrides.push_back({v.substr(0, eq), v.substr(eq + 1), "--set"});
     } else if (const LabFlag* f = arg.rfind("--", 0) == 0 ? findLabFlag(arg.substr(2)) : nullptr) {
       if (!(s = next(v))) return Error{s.error()};
@@ -175,7 +181,7 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
         impliedPriority = f->priority;
       }
     } else {
-      return Error{"unknown option '" + arg + "' (see --help)"};
+      return Error{"unknown option '" + shownText(arg) + "' (see --help)"};
     }
     if (!s) return Error{s.error()};
   }
@@ -228,7 +234,11 @@ std::string usage(const std::string& lab) {
       "  --set NAME=VALUE        set any scene parameter (see the scene's panel for names)\n"
       "  --lecture               large fonts, high contrast (key L toggles)\n"
       "  --list-scenes           print the scenes and exit\n"
-      "  --help                  this text\n";
+      "  --help                  this text\n"
+      "  --check-extremes        test mode: run every scene with each numeric parameter at its\n"
+      "                          minimum and maximum (--frames, default 60; --scene to pick one)\n"
+      "                          and check that values just outside are refused; exit 1 on failure\n";
+
   if (!labFlags().empty()) {
     text += "\nLab options:\n";
     for (const LabFlag& f : labFlags()) {

@@ -57,6 +57,8 @@ struct LabOptions {
   long demoStep = 1;
   std::string demoNext;
   bool demoCheck = false;
+  /// Test mode: every numeric parameter of every scene at its extremes (app/param_extremes.h).
+  bool checkExtremes = false;
   /// Parameter overrides in command line order.
   std::vector<ParamOverride> overrides;
   /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.

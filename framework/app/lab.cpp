@@ -6,7 +6,9 @@
 #include <tuple>
 
 #include "app/compare_run.h"
+#include "app/message_text.h"
 #include "app/metrics_report.h"
+#include "app/param_extremes.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
 #include "physics/exercises/not_implemented.h"
@@ -32,12 +34,12 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
     scene = std::move(loaded.value().scene);
     name = loaded.value().name;
     if (loaded.value().dt && !o.dt) {
-      if (Status s = runner.setDt(*loaded.value().dt); !s) return Error{o.scene + ": " + s.error()};
+      if (Status s = runner.setDt(*loaded.value().dt); !s) return Error{oneLine(o.scene) + ": " + s.error()};
     }
   } else {
     name = !o.scene.empty() ? o.scene : !o.impliedScene.empty() ? o.impliedScene : scenes().front().name;
     const SceneEntry* entry = findScene(name);
-    if (!entry) return Error{"--scene: unknown scene '" + name + "' (see --list-scenes)"};
+    if (!entry) return Error{"--scene: unknown scene '" + shownText(name) + "' (see --list-scenes)"};
     scene = entry->create();
   }
   for (const ParamOverride& p : o.overrides) {
@@ -50,7 +52,11 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
     }
   }
   scene->setSeed(o.seed);
-  if (Status s = scene->validate(); !s) return s;
+  if (Status s = scene->validate(); !s) {
+    // What a scene file named (a model file, joint names) is that file's error: name it and the field.
+    if (looksLikeSceneFile(o.scene) && o.overrides.empty()) return Error{oneLine(o.scene) + ": params." + s.error()};
+    return s;
+  }
   runner.adopt(std::move(scene), name);
   return Status::success();
 }
@@ -107,7 +113,7 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
   try {
     Result<LabOptions> parsed = parseCommandLine(argc, argv);
     if (!parsed) {
-      std::cerr << "pba-" << lab << ": " << parsed.error() << '\n';
+      std::cerr << "pba-" << lab << ": " << oneLine(parsed.error()) << '\n';
       return kExitBadInput;
     }
     const LabOptions& o = parsed.value();
@@ -123,10 +129,14 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
       return kExitOk;
     }
     exercises::runProbes();  // stubs record themselves: banner, Exercises panel, "not_implemented"
+    if (o.checkExtremes) {
+      const ExtremesOptions extremes{o.frames.value_or(ExtremesOptions{}.frames), o.scene};
+      return checkParamExtremes(lab, extremes, std::cout) == 0 ? kExitOk : kExitInternal;
+    }
     SceneRunner runner;
     if (!o.demo.empty()) return runDemo(lab, o, runner);
     if (Status s = prepareRunner(lab, o, runner); !s) {
-      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      std::cerr << "pba-" << lab << ": " << oneLine(s.error()) << '\n';
       return kExitBadInput;
     }
     if (o.checkRewind) return runRewindCheck(lab, o, runner);
@@ -140,7 +150,7 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
     }
     return o.headless ? runHeadless(lab, o, runner) : runWindow(lab, o, runner);
   } catch (const std::exception& e) {
-    std::cerr << "pba-" << lab << ": internal error: " << e.what() << '\n';
+    std::cerr << "pba-" << lab << ": internal error: " << oneLine(e.what()) << '\n';
     return kExitInternal;
   }
 }

@@ -1,5 +1,6 @@
 #include "app/params.h"
 
+#include "app/message_text.h"
 #include "physics/core/format.h"
 
 #include <cmath>
@@ -73,6 +74,11 @@ Params& Params::needsReset() {
   return *this;
 }
 
+Params& Params::workload() {
+  if (!params_.empty()) params_.back().workload = true;
+  return *this;
+}
+
 Params& Params::logarithmic() {
   if (!params_.empty()) params_.back().logarithmic = true;
   return *this;
@@ -103,7 +109,7 @@ Status Params::setChecked(const Param& p, double value, const std::string& field
 
 Status Params::setFromText(const std::string& name, const std::string& text) {
   const Param* p = find(name);
-  if (!p) return Error{name + ": no such parameter in this scene"};
+  if (!p) return Error{shownText(name) + ": no such parameter in this scene"};
   switch (p->kind) {
     case ParamKind::Text:
       p->setText(text);
@@ -111,21 +117,21 @@ Status Params::setFromText(const std::string& name, const std::string& text) {
     case ParamKind::Flag:
       if (text == "true" || text == "1" || text == "on") return setChecked(*p, 1.0, name);
       if (text == "false" || text == "0" || text == "off") return setChecked(*p, 0.0, name);
-      return Error{name + ": expected true or false, got '" + text + "'"};
+      return Error{name + ": expected true or false, got '" + shownText(text) + "'"};
     case ParamKind::Choice: {
       std::string names;
       for (size_t i = 0; i < p->choices.size(); ++i) {
         if (p->choices[i] == text) return setChecked(*p, double(i), name);
         names += (i ? ", " : "") + p->choices[i];
       }
-      return Error{name + ": unknown value '" + text + "' (one of: " + names + ")"};
+      return Error{name + ": unknown value '" + shownText(text) + "' (one of: " + names + ")"};
     }
     case ParamKind::Real:
     case ParamKind::Integer: {
       char* end = nullptr;
       const double v = std::strtod(text.c_str(), &end);
       if (text.empty() || end == nullptr || *end != '\0')
-        return Error{name + ": expected a number, got '" + text + "'"};
+        return Error{name + ": expected a number, got '" + shownText(text) + "'"};
       return setChecked(*p, v, name);
     }
   }
@@ -133,26 +139,26 @@ Status Params::setFromText(const std::string& name, const std::string& text) {
 }
 
 Status Params::setFromJson(const std::string& name, const nlohmann::json& value, const std::string& prefix) {
-  const std::string field = prefix + name;
+  const std::string field = prefix + shownText(name);
   const Param* p = find(name);
   if (!p) return Error{field + ": no such parameter in this scene"};
   switch (p->kind) {
     case ParamKind::Text:
-      if (!value.is_string()) return Error{field + ": expected a string, got " + value.dump()};
+      if (!value.is_string()) return Error{field + ": expected a string, got " + shownJson(value)};
       p->setText(value.get<std::string>());
       return Status::success();
     case ParamKind::Flag:
-      if (!value.is_boolean()) return Error{field + ": expected true or false, got " + value.dump()};
+      if (!value.is_boolean()) return Error{field + ": expected true or false, got " + shownJson(value)};
       return setChecked(*p, value.get<bool>() ? 1.0 : 0.0, field);
     case ParamKind::Choice:
-      if (!value.is_string()) return Error{field + ": expected a string, got " + value.dump()};
+      if (!value.is_string()) return Error{field + ": expected a string, got " + shownJson(value)};
       {
         Status s = setFromText(name, value.get<std::string>());
         return s ? s : Status(Error{prefix + s.error()});
       }
     case ParamKind::Real:
     case ParamKind::Integer:
-      if (!value.is_number()) return Error{field + ": expected a number, got " + value.dump()};
+      if (!value.is_number()) return Error{field + ": expected a number, got " + shownJson(value)};
       return setChecked(*p, value.get<double>(), field);
   }
   return Error{field + ": unsupported parameter kind"};

@@ -21,9 +21,12 @@ struct Param {
   std::string unit;     ///< shown after the slider, e.g. "m/s²"; empty for dimensionless
   std::string tooltip;  ///< the (?) help text: what it does and a typical value
   ParamKind kind = ParamKind::Real;
-  double min = 0.0, max = 1.0;       ///< inclusive range (Real and Integer)
-  bool logarithmic = false;          ///< slider in log scale (wide positive ranges)
-  bool needsReset = false;           ///< changing it rebuilds the scene (e.g. particle count)
+  double min = 0.0, max = 1.0;  ///< inclusive range (Real and Integer)
+  bool logarithmic = false;     ///< slider in log scale (wide positive ranges)
+  bool needsReset = false;      ///< changing it rebuilds the scene (e.g. particle count)
+  /// Its maximum is an amount of work (a batch's solves, a benchmark's size), not a physical extreme:
+  /// the extremes check (app/param_extremes.h) does not run the scene there, only checks the refusals.
+  bool workload = false;
   std::vector<std::string> choices;  ///< names of a Choice, in index order
   std::function<double()> get;       ///< Real, Integer, Flag, Choice
   std::function<void(double)> set;
@@ -56,6 +59,8 @@ class Params {
   }
   /// Marks the most recently added parameter as one that needs a reset to take effect.
   Params& needsReset();
+  /// Marks the most recently added parameter's maximum as a workload (Param::workload).
+  Params& workload();
   /// Marks the most recently added Real parameter for a logarithmic slider.
   Params& logarithmic();
   /// Shows the most recently added parameter in the panel only while `predicate` holds.

@@ -2,6 +2,7 @@
 // Scene files (docs/architecture.md §4): JSON under resources/scenes/<lab>/, round-trip exact.
 //   { "lab": "hello", "scene": "drop", "dt": 0.008333, "params": { "restitution": 0.8, ... } }
 // "dt" is optional. Unknown keys are errors, so that a typo never goes unnoticed.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,6 +13,10 @@
 #include "physics/core/result.h"
 
 namespace pba::app {
+
+/// Limits of what a scene file may be: a parameter file of a few kilobytes is the norm.
+inline constexpr std::uintmax_t kMaxSceneFileBytes = 16u << 20;  ///< 16 MiB
+inline constexpr int kMaxSceneFileDepth = 64;                    ///< arrays and objects nested
 
 struct LoadedScene {
   std::unique_ptr<Scene> scene;      ///< created and configured, not yet reset

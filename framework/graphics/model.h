@@ -16,6 +16,8 @@ namespace pba::graphics {
 
 inline constexpr int kMaxBonesPerVertex = 4;
 inline constexpr int kMaxSkinningBones = 128;  ///< size of the shader's bone array
+/// Larger files are refused before Assimp reads them (it holds the whole file in memory, several times).
+inline constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{512} << 20;  ///< 512 MiB
 
 struct ModelMesh {
   std::string name;
@@ -74,7 +76,9 @@ struct Model {
 };
 
 /// Loads any format Assimp reads (glTF, FBX, Collada, BVH, OBJ, ...). On failure returns nullopt and
-/// sets *error to "<path>: <reason>" (Assimp's own message where it has one). Never throws.
+/// sets *error to "<path>: <reason>" on one line (Assimp's own message where it has one). Refuses
+/// directories, files over kMaxModelFileBytes, non-finite numbers and triangles that use a vertex the
+/// mesh does not have (naming the node, mesh or animation). Never throws.
 std::optional<Model> loadModel(const std::string& path, std::string* error);
 
 }  // namespace pba::graphics

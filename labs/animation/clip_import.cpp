@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <unordered_map>
 
 #include "graphics/model.h"
 #include "graphics/skinning.h"
@@ -48,6 +49,14 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
   const std::optional<graphics::Model> model = graphics::loadModel(path, &error);
   if (!model) return Error{field + ": " + error};
   if (model->nodes.empty()) return Error{field + ": " + path + ": has no joints"};
+  // Assimp matches a channel to its joint by name: two joints of one name would share one channel.
+  std::unordered_map<std::string, size_t> seen;
+  for (size_t i = 0; i < model->nodes.size(); ++i) {
+    const std::string& name = model->nodes[i].name;
+    if (const auto [it, fresh] = seen.emplace(name, i); !fresh && !name.empty())
+      return Error{field + ": " + path + ": joint name '" + name + "' is used by joints " + std::to_string(it->second) +
+                   " and " + std::to_string(i) + " (names must be unique)"};
+  }
   if (model->animations.empty() || model->animations[0].channels.empty() || !(model->animations[0].duration > 0.0f))
     return Error{field + ": " + path + ": has no animation (a clip needs keyframes)"};
   ImportedClip out;

@@ -14,11 +14,15 @@ ClothScene::ClothScene() {
                      "Switch live: explicit (symplectic Euler on the springs, stable only for small steps), implicit "
                      "(Baraff & Witkin: backward Euler, one Newton step, filtered PCG), pbd (Müller 2006, stiffness "
                      "depends on iterations) or xpbd (Macklin 2016, compliance).");
-  params_.integer("iterations", &settings_.iterations, 1, 100, "",
-                  "PBD/XPBD constraint sweeps per substep. Small Steps (Macklin 2019): prefer substeps. Typical 1.");
-  params_.integer("substeps", &settings_.substeps, 1, 200, "",
-                  "Substeps per step (explicit: symplectic Euler steps; pbd/xpbd: predict-solve-update cycles; "
-                  "implicit: backward Euler steps). Typical 10 for xpbd, 1 for implicit.");
+  params_
+      .integer("iterations", &settings_.iterations, 1, 100, "",
+               "PBD/XPBD constraint sweeps per substep. Small Steps (Macklin 2019): prefer substeps. Typical 1.")
+      .workload();  // 100 sweeps on every scene: 8 s of the extremes check per scene for no new state
+  params_
+      .integer("substeps", &settings_.substeps, 1, 200, "",
+               "Substeps per step (explicit: symplectic Euler steps; pbd/xpbd: predict-solve-update cycles; "
+               "implicit: backward Euler steps). Typical 10 for xpbd, 1 for implicit.")
+      .workload();  // 200 substeps: 3-6 s per scene in the extremes check, the most stable setting
   params_
       .real("stiffness", &stiffness_, 1.0, 1e6, "N/m",
             "Stretch and shear spring constant of the mass-spring model (explicit, implicit). Typical 10³–10⁵.")
@@ -59,7 +63,8 @@ ClothScene::ClothScene() {
   params_.real("thickness", &thickness_, 0.001, 0.1, "m",
                "Particles keep this distance from each other (self-collision) and half of it from colliders.");
   params_.integer("resolution", &resolution_, 2, 256, "", "Particles along the cloth's first side. Typical 32.")
-      .needsReset();
+      .needsReset()
+      .workload();  // 65,536 particles: 10 s of the extremes check per scene
   params_
       .choiceEnum("layout", &layout_, {"grid", "mesh"},
                   "Springs of the mass-spring model: grid (Provot: axis neighbours, both diagonals, skip-one; "

@@ -53,13 +53,15 @@ class BatchScene final : public app::Scene {
     options_.solver = SolverKind::Ccd;
     options_.maxIterations = 1000;
     params_.choiceEnum("solver", &options_.solver, solverNames(), "IK method.").needsReset();
-    params_.integer("links", &desc_.links, 1, 10000, "", "Links of the chain.").needsReset();
+    params_.integer("links", &desc_.links, 1, 10000, "", "Links of the chain.").needsReset().workload();
     params_.choiceEnum("joint", &joint_, {"hinge", "ball"}, "Joint type of every link.").needsReset();
-    params_.integer("targets", &targets_, 1, 1000000, "", "Number of solves.").needsReset();
+    params_.integer("targets", &targets_, 1, 1000000, "", "Number of solves.").needsReset().workload();
     params_.real("tolerance", &options_.tolerance, 1e-9, 1.0, "m", "Success tolerance. Typical 1e-4 m.")
         .logarithmic()
         .needsReset();
-    params_.integer("max_iterations", &options_.maxIterations, 1, 100000, "", "Iteration cap per solve.").needsReset();
+    params_.integer("max_iterations", &options_.maxIterations, 1, 100000, "", "Iteration cap per solve.")
+        .needsReset()
+        .workload();
     params_.angle("limit", &desc_.limit, 5.0, 180.0, "Every rotational DOF in ±limit.").needsReset();
     params_
         .flag("limits", &options_.enforceLimits,

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <filesystem>
 #include <optional>
+#include <unordered_map>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -16,6 +17,8 @@ using namespace pba::ik;
 
 namespace {
 
+constexpr size_t kMaxJoints = 1000;                  // the chain scene's largest chain: solves stay interactive
+constexpr size_t kMaxEffectors = 64;                 // rows of the Jacobian: 3 per effector
 constexpr int kListedJoints = 40;                    // joint names listed in an error message before "..."
 constexpr Real kTrunkWeight = 0.1;                   // [1] DOF weight of joints above several effectors
 constexpr Real kTrunkLimit = 15.0 * kPi / 180.0;     // [rad] per Euler angle of those trunk joints
@@ -178,6 +181,17 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
   const std::optional<graphics::Model> model = graphics::loadModel(path, &error);
   if (!model) return Error{"skeleton: " + error};
   if (model->nodes.empty()) return Error{"skeleton: " + path + ": has no joints"};
+  if (model->nodes.size() > kMaxJoints)
+    return Error{"skeleton: " + path + ": has " + std::to_string(model->nodes.size()) +
+                 " joints; the character scene takes at most " + std::to_string(kMaxJoints)};
+  // Effectors, the panel and scene files name joints: two joints of one name would be one of them.
+  std::unordered_map<std::string, size_t> seen;
+  for (size_t i = 0; i < model->nodes.size(); ++i) {
+    const std::string& name = model->nodes[i].name;
+    if (const auto [it, fresh] = seen.emplace(name, i); !fresh && !name.empty())
+      return Error{"skeleton: " + path + ": joint name '" + name + "' is used by joints " + std::to_string(it->second) +
+                   " and " + std::to_string(i) + " (names must be unique)"};
+  }
   const std::vector<RestFrame> rest = restFrames(*model);
 
   // Scale to the requested height; lowest joint on the ground, root above the origin.
@@ -226,6 +240,11 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
       return Error{"skeleton: " + path + ": joint '" + j.name + "': " + added.error()};
   }
 
+  if (std::none_of(rig.skeleton.joints().begin(), rig.skeleton.joints().end(),
+                   [](const Joint& j) { return j.type != JointType::Fixed; }))
+    return Error{"skeleton: " + path + ": no joint can move (" + std::to_string(rig.skeleton.jointCount()) +
+                 " nodes and no bone between two of them: is it a skeleton?)"};
+
   std::vector<int> chosen;
   const std::vector<std::string> names = splitNames(d.effectors);
   for (const std::string& name : names) {
@@ -236,6 +255,9 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
     chosen.push_back(j);
   }
   if (names.empty()) chosen = automaticEffectors(rig.skeleton);
+  if (chosen.size() > kMaxEffectors)
+    return Error{"effectors: " + std::to_string(chosen.size()) + " effectors in " + path + "; at most " +
+                 std::to_string(kMaxEffectors) + " (name them with --effectors)"};
   const Pose restPose = rig.skeleton.restPose();
   const std::vector<Frame> frames = forwardKinematics(rig.skeleton, restPose);
   for (int j : chosen) {

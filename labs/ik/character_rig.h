@@ -70,7 +70,9 @@ struct SkinSurface {
 };
 
 /// Loads and converts; fills *skin when given. Errors: "skeleton: <path>: <Assimp's message>",
-/// "skeleton: <path>: has no joints", "effectors: no joint named 'x' in <path> (joints: a, b, c, ...)".
+/// "skeleton: <path>: has no joints", "effectors: no joint named 'x' in <path> (joints: a, b, c, ...)";
+/// also refuses duplicate joint names, a file where no joint can move, more than 1,000 joints and more
+/// than 64 effectors (the Jacobian would not fit in memory or time).
 Result<pba::ik::Rig> loadCharacterRig(const CharacterDesc& desc, CharacterSkin* skin = nullptr);
 
 /// The character's meshes posed by the rig's joint frames (forward kinematics of the solved pose).

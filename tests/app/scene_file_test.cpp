@@ -37,7 +37,7 @@ TEST(SceneFile, FieldErrorsNameTheField) {
   EXPECT_EQ(error(R"({"lab": "test", "scene": "nope"})"), "f.json: scene: unknown scene 'nope' (see --list-scenes)");
   EXPECT_EQ(error(R"({"lab": "test"})"), "f.json: scene: missing or not a string");
   EXPECT_EQ(error(R"({"lab": "test", "scene": "constant", "speed": 1})"),
-            "f.json: speed: unknown key (expected lab, scene, dt, params, description)");
+            "f.json: speed: unknown key (expected lab, scene, dt, params, camera, description)");
   EXPECT_NE(error(R"({"lab": "test", "scene": "constant", "dt": 0})").find("f.json: dt:"), std::string::npos);
   EXPECT_NE(error(R"([1, 2])").find("top level"), std::string::npos);
   EXPECT_NE(loadSceneFile(tempPath("does-not-exist.json"), "test").error().find("cannot open"), std::string::npos);

@@ -1,13 +1,20 @@
 #include "physics/core/format.h"
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 
 namespace pba {
 
 std::string formatExact(Real value) {
+  // std::to_chars without a format is the shortest text that reads back to the same double, in fixed or
+  // scientific notation, whichever is shorter (-0.1, not -0.10000000000000001; 10, not 1e+01).
+  // Whole numbers below 2^53 print as integers (2000000, not 2e+06), as "%.17g" did.
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", value);
-  return buf;
+  const bool whole = std::isfinite(value) && std::abs(value) < 9007199254740992.0 && value == std::floor(value);
+  const std::to_chars_result r = whole ? std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed)
+                                       : std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, r.ptr);
 }
 
 std::string formatShort(Real value) {

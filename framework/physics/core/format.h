@@ -7,7 +7,8 @@
 
 namespace pba {
 
-/// Shortest text that reads back to the same double ("%.17g"): for values a user must copy exactly.
+/// Shortest text that reads back to the same double (std::to_chars): for values a user must copy
+/// exactly. NaN and infinities read "nan", "inf", "-inf".
 std::string formatExact(Real value);
 /// Compact text ("%g", 6 significant digits): for ranges and bounds.
 std::string formatShort(Real value);
