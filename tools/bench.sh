@@ -31,10 +31,18 @@ commit="$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
   echo "|---|---|---:|---:|---:|---:|---|"
 } >"$tmp/doc.md"
 
+# shellcheck source=tools/progress.sh
+source "$root/tools/progress.sh"
 over=0
+jobs=0 done_jobs=0
+for exe in "$build"/bin/pba-*; do jobs=$((jobs + $("$exe" --list-scenes | wc -l))); done
+for b in "$build"/bench/pba_*_bench; do [[ -x "$b" ]] && jobs=$((jobs + 1)); done
+pba_progress_start
 for exe in "$build"/bin/pba-*; do
   lab="${exe##*/pba-}"
   for scene in $("$exe" --list-scenes | awk '{print $1}'); do
+    done_jobs=$((done_jobs + 1))
+    pba_progress bench "$done_jobs" "$jobs" "scenes and kernels"
     "$exe" --headless --scene "$scene" --frames "$frames" --metrics "$tmp/m.json" >/dev/null 2>&1 || { echo "bench: $lab/$scene failed" >&2; continue; }
     read -r median p95 max < <(tr -d ' \n' <"$tmp/m.json" | grep -oE '"step_ms":\{[^}]*\}' |
       sed -E 's/.*"max":([0-9.e+-]+).*"median":([0-9.e+-]+).*"p95":([0-9.e+-]+).*/\2 \3 \1/')
@@ -52,7 +60,8 @@ done
 for b in "$build"/bench/pba_*_bench; do
   [[ -x "$b" ]] || continue
   name="${b##*/}"
-  echo "Running $name" >&2
+  done_jobs=$((done_jobs + 1))
+  pba_progress bench "$done_jobs" "$jobs" "scenes and kernels"
   "$b" --benchmark_format=csv --benchmark_min_time=0.2 >"$tmp/$name.csv" 2>/dev/null || { echo "bench: $name failed" >&2; continue; }
   {
     echo "### $name"

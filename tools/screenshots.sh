@@ -7,7 +7,12 @@ build="$2"
 mkdir -p "$root/docs/images"
 run=()
 [[ -z "${DISPLAY:-}" ]] && run=(xvfb-run -a -s "-screen 0 1280x720x24")
+# shellcheck source=tools/progress.sh
+source "$root/tools/progress.sh"
 count=0
+total=0
+for exe in "$build"/bin/pba-*; do total=$((total + $("$exe" --list-scenes | wc -l))); done
+pba_progress_start
 for exe in "$build"/bin/pba-*; do
   lab="${exe##*/pba-}"
   for scene in $("$exe" --list-scenes | awk '{print $1}'); do
@@ -16,8 +21,8 @@ for exe in "$build"/bin/pba-*; do
     # The oscillator's figure is its state at end_time (3 periods = 18.85 s): 19 s of frames.
     [[ "$lab-$scene" == particles-oscillator ]] && frames=1140
     "${run[@]}" "$exe" --scene "$scene" --frames "$frames" --screenshot "$png" >/dev/null
-    echo "wrote docs/images/$lab-$scene.png"
     count=$((count + 1))
+    pba_progress screenshots "$count" "$total" "scenes"
   done
 done
 # The lecture-mode look, for the instructor guide.

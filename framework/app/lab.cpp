@@ -1,5 +1,6 @@
 #include "app/lab.h"
 
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -9,6 +10,7 @@
 #include "app/message_text.h"
 #include "app/metrics_report.h"
 #include "app/param_extremes.h"
+#include "app/progress_line.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
 #include "physics/exercises/not_implemented.h"
@@ -63,7 +65,13 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
 
 int runHeadless(const std::string& lab, const LabOptions& o, SceneRunner& runner) {
   const long frames = o.frameCount();
-  for (long f = 0; f < frames; ++f) runner.advanceFrame(kDisplayFrame);
+  // A long run (a batch of IK solves, a soak) shows its progress on a terminal; piped, it prints nothing.
+  ProgressLine progress("pba-" + lab, frames, "frames", /*piped=*/false);
+  const auto start = std::chrono::steady_clock::now();
+  for (long f = 0; f < frames; ++f) {
+    runner.advanceFrame(kDisplayFrame);
+    if (std::chrono::steady_clock::now() - start > std::chrono::seconds(1)) progress.update(f + 1);
+  }
   if (runner.guardMessage()) std::cerr << "pba-" << lab << ": " << *runner.guardMessage() << '\n';
   if (!o.metrics.empty()) {
     if (Status s = writeMetrics(metricsReport(lab, runner, frames), o.metrics); !s) {

@@ -361,6 +361,8 @@ void mainPanel(LabSession& session, UiState& ui) {
     if (!ui.recording.empty()) {
       ImGui::SameLine();
       ImGui::TextColored(detail::kAlertRed, "%s", ui.recording.c_str());
+      if (ui.recordingFraction >= 0.0)  // a recording with an end: how far it is
+        ImGui::ProgressBar(static_cast<float>(ui.recordingFraction), ImVec2(-1.0f, 0.0f));
     }
   }
   if (!session.message().empty()) ImGui::TextDisabled("%s", session.message().c_str());

@@ -27,11 +27,12 @@ struct UiState {
   bool hideUi = false;
   bool lecture = false;
   bool screenshotRequested = false;
-  bool recordRequested = false;  ///< F9 or the Record button: start or stop a recording
-  bool demoActive = false;       ///< playing a demo script: PageDown / PageUp move through its steps
-  int demoMove = 0;              ///< steps asked for this frame (PageDown +1, PageUp −1)
-  bool showNotes = true;         ///< the demo's speaker notes window (key N)
-  std::string recording;         ///< while recording: "REC 3.2 s (192 frames)", else empty
+  bool recordRequested = false;   ///< F9 or the Record button: start or stop a recording
+  bool demoActive = false;        ///< playing a demo script: PageDown / PageUp move through its steps
+  int demoMove = 0;               ///< steps asked for this frame (PageDown +1, PageUp −1)
+  bool showNotes = true;          ///< the demo's speaker notes window (key N)
+  std::string recording;          ///< while recording: "REC 3.2 s (192 frames)", else empty
+  double recordingFraction = -1;  ///< share done of a recording with an end (--record), else negative
   bool frameRequested = false;
   /// Set when the layout changed between frames (lecture mode): panels take their new size once.
   bool relayout = true;

@@ -357,6 +357,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
       }
     }
     ui.recording = recording.statusText();
+    ui.recordingFraction = recording.fraction();
     if (const std::string t = desc.title + (ui.recording.empty() ? "" : "  -  " + ui.recording); t != title) {
       window->setTitle(t);
       title = t;

@@ -14,6 +14,7 @@ Status WindowRecording::start(const std::string& path, int width, int height, lo
   if (!recorder_.open(path, width, height, kRecordFps, &error)) return Error{error};
   total_ = totalFrames;
   started_ = std::chrono::steady_clock::now();
+  progress_.emplace("record", totalFrames, "frames", /*piped=*/true);
   return Status::success();
 }
 
@@ -35,7 +36,7 @@ Status WindowRecording::capture(int width, int height) {
   std::string error;
   if (!graphics::readFramebuffer(width, height, rgb_, &error)) return Error{recorder_.path() + ": " + error};
   if (!recorder_.addFrame(rgb_, &error)) return Error{error};
-  if (total_ > 0) printProgress();
+  if (total_ > 0) progress_->update(recorder_.frames());
   return Status::success();
 }
 
@@ -63,18 +64,5 @@ std::string WindowRecording::statusText() const {
 
 // frames done / total, elapsed and remaining wall time: one line rewritten on a terminal, a line every
 // tenth of the recording otherwise (logs).
-void WindowRecording::printProgress() const {
-  const long done = recorder_.frames();
-  const bool tty = ::isatty(STDERR_FILENO) != 0;
-  if (!tty && done != total_ && done % std::max<long>(1, total_ / 10) != 0) return;
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  const double left = elapsed / static_cast<double>(done) * static_cast<double>(total_ - done);
-  constexpr int kWidth = 30;
-  const int filled = static_cast<int>(kWidth * done / total_);
-  std::fprintf(stderr, "%s[record] [%s%s] %ld/%ld frames, %.0f s elapsed, ~%.0f s left%s", tty ? "\r" : "",
-               std::string(static_cast<std::size_t>(filled), '#').c_str(),
-               std::string(static_cast<std::size_t>(kWidth - filled), ' ').c_str(), done, total_, elapsed, left,
-               tty && done < total_ ? "" : "\n");
-}
 
 }  // namespace pba::app

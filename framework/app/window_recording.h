@@ -5,8 +5,10 @@
 #pragma once
 
 #include <chrono>
+#include <optional>
 #include <string>
 
+#include "app/progress_line.h"
 #include "graphics/frame_recorder.h"
 #include "physics/core/result.h"
 
@@ -27,15 +29,17 @@ class WindowRecording {
   Status capture(int width, int height);
   /// Finishes the file; returns "Recorded N frames (T s) to PATH", or the error.
   Result<std::string> finish();
+  /// Share of a command line recording done, in [0, 1]; negative for F9's (no end set) or none.
+  double fraction() const { return active() && total_ > 0 ? double(recorder_.frames()) / double(total_) : -1.0; }
   /// "REC 3.2 s (192 frames)" or "REC 40/120 frames" while recording, else empty.
   std::string statusText() const;
 
  private:
-  void printProgress() const;
   graphics::FrameRecorder recorder_;
   long total_ = 0;  ///< 0: until stopped (F9)
   std::chrono::steady_clock::time_point started_;
   std::vector<unsigned char> rgb_;
+  std::optional<ProgressLine> progress_;
 };
 
 }  // namespace pba::app
