@@ -260,7 +260,9 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     ImGui::NewFrame();
 
     const float panelPixels = ui.hideUi ? 0.0f : panelWidthPixels(ui);
-    const float overlayPixels = ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(ui);
+    float overlayPixels = ui.hideUi || !runner.scene().wantsOverlay() ? 0.0f : overlayWidthPixels(ui);
+    // A demo's notes window takes the upper right: the framing leaves it that column.
+    if (demo.active() && ui.showNotes && !ui.hideUi) overlayPixels = std::max(overlayPixels, demo.notesWidth() + 16.0f);
     // A/B: the part of the window the panels leave free, split in two views with one camera.
     const bool split = session.comparing();
     const float viewLeft = split ? panelPixels : 0.0f;
@@ -330,7 +332,8 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
       compareCaption(compareText(session, true), viewLeft + viewWidth, viewWidth, true);
     }
     drawLabUi(session, ui);
-    if (demo.active() && !ui.hideUi) demo.notesWindow(ui, static_cast<float>(ws.x) - overlayPixels);
+    if (demo.active() && !ui.hideUi)
+      demo.notesWindow(ui, static_cast<float>(ws.x) - (runner.scene().wantsOverlay() ? overlayWidthPixels(ui) : 0.0f));
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 

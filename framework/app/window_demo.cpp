@@ -1,5 +1,6 @@
 #include "app/window_demo.h"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 
@@ -67,12 +68,16 @@ void WindowDemo::printNotes() const {
   std::cout.flush();
 }
 
+float WindowDemo::notesWidth() const {
+  return std::min(ImGui::GetIO().DisplaySize.x * 0.3f, 28.0f * ImGui::GetFontSize());
+}
+
 void WindowDemo::notesWindow(const UiState& ui, float right) const {
   if (!ui.showNotes) return;
   // In the side font of lecture mode: the notes are for the speaker, the scene is for the room.
   if (ui.lecture && ui.sideFont) ImGui::PushFont(ui.sideFont);
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float width = std::min(display.x * 0.3f, 28.0f * ImGui::GetFontSize());
+  const float width = notesWidth();
   ImGui::SetNextWindowPos(ImVec2(right - 8.0f, 8.0f), ImGuiCond_Always, ImVec2(1, 0));
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, display.y * 0.45f));
   ImGui::SetNextWindowBgAlpha(0.9f);

@@ -25,6 +25,8 @@ class WindowDemo {
   const DemoStep& step() const { return script_.steps[index_]; }
   /// Prints the step's notes to the terminal (the presenter's screen) once per step shown.
   void printNotes() const;
+  /// Width of the notes window [pixels] at the current font and display size.
+  float notesWidth() const;
   /// The speaker notes window in the upper right, left of `right` [pixels].
   void notesWindow(const UiState& ui, float right) const;
   /// The camera of the step just shown (once).
