@@ -21,6 +21,9 @@ int runRewindCheck(const std::string& lab, const LabOptions& o, SceneRunner& run
   const long n = *o.checkRewind;
   const std::string who = "pba-" + lab + ": --check-rewind: scene " + runner.sceneName();
   runFrames(runner, n);
+  // Pausing is the user's setting, not part of a state: a run the guard pauses during A must start B
+  // and C unpaused, as A did.
+  const bool pausedAtSave = runner.paused();
   const auto start = std::chrono::steady_clock::now();
   RunnerSnapshot saved = runner.snapshot();
   const double saveMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -36,12 +39,14 @@ int runRewindCheck(const std::string& lab, const LabOptions& o, SceneRunner& run
     std::cerr << who << ": the saved state does not restore\n";
     return kExitInternal;
   }
+  runner.setPaused(pausedAtSave);
   RunnerSnapshot second = runner.snapshot();
   saved = RunnerSnapshot{};  // the first copy is gone before run B
   runFrames(runner, n);
   const nlohmann::json b = stateFingerprint(runner);
 
   runner.restore(second);
+  runner.setPaused(pausedAtSave);
   second = RunnerSnapshot{};
   runFrames(runner, n);
   const nlohmann::json c = stateFingerprint(runner);
