@@ -12,6 +12,8 @@ function(pba_add_lab name)
   target_link_libraries(${target} PRIVATE pba::app)
   target_compile_definitions(${target} PRIVATE PBA_LAB_NAME="${name}")
   pba_target_warnings(${target})
-  set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bin")
+  # One unity batch per lab: its scenes register in the order of SOURCES (the first is the default scene),
+  # which within one translation unit the language defines; across units the order is the linker's.
+  set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bin" UNITY_BUILD_BATCH_SIZE 0)
   set_property(GLOBAL APPEND PROPERTY PBA_LABS ${name})
 endfunction()

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """One exercise, one grade (docs/architecture.md §5, docs/architecture.md "Exercises"), checked on one build.
 
-Usage: check_exercise_isolation.py BUILD_DIR CATALOG.tsv [--jobs N] [--work DIR]
+Usage: check_exercise_isolation.py TEST_DIR CATALOG.tsv [--jobs N] [--work DIR] [--exclude REGEX] [--skip-label L]
 
-BUILD_DIR is a build of the switchable tree (tools/student_release.sh --switchable): every solution
-sits behind a run-time switch, so a test process runs tag T's stub when PBA_STUB_EXERCISES names T, and
-appends each tag whose code it runs to the file PBA_EXERCISE_TRACE names.
+TEST_DIR holds the ctest lists of a build whose tests run the switchable tree's physics library
+(tools/student_release.sh --switchable; tools/check_student_release.sh puts it on LD_LIBRARY_PATH): every
+solution sits behind a run-time switch, so a test process runs tag T's stub when PBA_STUB_EXERCISES
+names T, and appends each tag whose code it runs to the file PBA_EXERCISE_TRACE names.
 
 1. Trace run: every test of the build runs once with every solution in place and its own trace file.
    Every test must pass. An exercise test of tag A must run A's code and no other exercise's code.
@@ -116,6 +117,7 @@ def main():
     ap.add_argument("catalog")
     ap.add_argument("--jobs", type=int, default=int(os.environ.get("PBA_JOBS", os.cpu_count() or 2)))
     ap.add_argument("--skip-label", action="append", default=[], help="leave out tests with this ctest label")
+    ap.add_argument("--exclude", default=None, help="leave out tests whose name matches this regular expression")
     ap.add_argument("--work", default=None, help="folder for trace files and logs (default BUILD/isolation)")
     args = ap.parse_args()
     if not os.path.isdir(args.build) or not os.path.isfile(args.catalog):
@@ -125,8 +127,10 @@ def main():
     known = {tag for tag, _ in tags}
     work = os.path.abspath(args.work or os.path.join(args.build, "isolation"))
     os.makedirs(work, exist_ok=True)
+    excluded = re.compile(args.exclude) if args.exclude else None
     tests = [t for t in load_tests(args.build)
-             if not set(t["props"].get("LABELS", [])) & set(args.skip_label)]
+             if not set(t["props"].get("LABELS", [])) & set(args.skip_label)
+             and not (excluded and excluded.search(t["name"]))]
     by_name = {t["name"]: t for t in tests}
     problems = []
 

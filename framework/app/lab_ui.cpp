@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "app/resource_dir.h"
 #include "app/scene_registry.h"
 #include "physics/exercises/not_implemented.h"
 
@@ -267,7 +268,7 @@ void metricsTable(LabSession& session, const UiState& ui) {
 
 void sceneFileControls(LabSession& session, UiState& ui) {
   if (ui.scenePath[0] == '\0')
-    std::snprintf(ui.scenePath, sizeof ui.scenePath, "%s/scenes/%s/%s.json", PBA_RESOURCE_DIR, session.lab().c_str(),
+    std::snprintf(ui.scenePath, sizeof ui.scenePath, "%s/scenes/%s/%s.json", resourceDir().c_str(), session.lab().c_str(),
                   session.runner().sceneName().c_str());
   // The path takes the panel's whole width, and the full text is repeated below it (wrapped), so a long
   // path can be read without scrolling the field.
@@ -440,19 +441,24 @@ void drawLabUi(LabSession& session, UiState& ui) {
   const float legendLeft = ui.hideUi ? 8.0f : panelWidthPixels(ui) + 8.0f;  // in the panel's font
   float plotsTop = ImGui::GetIO().DisplaySize.y, plotsLeft = ImGui::GetIO().DisplaySize.x;
   float timelineTop = plotsTop;
+  // The scene's own window (IK's Jacobian, the comparison plot) takes a column at the right edge down to
+  // the plots, or to the bottom when there are none: the timeline strip ends left of it.
+  const float right = ImGui::GetIO().DisplaySize.x - 8.0f;
+  const float columnLeft = right - overlayWidthPixels(ui) + 8.0f;
+  const bool overlay = session.runner().scene().wantsOverlay();
   if (!ui.hideUi) {
     mainPanel(session, ui);
     plotsTop = detail::plotPanel(session, ui, &plotsLeft);
-    timelineTop = detail::timelineStrip(session, ui, legendLeft, plotsLeft - 8.0f);
+    const float timelineRight = overlay ? std::min(plotsLeft, columnLeft) : plotsLeft;
+    timelineTop = detail::timelineStrip(session, ui, legendLeft, timelineRight - 8.0f);
   }
   if (side) ImGui::PushFont(ui.sideFont);
   detail::legendWindow(session.runner().scene(), legendLeft, timelineTop);
   if (side) ImGui::PopFont();
   if (!ui.hideUi) {
     Scene& scene = session.runner().scene();
-    if (scene.wantsOverlay()) {
-      const float right = ImGui::GetIO().DisplaySize.x - 8.0f;
-      const ScreenRect column{right - overlayWidthPixels(ui) + 8.0f, 8.0f, right, plotsTop - 8.0f};
+    if (overlay) {
+      const ScreenRect column{columnLeft, 8.0f, right, plotsTop - 8.0f};
       // The scene's window stays inside its column (it scrolls when its contents are taller).
       ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(column.x1 - column.x0, column.y1 - column.y0));
       if (side) ImGui::PushFont(ui.sideFont);

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <iostream>
@@ -20,6 +21,7 @@
 #include "app/lab_session.h"
 #include "app/lab_ui.h"
 #include "app/metrics_report.h"
+#include "app/resource_dir.h"
 #include "app/scene_draw.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
@@ -40,6 +42,16 @@ constexpr int kMaxStepsPerFrame = 2000;   // bounds one frame's physics so the w
 constexpr double kMaxFrameSeconds = 0.1;  // a stalled frame (dragging the window) never jumps far
 constexpr float kMinFramedPitch = 0.12f;  // [rad] F keeps a pitch in this range, else restores the default
 constexpr float kMaxFramedPitch = 1.35f;  // [rad]
+
+// PBA_MSAA_SAMPLES=N (0 to 16) sets the window's multisampling, else `fallback` (4). The window-driving
+// tests run at 0: software rendering under Xvfb pays for every sample, and they check behaviour, not edges.
+int multisamplesFromEnvironment(int fallback) {
+  const char* text = std::getenv("PBA_MSAA_SAMPLES");
+  if (!text || !*text) return fallback;
+  char* end = nullptr;
+  const long n = std::strtol(text, &end, 10);
+  return *end == '\0' && n >= 0 && n <= 16 ? static_cast<int>(n) : fallback;
+}
 
 // Ctrl+C in the terminal (SIGINT) or SIGTERM closes the window normally, so settings are saved.
 std::atomic<bool> gStopRequested{false};
@@ -170,7 +182,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
                          options.compare ? options.compare->first : std::string(),
                          options.compare ? options.compare->second : std::string());
   session.settings() = loadLabSettings(settingsDir);
-  session.setExercises(loadExercises(std::string(PBA_RESOURCE_DIR) + "/exercises.tsv", lab));
+  session.setExercises(loadExercises(resourceDir() + "/exercises.tsv", lab));
   if (looksLikeSceneFile(options.scene)) {  // the file's camera bookmark
     Result<LoadedScene> file = loadSceneFile(options.scene, lab);
     if (file && file.value().camera) session.requestCamera(*file.value().camera);
@@ -190,6 +202,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   if (session.settings().plotted.empty()) session.settings().plotted = runner.scene().defaultPlots();
 
   graphics::WindowDesc desc;
+  desc.samples = multisamplesFromEnvironment(desc.samples);
   desc.title = "PBA Labs - " + lab;
   desc.width = capture ? 1280 : session.settings().windowWidth;
   desc.height = capture ? 720 : session.settings().windowHeight;
@@ -201,7 +214,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     return kExitInternal;
   }
   std::unique_ptr<graphics::Renderer> renderer =
-      graphics::Renderer::create(std::string(PBA_RESOURCE_DIR) + "/shaders", &error);
+      graphics::Renderer::create(resourceDir() + "/shaders", &error);
   if (!renderer) {
     std::cerr << "pba-" << lab << ": " << error << '\n';
     return kExitInternal;

@@ -43,7 +43,7 @@ struct FrameStats {
 
 class Renderer {
  public:
-  /// Loads the shaders from shaderDir (e.g. PBA_RESOURCE_DIR "/shaders"); needs a current GL 3.3 context.
+  /// Loads the shaders from shaderDir (e.g. the resources/shaders folder); needs a current GL 3.3 context.
   static std::unique_ptr<Renderer> create(const std::string& shaderDir, std::string* error);
   ~Renderer();
   Renderer(const Renderer&) = delete;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <unordered_map>
 
+#include "app/resource_dir.h"
 #include "graphics/model.h"
 #include "graphics/skinning.h"
 
@@ -15,7 +16,7 @@ std::string resolveResourcePath(const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
-  const fs::path fromRoot = fs::path(PBA_RESOURCE_DIR).parent_path() / path;
+  const fs::path fromRoot = fs::path(app::repositoryRoot()) / path;
   return fs::exists(fromRoot, ec) ? fromRoot.string() : path;
 }
 

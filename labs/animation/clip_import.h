@@ -21,7 +21,7 @@ struct ImportedClip {
   std::string path;  ///< the file as opened
 };
 
-/// The path as given when it exists, else relative to the repository root (PBA_RESOURCE_DIR/..).
+/// The path as given when it exists, else relative to the repository root (app::repositoryRoot()).
 std::string resolveResourcePath(const std::string& path);
 
 /// Errors name the field and the file: "skeleton: x.bvh: <Assimp's message>", "skeleton: x.obj: has

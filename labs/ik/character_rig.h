@@ -47,7 +47,7 @@ enum class LimbJoint { None, Elbow, Knee };
 /// "mixamorig:RightLeg" (the shin; "UpLeg" is the thigh), "l_knee", "LowerArm", "Calf", … .
 LimbJoint limbJointFromName(const std::string& name);
 
-/// The path as given when it exists, else relative to the repository root (PBA_RESOURCE_DIR/..).
+/// The path as given when it exists, else relative to the repository root (app::repositoryRoot()).
 std::string resolveModelPath(const std::string& path);
 
 /// Splits "a, b,c" into {"a", "b", "c"} (blanks trimmed, empty names dropped).

@@ -16,7 +16,7 @@
 namespace {
 using namespace pba;
 
-constexpr std::size_t kTrail = 600;
+constexpr std::size_t kOrbitTrail = 600;
 // The orbital plane is y = 0 in the simulation; it is drawn this high so the ground grid hides nothing.
 constexpr Vec3 kDrawOffset{0.0, 0.6, 0.0};  // [m]
 constexpr int kEllipseSegments = 128;
@@ -70,7 +70,7 @@ class OrbitScene final : public app::Scene {
     }
     for (Planet& p : planets_) {
       p.trail.push_back(p.orbit.position());
-      if (p.trail.size() > kTrail) p.trail.pop_front();
+      if (p.trail.size() > kOrbitTrail) p.trail.pop_front();
     }
     rate_.stop(updates);
   }

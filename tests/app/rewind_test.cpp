@@ -28,10 +28,6 @@ class BufferScene final : public Scene {
 };
 PBA_REGISTER_SCENE("Test", "buffer", BufferScene);
 
-testing::ConstantVelocityScene& sceneOf(SceneRunner& r) {
-  return static_cast<testing::ConstantVelocityScene&>(r.scene());
-}
-
 void frames(SceneRunner& r, int n) {
   for (int i = 0; i < n; ++i) r.advanceFrame(kDisplayFrame);
 }
@@ -43,13 +39,13 @@ TEST(Rewind, RestoringASnapshotAndSteppingReproducesTheRunExactly) {
   const RunnerSnapshot saved = r.snapshot();
   ASSERT_TRUE(saved.scene);
   frames(r, 11);
-  const Real x = sceneOf(r).x;
+  const Real x = testing::constantVelocitySceneOf(r).x;
   const std::int64_t steps = r.steps();
   const Real t = r.simTime();
   ASSERT_TRUE(r.restore(saved));
   EXPECT_EQ(r.steps(), saved.steps);
   frames(r, 11);
-  EXPECT_EQ(sceneOf(r).x, x);  // bit for bit, not near
+  EXPECT_EQ(testing::constantVelocitySceneOf(r).x, x);  // bit for bit, not near
   EXPECT_EQ(r.steps(), steps);
   EXPECT_EQ(r.simTime(), t);
 }
@@ -61,11 +57,11 @@ TEST(Rewind, ARestoredStateBringsBackParametersAndKeepsTheParameterTableOnTheLiv
   ASSERT_TRUE(r.scene().params().setFromText("speed", "4").ok());
   frames(r, 3);
   ASSERT_TRUE(r.restore(saved));
-  EXPECT_EQ(sceneOf(r).speed, 1.0);
-  EXPECT_EQ(sceneOf(r).x, 0.0);
+  EXPECT_EQ(testing::constantVelocitySceneOf(r).speed, 1.0);
+  EXPECT_EQ(testing::constantVelocitySceneOf(r).x, 0.0);
   // The table still writes the live scene's field, not the saved copy's.
   ASSERT_TRUE(r.scene().params().setFromText("speed", "3").ok());
-  EXPECT_EQ(sceneOf(r).speed, 3.0);
+  EXPECT_EQ(testing::constantVelocitySceneOf(r).speed, 3.0);
 }
 
 TEST(Rewind, AStateOfAnotherSceneTypeIsRefusedAndChangesNothing) {
@@ -143,7 +139,7 @@ TEST(LabSessionRewind, ScrubbingRestoresTheStateAndRebuildsThePlotsUpToTheFrameS
   const Real x5 = session.history().at(5).metrics["x_m"].get<double>();
   session.scrubTo(5);
   EXPECT_TRUE(runner.paused());
-  EXPECT_EQ(sceneOf(runner).x, x5);
+  EXPECT_EQ(testing::constantVelocitySceneOf(runner).x, x5);
   const std::vector<double> plotted = session.plots().series("x_m");
   ASSERT_EQ(plotted.size(), 6u);  // frames 0..5
   EXPECT_EQ(plotted.back(), x5);
@@ -158,7 +154,7 @@ TEST(LabSessionRewind, ScrubbingRestoresTheStateAndRebuildsThePlotsUpToTheFrameS
   runner.advanceFrame(kDisplayFrame);
   session.afterFrame();
   EXPECT_EQ(session.history().size(), 8u);
-  EXPECT_EQ(sceneOf(runner).x, session.history().at(7).metrics["x_m"].get<double>());
+  EXPECT_EQ(testing::constantVelocitySceneOf(runner).x, session.history().at(7).metrics["x_m"].get<double>());
 }
 
 TEST(LabSessionRewind, StepForwardAtTheNewestFrameTakesANewStep) {

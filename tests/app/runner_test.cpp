@@ -15,8 +15,6 @@ namespace pba::app {
 namespace {
 using testing::ConstantVelocityScene;
 
-ConstantVelocityScene& sceneOf(SceneRunner& r) { return static_cast<ConstantVelocityScene&>(r.scene()); }
-
 TEST(SceneRunner, TakesWholeFixedStepsAndCarriesTheRemainder) {
   SceneRunner r;
   ASSERT_TRUE(r.setDt(0.01).ok());
@@ -26,7 +24,7 @@ TEST(SceneRunner, TakesWholeFixedStepsAndCarriesTheRemainder) {
   EXPECT_EQ(r.steps(), 2);
   r.advanceFrame(0.025);
   EXPECT_EQ(r.steps(), 5);
-  EXPECT_NEAR(sceneOf(r).x, 5 * 0.01 * 1.0, 1e-15);
+  EXPECT_NEAR(testing::constantVelocitySceneOf(r).x, 5 * 0.01 * 1.0, 1e-15);
   EXPECT_NEAR(r.simTime(), 0.05, 1e-15);
 }
 
@@ -46,7 +44,7 @@ TEST(SceneRunner, PauseStopsTimeAndSingleStepAdvancesExactlyOneStep) {
   EXPECT_EQ(r.steps(), 0);
   r.singleStep();
   EXPECT_EQ(r.steps(), 1);
-  EXPECT_EQ(sceneOf(r).stepsTaken, 1);
+  EXPECT_EQ(testing::constantVelocitySceneOf(r).stepsTaken, 1);
 }
 
 TEST(SceneRunner, SubstepsSplitEachStepAndTimeScaleSlowsTheClock) {
@@ -57,8 +55,8 @@ TEST(SceneRunner, SubstepsSplitEachStepAndTimeScaleSlowsTheClock) {
   ASSERT_TRUE(r.load("constant", 1).ok());
   r.advanceFrame(0.1);  // 0.05 s of simulated time
   EXPECT_EQ(r.steps(), 5);
-  EXPECT_EQ(sceneOf(r).stepsTaken, 20);
-  EXPECT_NEAR(sceneOf(r).x, 0.05, 1e-15);
+  EXPECT_EQ(testing::constantVelocitySceneOf(r).stepsTaken, 20);
+  EXPECT_NEAR(testing::constantVelocitySceneOf(r).x, 0.05, 1e-15);
   EXPECT_FALSE(r.setSubsteps(0).ok());
   EXPECT_FALSE(r.setTimeScale(5.0).ok());
   EXPECT_FALSE(r.setDt(-1.0).ok());
@@ -79,7 +77,7 @@ TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
   SceneRunner r;
   ASSERT_TRUE(r.load("constant", 1).ok());
   r.advanceFrame(0.1);
-  sceneOf(r).poison = true;
+  testing::constantVelocitySceneOf(r).poison = true;
   const long before = r.steps();
   r.advanceFrame(0.1);
   EXPECT_EQ(r.steps(), before + 1) << "caught within one step";
@@ -88,7 +86,7 @@ TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
   ASSERT_TRUE(r.guardMessage().has_value());
   EXPECT_NE(r.guardMessage()->find("point position is not finite"), std::string::npos);
   EXPECT_NE(r.guardMessage()->find("smaller time step"), std::string::npos);
-  sceneOf(r).poison = false;
+  testing::constantVelocitySceneOf(r).poison = false;
   r.reset();
   EXPECT_FALSE(r.guardMessage().has_value());
   EXPECT_TRUE(r.finite());
@@ -97,10 +95,10 @@ TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
 TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   SceneRunner r;
   ASSERT_TRUE(r.load("constant", 1).ok());                    // energy 0.5 J at reset
-  sceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine
+  testing::constantVelocitySceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine
   r.advanceFrame(0.1);
   EXPECT_FALSE(r.paused());
-  sceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor * 2;
+  testing::constantVelocitySceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor * 2;
   r.advanceFrame(0.1);
   EXPECT_TRUE(r.paused());
   ASSERT_TRUE(r.guardMessage().has_value());
@@ -179,7 +177,7 @@ TEST(CommandLine, BadArgumentsNameTheOption) {
 TEST(CommandLine, PrepareRunnerAppliesOverridesAndReportsBadOnes) {
   SceneRunner r;
   ASSERT_TRUE(prepareRunner("test", parse({"--scene", "constant", "--set", "speed=4"}).value(), r).ok());
-  EXPECT_EQ(sceneOf(r).speed, 4.0);
+  EXPECT_EQ(testing::constantVelocitySceneOf(r).speed, 4.0);
   SceneRunner invalid;
   const Status v = prepareRunner("test", parse({"--scene", "constant", "--set", "label=invalid"}).value(), invalid);
   EXPECT_EQ(v.error(), "label: 'invalid' is not a valid label") << "Scene::validate() runs before the scene is used";

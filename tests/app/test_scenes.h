@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "app/scene.h"
+#include "app/scene_runner.h"
 
 namespace pba::app::testing {
 
@@ -53,5 +54,10 @@ class ConstantVelocityScene final : public Scene {
   bool poison = false;
   Real energyBoost = 0.0;
 };
+
+/// The runner's scene as the constant-velocity scene it was given.
+inline ConstantVelocityScene& constantVelocitySceneOf(SceneRunner& r) {
+  return static_cast<ConstantVelocityScene&>(r.scene());
+}
 
 }  // namespace pba::app::testing

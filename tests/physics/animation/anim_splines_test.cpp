@@ -17,29 +17,29 @@ using pba::Real;
 using pba::Vec3;
 namespace an = pba::animation;
 
-const std::vector<Real> kTimes{0.0, 0.3, 1.0, 1.2, 2.5, 3.0};
+const std::vector<Real> kSplineTimes{0.0, 0.3, 1.0, 1.2, 2.5, 3.0};
 
 TEST(CubicSpline, ClampedWithExactEndSlopesReproducesACubic) {
   auto f = [](Real t) { return 1.0 - 2.0 * t + 0.5 * t * t + 0.3 * t * t * t; };
   auto df = [](Real t) { return -2.0 + t + 0.9 * t * t; };
   std::vector<Real> v;
-  for (Real t : kTimes) v.push_back(f(t));
-  const auto m = an::cubicSplineMoments<Real>(kTimes, v, an::CubicEnds::Clamped, df(0.0), df(3.0));
+  for (Real t : kSplineTimes) v.push_back(f(t));
+  const auto m = an::cubicSplineMoments<Real>(kSplineTimes, v, an::CubicEnds::Clamped, df(0.0), df(3.0));
   for (Real t = 0.01; t < 3.0; t += 0.07) {  // inside the knots (outside, the ends hold)
-    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kTimes, v, m, t, 0), f(t), 1e-12) << "t " << t;
-    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kTimes, v, m, t, 1), df(t), 1e-11) << "t " << t;
+    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t, 0), f(t), 1e-12) << "t " << t;
+    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t, 1), df(t), 1e-11) << "t " << t;
   }
 }
 
 TEST(CubicSpline, NaturalMomentsSolveTheTridiagonalSystemAsEigenDoes) {
   std::vector<Real> v{0.0, 1.0, -1.0, 2.0, 0.5, 0.0};
-  const auto m = an::cubicSplineMoments<Real>(kTimes, v, an::CubicEnds::Natural, 0.0, 0.0);
-  const int n = static_cast<int>(kTimes.size());
+  const auto m = an::cubicSplineMoments<Real>(kSplineTimes, v, an::CubicEnds::Natural, 0.0, 0.0);
+  const int n = static_cast<int>(kSplineTimes.size());
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
   a(0, 0) = a(n - 1, n - 1) = 1.0;
   for (int i = 1; i + 1 < n; ++i) {
-    const Real h0 = kTimes[i] - kTimes[i - 1], h1 = kTimes[i + 1] - kTimes[i];
+    const Real h0 = kSplineTimes[i] - kSplineTimes[i - 1], h1 = kSplineTimes[i + 1] - kSplineTimes[i];
     a(i, i - 1) = h0;
     a(i, i) = 2 * (h0 + h1);
     a(i, i + 1) = h1;
@@ -53,31 +53,31 @@ TEST(CubicSpline, NaturalSplineIsC2WithZeroEndCurvature) {
   std::vector<Vec3> v;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<Real> u(-1.0, 1.0);
-  for (size_t k = 0; k < kTimes.size(); ++k) v.emplace_back(u(rng), u(rng), u(rng));
-  const auto m = an::cubicSplineMoments<Vec3>(kTimes, v, an::CubicEnds::Natural, Vec3(0.0), Vec3(0.0));
-  EXPECT_VEC3_NEAR(an::cubicSplineEvaluate<Vec3>(kTimes, v, m, 1e-12, 2), Vec3(0.0), 1e-9);
-  for (size_t k = 1; k + 1 < kTimes.size(); ++k) {
+  for (size_t k = 0; k < kSplineTimes.size(); ++k) v.emplace_back(u(rng), u(rng), u(rng));
+  const auto m = an::cubicSplineMoments<Vec3>(kSplineTimes, v, an::CubicEnds::Natural, Vec3(0.0), Vec3(0.0));
+  EXPECT_VEC3_NEAR(an::cubicSplineEvaluate<Vec3>(kSplineTimes, v, m, 1e-12, 2), Vec3(0.0), 1e-9);
+  for (size_t k = 1; k + 1 < kSplineTimes.size(); ++k) {
     const Real e = 1e-9;
     for (int d = 0; d <= 2; ++d)
-      EXPECT_VEC3_NEAR(an::cubicSplineEvaluate<Vec3>(kTimes, v, m, kTimes[k] - e, d),
-                       an::cubicSplineEvaluate<Vec3>(kTimes, v, m, kTimes[k] + e, d), 1e-6);
-    EXPECT_VEC3_NEAR(an::cubicSplineEvaluate<Vec3>(kTimes, v, m, kTimes[k], 0), v[k], 1e-12);
+      EXPECT_VEC3_NEAR(an::cubicSplineEvaluate<Vec3>(kSplineTimes, v, m, kSplineTimes[k] - e, d),
+                       an::cubicSplineEvaluate<Vec3>(kSplineTimes, v, m, kSplineTimes[k] + e, d), 1e-6);
+    EXPECT_VEC3_NEAR(an::cubicSplineEvaluate<Vec3>(kSplineTimes, v, m, kSplineTimes[k], 0), v[k], 1e-12);
   }
 }
 
 TEST(CubicSpline, DerivativesMatchCentralDifferences) {
   std::vector<Real> v{0.0, 1.0, -1.0, 2.0, 0.5, 0.0};
-  const auto m = an::cubicSplineMoments<Real>(kTimes, v, an::CubicEnds::Natural, 0.0, 0.0);
+  const auto m = an::cubicSplineMoments<Real>(kSplineTimes, v, an::CubicEnds::Natural, 0.0, 0.0);
   const Real e = 1e-6;
   for (Real t = 0.05; t < 2.95; t += 0.1) {
-    const Real c = (an::cubicSplineEvaluate<Real>(kTimes, v, m, t + e, 0) -
-                    an::cubicSplineEvaluate<Real>(kTimes, v, m, t - e, 0)) /
+    const Real c = (an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t + e, 0) -
+                    an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t - e, 0)) /
                    (2 * e);
-    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kTimes, v, m, t, 1), c, 1e-7) << "t " << t;
-    const Real c2 = (an::cubicSplineEvaluate<Real>(kTimes, v, m, t + e, 1) -
-                     an::cubicSplineEvaluate<Real>(kTimes, v, m, t - e, 1)) /
+    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t, 1), c, 1e-7) << "t " << t;
+    const Real c2 = (an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t + e, 1) -
+                     an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t - e, 1)) /
                     (2 * e);
-    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kTimes, v, m, t, 2), c2, 1e-6) << "t " << t;
+    EXPECT_NEAR(an::cubicSplineEvaluate<Real>(kSplineTimes, v, m, t, 2), c2, 1e-6) << "t " << t;
   }
 }
 
@@ -114,8 +114,8 @@ TEST(Channel, InsertDeleteAndMoveKeepKeysSortedAndRefuseEqualTimes) {
 
 TEST(Channel, NaturalCubicModeGivesVelocityAndAccelerationAtAnyTime) {
   an::Channel<Vec3> c(an::Interpolation::NaturalCubic, Vec3(0.0));
-  for (size_t k = 0; k < kTimes.size(); ++k)
-    ASSERT_TRUE(c.insert(kTimes[k], Vec3(std::sin(kTimes[k]), kTimes[k], 1.0)).ok());
+  for (size_t k = 0; k < kSplineTimes.size(); ++k)
+    ASSERT_TRUE(c.insert(kSplineTimes[k], Vec3(std::sin(kSplineTimes[k]), kSplineTimes[k], 1.0)).ok());
   const Real e = 1e-6;
   for (Real t = 0.1; t < 2.9; t += 0.3) {
     EXPECT_VEC3_NEAR(c.velocityAt(t), (c.valueAt(t + e) - c.valueAt(t - e)) / (2 * e), 1e-6);

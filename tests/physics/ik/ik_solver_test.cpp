@@ -32,11 +32,11 @@ namespace pba::ik {
 namespace {
 
 #ifdef NDEBUG
-constexpr int kTargets = 4000;    // per solver and chain
+constexpr int kSolverTargets = 4000;    // per solver and chain
 constexpr int kFdTargets = 1000;  // central differences: 2 FK per Jacobian column
 constexpr int kTreeTargets = 200;
 #else
-constexpr int kTargets = 500;
+constexpr int kSolverTargets = 500;
 constexpr int kFdTargets = 150;
 constexpr int kTreeTargets = 40;
 #endif
@@ -54,7 +54,7 @@ bool farBelowOnAFewGoals(const Rig& rig, const SolveOptions& o, Real minimumRate
 }
 
 void expectRandomTargets(const Rig& rig, const SolveOptions& o, Real minimumRate, const char* label,
-                         int count = kTargets, std::uint64_t seed = 2024) {
+                         int count = kSolverTargets, std::uint64_t seed = 2024) {
   if (farBelowOnAFewGoals(rig, o, minimumRate, seed, label, std::min(count, 50))) return;
   const testing::BatchStats s = testing::runRandomTargets(rig, o, count, seed);
   SCOPED_TRACE(::testing::Message() << solverName(o.solver) << " on " << label << ", seed " << seed);
@@ -307,7 +307,7 @@ TEST(IK_1_AnalyticSolver, ReachesEveryGoalOfOneAndTwoBallJoints) {
     d.links = links;
     d.joint = JointType::Ball;
     const testing::BatchStats s =
-        testing::runRandomTargets(buildIkChain(d).value(), unlimited(SolverKind::Analytic), kTargets / 4, 1);
+        testing::runRandomTargets(buildIkChain(d).value(), unlimited(SolverKind::Analytic), kSolverTargets / 4, 1);
     SCOPED_TRACE(::testing::Message() << links << " ball links");
     EXPECT_EQ(s.successes, s.solves);
     EXPECT_EQ(s.nonFinite, 0);

@@ -134,7 +134,7 @@ TEST(PART_5_RestingContact, BallsBounceThenComeToRestWithoutSinkingUnderTheLibra
   for (const Real e : {0.7, 0.9}) {
     for (const ode::IntegratorKind kind : {ode::IntegratorKind::Midpoint, ode::IntegratorKind::VelocityVerlet,
                                            ode::IntegratorKind::ImplicitEuler, ode::IntegratorKind::Adaptive}) {
-      SCOPED_TRACE(testing::Message() << ode::integratorName(kind) << ", restitution " << e);
+      SCOPED_TRACE(::testing::Message() << ode::integratorName(kind) << ", restitution " << e);
       ParticleSystem sys;
       Obstacles obstacles;
       obstacles.planes.push_back({});

@@ -1,0 +1,15 @@
+// Where the labs find their resources (shaders, scene files, the exercise catalog): the repository's
+// resources/ folder, fixed at configure time.
+#pragma once
+
+#include <string>
+
+namespace pba::app {
+
+/// The absolute path of the repository's resources/ folder, without a trailing slash.
+const std::string& resourceDir();
+
+/// The repository root: the folder above resourceDir().
+std::string repositoryRoot();
+
+}  // namespace pba::app
