@@ -239,8 +239,12 @@ def main():
     ap.add_argument("--out", help="output folder (default build/sweeps/LAB-SCENE-TIME)")
     ap.add_argument("--bin-dir", default=os.path.join(ROOT, "build", "release", "bin"))
     ap.add_argument("--time-limit", type=float, default=600.0, help="seconds per run before it counts as failed")
-    ap.add_argument("lab_args", nargs="*", help="after --: more options for every run of the lab")
-    a = ap.parse_args()
+    # Everything after the first "--" goes to every run of the lab (argparse alone would read the lab's
+    # options as more positional arguments after LAB and refuse them).
+    argv = sys.argv[1:]
+    split = argv.index("--") if "--" in argv else len(argv)
+    a = ap.parse_args(argv[:split])
+    a.lab_args = argv[split + 1:]
     if not a.sets:
         die("nothing to sweep: give at least one --set NAME=VALUES")
     if a.seeds < 1 or a.jobs < 1:

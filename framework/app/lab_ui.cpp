@@ -268,8 +268,8 @@ void metricsTable(LabSession& session, const UiState& ui) {
 
 void sceneFileControls(LabSession& session, UiState& ui) {
   if (ui.scenePath[0] == '\0')
-    std::snprintf(ui.scenePath, sizeof ui.scenePath, "%s/scenes/%s/%s.json", resourceDir().c_str(), session.lab().c_str(),
-                  session.runner().sceneName().c_str());
+    std::snprintf(ui.scenePath, sizeof ui.scenePath, "%s/scenes/%s/%s.json", resourceDir().c_str(),
+                  session.lab().c_str(), session.runner().sceneName().c_str());
   // The path takes the panel's whole width, and the full text is repeated below it (wrapped), so a long
   // path can be read without scrolling the field.
   ImGui::TextUnformatted("scene file (JSON)");

@@ -48,12 +48,12 @@ bool registerLabFlag(std::string flag, std::string param, std::string help, std:
 #define PBA_CONCAT_INNER(a, b) a##b
 #define PBA_CONCAT(a, b) PBA_CONCAT_INNER(a, b)
 // Every registered scene can save and restore its state by copying itself (app/scene_state.h).
-#define PBA_REGISTER_SCENE(category, name, Type)                                                               \
+#define PBA_REGISTER_SCENE(category, name, Type)                                                                  \
   static const bool PBA_CONCAT(pbaSceneRegistered_, __COUNTER__) = ::pba::app::registerScene(category, name, [] { \
-    auto scene = std::unique_ptr<::pba::app::Scene>(new Type());                                               \
-    static const auto ops = std::make_shared<const ::pba::app::CopySceneStateOps<Type>>();                     \
-    scene->setStateOps(ops);                                                                                   \
-    return scene;                                                                                              \
+    auto scene = std::unique_ptr<::pba::app::Scene>(new Type());                                                  \
+    static const auto ops = std::make_shared<const ::pba::app::CopySceneStateOps<Type>>();                        \
+    scene->setStateOps(ops);                                                                                      \
+    return scene;                                                                                                 \
   })
 #define PBA_REGISTER_LAB_FLAG(...) \
   static const bool PBA_CONCAT(pbaFlagRegistered_, __COUNTER__) = ::pba::app::registerLabFlag(__VA_ARGS__)

@@ -213,8 +213,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     std::cerr << "pba-" << lab << ": " << error << '\n';
     return kExitInternal;
   }
-  std::unique_ptr<graphics::Renderer> renderer =
-      graphics::Renderer::create(resourceDir() + "/shaders", &error);
+  std::unique_ptr<graphics::Renderer> renderer = graphics::Renderer::create(resourceDir() + "/shaders", &error);
   if (!renderer) {
     std::cerr << "pba-" << lab << ": " << error << '\n';
     return kExitInternal;

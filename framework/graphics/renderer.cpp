@@ -18,6 +18,16 @@ namespace pba::graphics {
 namespace {
 
 constexpr int kShadowTextureUnit = 3;
+constexpr int kSoftwareShadowTaps = 4;  // RendererSettings::shadowTaps on a software rasteriser
+
+// OpenGL runs on the CPU: Mesa's llvmpipe or softpipe, or SwiftShader.
+bool softwareRasteriser() {
+  const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (!name) return false;
+  const std::string text(name);
+  return text.find("llvmpipe") != std::string::npos || text.find("softpipe") != std::string::npos ||
+         text.find("SwiftShader") != std::string::npos;
+}
 constexpr GLuint kBoneBlockBinding = 0;
 constexpr float kMinLength = 1e-6f;  // m; keeps degenerate segments invertible
 
@@ -84,6 +94,7 @@ std::unique_ptr<Renderer> Renderer::create(const std::string& shaderDir, std::st
   r->cone_ = std::make_unique<Mesh>(makeCone(32));
   r->plane_ = std::make_unique<Mesh>(makePlane());
   r->shadowMap_ = std::make_unique<ShadowMap>(r->settings_.shadowMapSize);
+  if (softwareRasteriser()) r->settings_.shadowTaps = kSoftwareShadowTaps;
   glGenVertexArrays(1, &r->emptyVao_);
   glGenBuffers(1, &r->boneUbo_);
   glBindBuffer(GL_UNIFORM_BUFFER, r->boneUbo_);
@@ -266,6 +277,7 @@ void Renderer::setLightingUniforms(const ShaderProgram& program) const {
   program.set("uShadowTexel", 1.0f / static_cast<float>(shadowMap_->size()));
   program.set("uShadowNormalOffset", 1.5f * shadowMap_->worldTexel());
   program.set("uShadowsOn", settings_.shadows ? 1 : 0);
+  program.set("uShadowTaps", settings_.shadowTaps);
 }
 
 void Renderer::drawGrid() {

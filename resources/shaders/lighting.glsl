@@ -15,13 +15,16 @@ uniform int uShadowsOn;
 vec3 toLinear(vec3 c) { return pow(max(c, vec3(0.0)), vec3(2.2)); }
 vec3 toSrgb(vec3 c) { return pow(max(c, vec3(0.0)), vec3(1.0 / 2.2)); }
 
-const vec2 kPoisson[12] = vec2[](
-    vec2(-0.326, -0.406), vec2(-0.840, -0.074), vec2(-0.696, 0.457), vec2(-0.203, 0.621),
-    vec2(0.962, -0.195), vec2(0.473, -0.480), vec2(0.519, 0.767), vec2(0.185, -0.893),
-    vec2(0.507, 0.064), vec2(0.896, 0.412), vec2(-0.322, -0.933), vec2(-0.792, -0.598));
+uniform int uShadowTaps;       // Poisson taps used, 1 to 12 (4 on software rendering)
 
-// 1 = fully lit, 0 = fully shadowed. Normal-offset + small constant bias; 12 Poisson taps, each a
-// hardware 2x2 comparison, over a 2.5-texel disc: soft edges without banding.
+// The first four taps lie one in each quadrant, so a 4-tap lookup is still centred.
+const vec2 kPoisson[12] = vec2[](
+    vec2(-0.696, 0.457), vec2(0.519, 0.767), vec2(0.473, -0.480), vec2(-0.792, -0.598),
+    vec2(-0.326, -0.406), vec2(-0.840, -0.074), vec2(-0.203, 0.621), vec2(0.962, -0.195),
+    vec2(0.185, -0.893), vec2(0.507, 0.064), vec2(0.896, 0.412), vec2(-0.322, -0.933));
+
+// 1 = fully lit, 0 = fully shadowed. Normal-offset + small constant bias; up to 12 Poisson taps, each
+// a hardware 2x2 comparison, over a 2.5-texel disc: soft edges without banding.
 float shadowFactor(vec3 worldPos, vec3 n) {
   if (uShadowsOn == 0) return 1.0;
   float cosTheta = clamp(dot(n, uLightDir), 0.0, 1.0);
@@ -31,10 +34,12 @@ float shadowFactor(vec3 worldPos, vec3 n) {
   if (s.z >= 1.0 || s.x <= 0.0 || s.x >= 1.0 || s.y <= 0.0 || s.y >= 1.0) return 1.0;
   float bias = 0.0007;
   float lit = 0.0;
+  int taps = clamp(uShadowTaps, 1, 12);
   for (int i = 0; i < 12; ++i) {
+    if (i >= taps) break;
     lit += texture(uShadowMap, vec3(s.xy + kPoisson[i] * uShadowTexel * 2.5, s.z - bias));
   }
-  return lit / 12.0;
+  return lit / float(taps);
 }
 
 // Lit colour (linear) of a surface with sRGB base colour.

@@ -94,8 +94,9 @@ TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
 
 TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   SceneRunner r;
-  ASSERT_TRUE(r.load("constant", 1).ok());                    // energy 0.5 J at reset
-  testing::constantVelocitySceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine
+  ASSERT_TRUE(r.load("constant", 1).ok());  // energy 0.5 J at reset
+  testing::constantVelocitySceneOf(r).energyBoost =
+      0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine
   r.advanceFrame(0.1);
   EXPECT_FALSE(r.paused());
   testing::constantVelocitySceneOf(r).energyBoost = 0.5 * kRunawayEnergyFactor * 2;

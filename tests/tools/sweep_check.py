@@ -2,7 +2,7 @@
 """ctest tools.sweep: a small sweep of the particles lab's oscillator, checked from outside.
 The CSV has one row per combination and seed with the expected columns; a bad value is reported in its
 row and does not stop the sweep; each reported metric equals that of the same run made directly with
-the lab; the plot is a PNG that is not blank. Usage: sweep_check.py SWEEP_PY BIN_DIR WORK_DIR"""
+the lab (options after "--" reach every run: here --dt); the plot is a PNG that is not blank. Usage: sweep_check.py SWEEP_PY BIN_DIR WORK_DIR"""
 import csv
 import json
 import os
@@ -15,7 +15,7 @@ shutil.rmtree(work, ignore_errors=True)
 out = os.path.join(work, "out")
 args = [sys.executable, sweep, "particles", "--scene", "oscillator", "--set", "h=0.02,0.04",
         "--set", "integrator=rk4,euler,no-such-integrator", "--seeds", "2", "--metric", "error",
-        "--seconds", "3", "--jobs", "2", "--bin-dir", bin_dir, "--out", out]
+        "--seconds", "3", "--jobs", "2", "--bin-dir", bin_dir, "--out", out, "--", "--dt", "0.005"]
 done = subprocess.run(args, capture_output=True, text=True)
 print(done.stdout)
 print(done.stderr[-2000:])
@@ -38,8 +38,9 @@ for r in rows:
                f"the bad value's row says {r['status']!r} {r['message']!r}")
         continue
     expect(r["status"] == "ok", f"run {r['h']} {r['integrator']} {r['seed']}: {r['status']} {r['message']}")
+    expect(float(r.get("dt") or "nan") == 0.005, f"run {r['h']} {r['integrator']}: dt {r.get('dt')}, expected 0.005")
     direct = subprocess.run([os.path.join(bin_dir, "pba-particles"), "--headless", "--scene", "oscillator",
-                             "--seconds", "3", "--seed", r["seed"], "--set", f"h={r['h']}",
+                             "--seconds", "3", "--dt", "0.005", "--seed", r["seed"], "--set", f"h={r['h']}",
                              "--set", f"integrator={r['integrator']}", "--metrics", "-"],
                             capture_output=True, text=True, check=True)
     want = json.loads(direct.stdout)["particles"]["error"]

@@ -32,8 +32,8 @@ namespace pba::ik {
 namespace {
 
 #ifdef NDEBUG
-constexpr int kSolverTargets = 4000;    // per solver and chain
-constexpr int kFdTargets = 1000;  // central differences: 2 FK per Jacobian column
+constexpr int kSolverTargets = 4000;  // per solver and chain
+constexpr int kFdTargets = 1000;      // central differences: 2 FK per Jacobian column
 constexpr int kTreeTargets = 200;
 #else
 constexpr int kSolverTargets = 500;
