@@ -80,7 +80,10 @@ class ReachScene final : public AnimScene {
     }
     an::playPose(skeleton_, clip_, time(), {true, an::RootMotion::InPlace}, pose_);
     world_ = an::forwardKinematics(skeleton_, pose_);
-    if (feetIk_) placeFeet();
+    if (feetIk_)
+      placeFeet();
+    else
+      footError_ = clipFootError();
     reachForGoal();
     continuity_ = continuityError(clip_.tracks[0].translation);
     reachError_ = glm::length(world_[static_cast<size_t>(arm_.end)].position - goal_);
@@ -93,6 +96,14 @@ class ReachScene final : public AnimScene {
  private:
   Real groundHeight(const Vec3& p) const { return std::tan(slope_) * p.z; }
   Vec3 goalCentre() const { return Vec3(-0.3, 1.25, 0.45); }
+
+  // Foot IK off: how far the clip's feet are from their targets on the ramp, the error the IK removes.
+  Real clipFootError() const {
+    Real worst = 0.0;
+    for (const Limb& leg : legs_)
+      worst = std::max(worst, std::abs(groundHeight(world_[static_cast<size_t>(leg.end)].position)));
+    return worst;
+  }
 
   void placeFeet() {
     // Foot targets: the clip's height above flat ground, now above the ramp.
