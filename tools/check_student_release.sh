@@ -51,7 +51,9 @@ physics_of() {  # physics_of TREE: configure TREE as ./pba run would, build its 
 echo "== the student release"
 bash "$src/tools/student_release.sh" "$src" "$work/release"
 physics_of "$work/release"
-export LD_LIBRARY_PATH="$work/release/build/release/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+base_library_path="${LD_LIBRARY_PATH:-}"
+use_physics_of() { export LD_LIBRARY_PATH="$1/build/release/lib${base_library_path:+:$base_library_path}"; }
+use_physics_of "$work/release"
 probe="$("$build/bin/pba-hello" --headless --frames 1 --metrics - 2>/dev/null || true)"
 # The metrics list the stubs that ran ("not_implemented": [...]); an empty list means the swap did not happen.
 if ! grep -q '"not_implemented": \[' <<<"$probe" || grep -q '"not_implemented": \[\]' <<<"$probe"; then
@@ -89,7 +91,7 @@ echo "student release check: ok"
 echo "== the switchable tree: each exercise alone stubbed"
 bash "$src/tools/student_release.sh" --switchable "$src" "$work/switchable"
 physics_of "$work/switchable"
-export LD_LIBRARY_PATH="$work/switchable/build/release/lib${LD_LIBRARY_PATH#"$work/release/build/release/lib"}"
+use_physics_of "$work/switchable"
 python3 "$src/tools/check_exercise_isolation.py" "$tests_dir" "$src/resources/exercises.tsv" --jobs "$jobs" \
   --work "$work/isolation" --exclude "$not_in_handout" --skip-label display --skip-label extremes
 echo "isolation check: ok"

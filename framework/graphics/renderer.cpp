@@ -20,6 +20,9 @@ namespace {
 constexpr int kShadowTextureUnit = 3;
 constexpr int kSoftwareShadowTaps = 4;  // RendererSettings::shadowTaps on a software rasteriser
 
+constexpr GLuint kBoneBlockBinding = 0;
+constexpr float kMinLength = 1e-6f;  // m; keeps degenerate segments invertible
+
 // OpenGL runs on the CPU: Mesa's llvmpipe or softpipe, or SwiftShader.
 bool softwareRasteriser() {
   const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -28,8 +31,6 @@ bool softwareRasteriser() {
   return text.find("llvmpipe") != std::string::npos || text.find("softpipe") != std::string::npos ||
          text.find("SwiftShader") != std::string::npos;
 }
-constexpr GLuint kBoneBlockBinding = 0;
-constexpr float kMinLength = 1e-6f;  // m; keeps degenerate segments invertible
 
 glm::vec3 srgbToLinear(const glm::vec3& c) { return glm::pow(c, glm::vec3(2.2f)); }
 
