@@ -23,6 +23,8 @@ int BroadPhase::add(const Aabb& aabb, int userData, bool isStatic) {
   p.isStatic = isStatic;
   p.alive = true;
   p.leaf = trees_[isStatic ? 1 : 0].createProxy(p.fat, id);
+  p.moved = false;
+  markMoved(id);
   sorted_.push_back(id);
   ++live_;
   return id;
@@ -32,6 +34,7 @@ void BroadPhase::remove(int proxy) {
   Proxy& p = proxies_[proxy];
   trees_[p.isStatic ? 1 : 0].destroyProxy(p.leaf);
   p.alive = false;
+  std::erase_if(treePairs_, [&](const auto& pair) { return pair.first == proxy || pair.second == proxy; });
   sorted_.erase(std::find(sorted_.begin(), sorted_.end(), proxy));
   freeProxies_.push_back(proxy);
   --live_;
@@ -42,6 +45,13 @@ void BroadPhase::move(int proxy, const Aabb& aabb) {
   if (p.fat.contains(aabb)) return;
   p.fat = aabb.fattened(margin_);
   trees_[p.isStatic ? 1 : 0].resetProxy(p.leaf, p.fat);
+  markMoved(proxy);
+}
+
+void BroadPhase::markMoved(int proxy) {
+  if (kind_ != BroadPhaseKind::Tree || proxies_[proxy].moved) return;
+  proxies_[proxy].moved = true;
+  moveBuffer_.push_back(proxy);
 }
 
 void BroadPhase::findPairs(std::vector<std::pair<int, int>>& pairs) {
@@ -59,26 +69,41 @@ void BroadPhase::findPairs(std::vector<std::pair<int, int>>& pairs) {
   }
   for (auto& [a, b] : pairs)
     if (a > b) std::swap(a, b);
-  std::sort(pairs.begin(), pairs.end());
+  // The tree's set comes out sorted when user data grow with proxy ids (a world's bodies do).
+  if (!std::is_sorted(pairs.begin(), pairs.end())) std::sort(pairs.begin(), pairs.end());
 }
 
-void BroadPhase::pairsFromTree(std::vector<std::pair<int, int>>& pairs) const {
-  // Each moving proxy queries the moving tree (keeping a pair found from both sides once, by proxy id)
-  // and the static tree.
-  for (std::size_t i = 0; i < proxies_.size(); ++i) {
-    const Proxy& p = proxies_[i];
-    if (!p.alive || p.isStatic) continue;
-    const int self = static_cast<int>(i);
-    trees_[0].query(p.fat, [&](int leaf) {
-      const int j = trees_[0].userData(leaf);
-      if (j > self) pairs.emplace_back(p.userData, proxies_[j].userData);
+void BroadPhase::pairsFromTree(std::vector<std::pair<int, int>>& pairs) {
+  // Pairs with a moved proxy may have ended; the others hold.
+  std::erase_if(treePairs_, [&](const auto& pair) {
+    const Proxy &a = proxies_[pair.first], &b = proxies_[pair.second];
+    return (a.moved || b.moved) && !overlaps(a.fat, b.fat);
+  });
+  // Each moved proxy queries the moving tree and, if it moves itself, the static tree. Two moved
+  // proxies find each other twice: the one with the smaller id keeps the pair.
+  freshPairs_.clear();
+  for (int id : moveBuffer_) {
+    const Proxy& p = proxies_[id];
+    if (!p.alive) continue;
+    auto keep = [&](int leaf, const DynamicTree& t) {
+      const int other = t.userData(leaf);
+      if (other == id || (proxies_[other].moved && other < id)) return true;
+      freshPairs_.emplace_back(std::min(id, other), std::max(id, other));
       return true;
-    });
-    trees_[1].query(p.fat, [&](int leaf) {
-      pairs.emplace_back(p.userData, proxies_[trees_[1].userData(leaf)].userData);
-      return true;
-    });
+    };
+    trees_[0].query(p.fat, [&](int leaf) { return keep(leaf, trees_[0]); });
+    if (!p.isStatic) trees_[1].query(p.fat, [&](int leaf) { return keep(leaf, trees_[1]); });
   }
+  for (int id : moveBuffer_) proxies_[id].moved = false;
+  moveBuffer_.clear();
+  // Merge: a fresh pair may already be in the set (it overlapped before and still does).
+  std::sort(freshPairs_.begin(), freshPairs_.end());
+  const std::size_t kept = treePairs_.size();
+  treePairs_.insert(treePairs_.end(), freshPairs_.begin(), freshPairs_.end());
+  std::inplace_merge(treePairs_.begin(), treePairs_.begin() + static_cast<std::ptrdiff_t>(kept), treePairs_.end());
+  treePairs_.erase(std::unique(treePairs_.begin(), treePairs_.end()), treePairs_.end());
+  pairs.reserve(treePairs_.size());
+  for (const auto& [a, b] : treePairs_) pairs.emplace_back(proxies_[a].userData, proxies_[b].userData);
 }
 
 void BroadPhase::pairsFromSweep(std::vector<std::pair<int, int>>& pairs) {

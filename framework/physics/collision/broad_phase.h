@@ -8,6 +8,9 @@
 // every method reports pairs of fat AABBs, so they agree exactly. Two static proxies never pair.
 // Static proxies live in a tree of their own (as in Box2D v3): a huge static box such as a ground
 // plane would otherwise be rotated into the moving bodies' subtrees and make every query visit them.
+// The tree keeps its pair set from call to call (Box2D's move buffer): only proxies whose fat AABB
+// changed since the last call query the trees, and only their pairs can end. A pair of two unmoved
+// proxies overlapped last time exactly when it does now, so the set stays the one a full search gives.
 #include <string>
 #include <utility>
 #include <vector>
@@ -66,8 +69,10 @@ class BroadPhase {
     int leaf = -1;  // tree leaf
     bool isStatic = false;
     bool alive = false;
+    bool moved = false;  // fat AABB new since the last findPairs (tree: in moveBuffer_)
   };
-  void pairsFromTree(std::vector<std::pair<int, int>>& pairs) const;
+  void markMoved(int proxy);
+  void pairsFromTree(std::vector<std::pair<int, int>>& pairs);
   void pairsFromSweep(std::vector<std::pair<int, int>>& pairs);
   void pairsBruteForce(std::vector<std::pair<int, int>>& pairs) const;
 
@@ -78,6 +83,9 @@ class BroadPhase {
   int live_ = 0;
   DynamicTree trees_[2]{DynamicTree(0.0), DynamicTree(0.0)};  // moving, static; fat boxes as they are
   std::vector<int> sorted_;                                   // sweep and prune: live proxies by min along axis_
+  std::vector<int> moveBuffer_;                               // tree: proxies with a new fat AABB
+  std::vector<std::pair<int, int>> treePairs_;                // tree: overlapping proxy ids (a < b), sorted
+  std::vector<std::pair<int, int>> freshPairs_;               // tree: scratch
   int axis_ = 0;
 };
 

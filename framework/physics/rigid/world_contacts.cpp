@@ -66,7 +66,7 @@ bool World::reuseContacts(int a, int b, std::size_t cursor, const collision::Tra
   if (cosHalf < std::cos(0.5 * settings_.contactCacheAngle)) return false;
   const collision::Transform poseA = bodies_[a].pose(), poseB = bodies_[b].pose();
   for (std::size_t k = cursor; k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b; ++k) {
-    ContactConstraint c = contacts_[k];
+    ContactConstraint& c = next.emplace_back(contacts_[k]);  // one copy: a constraint is ~2 KB
     c.manifold.normal = c.normal = poseA.rotate(c.localNormal);
     // The tangent basis may turn (even swap axes) with the normal: friction goes through its world vector.
     tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
@@ -85,7 +85,6 @@ bool World::reuseContacts(int a, int b, std::size_t cursor, const collision::Tra
     if (!settings_.warmStarting)
       for (int i = 0; i < c.count; ++i)
         c.points[i].normalImpulse = c.points[i].tangentImpulse[0] = c.points[i].tangentImpulse[1] = 0.0;
-    next.push_back(c);
   }
   return true;
 }
@@ -117,7 +116,7 @@ void World::collide() {
     collision::collide(A.shape, A.pose(), B.shape, B.pose(), settings_.speculativeDistance, manifolds);
     std::sort(manifolds.begin(), manifolds.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
     for (const collision::Manifold& m : manifolds) {
-      ContactConstraint c;
+      ContactConstraint& c = next.emplace_back();  // built in place
       c.bodyA = a;
       c.bodyB = b;
       c.key = m.key;
@@ -141,9 +140,8 @@ void World::collide() {
           settings_.warmStarting) {
         carryImpulses(c, contacts_[k]);
       } else {
-        for (int i = 0; i < m.count; ++i) c.points[i] = ContactPoint{}, c.points[i].id = m.points[i].id;
+        for (int i = 0; i < m.count; ++i) c.points[i].id = m.points[i].id;
       }
-      next.push_back(c);
     }
   }
   contacts_.swap(next);
