@@ -17,22 +17,27 @@ void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
 //                          = s₀ + n·(Δc_B − Δc_A) + Δθ_B·(r_B × n) − Δθ_A·(r_A × n),
 // with Δc and Δθ the displacement and the rotation vector (Σ ω h) of each body since the step began.
 
-void prepareContact(ContactConstraint& c, const std::vector<SolverBody>& bodies) {
+void prepareContact(const ContactConstraint& c, const std::vector<SolverBody>& bodies, bool warmStarting,
+                    SolverContact& out) {
   const SolverBody& a = bodies[c.bodyA];
   const SolverBody& b = bodies[c.bodyB];
-  c.againstStatic = a.invMass == 0.0 || b.invMass == 0.0;
-  c.normal = c.manifold.normal;
-  c.invMassA = a.invMass;
-  c.invMassB = b.invMass;
-  tangentBasis(c.normal, c.tangent[0], c.tangent[1]);
-  c.count = c.manifold.count;
-  const Vec3 directions[3] = {c.normal, c.tangent[0], c.tangent[1]};
-  for (int i = 0; i < c.count; ++i) {
-    ContactPoint& p = c.points[i];
+  out.bodyA = c.bodyA;
+  out.bodyB = c.bodyB;
+  out.againstStatic = a.invMass == 0.0 || b.invMass == 0.0;
+  out.normal = c.manifold.normal;
+  out.tangent[0] = c.tangent[0];  // the basis the carried friction impulses are expressed in
+  out.tangent[1] = c.tangent[1];
+  out.friction = c.friction;
+  out.restitution = c.restitution;
+  out.invMassA = a.invMass;
+  out.invMassB = b.invMass;
+  out.count = c.manifold.count;
+  const Vec3 directions[3] = {out.normal, out.tangent[0], out.tangent[1]};
+  for (int i = 0; i < out.count; ++i) {
+    SolverContactPoint& p = out.points[i];
     const collision::ManifoldPoint& mp = c.manifold.points[i];
     const Vec3 rA = mp.point - a.c, rB = mp.point - b.c;
     p.separation = mp.separation;
-    p.id = mp.id;
     Real k[3];
     for (int d = 0; d < 3; ++d) {
       p.rAxD[d] = glm::cross(rA, directions[d]);
@@ -45,19 +50,30 @@ void prepareContact(ContactConstraint& c, const std::vector<SolverBody>& bodies)
     p.normalMass = k[0] > 0.0 ? 1.0 / k[0] : 0.0;
     p.tangentMass[0] = k[1] > 0.0 ? 1.0 / k[1] : 0.0;
     p.tangentMass[1] = k[2] > 0.0 ? 1.0 / k[2] : 0.0;
-    p.relativeVelocity = glm::dot(c.normal, b.v - a.v) + glm::dot(b.w, p.rBxD[0]) - glm::dot(a.w, p.rAxD[0]);
+    p.normalImpulse = warmStarting ? c.points[i].normalImpulse : 0.0;
+    p.tangentImpulse[0] = warmStarting ? c.points[i].tangentImpulse[0] : 0.0;
+    p.tangentImpulse[1] = warmStarting ? c.points[i].tangentImpulse[1] : 0.0;
+    p.relativeVelocity = glm::dot(out.normal, b.v - a.v) + glm::dot(b.w, p.rBxD[0]) - glm::dot(a.w, p.rAxD[0]);
     p.maxNormalImpulse = 0.0;
+  }
+}
+
+void storeImpulses(const SolverContact& s, ContactConstraint& c) {
+  for (int i = 0; i < s.count; ++i) {
+    c.points[i].normalImpulse = s.points[i].normalImpulse;
+    c.points[i].tangentImpulse[0] = s.points[i].tangentImpulse[0];
+    c.points[i].tangentImpulse[1] = s.points[i].tangentImpulse[1];
   }
 }
 
 namespace {
 // Relative velocity along direction d (index into the point's Jacobian pieces): J v.
-inline Real rowVelocity(const ContactPoint& p, int d, const Vec3& dir, const Vec3& vA, const Vec3& wA, const Vec3& vB,
-                        const Vec3& wB) {
+inline Real rowVelocity(const SolverContactPoint& p, int d, const Vec3& dir, const Vec3& vA, const Vec3& wA,
+                        const Vec3& vB, const Vec3& wB) {
   return glm::dot(dir, vB - vA) + glm::dot(wB, p.rBxD[d]) - glm::dot(wA, p.rAxD[d]);
 }
 // Applies impulse λ along direction d.
-inline void applyRow(const ContactConstraint& c, const ContactPoint& p, int d, const Vec3& dir, Real lambda, Vec3& vA,
+inline void applyRow(const SolverContact& c, const SolverContactPoint& p, int d, const Vec3& dir, Real lambda, Vec3& vA,
                      Vec3& wA, Vec3& vB, Vec3& wB) {
   vA -= (c.invMassA * lambda) * dir;
   wA -= lambda * p.iArAxD[d];
@@ -66,12 +82,12 @@ inline void applyRow(const ContactConstraint& c, const ContactPoint& p, int d, c
 }
 }  // namespace
 
-void warmStartContact(const ContactConstraint& c, std::vector<SolverBody>& bodies) {
+void warmStartContact(const SolverContact& c, std::vector<SolverBody>& bodies) {
   SolverBody& a = bodies[c.bodyA];
   SolverBody& b = bodies[c.bodyB];
   Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
   for (int i = 0; i < c.count; ++i) {
-    const ContactPoint& p = c.points[i];
+    const SolverContactPoint& p = c.points[i];
     applyRow(c, p, 0, c.normal, p.normalImpulse, vA, wA, vB, wB);
     applyRow(c, p, 1, c.tangent[0], p.tangentImpulse[0], vA, wA, vB, wB);
     applyRow(c, p, 2, c.tangent[1], p.tangentImpulse[1], vA, wA, vB, wB);
@@ -79,7 +95,7 @@ void warmStartContact(const ContactConstraint& c, std::vector<SolverBody>& bodie
   a.v = vA, a.w = wA, b.v = vB, b.w = wB;
 }
 
-void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias) {
+void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias) {
   SolverBody& a = bodies[c.bodyA];
   SolverBody& b = bodies[c.bodyB];
   const WorldSettings& s = *step.settings;
@@ -88,7 +104,7 @@ void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const C
   Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
   const Real dc = glm::dot(c.normal, b.dp - a.dp);
   for (int i = 0; i < c.count; ++i) {
-    ContactPoint& p = c.points[i];
+    SolverContactPoint& p = c.points[i];
     const Real sep = p.separation + dc + glm::dot(b.dtheta, p.rBxD[0]) - glm::dot(a.dtheta, p.rAxD[0]);
     Real bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (sep > 0.0) {
@@ -118,7 +134,7 @@ void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const C
   // Friction, bounded by μ times this point's normal impulse: each tangent row with its own mass, then the
   // pair clamped to the disk |λ_t| ≤ μλ_n (cone; Jolt does the same) or each row to ±μλ_n (pyramid).
   for (int i = 0; i < c.count; ++i) {
-    ContactPoint& p = c.points[i];
+    SolverContactPoint& p = c.points[i];
     const Real limit = c.friction * p.normalImpulse;
     Real next[2];
     for (int k = 0; k < 2; ++k)
@@ -141,13 +157,13 @@ void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const C
   if (b.invMass > 0.0) b.v = vB, b.w = wB;
 }
 
-void applyRestitution(ContactConstraint& c, std::vector<SolverBody>& bodies, const WorldSettings& settings) {
+void applyRestitution(SolverContact& c, std::vector<SolverBody>& bodies, const WorldSettings& settings) {
   if (c.restitution == 0.0) return;
   SolverBody& a = bodies[c.bodyA];
   SolverBody& b = bodies[c.bodyB];
   Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
   for (int i = 0; i < c.count; ++i) {
-    ContactPoint& p = c.points[i];
+    SolverContactPoint& p = c.points[i];
     if (p.relativeVelocity > -settings.restitutionThreshold || p.maxNormalImpulse == 0.0) continue;
     const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);
     const Real impulse = -p.normalMass * (vn + c.restitution * p.relativeVelocity);

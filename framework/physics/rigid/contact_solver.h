@@ -22,29 +22,21 @@
 
 namespace pba::rigid {
 
+/// What a contact point carries from step to step (warm starting): its feature id and the impulses it
+/// accumulated.
 struct ContactPoint {
-  // Jacobian pieces fixed for the step, with r the arm from a centre of mass to the point (world axes):
-  // r × d and I⁻¹(r × d) for d = n, t₁, t₂ (index 0, 1, 2).
-  Vec3 rAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, rBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
-  Vec3 iArAxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)}, iBrBxD[3]{Vec3(0.0), Vec3(0.0), Vec3(0.0)};
-  Real separation = 0.0;  ///< [m] at the start of the step
-  Real normalMass = 0.0;
-  Real tangentMass[2] = {0.0, 0.0};  ///< 1/K of each tangent row
-  Real normalImpulse = 0.0;          ///< [N·s] accumulated
+  Real normalImpulse = 0.0;  ///< [N·s]
   Real tangentImpulse[2] = {0.0, 0.0};
-  Real maxNormalImpulse = 0.0;  ///< largest normal impulse of the step (restitution needs > 0)
-  Real relativeVelocity = 0.0;  ///< [m/s] n·v_rel at the start of the step
   std::uint32_t id = 0;
 };
 
+/// A manifold as the world keeps it between steps (small: it is copied every step).
 struct ContactConstraint {
   int bodyA = -1, bodyB = -1;
-  bool againstStatic = false;  ///< one side cannot move (set when prepared)
-  std::uint32_t key = 0;       ///< manifold key (mesh triangle)
+  std::uint32_t key = 0;  ///< manifold key (mesh triangle)
   Vec3 normal{0.0};
   Vec3 tangent[2]{Vec3(0.0), Vec3(0.0)};
   Real friction = 0.0, restitution = 0.0;
-  Real invMassA = 0.0, invMassB = 0.0;
   int count = 0;
   ContactPoint points[4];
   collision::Manifold manifold;  ///< as the narrow phase made it (debug draw)
@@ -57,6 +49,33 @@ struct ContactConstraint {
   Vec3 surfaceB[4]{Vec3(0.0), Vec3(0.0), Vec3(0.0), Vec3(0.0)};
 };
 
+/// A contact point as the solver sees it, rebuilt every step. Jacobian pieces fixed for the step, with r
+/// the arm from a centre of mass to the point (world axes): r × d and I⁻¹(r × d) for d = n, t₁, t₂
+/// (index 0, 1, 2).
+struct SolverContactPoint {
+  Vec3 rAxD[3], rBxD[3];
+  Vec3 iArAxD[3], iBrBxD[3];
+  Real separation;  ///< [m] at the start of the step
+  Real normalMass;
+  Real tangentMass[2];  ///< 1/K of each tangent row
+  Real normalImpulse;   ///< [N·s] accumulated
+  Real tangentImpulse[2];
+  Real maxNormalImpulse;  ///< largest normal impulse of the step (restitution needs > 0)
+  Real relativeVelocity;  ///< [m/s] n·v_rel at the start of the step
+};
+
+/// A contact constraint as the solver sees it in one step (every field is written by prepareContact).
+struct SolverContact {
+  int bodyA, bodyB;
+  bool againstStatic;  ///< one side cannot move
+  int count;
+  Vec3 normal;
+  Vec3 tangent[2];
+  Real friction, restitution;
+  Real invMassA, invMassB;
+  SolverContactPoint points[4];
+};
+
 /// Per-substep solver inputs.
 struct ContactSolverStep {
   const WorldSettings* settings = nullptr;
@@ -65,12 +84,15 @@ struct ContactSolverStep {
   Softness staticSoft;  ///< against static bodies: twice the frequency (Box2D v3's staticSoftness)
 };
 
-/// Builds the solver data of `c` from its manifold and the bodies at the start of the step. Impulses
-/// already in c.points (carried over by feature id) are kept for warm starting.
-void prepareContact(ContactConstraint& c, const std::vector<SolverBody>& bodies);
-void warmStartContact(const ContactConstraint& c, std::vector<SolverBody>& bodies);
-void solveContact(ContactConstraint& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias);
-void applyRestitution(ContactConstraint& c, std::vector<SolverBody>& bodies, const WorldSettings& settings);
+/// Builds the solver data `out` of `c` from its manifold and the bodies at the start of the step; the
+/// impulses in c.points (carried over by feature id) start the warm start, or zero without it.
+void prepareContact(const ContactConstraint& c, const std::vector<SolverBody>& bodies, bool warmStarting,
+                    SolverContact& out);
+void warmStartContact(const SolverContact& c, std::vector<SolverBody>& bodies);
+void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias);
+void applyRestitution(SolverContact& c, std::vector<SolverBody>& bodies, const WorldSettings& settings);
+/// Writes the step's accumulated impulses back for the next step's warm start.
+void storeImpulses(const SolverContact& s, ContactConstraint& c);
 
 /// Tangent basis (t₁, t₂) of unit n: stable under small changes of n, so friction impulses can be warm
 /// started (t₁ from the world axis least aligned with n).

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "physics/rigid/integrate.h"
 
@@ -133,16 +134,17 @@ void World::solve(Real dt) {
     startVelocity_[i] = bodies_[i].linearVelocity, startAngularVelocity_[i] = bodies_[i].angularVelocity;
   }
 
-  std::vector<ContactConstraint*> active;
-  active.reserve(contacts_.size());
-  for (ContactConstraint& c : contacts_) {
+  // The solver's copy of each awake manifold (kept between steps: no allocation once warm).
+  activeContacts_.clear();
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    const ContactConstraint& c = contacts_[k];
     if (c.manifold.count == 0 || !(awake_[c.bodyA] || awake_[c.bodyB])) continue;
-    prepareContact(c, solverBodies_);
-    if (!s.warmStarting)
-      for (int k = 0; k < c.count; ++k)
-        c.points[k].normalImpulse = c.points[k].tangentImpulse[0] = c.points[k].tangentImpulse[1] = 0.0;
-    active.push_back(&c);
+    activeContacts_.push_back(static_cast<int>(k));
   }
+  if (solverContacts_.size() < activeContacts_.size()) solverContacts_.resize(activeContacts_.size() * 3 / 2 + 16);
+  const std::span<SolverContact> active(solverContacts_.data(), activeContacts_.size());
+  for (std::size_t i = 0; i < active.size(); ++i)
+    prepareContact(contacts_[activeContacts_[i]], solverBodies_, s.warmStarting, active[i]);
   std::vector<Joint*> joints;
   for (Joint& j : joints_) {
     j.a = bodyOfJointSide(j.desc.bodyA);
@@ -175,11 +177,11 @@ void World::solve(Real dt) {
     }
     if (s.warmStarting) {
       for (Joint* j : joints) warmStartJoint(*j, solverBodies_);
-      for (ContactConstraint* c : active) warmStartContact(*c, solverBodies_);
+      for (const SolverContact& c : active) warmStartContact(c, solverBodies_);
     }
     for (int it = 0; it < s.iterations; ++it) {
       for (Joint* j : joints) solveJoint(*j, solverBodies_, jstep, true);
-      for (ContactConstraint* c : active) solveContact(*c, solverBodies_, cstep, true);
+      for (SolverContact& c : active) solveContact(c, solverBodies_, cstep, true);
     }
     // Integrate positions with the new velocities.
     for (int i = 0; i < n; ++i) {
@@ -199,11 +201,12 @@ void World::solve(Real dt) {
     }
     for (int it = 0; it < s.relaxIterations; ++it) {
       for (Joint* j : joints) solveJoint(*j, solverBodies_, jstep, false);
-      for (ContactConstraint* c : active) solveContact(*c, solverBodies_, cstep, false);
+      for (SolverContact& c : active) solveContact(c, solverBodies_, cstep, false);
     }
   }
   for (int it = 0; it < std::max(1, s.restitutionIterations); ++it)
-    for (ContactConstraint* c : active) applyRestitution(*c, solverBodies_, s);
+    for (SolverContact& c : active) applyRestitution(c, solverBodies_, s);
+  for (std::size_t i = 0; i < active.size(); ++i) storeImpulses(active[i], contacts_[activeContacts_[i]]);
 
   maxJointError_ = 0.0;
   for (const Joint& j : joints_) maxJointError_ = std::max(maxJointError_, jointPositionError(j, solverBodies_));

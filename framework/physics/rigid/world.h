@@ -125,6 +125,8 @@ class World {
   std::vector<Joint> joints_;
   std::vector<ContactConstraint> contacts_;      // sorted by (bodyA, bodyB, key)
   std::vector<ContactConstraint> nextContacts_;  // the next step's, built by collide() and swapped in
+  std::vector<int> activeContacts_;              // solve(): indices into contacts_ of the awake manifolds
+  std::vector<SolverContact> solverContacts_;    // solve(): their solver data (first activeContacts_.size())
   std::vector<SolverBody> solverBodies_;         // bodies_ + the world (last)
   std::vector<char> awake_;                      // per body: dynamic and not sleeping this step
   collision::BroadPhase broadPhase_;

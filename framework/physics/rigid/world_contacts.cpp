@@ -93,7 +93,10 @@ void World::collide() {
   broadPhase_.findPairs(pairs_);
   std::vector<ContactConstraint>& next = nextContacts_;  // kept between steps: no allocation once warm
   next.clear();
-  next.reserve(std::max(contacts_.size(), pairs_.size()) + 16);
+  // Grow geometrically: a pile gains contacts every step, and an exact reserve would move every ~2 KB
+  // constraint (and fault in fresh pages) each time.
+  const std::size_t needed = std::max(contacts_.size(), pairs_.size()) + 16;
+  if (next.capacity() < needed) next.reserve(needed + needed / 2);
   thread_local std::vector<collision::Manifold> manifolds;
   std::size_t cursor = 0;  // into the old, sorted contacts
   for (const auto& [a, b] : pairs_) {
