@@ -31,21 +31,21 @@ void prepareContact(const ContactConstraint& c, const std::vector<SolverBody>& b
   out.restitution = c.restitution;
   out.invMassA = a.invMass;
   out.invMassB = b.invMass;
+  out.invIA = a.invI;
+  out.invIB = b.invI;
   out.count = c.manifold.count;
   const Vec3 directions[3] = {out.normal, out.tangent[0], out.tangent[1]};
   for (int i = 0; i < out.count; ++i) {
     SolverContactPoint& p = out.points[i];
     const collision::ManifoldPoint& mp = c.manifold.points[i];
-    const Vec3 rA = mp.point - a.c, rB = mp.point - b.c;
+    p.rA = mp.point - a.c;
+    p.rB = mp.point - b.c;
     p.separation = mp.separation;
     Real k[3];
     for (int d = 0; d < 3; ++d) {
-      p.rAxD[d] = glm::cross(rA, directions[d]);
-      p.rBxD[d] = glm::cross(rB, directions[d]);
-      p.iArAxD[d] = a.invI * p.rAxD[d];
-      p.iBrBxD[d] = b.invI * p.rBxD[d];
       // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d).
-      k[d] = a.invMass + b.invMass + glm::dot(p.rAxD[d], p.iArAxD[d]) + glm::dot(p.rBxD[d], p.iBrBxD[d]);
+      const Vec3 ra = glm::cross(p.rA, directions[d]), rb = glm::cross(p.rB, directions[d]);
+      k[d] = a.invMass + b.invMass + glm::dot(ra, a.invI * ra) + glm::dot(rb, b.invI * rb);
     }
     p.normalMass = k[0] > 0.0 ? 1.0 / k[0] : 0.0;
     p.tangentMass[0] = k[1] > 0.0 ? 1.0 / k[1] : 0.0;
@@ -53,7 +53,7 @@ void prepareContact(const ContactConstraint& c, const std::vector<SolverBody>& b
     p.normalImpulse = warmStarting ? c.points[i].normalImpulse : 0.0;
     p.tangentImpulse[0] = warmStarting ? c.points[i].tangentImpulse[0] : 0.0;
     p.tangentImpulse[1] = warmStarting ? c.points[i].tangentImpulse[1] : 0.0;
-    p.relativeVelocity = glm::dot(out.normal, b.v - a.v) + glm::dot(b.w, p.rBxD[0]) - glm::dot(a.w, p.rAxD[0]);
+    p.relativeVelocity = glm::dot(out.normal, (b.v + glm::cross(b.w, p.rB)) - (a.v + glm::cross(a.w, p.rA)));
     p.maxNormalImpulse = 0.0;
   }
 }
@@ -67,32 +67,33 @@ void storeImpulses(const SolverContact& s, ContactConstraint& c) {
 }
 
 namespace {
-// Relative velocity along direction d (index into the point's Jacobian pieces): J v.
-inline Real rowVelocity(const SolverContactPoint& p, int d, const Vec3& dir, const Vec3& vA, const Vec3& wA,
-                        const Vec3& vB, const Vec3& wB) {
-  return glm::dot(dir, vB - vA) + glm::dot(wB, p.rBxD[d]) - glm::dot(wA, p.rAxD[d]);
-}
-// Applies impulse λ along direction d.
-inline void applyRow(const SolverContact& c, const SolverContactPoint& p, int d, const Vec3& dir, Real lambda, Vec3& vA,
-                     Vec3& wA, Vec3& vB, Vec3& wB) {
-  vA -= (c.invMassA * lambda) * dir;
-  wA -= lambda * p.iArAxD[d];
-  vB += (c.invMassB * lambda) * dir;
-  wB += lambda * p.iBrBxD[d];
-}
+// The velocities of both sides, worked on in registers through a constraint's rows.
+struct PairVelocity {
+  Vec3 vA, wA, vB, wB;
+  // Relative velocity of the points along d: J v = d·(v_B + ω_B × r_B − v_A − ω_A × r_A).
+  Real along(const SolverContactPoint& p, const Vec3& d) const {
+    return glm::dot(d, vB - vA) + glm::dot(wB, glm::cross(p.rB, d)) - glm::dot(wA, glm::cross(p.rA, d));
+  }
+  // Applies the impulse P (world vector) at the point: B gets +P, A gets −P.
+  void apply(const SolverContact& c, const SolverContactPoint& p, const Vec3& P) {
+    vA -= c.invMassA * P;
+    wA -= c.invIA * glm::cross(p.rA, P);
+    vB += c.invMassB * P;
+    wB += c.invIB * glm::cross(p.rB, P);
+  }
+};
 }  // namespace
 
 void warmStartContact(const SolverContact& c, std::vector<SolverBody>& bodies) {
   SolverBody& a = bodies[c.bodyA];
   SolverBody& b = bodies[c.bodyB];
-  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
+  PairVelocity u{a.v, a.w, b.v, b.w};
   for (int i = 0; i < c.count; ++i) {
     const SolverContactPoint& p = c.points[i];
-    applyRow(c, p, 0, c.normal, p.normalImpulse, vA, wA, vB, wB);
-    applyRow(c, p, 1, c.tangent[0], p.tangentImpulse[0], vA, wA, vB, wB);
-    applyRow(c, p, 2, c.tangent[1], p.tangentImpulse[1], vA, wA, vB, wB);
+    u.apply(c, p, p.normalImpulse * c.normal + p.tangentImpulse[0] * c.tangent[0] + p.tangentImpulse[1] * c.tangent[1]);
   }
-  a.v = vA, a.w = wA, b.v = vB, b.w = wB;
+  if (a.invMass > 0.0) a.v = u.vA, a.w = u.wA;
+  if (b.invMass > 0.0) b.v = u.vB, b.w = u.wB;
 }
 
 void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias) {
@@ -101,11 +102,11 @@ void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const Conta
   const WorldSettings& s = *step.settings;
   const Real inv_h = 1.0 / step.h;
   const Softness& soft = c.againstStatic ? step.staticSoft : step.soft;
-  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
+  PairVelocity u{a.v, a.w, b.v, b.w};
   const Real dc = glm::dot(c.normal, b.dp - a.dp);
   for (int i = 0; i < c.count; ++i) {
     SolverContactPoint& p = c.points[i];
-    const Real sep = p.separation + dc + glm::dot(b.dtheta, p.rBxD[0]) - glm::dot(a.dtheta, p.rAxD[0]);
+    const Real sep = p.separation + dc + glm::dot(c.normal, glm::cross(b.dtheta, p.rB) - glm::cross(a.dtheta, p.rA));
     Real bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (sep > 0.0) {
       bias = sep * inv_h;  // speculative: close the gap exactly, no more
@@ -123,22 +124,22 @@ void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const Conta
           break;
       }
     }
-    const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);
+    const Real vn = u.along(p, c.normal);
     const Real impulse = -p.normalMass * massScale * (vn + bias) - impulseScale * p.normalImpulse;
     const Real total = std::max(p.normalImpulse + impulse, 0.0);
     const Real applied = total - p.normalImpulse;
     p.normalImpulse = total;
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
-    applyRow(c, p, 0, c.normal, applied, vA, wA, vB, wB);
+    u.apply(c, p, applied * c.normal);
   }
   // Friction, bounded by μ times this point's normal impulse: each tangent row with its own mass, then the
-  // pair clamped to the disk |λ_t| ≤ μλ_n (cone; Jolt does the same) or each row to ±μλ_n (pyramid).
+  // pair clamped to the disk |λ_t| ≤ μλ_n (cone; Jolt does the same) or each row to ±μλ_n (pyramid). Both
+  // rows are computed from the same velocities and applied together.
   for (int i = 0; i < c.count; ++i) {
     SolverContactPoint& p = c.points[i];
     const Real limit = c.friction * p.normalImpulse;
     Real next[2];
-    for (int k = 0; k < 2; ++k)
-      next[k] = p.tangentImpulse[k] - p.tangentMass[k] * rowVelocity(p, k + 1, c.tangent[k], vA, wA, vB, wB);
+    for (int k = 0; k < 2; ++k) next[k] = p.tangentImpulse[k] - p.tangentMass[k] * u.along(p, c.tangent[k]);
     if (s.friction == FrictionModel::Cone) {
       const Real len2 = next[0] * next[0] + next[1] * next[1];
       if (len2 > limit * limit) {
@@ -148,33 +149,32 @@ void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const Conta
     } else {
       for (Real& x : next) x = std::clamp(x, -limit, limit);
     }
-    for (int k = 0; k < 2; ++k) {
-      applyRow(c, p, k + 1, c.tangent[k], next[k] - p.tangentImpulse[k], vA, wA, vB, wB);
-      p.tangentImpulse[k] = next[k];
-    }
+    u.apply(c, p, (next[0] - p.tangentImpulse[0]) * c.tangent[0] + (next[1] - p.tangentImpulse[1]) * c.tangent[1]);
+    p.tangentImpulse[0] = next[0];
+    p.tangentImpulse[1] = next[1];
   }
-  if (a.invMass > 0.0) a.v = vA, a.w = wA;
-  if (b.invMass > 0.0) b.v = vB, b.w = wB;
+  if (a.invMass > 0.0) a.v = u.vA, a.w = u.wA;
+  if (b.invMass > 0.0) b.v = u.vB, b.w = u.wB;
 }
 
 void applyRestitution(SolverContact& c, std::vector<SolverBody>& bodies, const WorldSettings& settings) {
   if (c.restitution == 0.0) return;
   SolverBody& a = bodies[c.bodyA];
   SolverBody& b = bodies[c.bodyB];
-  Vec3 vA = a.v, wA = a.w, vB = b.v, wB = b.w;
+  PairVelocity u{a.v, a.w, b.v, b.w};
   for (int i = 0; i < c.count; ++i) {
     SolverContactPoint& p = c.points[i];
     if (p.relativeVelocity > -settings.restitutionThreshold || p.maxNormalImpulse == 0.0) continue;
-    const Real vn = rowVelocity(p, 0, c.normal, vA, wA, vB, wB);
+    const Real vn = u.along(p, c.normal);
     const Real impulse = -p.normalMass * (vn + c.restitution * p.relativeVelocity);
     const Real total = std::max(p.normalImpulse + impulse, 0.0);
     const Real applied = total - p.normalImpulse;
     p.normalImpulse = total;
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
-    applyRow(c, p, 0, c.normal, applied, vA, wA, vB, wB);
+    u.apply(c, p, applied * c.normal);
   }
-  if (a.invMass > 0.0) a.v = vA, a.w = wA;
-  if (b.invMass > 0.0) b.v = vB, b.w = wB;
+  if (a.invMass > 0.0) a.v = u.vA, a.w = u.wA;
+  if (b.invMass > 0.0) b.v = u.vB, b.w = u.wB;
 }
 
 }  // namespace pba::rigid

@@ -49,12 +49,12 @@ struct ContactConstraint {
   Vec3 surfaceB[4]{Vec3(0.0), Vec3(0.0), Vec3(0.0), Vec3(0.0)};
 };
 
-/// A contact point as the solver sees it, rebuilt every step. Jacobian pieces fixed for the step, with r
-/// the arm from a centre of mass to the point (world axes): r × d and I⁻¹(r × d) for d = n, t₁, t₂
-/// (index 0, 1, 2).
+/// A contact point as the solver sees it, rebuilt every step: the arms r_A, r_B from the centres of mass
+/// to the point (world axes, fixed for the step). The Jacobian pieces r × d and I⁻¹(r × d) for d = n, t₁,
+/// t₂ are recomputed where they are used: storing them made a point 360 bytes, and the passes over the
+/// contacts were bound by moving them (Box2D v3 keeps only the anchors too).
 struct SolverContactPoint {
-  Vec3 rAxD[3], rBxD[3];
-  Vec3 iArAxD[3], iBrBxD[3];
+  Vec3 rA, rB;
   Real separation;  ///< [m] at the start of the step
   Real normalMass;
   Real tangentMass[2];  ///< 1/K of each tangent row
@@ -73,6 +73,7 @@ struct SolverContact {
   Vec3 tangent[2];
   Real friction, restitution;
   Real invMassA, invMassB;
+  Mat3 invIA, invIB;  ///< world inverse inertia of each side (zero for a static one)
   SolverContactPoint points[4];
 };
 
