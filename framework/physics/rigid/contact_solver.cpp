@@ -71,11 +71,11 @@ namespace {
 struct PairVelocity {
   Vec3 vA, wA, vB, wB;
   // Relative velocity of the points along d: J v = d·(v_B + ω_B × r_B − v_A − ω_A × r_A).
-  Real along(const SolverContactPoint& p, const Vec3& d) const {
+  [[gnu::always_inline]] Real along(const SolverContactPoint& p, const Vec3& d) const {
     return glm::dot(d, vB - vA) + glm::dot(wB, glm::cross(p.rB, d)) - glm::dot(wA, glm::cross(p.rA, d));
   }
   // Applies the impulse P (world vector) at the point: B gets +P, A gets −P.
-  void apply(const SolverContact& c, const SolverContactPoint& p, const Vec3& P) {
+  [[gnu::always_inline]] void apply(const SolverContact& c, const SolverContactPoint& p, const Vec3& P) {
     vA -= c.invMassA * P;
     wA -= c.invIA * glm::cross(p.rA, P);
     vB += c.invMassB * P;

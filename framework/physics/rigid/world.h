@@ -116,6 +116,7 @@ class World {
   void loadSolverBodies();
   void rebuildBroadPhase();
   bool jointConnected(int a, int b) const;
+  void collectJointedPairs();
   bool reuseContacts(int a, int b, std::size_t cursor, const collision::Transform& relative,
                      std::vector<ContactConstraint>& next) const;
   int bodyOfJointSide(int i) const { return i < 0 ? static_cast<int>(bodies_.size()) : i; }
@@ -123,12 +124,13 @@ class World {
   WorldSettings settings_;
   std::vector<Body> bodies_;
   std::vector<Joint> joints_;
-  std::vector<ContactConstraint> contacts_;      // sorted by (bodyA, bodyB, key)
-  std::vector<ContactConstraint> nextContacts_;  // the next step's, built by collide() and swapped in
-  std::vector<int> activeContacts_;              // solve(): indices into contacts_ of the awake manifolds
-  std::vector<SolverContact> solverContacts_;    // solve(): their solver data (first activeContacts_.size())
-  std::vector<SolverBody> solverBodies_;         // bodies_ + the world (last)
-  std::vector<char> awake_;                      // per body: dynamic and not sleeping this step
+  std::vector<ContactConstraint> contacts_;        // sorted by (bodyA, bodyB, key)
+  std::vector<ContactConstraint> nextContacts_;    // the next step's, built by collide() and swapped in
+  std::vector<std::pair<int, int>> jointedPairs_;  // collide(): body pairs a joint keeps from colliding
+  std::vector<int> activeContacts_;                // solve(): indices into contacts_ of the awake manifolds
+  std::vector<SolverContact> solverContacts_;      // solve(): their solver data (first activeContacts_.size())
+  std::vector<SolverBody> solverBodies_;           // bodies_ + the world (last)
+  std::vector<char> awake_;                        // per body: dynamic and not sleeping this step
   collision::BroadPhase broadPhase_;
   std::vector<std::pair<int, int>> pairs_;
   std::vector<collision::Sweep> sweeps_;                    // per body, this step (continuous collision)
