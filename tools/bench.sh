@@ -77,6 +77,15 @@ for b in "$build"/bench/pba_*_bench; do
   } >>"$tmp/doc.md"
 done
 
+# The peer comparisons (Bullet, KDL) and per-topic summaries below the marker are measured by the topic
+# benches with their own method (docs/performance-*.md) and kept as they are.
+marker='<!-- kept by ./pba bench: peer comparisons and per-topic summaries -->'
+if [[ -f "$out" ]] && line="$(grep -nF -- "$marker" "$out" | head -1 | cut -d: -f1)" && [[ -n "$line" ]]; then
+  {
+    echo
+    tail -n +"$line" "$out"
+  } >>"$tmp/doc.md"
+fi
 cp "$tmp/doc.md" "$out"
 cat "$out"
 echo
