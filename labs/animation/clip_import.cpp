@@ -12,13 +12,7 @@ namespace pba::labs::animation {
 
 namespace an = pba::animation;
 
-std::string resolveResourcePath(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
-  const fs::path fromRoot = fs::path(app::repositoryRoot()) / path;
-  return fs::exists(fromRoot, ec) ? fromRoot.string() : path;
-}
+std::string resolveResourcePath(const std::string& path) { return app::resolveRepositoryPath(path); }
 
 namespace {
 
@@ -64,8 +58,13 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
   out.path = path;
   const Real extent = restExtent(*model);
   out.scale = extent > 1e-9 ? height / extent : 1.0;
-  for (const graphics::ModelNode& n : model->nodes)
+  std::vector<Quat> restWorld;  // R_i = R_parent · q_i of the rest pose, for the skin
+  for (const graphics::ModelNode& n : model->nodes) {
     out.skeleton.add(n.name, n.parent, out.scale * Vec3(n.local[3]), rotationOf(n.local));
+    const Quat q = out.skeleton.restRotations.back();
+    restWorld.push_back(n.parent < 0 ? q : glm::normalize(restWorld[static_cast<size_t>(n.parent)] * q));
+  }
+  out.skin = app::makeCharacterSkin(*model, out.scale, Vec3(0.0), restWorld);
   const graphics::Animation& a = model->animations[0];
   an::Clip& clip = out.clip;
   clip.name = a.name.empty() ? "clip" : a.name;
