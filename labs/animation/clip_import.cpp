@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "app/resource_dir.h"
+#include "bvh_import.h"
 #include "graphics/model.h"
 #include "graphics/skinning.h"
 
@@ -34,12 +35,44 @@ Real restExtent(const graphics::Model& model) {
   return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
 }
 
+/// A .bvh file through the double-precision reader (bvh_import.h): the same skeleton and clip as the
+/// Assimp route below, without its float keys.
+Result<ImportedClip> importBvh(const std::string& path, Real height, const std::string& field) {
+  Result<BvhClip> read = readBvh(path);
+  if (!read) return Error{field + ": " + read.error()};
+  BvhClip& b = read.value();
+  if (b.clip.frames < 2 || !(b.clip.duration > 0.0))
+    return Error{field + ": " + path + ": has no animation (a clip needs keyframes)"};
+  // Rest rotations are the identity: a joint's rest position is the sum of the offsets above it.
+  std::vector<Vec3> rest(b.skeleton.restTranslations.size());
+  Vec3 lo(1e300), hi(-1e300);
+  for (size_t j = 0; j < rest.size(); ++j) {
+    const int p = b.skeleton.parents[j];
+    rest[j] = (p < 0 ? Vec3(0.0) : rest[static_cast<size_t>(p)]) + b.skeleton.restTranslations[j];
+    lo = glm::min(lo, rest[j]);
+    hi = glm::max(hi, rest[j]);
+  }
+  const Real extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  ImportedClip out;
+  out.path = path;
+  out.scale = extent > 1e-9 ? height / extent : 1.0;
+  out.skeleton = std::move(b.skeleton);
+  for (Vec3& t : out.skeleton.restTranslations) t *= out.scale;
+  out.clip = std::move(b.clip);
+  out.clip.name = "clip";
+  for (an::JointTrack& t : out.clip.tracks)
+    for (int k = 0; k < t.translation.size(); ++k) t.translation.setValue(k, out.scale * t.translation.value(k));
+  if (Status s = an::validate(out.clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};
+  return out;
+}
+
 }  // namespace
 
 Result<ImportedClip> importClip(const std::string& file, Real height, const std::string& field) {
   if (!(height > 0.0)) return Error{"height: must be > 0"};
   const std::string path = resolveResourcePath(file);
   if (path.empty()) return Error{field + ": no file given"};
+  if (isBvhPath(path)) return importBvh(path, height, field);
   std::string error;
   const std::optional<graphics::Model> model = graphics::loadModel(path, &error);
   if (!model) return Error{field + ": " + error};

@@ -77,7 +77,11 @@ class MocapScene final : public AnimScene {
     if (j >= 0) d.sphere(world_[static_cast<size_t>(j)].position, 0.05, colors::kTeal);
   }
   std::vector<app::LegendEntry> legend() const override {
-    return {{colors::kBlue, "left side"}, {colors::kOrange, "right side"}, {colors::kTeal, "path of " + trailJoint_}};
+    std::vector<app::LegendEntry> entries{{colors::kBlue, "left side"}, {colors::kOrange, "right side"}};
+    if (!trail_.empty()) entries.push_back({colors::kTeal, "path of " + trailJoint_});
+    if (showSkin_ && data_.skin.model)
+      entries.push_back({Color{0.93f, 0.76f, 0.62f, 1.0f}, "the file's mesh, skinned"});
+    return entries;
   }
   void ui() override {
     if (!error_.empty())

@@ -159,12 +159,13 @@ class SecondaryScene final : public AnimScene {
   }
   void addMetrics(nlohmann::json& m) const override { m["max_pivot_acceleration_m_s2"] = maxPivotAcceleration_; }
   std::optional<std::string> nonFiniteState() const override {
-    for (const Appendage& a : parts_)
+    for (const Appendage& a : parts_) {
       for (const an::PendulumState& s : a.chain.states)
         if (!isFinite(s.direction) || !isFinite(s.omega)) return "pendulum chain state is not finite";
-    for (size_t k = 0; k < a.links.positions.size(); ++k)
-      if (!isFinite(a.links.positions[k]) || !isFinite(a.links.velocities[k]))
-        return "coupled pendulum state is not finite";
+      for (size_t k = 0; k < a.links.positions.size(); ++k)
+        if (!isFinite(a.links.positions[k]) || !isFinite(a.links.velocities[k]))
+          return "coupled pendulum state is not finite";
+    }
     return AnimScene::nonFiniteState();
   }
 
