@@ -71,6 +71,7 @@ Result<BvhClip> readBvh(const std::string& path) {
   const std::string shown = app::oneLine(path);
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) return Error{shown + ": is a directory"};
+  if (!std::filesystem::is_regular_file(path, ec)) return Error{shown + ": is not a regular file"};
   if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxBytes)
     return Error{shown + ": larger than " + std::to_string(kMaxBytes) + " bytes"};
   std::ifstream in(path);

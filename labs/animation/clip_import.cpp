@@ -35,12 +35,15 @@ Real restExtent(const graphics::Model& model) {
   return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
 }
 
-/// A .bvh file through the double-precision reader (bvh_import.h): the same skeleton and clip as the
-/// Assimp route below, without its float keys.
-Result<ImportedClip> importBvh(const std::string& path, Real height, const std::string& field) {
+/// Replaces the skeleton's offsets and the clip's keys of a .bvh file, which the graphics import has
+/// read and checked (its messages name every malformed file), by the double-precision reader's
+/// (bvh_import.h): Assimp keeps the keys in float. The two must agree on the joints (tested).
+Status useDoubleKeys(const std::string& path, Real height, const std::string& field, ImportedClip& out) {
   Result<BvhClip> read = readBvh(path);
   if (!read) return Error{field + ": " + read.error()};
   BvhClip& b = read.value();
+  if (b.skeleton.names != out.skeleton.names || b.skeleton.parents != out.skeleton.parents)
+    return Error{field + ": " + path + ": the BVH reader and the model import disagree on the joints"};
   if (b.clip.frames < 2 || !(b.clip.duration > 0.0))
     return Error{field + ": " + path + ": has no animation (a clip needs keyframes)"};
   // Rest rotations are the identity: a joint's rest position is the sum of the offsets above it.
@@ -53,17 +56,15 @@ Result<ImportedClip> importBvh(const std::string& path, Real height, const std::
     hi = glm::max(hi, rest[j]);
   }
   const Real extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-  ImportedClip out;
-  out.path = path;
   out.scale = extent > 1e-9 ? height / extent : 1.0;
   out.skeleton = std::move(b.skeleton);
   for (Vec3& t : out.skeleton.restTranslations) t *= out.scale;
+  const std::string name = out.clip.name;
   out.clip = std::move(b.clip);
-  out.clip.name = "clip";
+  out.clip.name = name;
   for (an::JointTrack& t : out.clip.tracks)
     for (int k = 0; k < t.translation.size(); ++k) t.translation.setValue(k, out.scale * t.translation.value(k));
-  if (Status s = an::validate(out.clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};
-  return out;
+  return Status::success();
 }
 
 }  // namespace
@@ -72,7 +73,6 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
   if (!(height > 0.0)) return Error{"height: must be > 0"};
   const std::string path = resolveResourcePath(file);
   if (path.empty()) return Error{field + ": no file given"};
-  if (isBvhPath(path)) return importBvh(path, height, field);
   std::string error;
   const std::optional<graphics::Model> model = graphics::loadModel(path, &error);
   if (!model) return Error{field + ": " + error};
@@ -115,7 +115,10 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
         return Error{where + ": " + r.error()};
     clip.frames = std::max({clip.frames, static_cast<int>(c.positions.size()), static_cast<int>(c.rotations.size())});
   }
-  if (Status s = an::validate(clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};
+  if (isBvhPath(path)) {
+    if (Status s = useDoubleKeys(path, height, field, out); !s.ok()) return Error{s.error()};
+  }
+  if (Status s = an::validate(out.clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};
   return out;
 }
 
