@@ -10,7 +10,6 @@
 
 #include "app/resource_dir.h"
 #include "graphics/model.h"
-#include "graphics/skinning.h"
 
 namespace pba::labs::ik {
 
