@@ -104,6 +104,8 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       o.recordUi = v == "on";
     } else if (arg == "--metrics") {
       s = next(o.metrics);
+    } else if (arg == "--pose-json") {
+      s = next(o.poseJson);
     } else if (arg == "--frames") {
       if (!(s = next(v))) return Error{s.error()};
       auto r = parseWhole(arg, v, 1);
@@ -193,6 +195,9 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
   if (!o.record.empty() && !o.screenshot.empty()) return Error{"--record and --screenshot: give one or the other"};
   if (o.checkRewind && !o.headless) return Error{"--check-rewind runs headless: add --headless"};
   if (o.checkRewind && o.compare) return Error{"--check-rewind and --compare: give one or the other"};
+  if (!o.poseJson.empty() && (o.compare || o.checkRewind || !o.demo.empty() || o.checkExtremes))
+    return Error{
+        "--pose-json: writes the pose of one plain run (drop --compare, --check-rewind, --demo, --check-extremes)"};
   if (o.demo.empty() && (o.demoCheck || !o.demoNext.empty()))
     return Error{"--demo-check and --demo-next go with --demo FILE"};
   if (!o.demo.empty() && (!o.scene.empty() || o.compare))
@@ -225,6 +230,8 @@ std::string usage(const std::string& lab) {
       "                          frames/s, then exit: MP4 and GIF through ffmpeg, PNG files into DIR/\n"
       "  --record-ui on|off      the panels in the recording, or the scene alone (default off)\n"
       "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
+      "  --pose-json FILE        when the run ends, write the world position [m] of every joint of the\n"
+      "                          scene's skeleton, by name (scenes with a skeleton only)\n"
       "  --seed N                random seed (default 1)\n"
       "  --compare \"A\" \"B\"       two copies of the scene side by side in lock-step, each with its own\n"
       "                          settings: NAME=VALUE pairs separated by spaces (dt, substeps,\n"

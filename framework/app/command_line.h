@@ -3,6 +3,7 @@
 //   pba-<lab> [--scene NAME|FILE.json] [--headless] [--frames N | --seconds T] [--dt H]
 //             [--screenshot FILE.png] [--metrics FILE|-] [--seed N] [--lecture] [--list-scenes] [--help]
 //             [--record FILE.mp4|FILE.gif|DIR/ [--record-ui on|off]] [--compare "A" "B"] [--check-rewind N]
+//             [--pose-json FILE]
 // plus --substeps N, --time-scale S, --set NAME=VALUE (any scene parameter) and the lab's own flags.
 #include <cstdint>
 #include <optional>
@@ -41,6 +42,7 @@ struct LabOptions {
   std::string record;      ///< video (.mp4, .gif) or PNG folder: record this many frames in a window, exit
   bool recordUi = false;   ///< --record-ui on: the panels are in the recording (default: the scene alone)
   std::string metrics;     ///< JSON path or "-" for stdout
+  std::string poseJson;    ///< --pose-json FILE: every joint's world position, by name, when the run ends
   std::uint64_t seed = 1;
   bool lecture = false;
   bool listScenes = false;

@@ -10,6 +10,7 @@
 #include "app/message_text.h"
 #include "app/metrics_report.h"
 #include "app/param_extremes.h"
+#include "app/pose_json.h"
 #include "app/progress_line.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
@@ -60,6 +61,7 @@ Status prepareRunner(const std::string& lab, const LabOptions& o, SceneRunner& r
     return s;
   }
   runner.adopt(std::move(scene), name);
+  if (!o.poseJson.empty()) return checkPoseJson(runner);  // refused before the run, not after it
   return Status::success();
 }
 
@@ -75,6 +77,12 @@ int runHeadless(const std::string& lab, const LabOptions& o, SceneRunner& runner
   if (runner.guardMessage()) std::cerr << "pba-" << lab << ": " << *runner.guardMessage() << '\n';
   if (!o.metrics.empty()) {
     if (Status s = writeMetrics(metricsReport(lab, runner, frames), o.metrics); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      return kExitBadInput;
+    }
+  }
+  if (!o.poseJson.empty()) {
+    if (Status s = writePoseJson(lab, runner, o.poseJson); !s) {
       std::cerr << "pba-" << lab << ": " << s.error() << '\n';
       return kExitBadInput;
     }

@@ -14,4 +14,12 @@ const std::string& resourceDir() {
 
 std::string repositoryRoot() { return std::filesystem::path(resourceDir()).parent_path().string(); }
 
+std::string resolveRepositoryPath(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
+  const fs::path fromRoot = fs::path(repositoryRoot()) / path;
+  return fs::exists(fromRoot, ec) ? fromRoot.string() : path;
+}
+
 }  // namespace pba::app

@@ -57,6 +57,12 @@ struct CameraView {
   Real pitch = 0.45;   ///< [rad] above the horizon
 };
 
+/// One joint of a scene's skeleton where it is now (Scene::jointPositions, --pose-json).
+struct NamedPoint {
+  std::string name;
+  Vec3 position{0.0};  ///< [m] world
+};
+
 /// A rectangle of the window in pixels, y down (ImGui's convention).
 struct ScreenRect {
   float x0 = 0.0f, y0 = 0.0f, x1 = 0.0f, y1 = 0.0f;
@@ -120,6 +126,12 @@ class Scene {
   /// What the colours of the picture mean. The window shows it in a free corner, also while Tab hides
   /// the panels, since it explains the picture rather than controlling it.
   virtual std::vector<LegendEntry> legend() const { return {}; }
+  /// Every joint of the scene's skeleton by name, at its world position now; empty when the scene has
+  /// no skeleton. The runner writes them to --pose-json FILE when the run ends (app/pose_json.h).
+  virtual std::vector<NamedPoint> jointPositions() const { return {}; }
+  /// The goals the skeleton reaches for (IK), each named after the point of jointPositions() that reaches
+  /// for it; written beside the joints by --pose-json. Default: none.
+  virtual std::vector<NamedPoint> goalPositions() const { return {}; }
   /// Length [m] of one nudge; 0 lets the runner choose 2 % of the scene's drawn size.
   virtual Real nudgeStep() const { return 0.0; }
 

@@ -21,6 +21,7 @@
 #include "app/lab_session.h"
 #include "app/lab_ui.h"
 #include "app/metrics_report.h"
+#include "app/pose_json.h"
 #include "app/resource_dir.h"
 #include "app/scene_draw.h"
 #include "app/scene_file.h"
@@ -417,6 +418,12 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
     if (Status s = writeMetrics(report, options.metrics); !s) {
       std::cerr << "pba-" << lab << ": " << s.error() << '\n';
       return kExitBadInput;
+    }
+  }
+  if (!options.poseJson.empty()) {  // the scene on screen at the end (the window may have switched scenes)
+    if (Status s = writePoseJson(lab, runner, options.poseJson); !s) {
+      std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+      exitCode = kExitBadInput;
     }
   }
   if (!capture) {

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <iostream>
 
 #include <imgui.h>
 
@@ -13,20 +11,13 @@ AnimScene::AnimScene() {
   params_.real("speed", &speed_, 0.0, 3.0, "",
                "Playback speed (1 = real time). The timeline keys move the clock by frames of 1/30 s.");
   params_.flag("loop", &loop_, "Loop the clip; off, the clock stops at its end.");
-  params_.text("pose_json", &poseJson_,
-               "File that receives the world position of every joint, by name, when the scene ends (--pose-json).");
 }
 
-AnimScene::~AnimScene() {
-  if (poseJson_.empty() || world_.empty()) return;
-  nlohmann::json joints = nlohmann::json::object();
-  for (size_t j = 0; j < world_.size() && j < skeleton_.names.size(); ++j) {
-    const Vec3& p = world_[j].position;
-    joints[skeleton_.names[j]] = {p.x, p.y, p.z};
-  }
-  std::ofstream out(poseJson_);
-  out << nlohmann::json{{"time_s", time_}, {"unit", "m"}, {"joints", joints}}.dump(2) << '\n';
-  if (!out) std::cerr << "pose_json: " << poseJson_ << ": cannot write\n";
+std::vector<app::NamedPoint> AnimScene::jointPositions() const {
+  std::vector<app::NamedPoint> out;
+  for (size_t j = 0; j < world_.size() && j < skeleton_.names.size(); ++j)
+    out.push_back({skeleton_.names[j], world_[j].position});
+  return out;
 }
 
 void AnimScene::resetClock() {

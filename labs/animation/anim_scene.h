@@ -1,7 +1,7 @@
 #pragma once
 // The animation lab's common scene: a clock that plays, loops and scrubs (the timeline panel), a
 // character (skeleton, pose, world frames) drawn as bones, the metrics of the issue under
-// "animation", and --pose-json. Each scene file adds what it animates.
+// "animation", and the joints for --pose-json. Each scene file adds what it animates.
 //
 // Timeline keys (CMU asst4's keys mapped onto the common ones): Space play/pause (the runner's pause),
 // ←/→ one frame, Shift+←/→ ten frames, Alt+←/→ the previous/next key, Home/End the start/end,
@@ -24,7 +24,6 @@ inline constexpr Real kTimelineFrameRate = 30.0;  ///< [1/s] one ←/→ step of
 class AnimScene : public app::Scene {
  public:
   AnimScene();
-  ~AnimScene() override;  // writes --pose-json
 
   void step(Real dt) override;
   nlohmann::json metrics() const override;
@@ -32,6 +31,8 @@ class AnimScene : public app::Scene {
   void ui() override;
   bool nudge(const Vec3&) override { return true; }  // the arrows belong to the timeline (ui())
   std::vector<std::string> defaultPlots() const override { return {"max_velocity_m_s"}; }
+  /// The character's joints by name (--pose-json).
+  std::vector<app::NamedPoint> jointPositions() const override;
 
  protected:
   /// The clip's length [s] (the timeline's range) and the times of its keys (markers, Alt jumps).
@@ -70,7 +71,6 @@ class AnimScene : public app::Scene {
   Real speed_ = 1.0;           ///< [1] playback speed
   bool loop_ = true;
   int selectedKey_ = -1;
-  std::string poseJson_;  ///< --pose-json FILE: world joint positions at the end of the run
 
  private:
   void measureVelocity(Real dt);

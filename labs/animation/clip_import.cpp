@@ -5,6 +5,7 @@
 #include <unordered_map>
 
 #include "app/resource_dir.h"
+#include "bvh_import.h"
 #include "graphics/model.h"
 #include "graphics/skinning.h"
 
@@ -12,13 +13,7 @@ namespace pba::labs::animation {
 
 namespace an = pba::animation;
 
-std::string resolveResourcePath(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
-  const fs::path fromRoot = fs::path(app::repositoryRoot()) / path;
-  return fs::exists(fromRoot, ec) ? fromRoot.string() : path;
-}
+std::string resolveResourcePath(const std::string& path) { return app::resolveRepositoryPath(path); }
 
 namespace {
 
@@ -38,6 +33,38 @@ Real restExtent(const graphics::Model& model) {
     hi = glm::max(hi, p);
   }
   return std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+}
+
+/// Replaces the skeleton's offsets and the clip's keys of a .bvh file, which the graphics import has
+/// read and checked (its messages name every malformed file), by the double-precision reader's
+/// (bvh_import.h): Assimp keeps the keys in float. The two must agree on the joints (tested).
+Status useDoubleKeys(const std::string& path, Real height, const std::string& field, ImportedClip& out) {
+  Result<BvhClip> read = readBvh(path);
+  if (!read) return Error{field + ": " + read.error()};
+  BvhClip& b = read.value();
+  if (b.skeleton.names != out.skeleton.names || b.skeleton.parents != out.skeleton.parents)
+    return Error{field + ": " + path + ": the BVH reader and the model import disagree on the joints"};
+  if (b.clip.frames < 2 || !(b.clip.duration > 0.0))
+    return Error{field + ": " + path + ": has no animation (a clip needs keyframes)"};
+  // Rest rotations are the identity: a joint's rest position is the sum of the offsets above it.
+  std::vector<Vec3> rest(b.skeleton.restTranslations.size());
+  Vec3 lo(1e300), hi(-1e300);
+  for (size_t j = 0; j < rest.size(); ++j) {
+    const int p = b.skeleton.parents[j];
+    rest[j] = (p < 0 ? Vec3(0.0) : rest[static_cast<size_t>(p)]) + b.skeleton.restTranslations[j];
+    lo = glm::min(lo, rest[j]);
+    hi = glm::max(hi, rest[j]);
+  }
+  const Real extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+  out.scale = extent > 1e-9 ? height / extent : 1.0;
+  out.skeleton = std::move(b.skeleton);
+  for (Vec3& t : out.skeleton.restTranslations) t *= out.scale;
+  const std::string name = out.clip.name;
+  out.clip = std::move(b.clip);
+  out.clip.name = name;
+  for (an::JointTrack& t : out.clip.tracks)
+    for (int k = 0; k < t.translation.size(); ++k) t.translation.setValue(k, out.scale * t.translation.value(k));
+  return Status::success();
 }
 
 }  // namespace
@@ -64,8 +91,13 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
   out.path = path;
   const Real extent = restExtent(*model);
   out.scale = extent > 1e-9 ? height / extent : 1.0;
-  for (const graphics::ModelNode& n : model->nodes)
+  std::vector<Quat> restWorld;  // R_i = R_parent · q_i of the rest pose, for the skin
+  for (const graphics::ModelNode& n : model->nodes) {
     out.skeleton.add(n.name, n.parent, out.scale * Vec3(n.local[3]), rotationOf(n.local));
+    const Quat q = out.skeleton.restRotations.back();
+    restWorld.push_back(n.parent < 0 ? q : glm::normalize(restWorld[static_cast<size_t>(n.parent)] * q));
+  }
+  out.skin = app::makeCharacterSkin(*model, out.scale, Vec3(0.0), restWorld);
   const graphics::Animation& a = model->animations[0];
   an::Clip& clip = out.clip;
   clip.name = a.name.empty() ? "clip" : a.name;
@@ -83,7 +115,10 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
         return Error{where + ": " + r.error()};
     clip.frames = std::max({clip.frames, static_cast<int>(c.positions.size()), static_cast<int>(c.rotations.size())});
   }
-  if (Status s = an::validate(clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};
+  if (isBvhPath(path)) {
+    if (Status s = useDoubleKeys(path, height, field, out); !s.ok()) return Error{s.error()};
+  }
+  if (Status s = an::validate(out.clip, out.skeleton, path); !s.ok()) return Error{field + ": " + s.error()};
   return out;
 }
 

@@ -6,9 +6,11 @@
 // and rotation (scale dropped). The file's first animation becomes the clip: position keys → the
 // joint's translation channel (linear), rotation keys → its rotation channel (slerp), times in
 // seconds. The whole character is scaled by `height` / (the rest pose's largest extent), so files in
-// centimetres, inches or metres all play at human size; no other offset is applied.
+// centimetres, inches or metres all play at human size; no other offset is applied. A file with meshes
+// (skinned or rigid, e.g. Debian assimp-testmodels' X/BCN_Epileptic.X) keeps them as the clip's skin.
 #include <string>
 
+#include "app/character_skin.h"
 #include "physics/animation/clip.h"
 #include "physics/core/result.h"
 
@@ -19,6 +21,9 @@ struct ImportedClip {
   pba::animation::Clip clip;
   Real scale = 1.0;  ///< [m per file unit]
   std::string path;  ///< the file as opened
+  /// The file's meshes for the skeleton's joint frames (app/character_skin.h; joint j is node j), or an
+  /// empty skin (null model) when the file has none, as BVH files never do.
+  app::CharacterSkin skin;
 };
 
 /// The path as given when it exists, else relative to the repository root (app::repositoryRoot()).

@@ -1,6 +1,6 @@
 // Animation lab, scene "keyframes": the built-in humanoid keyframed in the app (CMU asst4's character
-// editor). Drag the hips to move the character, a hand or a foot to pose its limb by IK (law of
-// cosines); each edit keys the joints it changed at the current time (a key there is replaced). Keys
+// editor). Drag the hips to move the character, a hand or a foot to pose its limb by IK (the law of
+// cosines, or any iterative solver of the IK library: parameter "ik"); each edit keys the joints it changed at the current time (a key there is replaced). Keys
 // live on the timeline: add a key of the whole pose, select one (click its tick), move it, delete it
 // (Delete), play and scrub. Rotations interpolate by squad, the root's translation by Catmull-Rom.
 #include <algorithm>
@@ -22,6 +22,10 @@ class KeyframesScene final : public AnimScene {
     params_.choiceEnum(
         "rotation", &rotationMode_, {"step", "slerp", "squad"},
         "How joint rotations interpolate between keys: squad is C¹, slerp turns at a corner at each key.");
+    params_.choiceEnum("ik", &ikMethod_, pba::ik::solverNames(),
+                       "How a dragged hand or foot poses its limb: analytic is the law of cosines with a pole; the "
+                       "others are the IK lab's iterative solvers on the limb (ball shoulder or hip, hinge elbow or "
+                       "knee). Each drag keys the solved limb at the current time.");
   }
   std::string description() const override {
     return "Keyframe the humanoid: drag the hips, hands or feet (IK) to key a pose, then play and scrub the timeline.";
@@ -76,7 +80,9 @@ class KeyframesScene final : public AnimScene {
         const bool leg = skeleton_.names[static_cast<size_t>(l.root)].find("Leg") != std::string::npos;
         const Vec3 pole =
             world_[static_cast<size_t>(l.mid)].position + (leg ? 0.5 : -0.5) * forward - (leg ? 0.0 : 0.3) * kUp;
-        reachWithLimb(skeleton_, pose_, world_, l, target, pole);
+        const pba::ik::SolveResult r = solveLimb(skeleton_, pose_, world_, l, target, pole, ikMethod_);
+        ikResidual_ = r.positionResidual;
+        ikIterations_ = r.iterations;
         setRotationKey(l.root, t);
         setRotationKey(l.mid, t);
       }
@@ -88,9 +94,8 @@ class KeyframesScene final : public AnimScene {
     return app::CameraView{Vec3(0.0, 0.9, 0.0), 4.2, 0.5, 0.25};
   }
   std::vector<app::Preset> presets() const override {
-    return {{"squad", {{"rotation", "squad"}}},
-            {"slerp", {{"rotation", "slerp"}}},
-            {"step", {{"rotation", "step"}}},
+    return {{"squad", {{"rotation", "squad"}}}, {"slerp", {{"rotation", "slerp"}}}, {"step", {{"rotation", "step"}}},
+            {"ccd", {{"ik", "ccd"}}},           {"fabrik", {{"ik", "fabrik"}}},     {"dls", {{"ik", "dls"}}},
             {"slow motion", {{"speed", 0.25}}}};
   }
 
@@ -140,6 +145,9 @@ class KeyframesScene final : public AnimScene {
   }
   void addMetrics(nlohmann::json& m) const override {
     m["rotation_interpolation"] = kModes[static_cast<int>(rotationMode_)];
+    m["ik_method"] = pba::ik::solverName(ikMethod_);
+    m["ik_residual_m"] = ikResidual_;
+    m["ik_iterations"] = ikIterations_;
   }
 
  private:
@@ -175,6 +183,9 @@ class KeyframesScene final : public AnimScene {
   an::Clip clip_;
   std::vector<Limb> limbs_;
   an::RotationInterpolation rotationMode_ = an::RotationInterpolation::Squad;
+  pba::ik::SolverKind ikMethod_ = pba::ik::SolverKind::Analytic;
+  Real ikResidual_ = 0.0;  ///< [m] the last IK pose's distance from its goal
+  int ikIterations_ = 0;   ///< of the last IK pose
 };
 
 }  // namespace

@@ -1,7 +1,8 @@
 // Animation lab, scene "mocap": plays a motion-capture clip imported through Assimp (default: the
 // project's humanoid, resources/models/humanoid.bvh; any BVH/FBX/glTF with an animation through
 // --skeleton, e.g. Debian assimp-testmodels' CMU 01_01.bvh), with the trajectory of one joint drawn
-// over the whole clip (Workbook §2.7, advanced: "load an animated skeleton").
+// over the whole clip, and the file's meshes skinned by the played pose when it has any (e.g. the
+// Wuson, X/Testwuson.X; app/character_skin.h, the IK lab's character skin) (Workbook §2.7, advanced: "load an animated skeleton").
 #include <imgui.h>
 
 #include "anim_scene.h"
@@ -30,6 +31,8 @@ class MocapScene final : public AnimScene {
         .needsReset();
     params_.choiceEnum("rotation", &rotationMode_, {"step", "slerp", "squad"},
                        "Interpolation of the rotations between the file's frames.");
+    params_.flag("skin", &showSkin_,
+                 "Draw the file's meshes, skinned by the played pose (linear blend skinning), when it has any.");
   }
   std::string description() const override {
     return "A motion-capture clip played on its own skeleton; the teal line is one joint's path over the whole clip.";
@@ -62,13 +65,23 @@ class MocapScene final : public AnimScene {
   }
   void draw(DebugDraw& d) const override {
     if (world_.empty()) return;
-    drawCharacter(d, skeleton_, world_);
+    const bool skinned = showSkin_ && data_.skin.model;
+    if (skinned) {
+      // Translucent, so the bones inside stay visible.
+      for (const app::SkinSurface& surface : app::poseSkin(data_.skin, world_))
+        d.triangles(surface.positions, surface.normals, surface.indices, Color{0.93f, 0.76f, 0.62f, 0.6f});
+    }
+    drawCharacter(d, skeleton_, world_, skinned ? 0.8f : 1.0f);
     for (size_t s = 1; s < trail_.size(); ++s) d.line(trail_[s - 1], trail_[s], colors::kTeal);
     const int j = skeleton_.find(trailJoint_);
     if (j >= 0) d.sphere(world_[static_cast<size_t>(j)].position, 0.05, colors::kTeal);
   }
   std::vector<app::LegendEntry> legend() const override {
-    return {{colors::kBlue, "left side"}, {colors::kOrange, "right side"}, {colors::kTeal, "path of " + trailJoint_}};
+    std::vector<app::LegendEntry> entries{{colors::kBlue, "left side"}, {colors::kOrange, "right side"}};
+    if (!trail_.empty()) entries.push_back({colors::kTeal, "path of " + trailJoint_});
+    if (showSkin_ && data_.skin.model)
+      entries.push_back({Color{0.93f, 0.76f, 0.62f, 1.0f}, "the file's mesh, skinned"});
+    return entries;
   }
   void ui() override {
     if (!error_.empty())
@@ -81,6 +94,8 @@ class MocapScene final : public AnimScene {
     return {{"humanoid", {{"skeleton", "resources/models/humanoid.bvh"}}},
             {"cmu 01_01", {{"skeleton", "/usr/share/assimp/models/BVH/01_01.bvh"}, {"trail_joint", "LeftHand"}}},
             {"boxing", {{"skeleton", "/usr/share/assimp/models/BVH/Boxing_Toes.bvh"}, {"trail_joint", ""}}},
+            // A skinned, animated file of Debian's assimp-testmodels: the mesh follows the clip.
+            {"skinned wuson", {{"skeleton", "/usr/share/assimp/models/X/Testwuson.X"}, {"trail_joint", ""}}},
             {"step", {{"rotation", "step"}}},
             {"squad", {{"rotation", "squad"}}}};
   }
@@ -101,7 +116,10 @@ class MocapScene final : public AnimScene {
     world_ = an::forwardKinematics(skeleton_, pose_);
     continuity_ = 0.0;  // a captured clip is only C⁰ (linear/slerp between frames)
   }
-  void addMetrics(nlohmann::json& m) const override { m["file"] = data_.path; }
+  void addMetrics(nlohmann::json& m) const override {
+    m["file"] = data_.path;
+    m["meshes"] = app::meshCount(data_.skin);
+  }
 
  private:
   static constexpr int kTrailSamples = 240;
@@ -109,6 +127,7 @@ class MocapScene final : public AnimScene {
   Real height_ = 1.7;
   std::string trailJoint_ = "LeftHand";
   an::RotationInterpolation rotationMode_ = an::RotationInterpolation::Slerp;
+  bool showSkin_ = true;
   ImportedClip data_;
   std::string error_;
   std::vector<Vec3> trail_;

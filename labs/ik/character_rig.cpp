@@ -10,7 +10,6 @@
 
 #include "app/resource_dir.h"
 #include "graphics/model.h"
-#include "graphics/skinning.h"
 
 namespace pba::labs::ik {
 
@@ -151,13 +150,7 @@ LimbJoint limbJointFromName(const std::string& name) {
   return LimbJoint::None;
 }
 
-std::string resolveModelPath(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
-  const fs::path fromRoot = fs::path(app::repositoryRoot()) / path;
-  return fs::exists(fromRoot, ec) ? fromRoot.string() : path;
-}
+std::string resolveModelPath(const std::string& path) { return app::resolveRepositoryPath(path); }
 
 std::vector<std::string> splitNames(const std::string& list) {
   std::vector<std::string> names;
@@ -280,54 +273,11 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
     }
   }
   if (skin) {
-    *skin = CharacterSkin{};
-    const bool hasMesh = std::any_of(model->meshes.begin(), model->meshes.end(),
-                                     [](const graphics::ModelMesh& m) { return !m.placeholder; });
-    if (hasMesh) {
-      skin->model = std::make_shared<const graphics::Model>(*model);
-      skin->scale = scale;
-      skin->shift = shift;
-      const std::vector<glm::mat4> global = graphics::globalTransforms(*model, graphics::restPose(*model));
-      for (size_t i = 0; i < model->nodes.size(); ++i)
-        skin->shape.push_back(glm::mat3_cast(glm::inverse(rest[i].rotation)) * Mat3(glm::dmat4(global[i])));
-    }
+    std::vector<Quat> restRotations;
+    for (const RestFrame& f : rest) restRotations.push_back(f.rotation);
+    *skin = app::makeCharacterSkin(*model, scale, shift, restRotations);
   }
   return rig;
-}
-
-std::vector<SkinSurface> poseSkin(const CharacterSkin& skin, const std::vector<Frame>& frames) {
-  std::vector<SkinSurface> out;
-  if (!skin.model || frames.size() != skin.model->nodes.size()) return out;
-  const graphics::Model& model = *skin.model;
-  // Node globals in model space: the joint frames with the file's scale and shear put back.
-  std::vector<glm::mat4> global(frames.size());
-  for (size_t n = 0; n < frames.size(); ++n) {
-    const Mat3 linear = glm::mat3_cast(frames[n].rotation) * skin.shape[n];
-    glm::dmat4 g(linear);
-    g[3] = glm::dvec4(frames[n].position / skin.scale - skin.shift, 1.0);
-    global[n] = glm::mat4(g);
-  }
-  const std::vector<glm::mat4> skinning = graphics::skinningMatrices(model, global);
-  for (size_t m = 0; m < model.meshes.size(); ++m) {
-    const graphics::ModelMesh& mesh = model.meshes[m];
-    if (mesh.placeholder) continue;
-    SkinSurface s;
-    s.mesh = m;
-    std::vector<glm::vec3> p, nrm;
-    if (mesh.skinned()) {
-      p = graphics::skinPositions(mesh, skinning);
-      nrm = graphics::skinNormals(mesh, skinning);
-    } else {  // rigid: follows the node that instances it
-      const glm::mat4 g = mesh.node >= 0 ? global[static_cast<size_t>(mesh.node)] : glm::mat4(1.0f);
-      for (const glm::vec3& v : mesh.positions) p.push_back(glm::vec3(g * glm::vec4(v, 1.0f)));
-      for (const glm::vec3& v : mesh.normals) nrm.push_back(glm::normalize(glm::mat3(g) * v));
-    }
-    for (const glm::vec3& v : p) s.positions.push_back(skin.scale * (Vec3(v) + skin.shift));
-    for (const glm::vec3& v : nrm) s.normals.push_back(Vec3(v));
-    s.indices = mesh.indices;
-    out.push_back(std::move(s));
-  }
-  return out;
 }
 
 }  // namespace pba::labs::ik

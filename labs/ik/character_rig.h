@@ -19,11 +19,10 @@
 //
 // Effectors are joints named in a comma-separated list; an empty list picks them from the names:
 // the topmost joints whose name contains "hand" or "foot" (case-insensitive), else every leaf.
-#include <cstdint>
-#include <memory>
 #include <string>
 #include <vector>
 
+#include "app/character_skin.h"
 #include "graphics/model.h"
 
 #include "physics/core/result.h"
@@ -53,29 +52,16 @@ std::string resolveModelPath(const std::string& path);
 /// Splits "a, b,c" into {"a", "b", "c"} (blanks trimmed, empty names dropped).
 std::vector<std::string> splitNames(const std::string& list);
 
-/// The file's meshes, kept to draw them over the IK skeleton (skinned meshes by linear blend skinning
-/// with the solved joint frames; rigid meshes follow their node). Joint j of the rig is node j.
-struct CharacterSkin {
-  std::shared_ptr<const graphics::Model> model;  ///< null when the file has no mesh
-  Real scale = 1.0;                              ///< world = scale · (model space + shift)
-  Vec3 shift{0.0};
-  std::vector<Mat3> shape;  ///< per node: R_rest⁻¹ · linear(G_rest), the scale/shear the IK frames drop
-};
-
-/// One mesh of the character in world space for the current pose.
-struct SkinSurface {
-  size_t mesh = 0;  ///< index in Model::meshes
-  std::vector<Vec3> positions, normals;
-  std::vector<std::uint32_t> indices;
-};
+/// The file's meshes, drawn over the IK skeleton (app/character_skin.h: skinned meshes by linear blend
+/// skinning with the solved joint frames; rigid meshes follow their node). Joint j of the rig is node j.
+using app::CharacterSkin;
+using app::poseSkin;
+using app::SkinSurface;
 
 /// Loads and converts; fills *skin when given. Errors: "skeleton: <path>: <Assimp's message>",
 /// "skeleton: <path>: has no joints", "effectors: no joint named 'x' in <path> (joints: a, b, c, ...)";
 /// also refuses duplicate joint names, a file where no joint can move, more than 1,000 joints and more
 /// than 64 effectors (the Jacobian would not fit in memory or time).
 Result<pba::ik::Rig> loadCharacterRig(const CharacterDesc& desc, CharacterSkin* skin = nullptr);
-
-/// The character's meshes posed by the rig's joint frames (forward kinematics of the solved pose).
-std::vector<SkinSurface> poseSkin(const CharacterSkin& skin, const std::vector<pba::ik::Frame>& frames);
 
 }  // namespace pba::labs::ik

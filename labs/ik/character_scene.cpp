@@ -76,9 +76,7 @@ class CharacterScene final : public IkScene {
   nlohmann::json metrics() const override {
     nlohmann::json m = IkScene::metrics();
     m["joints"] = rig_.skeleton.jointCount();
-    m["meshes"] = skin_.model ? std::count_if(skin_.model->meshes.begin(), skin_.model->meshes.end(),
-                                              [](const graphics::ModelMesh& mesh) { return !mesh.placeholder; })
-                              : 0;
+    m["meshes"] = app::meshCount(skin_);
     m["effectors"] = rig_.effectors.size();
     return m;
   }

@@ -220,4 +220,34 @@ std::vector<app::LegendEntry> IkScene::legend() const {
   return out;
 }
 
+namespace {
+/// The name --pose-json gives an effector's point: its joint's name, or "<joint>.effector" when the
+/// point sits at an offset from the joint (a chain's tip).
+std::string effectorPointName(const Skeleton& s, const Effector& e) {
+  const std::string& name = s.joint(e.joint).name;
+  const std::string joint = name.empty() ? "joint" + std::to_string(e.joint) : name;
+  return glm::length(e.localOffset) > 0.0 ? joint + ".effector" : joint;
+}
+}  // namespace
+
+std::vector<app::NamedPoint> IkScene::jointPositions() const {
+  std::vector<app::NamedPoint> out;
+  if (rig_.skeleton.jointCount() == 0) return out;
+  const std::vector<Frame> frames = forwardKinematics(rig_.skeleton, pose_);
+  for (int j = 0; j < rig_.skeleton.jointCount(); ++j) {
+    const std::string& name = rig_.skeleton.joint(j).name;
+    out.push_back({name.empty() ? "joint" + std::to_string(j) : name, frames[static_cast<size_t>(j)].position});
+  }
+  for (const Effector& e : rig_.effectors)
+    if (glm::length(e.localOffset) > 0.0)
+      out.push_back({effectorPointName(rig_.skeleton, e), effectorPosition(e, frames)});
+  return out;
+}
+
+std::vector<app::NamedPoint> IkScene::goalPositions() const {
+  std::vector<app::NamedPoint> out;
+  for (const Effector& e : rig_.effectors) out.push_back({effectorPointName(rig_.skeleton, e), e.targetPosition});
+  return out;
+}
+
 }  // namespace pba::labs::ik

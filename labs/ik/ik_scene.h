@@ -53,6 +53,11 @@ class IkScene : public app::Scene {
   void refresh() override { solveNow(); }
   std::vector<app::DragHandle> dragHandles() const override;
   std::vector<app::LegendEntry> legend() const override;
+  /// The solved pose's joints by name, and each effector point that sits off its joint as
+  /// "<joint>.effector" (a chain's tip) (--pose-json).
+  std::vector<app::NamedPoint> jointPositions() const override;
+  /// Each effector's goal, by the name of its point in jointPositions() (--pose-json).
+  std::vector<app::NamedPoint> goalPositions() const override;
   /// A tenth of the scripted path's radius: ~20 key presses across the path.
   Real nudgeStep() const override { return 0.1 * pathRadius(); }
 
