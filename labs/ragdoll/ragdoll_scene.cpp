@@ -51,6 +51,9 @@ RagdollScene::RagdollScene() {
   params_.flag("show_contacts", &draw_.contacts, "Draw contact points and normals.");
 }
 
+const Color& RagdollScene::particleColor() { return kParticleColor; }
+const Color& RagdollScene::constraintColor() { return kConstraintColor; }
+
 Real RagdollScene::halfSeparation(const ragdoll::RagdollDesc& desc) const {
   Real lo = 1e30, hi = -1e30;
   for (const ragdoll::BoneDesc& b : desc.bones) {
@@ -75,8 +78,9 @@ std::optional<app::CameraView> RagdollScene::preferredView() const {
   return app::CameraView{0.5 * (lo + hi), 1.05 * extent, 0.0, 0.3};
 }
 
-void RagdollScene::reset() {
-  const ragdoll::RagdollDesc desc = build();
+void RagdollScene::reset() { start(build()); }
+
+void RagdollScene::start(const ragdoll::RagdollDesc& desc) {
   const Real half = halfSeparation(desc);
   const Vec3 g(0.0, -gravity_, 0.0);
   particleSettings_.gravity = g;

@@ -47,6 +47,12 @@ class RagdollScene : public app::Scene {
   /// Extra measurements (after the shared ones).
   virtual void extraMetrics(nlohmann::json& /*j*/) const {}
 
+  /// Builds both ragdolls from `desc` (centred about x = 0) side by side, as reset() does with build().
+  void start(const ragdoll::RagdollDesc& desc);
+  Shown shown() const { return shown_; }
+  static const Color& particleColor();
+  static const Color& constraintColor();
+
   const ragdoll::ParticleRagdoll& particle() const { return particle_; }
   const ragdoll::ConstraintRagdoll& constraint() const { return constraint_; }
 
