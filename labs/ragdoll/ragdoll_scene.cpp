@@ -80,8 +80,8 @@ std::optional<app::CameraView> RagdollScene::preferredView() const {
 
 void RagdollScene::reset() { start(build()); }
 
-void RagdollScene::start(const ragdoll::RagdollDesc& desc) {
-  const Real half = halfSeparation(desc);
+void RagdollScene::start(const ragdoll::RagdollDesc& desc, Real half) {
+  if (half < 0.0) half = halfSeparation(desc);
   const Vec3 g(0.0, -gravity_, 0.0);
   particleSettings_.gravity = g;
   particleSettings_.student = {studentCode_, studentCode_, studentCode_, studentCode_};

@@ -47,8 +47,9 @@ class RagdollScene : public app::Scene {
   /// Extra measurements (after the shared ones).
   virtual void extraMetrics(nlohmann::json& /*j*/) const {}
 
-  /// Builds both ragdolls from `desc` (centred about x = 0) side by side, as reset() does with build().
-  void start(const ragdoll::RagdollDesc& desc);
+  /// Builds both ragdolls from `desc` (centred about x = 0) side by side, as reset() does with build(), at
+  /// ±`half` [m] (negative: halfSeparation(desc)).
+  void start(const ragdoll::RagdollDesc& desc, Real half = -1.0);
   Shown shown() const { return shown_; }
   static const Color& particleColor();
   static const Color& constraintColor();
