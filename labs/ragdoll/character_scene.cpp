@@ -16,18 +16,6 @@ PBA_REGISTER_LAB_FLAG("frame", "frame", "frame of the skeleton file's animation 
 namespace {
 using namespace pba;
 
-/// Lowest box corner of a description [m].
-Real lowestCorner(const ragdoll::RagdollDesc& d) {
-  Real lo = 1e300;
-  for (const ragdoll::BoneDesc& b : d.bones)
-    for (int i = 0; i < 8; ++i) {
-      const Vec3 h = b.halfExtents;
-      const Vec3 c(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z);
-      lo = std::min(lo, (b.center + b.orientation * c).y);
-    }
-  return lo;
-}
-
 class CharacterScene final : public lab::RagdollScene {
  public:
   CharacterScene() {
@@ -38,8 +26,8 @@ class CharacterScene final : public lab::RagdollScene {
         .needsReset();
     params_
         .integer("frame", &file_.frame, -1, 1000000, "",
-                 "Frame of the file's animation the ragdoll starts in; -1: the file's rest pose. Joint limits are "
-                 "centred on the start pose.")
+                 "Frame of the file's animation the ragdoll starts in; -1: the file's rest pose; past the last frame: "
+                 "the last. Joint limits are centred on the start pose.")
         .needsReset();
     params_
         .real("height", &file_.height, 0.5, 3.0, "m",
@@ -95,7 +83,7 @@ class CharacterScene final : public lab::RagdollScene {
     return d;
   }
 
-  lab::SkeletonFile file_;
+  lab::SkeletonFile file_{.clampFrame = true};
   ragdoll::SkeletonRagdollDesc shape_;
   Real drop_ = 0.5, tilt_ = degToRad(60.0);
   mutable ragdoll::RagdollDesc last_;

@@ -20,17 +20,6 @@ constexpr Real kGroundGap = 0.002;            // [m] the lowest box corner above
 const Vec3 kForward(0.0, 0.0, 1.0);           // the figures face +z (character_rig.h places them so)
 const Vec3 kReach(-0.05, 0.5, 0.35);          // [m] the hand's scripted reach from its rest goal: up, forward
 
-Real lowestCorner(const ragdoll::RagdollDesc& d) {
-  Real lo = 1e300;
-  for (const ragdoll::BoneDesc& b : d.bones)
-    for (int i = 0; i < 8; ++i) {
-      const Vec3 h = b.halfExtents;
-      lo =
-          std::min(lo, (b.center + b.orientation * Vec3(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z)).y);
-    }
-  return lo;
-}
-
 /// Angular velocity [rad/s] that turns q0 into q1 in h seconds (world frame): dq = q1 q0⁻¹ = (cos ½φ, sin ½φ n),
 /// ω = φ n / h, with the shorter of the two quaternion signs.
 Vec3 angularVelocity(const Quat& q0, const Quat& q1, Real h) {
@@ -283,7 +272,7 @@ bool IkToRagdollScene::keyPressed(char key) {
 }
 
 std::vector<app::Preset> IkToRagdollScene::presets() const {
-  return {{"thrown box at 2 s (default)", {}},
+  return {{"thrown box at 2 s (default)", nlohmann::json::object()},
           {"no throw: press G", {{"throw_at", -1.0}}},
           {"switch at 0.6 s (hand moving fastest)", {{"throw_at", -1.0}, {"switch_at", 0.6}}},
           {"fast reach, switch at 0.6 s", {{"throw_at", -1.0}, {"path_hertz", 1.0}, {"switch_at", 0.6}}},

@@ -51,6 +51,17 @@ RagdollScene::RagdollScene() {
   params_.flag("show_contacts", &draw_.contacts, "Draw contact points and normals.");
 }
 
+Real RagdollScene::lowestCorner(const ragdoll::RagdollDesc& desc) {
+  Real lo = 1e300;
+  for (const ragdoll::BoneDesc& b : desc.bones)
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 h = b.halfExtents;
+      lo =
+          std::min(lo, (b.center + b.orientation * Vec3(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z)).y);
+    }
+  return lo;
+}
+
 const Color& RagdollScene::particleColor() { return kParticleColor; }
 const Color& RagdollScene::constraintColor() { return kConstraintColor; }
 

@@ -51,6 +51,8 @@ class RagdollScene : public app::Scene {
   /// ±`half` [m] (negative: halfSeparation(desc)).
   void start(const ragdoll::RagdollDesc& desc, Real half = -1.0);
   Shown shown() const { return shown_; }
+  /// Height [m] of the lowest box corner of a description (figures are lifted so that it is above y = 0).
+  static Real lowestCorner(const ragdoll::RagdollDesc& desc);
   static const Color& particleColor();
   static const Color& constraintColor();
 

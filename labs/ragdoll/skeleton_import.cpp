@@ -38,17 +38,17 @@ Result<LoadedSkeleton> loadSkeleton(const SkeletonFile& file) {
   LoadedSkeleton out;
   const graphics::NodeChannel* channel = longestChannel(*model);
   out.frames = channel ? static_cast<int>(channel->rotations.size()) : 0;
-  if (file.frame >= out.frames && file.frame >= 0)
+  const int frame = file.clampFrame ? std::min(file.frame, out.frames - 1) : file.frame;
+  if (frame >= out.frames && frame >= 0)
     return Error{"frame: " + path + " has " + std::to_string(out.frames) + " frames (0 ... " +
                  std::to_string(std::max(out.frames - 1, 0)) + "); -1 is the rest pose"};
 
   const std::vector<Vec3> rest = positionsOf(graphics::globalTransforms(*model, graphics::restPose(*model)));
   const std::vector<Vec3> posed =
-      file.frame < 0
-          ? rest
-          : positionsOf(graphics::globalTransforms(
-                *model, graphics::sampleAnimation(*model, model->animations[0],
-                                                  channel->rotations[static_cast<size_t>(file.frame)].time, false)));
+      frame < 0 ? rest
+                : positionsOf(graphics::globalTransforms(
+                      *model, graphics::sampleAnimation(*model, model->animations[0],
+                                                        channel->rotations[static_cast<size_t>(frame)].time, false)));
   // The rest pose sets the scale (every frame of a file gets the same size).
   Vec3 lo(1e300), hi(-1e300);
   for (const Vec3& p : rest) lo = glm::min(lo, p), hi = glm::max(hi, p);

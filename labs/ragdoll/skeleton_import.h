@@ -16,6 +16,7 @@ namespace pba::lab {
 struct SkeletonFile {
   std::string path = "resources/models/humanoid.bvh";  ///< as given; relative paths also from the repository root
   int frame = -1;                                      ///< frame of the first animation; −1: the rest pose
+  bool clampFrame = false;                             ///< a frame past the last is the last (else an error)
   Real height = 1.7;                                   ///< [m] height of the rest pose after scaling
 };
 
@@ -25,7 +26,7 @@ struct LoadedSkeleton {
 };
 
 /// Errors name the file: "skeleton: PATH: <Assimp's message>", "skeleton: PATH: has no joints",
-/// "frame: PATH has N frames (0 … N−1)".
+/// "frame: PATH has N frames (0 … N−1)" (unless clampFrame).
 Result<LoadedSkeleton> loadSkeleton(const SkeletonFile& file);
 
 }  // namespace pba::lab
