@@ -255,6 +255,11 @@ std::string usage(const std::string& lab) {
               ")\n";
     }
   }
+  if (!labKeys().empty()) {
+    text += "\nScene keys:\n";
+    for (const LabKey& k : labKeys())
+      text += std::string("  ") + k.key + "  (scene " + k.scene + ") " + k.action + "\n";
+  }
   text +=
       "\nKeys: Space/P pause  O step  , . rewind / forward one frame  R reset  [ ] scene  1-9 presets\n"
       "      F1/H help  F12 screenshot  F9 record\n"

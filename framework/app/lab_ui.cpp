@@ -384,6 +384,13 @@ void helpOverlay(UiState& ui) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(action);
     }
+    for (const LabKey& k : labKeys()) {  // the scenes' own keys
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::Text("%c", k.key);
+      ImGui::TableNextColumn();
+      ImGui::Text("%s (scene %s)", k.action.c_str(), k.scene.c_str());
+    }
     ImGui::EndTable();
   }
   ImGui::End();

@@ -116,6 +116,9 @@ class Scene {
   /// Keyboard nudge (arrow keys, PageUp/PageDown; app/target_nudge.h): moves the scene's current
   /// target (the goal last picked, …) by `delta` [m, world]. False when there is nothing to nudge.
   virtual bool nudge(const Vec3& /*delta*/) { return false; }
+  /// A scene's own key (an upper-case letter registered with PBA_REGISTER_LAB_KEY, so that the F1 help
+  /// and --help list it). True when the scene acted on it.
+  virtual bool keyPressed(char /*key*/) { return false; }
   /// Recomputes what follows from the scene's inputs without advancing time (an IK pose after its goal
   /// moved). The runner calls it after every drag and nudge while the scene is paused, so a paused
   /// scene shows the effect of any goal change at once, whatever moved it. Default: nothing.

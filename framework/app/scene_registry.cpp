@@ -46,4 +46,14 @@ bool registerLabFlag(std::string flag, std::string param, std::string help, std:
   return true;
 }
 
+static std::vector<LabKey>& mutableKeys() {
+  static std::vector<LabKey> keys;
+  return keys;
+}
+const std::vector<LabKey>& labKeys() { return mutableKeys(); }
+bool registerLabKey(char key, std::string scene, std::string action) {
+  mutableKeys().push_back({key, std::move(scene), std::move(action)});
+  return true;
+}
+
 }  // namespace pba::app

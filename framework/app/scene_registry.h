@@ -43,6 +43,16 @@ const std::vector<LabFlag>& labFlags();
 bool registerLabFlag(std::string flag, std::string param, std::string help, std::string impliesScene = {},
                      int priority = 0);
 
+/// A key of one scene's own (a letter the common keys leave free, e.g. G in the ragdoll lab's
+/// ik-to-ragdoll): the window passes it to Scene::keyPressed, and the F1 help and --help list it.
+struct LabKey {
+  char key = 0;       ///< upper-case letter
+  std::string scene;  ///< the scene that answers it
+  std::string action;
+};
+const std::vector<LabKey>& labKeys();
+bool registerLabKey(char key, std::string scene, std::string action);
+
 }  // namespace pba::app
 
 #define PBA_CONCAT_INNER(a, b) a##b
@@ -55,5 +65,7 @@ bool registerLabFlag(std::string flag, std::string param, std::string help, std:
     scene->setStateOps(ops);                                                                                      \
     return scene;                                                                                                 \
   })
+#define PBA_REGISTER_LAB_KEY(...) \
+  static const bool PBA_CONCAT(pbaKeyRegistered_, __COUNTER__) = ::pba::app::registerLabKey(__VA_ARGS__)
 #define PBA_REGISTER_LAB_FLAG(...) \
   static const bool PBA_CONCAT(pbaFlagRegistered_, __COUNTER__) = ::pba::app::registerLabFlag(__VA_ARGS__)

@@ -51,6 +51,20 @@ RagdollScene::RagdollScene() {
   params_.flag("show_contacts", &draw_.contacts, "Draw contact points and normals.");
 }
 
+Real RagdollScene::lowestCorner(const ragdoll::RagdollDesc& desc) {
+  Real lo = 1e300;
+  for (const ragdoll::BoneDesc& b : desc.bones)
+    for (int i = 0; i < 8; ++i) {
+      const Vec3 h = b.halfExtents;
+      lo =
+          std::min(lo, (b.center + b.orientation * Vec3(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z)).y);
+    }
+  return lo;
+}
+
+const Color& RagdollScene::particleColor() { return kParticleColor; }
+const Color& RagdollScene::constraintColor() { return kConstraintColor; }
+
 Real RagdollScene::halfSeparation(const ragdoll::RagdollDesc& desc) const {
   Real lo = 1e30, hi = -1e30;
   for (const ragdoll::BoneDesc& b : desc.bones) {
@@ -75,9 +89,10 @@ std::optional<app::CameraView> RagdollScene::preferredView() const {
   return app::CameraView{0.5 * (lo + hi), 1.05 * extent, 0.0, 0.3};
 }
 
-void RagdollScene::reset() {
-  const ragdoll::RagdollDesc desc = build();
-  const Real half = halfSeparation(desc);
+void RagdollScene::reset() { start(build()); }
+
+void RagdollScene::start(const ragdoll::RagdollDesc& desc, Real half) {
+  if (half < 0.0) half = halfSeparation(desc);
   const Vec3 g(0.0, -gravity_, 0.0);
   particleSettings_.gravity = g;
   particleSettings_.student = {studentCode_, studentCode_, studentCode_, studentCode_};

@@ -47,6 +47,15 @@ class RagdollScene : public app::Scene {
   /// Extra measurements (after the shared ones).
   virtual void extraMetrics(nlohmann::json& /*j*/) const {}
 
+  /// Builds both ragdolls from `desc` (centred about x = 0) side by side, as reset() does with build(), at
+  /// ±`half` [m] (negative: halfSeparation(desc)).
+  void start(const ragdoll::RagdollDesc& desc, Real half = -1.0);
+  Shown shown() const { return shown_; }
+  /// Height [m] of the lowest box corner of a description (figures are lifted so that it is above y = 0).
+  static Real lowestCorner(const ragdoll::RagdollDesc& desc);
+  static const Color& particleColor();
+  static const Color& constraintColor();
+
   const ragdoll::ParticleRagdoll& particle() const { return particle_; }
   const ragdoll::ConstraintRagdoll& constraint() const { return constraint_; }
 

@@ -8,6 +8,8 @@ namespace pba::ragdoll {
 
 namespace {
 
+constexpr Real kMinBone = 0.02;  // [m] shorter segments make no bone of their own
+
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
@@ -61,10 +63,21 @@ Result<RagdollDesc> buildSkeletonRagdoll(const std::vector<SkeletonJoint>& joint
   if (joints.empty()) return Error{"skeleton: has no joints"};
   const int n = static_cast<int>(joints.size());
   std::vector<std::vector<int>> children(n);
+  // A joint within kMinBone of its parent's (merged) joint is merged into it: motion-capture files have
+  // helper joints at the parent's very place (CMU: LHipJoint, RHipJoint and LowerBack at the hips,
+  // LThumb at the hand). Each would start a bone at the parent's point, overlapping its siblings' bones
+  // there without a joint between them, so that their contacts pushed against the joints.
+  std::vector<int> merged(n);
   for (int i = 0; i < n; ++i) {
     if (joints[i].parent >= i) return Error{"skeleton: joint '" + joints[i].name + "' comes before its parent"};
     if (!isFinite(joints[i].position)) return Error{"skeleton: joint '" + joints[i].name + "' position is not finite"};
-    if (joints[i].parent >= 0) children[joints[i].parent].push_back(i);
+    merged[i] = i;
+    if (joints[i].parent < 0) continue;
+    const int p = merged[joints[i].parent];
+    if (glm::length(joints[i].position - joints[p].position) < kMinBone)
+      merged[i] = p;
+    else
+      children[p].push_back(i);
   }
   RagdollDesc d;
   std::vector<int> boneOf(n, -1);
@@ -77,7 +90,7 @@ Result<RagdollDesc> buildSkeletonRagdoll(const std::vector<SkeletonJoint>& joint
     if (children[i].size() == 1) {
       const Vec3 seg = joints[children[i][0]].position - p;
       const Real length = glm::length(seg);
-      if (length < 0.02) continue;  // a helper node: its child joins the ancestor's bone
+      if (length < kMinBone) continue;  // a helper node: its child joins the ancestor's bone
       const Vec3 u = seg / length;
       const Real half = std::clamp(0.5 * s.thickness * length, s.minHalfThickness, s.maxHalfThickness);
       b.center = p + 0.5 * seg;

@@ -1,8 +1,8 @@
 #pragma once
 // A ragdoll from any skeleton: the library sees only joint names, parents and rest positions (a lab
-// reads them from a file with Assimp). Status: the particle ragdoll of such a skeleton lands and rests;
-// the constraint ragdoll of the same boxes keeps spinning on the ground (about 100 J of kinetic energy
-// for humanoid.bvh after 10 s, not yet understood), so the lab has no `character` scene yet.
+// reads them from a file with Assimp). Both methods land and rest with humanoid.bvh and Debian's CMU BVH
+// files (tests/labs/ragdoll_character_test.cpp). Joints within 2 cm of their parent's joint (helper
+// joints of motion-capture files) merge into it.
 // One box per joint that has children:
 //   * one child: a box along the segment to it, as thick as `thickness` × length within
 //     [minHalfThickness, maxHalfThickness];

@@ -231,7 +231,13 @@ void World::solveContinuous(Real /*dt*/) {
       if (other == i || o.type != BodyType::Static || o.shape.kind == collision::ShapeKind::Mesh) return;
       const collision::Sweep still{o.position, o.position, o.orientation, o.orientation};
       const collision::ToiResult r = collision::timeOfImpact(b.shape, sweep, o.shape, still, target, 0.25 * target);
-      if (r.state == collision::ToiResult::State::Hit && r.t < tMin) tMin = r.t;
+      // A hit at t = 0 is a body that starts the step at the target distance: its contact, made before the
+      // solve within the speculative margin, holds it. Rewinding it to t = 0 would undo the whole step and
+      // restore the velocity it started with; the next step would start at the target distance again, so a
+      // fast-spinning thin box (a ragdoll's hand or shin: 5 cm thick, over the threshold at 1.5 m/s) froze
+      // in mid-tumble for good, its kinetic energy never falling and its joints pulled open. Box2D v3
+      // (b2ContinuousQueryCallback) also accepts only fractions above 0.
+      if (r.state == collision::ToiResult::State::Hit && r.t > 0.0 && r.t < tMin) tMin = r.t;
     });
     if (tMin < 1.0) {
       const collision::Transform at = sweep.at(tMin);

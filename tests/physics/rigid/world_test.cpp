@@ -58,6 +58,29 @@ TEST(ContinuousCollision, AFastBoxHitsTheGroundPlaneInsteadOfSinkingIn) {
   EXPECT_GT(lowest, 0.05 - 0.01);  // never more than 1 cm into the ground (0.67 m per step at 40 m/s)
 }
 
+// A thin box (the head bone of the ragdoll of humanoid.bvh: 18 × 5 × 5 cm, 1.3 kg) dropped flat from 1.46 m with the
+// ragdoll's settings (8 cm speculative margin): it lands fast enough for continuous collision (more than half
+// its 5 cm thickness per step) and spinning. It used to freeze for good at a time of impact of 0 with its
+// landing velocity (the kinetic energy stayed at ~3 J); it must come to rest on the ground.
+TEST(ContinuousCollision, AThinBoxLandingFastComesToRestInsteadOfFreezingAtTheTimeOfImpact) {
+  WorldSettings s;  // the ragdoll's (physics/ragdoll/constraint_ragdoll.cpp, ragdollWorldSettings)
+  s.speculativeDistance = 0.08;
+  s.contactHertz = 60.0;
+  s.jointHertz = 60.0;
+  World w(s);
+  addGround(w, 0.5);
+  const Vec3 half(0.091071428571428581, 0.025, 0.025);
+  const Real density = 1.2730910135465596 / (8.0 * half.x * half.y * half.z);  // [kg/m³]
+  const int box = addBox(w, half, Vec3(0.0, 1.4571779225174808, 0.0), Quat(1, 0, 0, 0), density, 0.5, colors::kRed);
+  Real energy = 0.0;
+  for (int i = 0; i < 240; ++i) {
+    w.step(1.0 / 60.0);
+    energy = kineticEnergy(w.body(box));
+  }
+  EXPECT_LT(energy, 0.01);  // [J] settled 3.5 s after landing with 14 J (the frozen box kept about 3 J)
+  EXPECT_NEAR(w.body(box).position.y, half.y, 0.01);  // lying on a 5 cm face
+}
+
 TEST(BadInput, BodiesWithBadNumbersAreRejectedNamingTheField) {
   World w;
   BodyDesc d;
