@@ -291,7 +291,7 @@ std::vector<app::Preset> IkToRagdollScene::presets() const {
 
 std::vector<app::LegendEntry> IkToRagdollScene::legend() const {
   std::vector<app::LegendEntry> l = RagdollScene::legend();
-  l.push_back({colors::kGreen, "IK goal of the right hand (drag it); G switches to the ragdolls"});
+  l.push_back({colors::kGreen, "hand goal (drag it; G: ragdolls)"});
   l.push_back({colors::kGrey, "thrown box"});
   return l;
 }
