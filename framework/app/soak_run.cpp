@@ -118,8 +118,8 @@ class Soak {
     runner_.setPaused(false);
     setup_ = Setup::Defaults;
     touched_ = false;
-    visited_.insert(index);
-    checkpointMemory();
+    const bool firstVisit = visited_.insert(index).second;
+    checkpointMemory(firstVisit);
     return true;
   }
 
@@ -265,9 +265,10 @@ class Soak {
 
   // Memory is compared at like moments: a scene just loaded at its defaults (history and buffers of
   // the previous scene gone). Warm-up: every scene loaded once and a quarter of the run over.
-  void checkpointMemory() {
+  void checkpointMemory(bool firstVisit) {
     const std::size_t rss = residentBytes(), heap = heapInUse();
-    const bool warm = visited_.size() == scenes().size() && secondsSince(start_) >= kSoakWarmupFraction * o_.seconds;
+    const bool warm =
+        !firstVisit && visited_.size() == scenes().size() && secondsSince(start_) >= kSoakWarmupFraction * o_.seconds;
     if (!warm) {
       warmupPeak_ = std::max(warmupPeak_, rss);
       warmupHeap_ = std::max(warmupHeap_, heap);
