@@ -77,7 +77,7 @@ class Soak {
   int run() {
     start_ = SoakClock::now();
     if (!load(0)) return kExitInternal;
-    while (!failed_ && secondsSince(start_) < o_.seconds) episode();
+    while (!failed_ && !timeUp()) episode();
     return finish();
   }
 
@@ -188,7 +188,7 @@ class Soak {
     note("drag object " + std::to_string(hit->handle) + " for " + std::to_string(frames) + " frames");
     touched_ = true;
     Vec3 target = hit->point;
-    for (int f = 0; f < frames && !failed_; ++f) {
+    for (int f = 0; f < frames && !failed_ && !timeUp(); ++f) {
       const Vec3 step(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5);
       target += step * (2.0 * kDragSpeed * kDisplayFrame);
       target = hit->point + glm::clamp(target - hit->point, Vec3(-kDragReach), Vec3(kDragReach));
@@ -224,8 +224,10 @@ class Soak {
   }
 
   // ----- stepping and the checks -----
+  bool timeUp() const { return secondsSince(start_) >= o_.seconds; }
+
   void runFrames(int frames) {
-    for (int f = 0; f < frames && !failed_; ++f) frame(false);
+    for (int f = 0; f < frames && !failed_ && !timeUp(); ++f) frame(false);
   }
 
   void frame(bool dragging) {
