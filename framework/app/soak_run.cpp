@@ -113,6 +113,7 @@ class Soak {
   bool load(int index) {
     note("switch to scene " + scenes()[static_cast<std::size_t>(index)].name);
     session_.switchScene(index);
+    ++generation_;
     if (session_.sceneIndex() != index)
       return fail("scene " + scenes()[static_cast<std::size_t>(index)].name + " does not load: " + session_.message());
     runner_.setPaused(false);
@@ -163,6 +164,7 @@ class Soak {
     const int index = below(count);
     note("preset " + std::to_string(index + 1));
     session_.applyPreset(index);
+    ++generation_;
     setup_ = Setup::Preset;
     preset_ = runner_.sceneName() + " preset " + std::to_string(index + 1);
     touched_ = false;
@@ -171,6 +173,7 @@ class Soak {
   void reset() {
     note("reset");
     session_.reset();
+    ++generation_;
     runner_.setPaused(false);
     touched_ = false;
   }
@@ -188,14 +191,17 @@ class Soak {
     note("drag object " + std::to_string(hit->handle) + " for " + std::to_string(frames) + " frames");
     touched_ = true;
     Vec3 target = hit->point;
-    for (int f = 0; f < frames && !failed_ && !timeUp(); ++f) {
+    // A guard pause inside the drag brings the scene back to its defaults: the drag ends there, as the
+    // user's would (the object in hand is gone).
+    const long generation = generation_;
+    for (int f = 0; f < frames && !failed_ && !timeUp() && generation == generation_; ++f) {
       const Vec3 step(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5);
       target += step * (2.0 * kDragSpeed * kDisplayFrame);
       target = hit->point + glm::clamp(target - hit->point, Vec3(-kDragReach), Vec3(kDragReach));
       timed("drag", [&] { session_.drag(hit->handle, target); });
       frame(true);
     }
-    session_.release(hit->handle);
+    if (generation == generation_) session_.release(hit->handle);
   }
 
   void nudge(int frames) {
@@ -348,6 +354,7 @@ class Soak {
   std::set<std::string> presetPauses_;
   std::set<int> visited_;
   std::size_t warmupPeak_ = 0, laterPeak_ = 0, warmupHeap_ = 0, laterHeap_ = 0;
+  long generation_ = 0;  ///< counts loads, presets and resets: what ends a drag
   long frames_ = 0, actions_ = 0, episodes_ = 0, guardPauses_ = 0, judged_ = 0;
   double slowest_ = 0.0;
   std::string slowestWhat_;
