@@ -225,3 +225,70 @@ pba_cmd_doctor() {
   fi
   [[ $ok == 1 ]] && echo "doctor: all good" || { echo "doctor: problems found"; return 1; }
 }
+
+# ./pba golden [--update] [LAB...]: checks every scene of every lab (or the LABs named) against its golden
+# trajectory in tests/golden/LAB.json, or rewrites those files from this build (--update; say why in the
+# commit message: the physics changed on purpose).
+pba_cmd_golden() {
+  local mode="--check-golden" labs=() lab failed=0
+  for lab in "$@"; do
+    case "$lab" in
+      --update) mode="--update-golden" ;;
+      -*) pba_die "usage: ./pba golden [--update] [LAB...]" 2 ;;
+      *) [[ -f "$ROOT/labs/$lab/CMakeLists.txt" ]] || pba_die "unknown lab '$lab' (labs: $(pba_list_labs | tr '\n' ' '))" 2
+         labs+=("$lab") ;;
+    esac
+  done
+  [[ ${#labs[@]} -gt 0 ]] || mapfile -t labs < <(pba_list_labs)
+  pba_ensure_packages
+  local targets=()
+  for lab in "${labs[@]}"; do targets+=("pba-$lab"); done
+  pba_build release "${targets[@]}"
+  mkdir -p "$ROOT/tests/golden"
+  for lab in "${labs[@]}"; do
+    "$ROOT/build/release/bin/pba-$lab" "$mode" "$ROOT/tests/golden/$lab.json" || failed=1
+  done
+  [[ $failed -eq 0 ]] || pba_die "golden trajectories: see the lines above"
+}
+
+# ./pba soak [MINUTES] [--seed N]: every lab's soak (app/soak_run.h) for MINUTES (default 60) of wall time,
+# as many labs at a time as there are cores; logs in build/soak/LAB.log. Fails on a failed soak, a crash
+# (a signal) or a hang (the lab still running 5 minutes after its time).
+pba_cmd_soak() {
+  local minutes=60 seed=1
+  while [[ $# -gt 0 ]]; do
+    case "$1" in
+      --seed) seed="${2:?--seed needs a value}"; shift 2 ;;
+      *) minutes="$1"; shift ;;
+    esac
+  done
+  [[ "$minutes" =~ ^[0-9]+([.][0-9]+)?$ ]] && awk "BEGIN{exit !($minutes > 0)}" ||
+    pba_die "usage: ./pba soak [MINUTES] [--seed N] (MINUTES > 0)" 2
+  [[ "$seed" =~ ^[0-9]+$ ]] || pba_die "--seed: expected a whole number, got '$seed'" 2
+  pba_ensure_packages
+  local labs=() lab
+  mapfile -t labs < <(pba_list_labs)
+  local targets=()
+  for lab in "${labs[@]}"; do targets+=("pba-$lab"); done
+  pba_build release "${targets[@]}"
+  local seconds limit dir="$ROOT/build/soak"
+  seconds="$(awk "BEGIN{print $minutes * 60}")"
+  limit="$(awk "BEGIN{print int($seconds + 300)}")"
+  mkdir -p "$dir"
+  pba_say "soaking ${#labs[@]} labs for $minutes min each (seed $seed), $PBA_JOBS at a time; logs in $dir"
+  printf '%s\n' "${labs[@]}" | xargs -P "$PBA_JOBS" -I{} bash -c \
+    'timeout "$3" "$1/build/release/bin/pba-$0" --soak "$2" --seed "$4" >"$5/$0.log" 2>&1; echo $? >"$5/$0.rc"' \
+    {} "$ROOT" "$seconds" "$limit" "$seed" "$dir"
+  local failed=0 rc
+  for lab in "${labs[@]}"; do
+    rc="$(cat "$dir/$lab.rc" 2>/dev/null || echo missing)"
+    case "$rc" in
+      0) grep '^soak ' "$dir/$lab.log" ;;
+      124) echo "soak $lab: HUNG (still running ${limit} s after start; killed)"; failed=1 ;;
+      1) cat "$dir/$lab.log"; failed=1 ;;
+      *) echo "soak $lab: CRASHED (exit $rc); the end of $dir/$lab.log:"; tail -n 20 "$dir/$lab.log"; failed=1 ;;
+    esac
+  done
+  [[ $failed -eq 0 ]] || pba_die "soak failed"
+  pba_say "every lab soaked $minutes min clean"
+}

@@ -87,6 +87,17 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     } else if (arg == "--check-extremes") {
       s = flagOnly();
       o.checkExtremes = true;
+    } else if (arg == "--check-golden" || arg == "--update-golden") {
+      if (!o.goldenFile.empty()) return Error{"--check-golden and --update-golden: give one of them once"};
+      if (!(s = next(o.goldenFile))) return Error{s.error()};
+      if (o.goldenFile.empty()) return Error{arg + ": expected a file name"};
+      o.goldenUpdate = arg == "--update-golden";
+    } else if (arg == "--soak") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parsePositive(arg, v);
+      if (!r || r.value() > kMaxSeconds)
+        return Error{"--soak: expected a number of wall-clock seconds in (0, 100000], got '" + shownText(v) + "'"};
+      o.soakSeconds = r.value();
     } else if (arg == "--list-scenes") {
       s = flagOnly();
       o.listScenes = true;
@@ -244,7 +255,13 @@ std::string usage(const std::string& lab) {
       "  --help                  this text\n"
       "  --check-extremes        test mode: run every scene with each numeric parameter at its\n"
       "                          minimum and maximum (--frames, default 60; --scene to pick one)\n"
-      "                          and check that values just outside are refused; exit 1 on failure\n";
+      "                          and check that values just outside are refused; exit 1 on failure\n"
+      "  --check-golden FILE     test mode: run every scene --frames (default: the file's) from its\n"
+      "                          defaults and compare its state with FILE (tests/golden/LAB.json)\n"
+      "  --update-golden FILE    rewrite FILE from this build (./pba golden --update: every lab)\n"
+      "  --soak SECONDS          test mode: scripted drags, parameter changes, presets, resets and scene\n"
+      "                          switches from --seed for SECONDS of wall time; exit 1 on a NaN in an\n"
+      "                          untouched scene, a stalled frame or resident memory growing > 1 %\n";
 
   if (!labFlags().empty()) {
     text += "\nLab options:\n";

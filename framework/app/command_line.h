@@ -3,7 +3,7 @@
 //   pba-<lab> [--scene NAME|FILE.json] [--headless] [--frames N | --seconds T] [--dt H]
 //             [--screenshot FILE.png] [--metrics FILE|-] [--seed N] [--lecture] [--list-scenes] [--help]
 //             [--record FILE.mp4|FILE.gif|DIR/ [--record-ui on|off]] [--compare "A" "B"] [--check-rewind N]
-//             [--pose-json FILE]
+//             [--pose-json FILE] [--check-golden FILE | --update-golden FILE] [--soak SECONDS]
 // plus --substeps N, --time-scale S, --set NAME=VALUE (any scene parameter) and the lab's own flags.
 #include <cstdint>
 #include <optional>
@@ -61,6 +61,12 @@ struct LabOptions {
   bool demoCheck = false;
   /// Test mode: every numeric parameter of every scene at its extremes (app/param_extremes.h).
   bool checkExtremes = false;
+  /// Test mode (app/golden_check.h): --check-golden FILE compares every scene's state after a fixed run
+  /// with FILE; --update-golden FILE rewrites it.
+  std::string goldenFile;
+  bool goldenUpdate = false;
+  /// Test mode (app/soak_run.h): --soak SECONDS of scripted interaction with every scene from --seed.
+  std::optional<double> soakSeconds;
   /// Parameter overrides in command line order.
   std::vector<ParamOverride> overrides;
   /// Scene selected by a lab flag (LabFlag::impliesScene) when --scene is not given.

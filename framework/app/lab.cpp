@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "app/compare_run.h"
+#include "app/golden_check.h"
 #include "app/message_text.h"
 #include "app/metrics_report.h"
 #include "app/param_extremes.h"
@@ -14,6 +15,7 @@
 #include "app/progress_line.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
+#include "app/soak_run.h"
 #include "physics/exercises/not_implemented.h"
 
 namespace pba::app {
@@ -149,6 +151,11 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
       const ExtremesOptions extremes{o.frames.value_or(ExtremesOptions{}.frames), o.scene};
       return checkParamExtremes(lab, extremes, std::cout) == 0 ? kExitOk : kExitInternal;
     }
+    if (!o.goldenFile.empty()) {
+      const GoldenOptions golden{o.goldenFile, o.goldenUpdate, o.frames.value_or(kDefaultGoldenFrames)};
+      return runGoldenCheck(lab, golden, std::cout, std::cerr);
+    }
+    if (o.soakSeconds) return runSoak(lab, SoakOptions{*o.soakSeconds, o.seed}, std::cout, std::cerr);
     SceneRunner runner;
     if (!o.demo.empty()) return runDemo(lab, o, runner);
     if (Status s = prepareRunner(lab, o, runner); !s) {
