@@ -88,9 +88,6 @@ bool World::reuseContacts(int a, int b, std::size_t cursor, const collision::Tra
       c.manifold.points[i].point = 0.5 * (sa + sb);
       c.manifold.points[i].separation = glm::dot(c.normal, sb - sa);
     }
-    if (!settings_.warmStarting)
-      for (int i = 0; i < c.count; ++i)
-        c.points[i].normalImpulse = c.points[i].tangentImpulse[0] = c.points[i].tangentImpulse[1] = 0.0;
   }
   return true;
 }
@@ -146,8 +143,8 @@ void World::collide() {
       }
       std::size_t k = cursor;
       while (k < contacts_.size() && keyLess(contacts_[k], a, b, m.key)) ++k;
-      if (k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b && contacts_[k].key == m.key &&
-          settings_.warmStarting) {
+      // Impulses are always carried; prepareContact alone decides whether the solver starts from them.
+      if (k < contacts_.size() && contacts_[k].bodyA == a && contacts_[k].bodyB == b && contacts_[k].key == m.key) {
         carryImpulses(c, contacts_[k]);
       } else {
         for (int i = 0; i < m.count; ++i) c.points[i].id = m.points[i].id;
