@@ -169,10 +169,27 @@ pba_cmd_fuzz() {
   pba_say "every fuzz target ran $seconds s clean"
 }
 
+# ./pba bench [--preset release|native] [--filter REGEX] [--compare REF.json] (tools/bench.sh).
 pba_cmd_bench() {
+  local preset=release args=()
+  while [[ $# -gt 0 ]]; do
+    case "$1" in
+      --preset) preset="${2:?--preset needs a value}"; shift 2 ;;
+      --preset=*) preset="${1#--preset=}"; shift ;;
+      *) args+=("$1"); shift ;;
+    esac
+  done
+  [[ "$preset" == release || "$preset" == native ]] || pba_die "bench: --preset $preset: benchmarks build in release or native" 2
+  local i  # a bad --compare file fails before the build, not after it
+  for ((i = 0; i < ${#args[@]}; i++)); do
+    if [[ "${args[i]}" == --compare ]]; then
+      [[ -f "${args[i + 1]:-}" ]] || pba_die "bench: --compare: no file ${args[i + 1]:-(none given)}" 2
+      python3 "$ROOT/tools/bench_results.py" check "${args[i + 1]}" || exit 2
+    fi
+  done
   pba_ensure_packages
-  pba_build release
-  bash "$ROOT/tools/bench.sh" "$ROOT" "$ROOT/build/release" "$@"
+  pba_build "$preset"
+  bash "$ROOT/tools/bench.sh" "$ROOT" "$ROOT/build/$preset" --preset "$preset" "${args[@]}"
 }
 
 # Debian's python3 (its python3-matplotlib draws the sweep plots), else whatever python3 is first on PATH.
