@@ -15,7 +15,7 @@
 #include <cstdio>
 #include <random>
 
-#include "character_rig.h"
+#include "app/character_rig.h"
 #include "ik_scene.h"
 
 namespace {
@@ -87,7 +87,7 @@ class BatchScene final : public app::Scene {
         return Error{"--solver analytic applies to 1 or 2 links, got --links " + std::to_string(desc_.links)};
       return Status::success();
     }
-    const Result<Rig> r = loadCharacterRig(character_);
+    const Result<Rig> r = app::loadCharacterRig(character_);
     if (!r) return Error{r.error()};
     const Rig& rig = r.value();
     if (rig.effectors.empty())
@@ -111,7 +111,7 @@ class BatchScene final : public app::Scene {
   }
   void reset() override {
     desc_.joint = joint_ == BatchJoint::Hinge ? JointType::Hinge : JointType::Ball;
-    Result<Rig> character = character_.skeleton.empty() ? Result<Rig>(Error{""}) : loadCharacterRig(character_);
+    Result<Rig> character = character_.skeleton.empty() ? Result<Rig>(Error{""}) : app::loadCharacterRig(character_);
     rig_ = character ? std::move(character).value() : buildIkChain(desc_).value();
     std::mt19937_64 rng(seed());
     std::vector<Real> residuals, times;
@@ -199,7 +199,7 @@ class BatchScene final : public app::Scene {
   Pose pose_;
   SolveResult last_;
   std::vector<Vec3> lastGoals_;
-  CharacterDesc character_{"", "", 1.7, degToRad(100.0)};
+  app::CharacterDesc character_{"", "", 1.7, degToRad(100.0)};
   int successes_ = 0, plainSuccesses_ = 0, violations_ = 0;
   Real plainIterationsMean_ = 0.0, residualMax_ = 0.0, residualMedian_ = 0.0, iterationsMean_ = 0.0,
        restartsMean_ = 0.0, timeMedian_ = 0.0, timeP95_ = 0.0;

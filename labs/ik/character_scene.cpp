@@ -7,7 +7,7 @@
 
 #include <imgui.h>
 
-#include "character_rig.h"
+#include "app/character_rig.h"
 #include "ik_scene.h"
 
 // --skeleton and --effectors pick the character scene over the batch-only flags (--solver, --links,
@@ -18,6 +18,11 @@ PBA_REGISTER_LAB_FLAG("effectors", "effectors",
                       "comma-separated joint names of the effectors (default: hands and feet)", "character", 1);
 
 namespace pba::labs::ik {
+
+using app::CharacterSkin;
+using app::poseSkin;
+using app::SkinSurface;
+
 namespace {
 
 class CharacterScene final : public IkScene {
@@ -55,7 +60,7 @@ class CharacterScene final : public IkScene {
            "--skeleton.";
   }
   Status validate() override {
-    const Result<Rig> r = loadCharacterRig(desc_);
+    const Result<Rig> r = app::loadCharacterRig(desc_);
     return r ? Status::success() : Status(Error{r.error()});
   }
   void ui() override {
@@ -92,7 +97,7 @@ class CharacterScene final : public IkScene {
  protected:
   Rig build() const override {
     CharacterSkin skin;
-    Result<Rig> r = loadCharacterRig(desc_, &skin);
+    Result<Rig> r = app::loadCharacterRig(desc_, &skin);
     if (r) {
       skin_ = std::move(skin);
       error_.clear();
@@ -154,7 +159,7 @@ class CharacterScene final : public IkScene {
   }
 
   static constexpr int kPickerRows = 8;  // joint names shown before the list scrolls
-  CharacterDesc desc_;
+  app::CharacterDesc desc_;
   mutable std::string error_;
   mutable CharacterSkin skin_;  // set by build() with the rig
   bool showSkin_ = true;

@@ -86,7 +86,7 @@ std::string IkToRagdollScene::description() const {
 Status IkToRagdollScene::validate() { return load(); }
 
 Status IkToRagdollScene::load() {
-  Result<pba::ik::Rig> r = labs::ik::loadCharacterRig(character_);
+  Result<pba::ik::Rig> r = app::loadCharacterRig(character_);
   if (!r) return Error{r.error()};
   pba::ik::Rig rig = std::move(r).value();
   std::vector<pba::ik::Frame> frames = pba::ik::forwardKinematics(rig.skeleton, rig.skeleton.restPose());
@@ -117,7 +117,7 @@ Status IkToRagdollScene::load() {
 
 void IkToRagdollScene::reset() {
   if (Status s = load(); !s && rest_.bones.empty()) {
-    character_.skeleton = labs::ik::CharacterDesc{}.skeleton;  // the window keeps a working figure
+    character_.skeleton = app::CharacterDesc{}.skeleton;  // the window keeps a working figure
     load();
   }
   RagdollScene::reset();  // both ragdolls from the rest pose (replaced at the switch)

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "character_rig.h"
+#include "app/character_rig.h"
 #include "physics/ik/solver.h"
 #include "ragdoll_scene.h"
 
@@ -71,7 +71,7 @@ class IkToRagdollScene final : public RagdollScene {
   bool projectileFlying() const;
   bool projectileReaches(Real dt) const;
 
-  labs::ik::CharacterDesc character_;
+  app::CharacterDesc character_;
   pba::ik::SolveOptions options_;
   pba::ik::Rig rig_;
   pba::ik::Pose pose_;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "character_rig.h"  // resolveModelPath, shared with the IK lab
+#include "app/character_rig.h"  // resolveModelPath, shared with the IK lab
 #include "graphics/model.h"
 #include "graphics/skinning.h"
 
@@ -29,7 +29,7 @@ std::vector<Vec3> positionsOf(const std::vector<glm::mat4>& global) {
 }  // namespace
 
 Result<LoadedSkeleton> loadSkeleton(const SkeletonFile& file) {
-  const std::string path = labs::ik::resolveModelPath(file.path);
+  const std::string path = app::resolveModelPath(file.path);
   if (path.empty()) return Error{"skeleton: no file given"};
   std::string error;
   const std::optional<graphics::Model> model = graphics::loadModel(path, &error);

@@ -1,4 +1,4 @@
-// Fuzz target: the BVH/skeleton path of the IK character (labs/ik/character_rig.h): the input is a BVH
+// Fuzz target: the BVH/skeleton path of the IK character (app/character_rig.h): the input is a BVH
 // file; a rig that loads is solved once toward goals 10 cm from its effectors. Besides no sanitizer
 // report: an error is one line naming the field, and the solved pose is finite.
 #include <cmath>
@@ -6,16 +6,16 @@
 #include <filesystem>
 #include <string>
 
-#include "character_rig.h"
+#include "app/character_rig.h"
 #include "fuzz_check.h"
 #include "physics/ik/solver.h"
 
 using namespace pba;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  labs::ik::CharacterDesc desc;
+  app::CharacterDesc desc;
   desc.skeleton = fuzz::writeInput(data, size, ".bvh");
-  Result<ik::Rig> rig = labs::ik::loadCharacterRig(desc);
+  Result<ik::Rig> rig = app::loadCharacterRig(desc);
   std::filesystem::remove(desc.skeleton);
   if (!rig) {
     fuzz::require(rig.error().find('\n') == std::string::npos, "an error is one line", rig.error());

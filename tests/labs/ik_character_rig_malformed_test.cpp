@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "character_rig.h"
+#include "app/character_rig.h"
 
-namespace pba::labs::ik {
+namespace pba::app {
 namespace {
 
 std::string rigError(const std::string& name, const std::string& text, const std::string& effectors = "") {
@@ -65,4 +65,4 @@ TEST(IkCharacterRigMalformed, TooManyJointsOrEffectorsAreRefusedBeforeTheJacobia
 }
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::app

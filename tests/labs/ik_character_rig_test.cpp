@@ -2,9 +2,9 @@
 // way human joints do. Checked with forward kinematics of the converted skeleton, not stored poses.
 #include <gtest/gtest.h>
 
-#include "character_rig.h"
+#include "app/character_rig.h"
 
-namespace pba::labs::ik {
+namespace pba::app {
 namespace {
 
 using namespace pba::ik;
@@ -66,4 +66,4 @@ TEST_F(HumanoidRig, FlexingAKneeMovesTheFootBackAndUpAndAnElbowTheHandForward) {
 }
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::app

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "character_rig.h"
+#include "app/character_rig.h"
 
-namespace pba::labs::ik {
+namespace pba::app {
 namespace {
 
 using namespace pba::ik;
@@ -82,4 +82,4 @@ TEST(IkCharacterSkin, ASkeletonWithoutMeshesHasNoSkin) {
 }
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::app

@@ -1,6 +1,7 @@
 #pragma once
-// The IK lab's bridge from an imported model (graphics/model.h: any skeleton Assimp reads: BVH, FBX,
-// COLLADA, glTF) to the physics Skeleton (app layer: the physics library never sees Assimp).
+// The bridge from an imported model (graphics/model.h: any skeleton Assimp reads: BVH, FBX,
+// COLLADA, glTF) to the physics Skeleton, shared by the IK lab's character scenes and the ragdoll lab's
+// imported figures (app layer: the physics library never sees Assimp).
 //
 // Conversion. Every node of the model becomes a joint, parents first. Rest frames come from the
 // nodes' global bind transforms (scale and shear removed), so a joint's offset is its rest position
@@ -28,7 +29,7 @@
 #include "physics/core/result.h"
 #include "physics/ik/builders.h"
 
-namespace pba::labs::ik {
+namespace pba::app {
 
 struct CharacterDesc {
   std::string skeleton =
@@ -52,16 +53,12 @@ std::string resolveModelPath(const std::string& path);
 /// Splits "a, b,c" into {"a", "b", "c"} (blanks trimmed, empty names dropped).
 std::vector<std::string> splitNames(const std::string& list);
 
-/// The file's meshes, drawn over the IK skeleton (app/character_skin.h: skinned meshes by linear blend
-/// skinning with the solved joint frames; rigid meshes follow their node). Joint j of the rig is node j.
-using app::CharacterSkin;
-using app::poseSkin;
-using app::SkinSurface;
-
-/// Loads and converts; fills *skin when given. Errors: "skeleton: <path>: <Assimp's message>",
+/// Loads and converts; fills *skin when given (app/character_skin.h: the file's meshes, skinned by
+/// linear blend skinning with the solved joint frames; rigid meshes follow their node; joint j of the rig
+/// is node j). Errors: "skeleton: <path>: <Assimp's message>",
 /// "skeleton: <path>: has no joints", "effectors: no joint named 'x' in <path> (joints: a, b, c, ...)";
 /// also refuses duplicate joint names, a file where no joint can move, more than 1,000 joints and more
 /// than 64 effectors (the Jacobian would not fit in memory or time).
 Result<pba::ik::Rig> loadCharacterRig(const CharacterDesc& desc, CharacterSkin* skin = nullptr);
 
-}  // namespace pba::labs::ik
+}  // namespace pba::app

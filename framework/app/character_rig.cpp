@@ -1,4 +1,4 @@
-#include "character_rig.h"
+#include "app/character_rig.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +11,7 @@
 #include "app/resource_dir.h"
 #include "graphics/model.h"
 
-namespace pba::labs::ik {
+namespace pba::app {
 
 using namespace pba::ik;
 
@@ -280,4 +280,4 @@ Result<Rig> loadCharacterRig(const CharacterDesc& d, CharacterSkin* skin) {
   return rig;
 }
 
-}  // namespace pba::labs::ik
+}  // namespace pba::app
