@@ -34,7 +34,7 @@ done
 name="$(basename "$file" .json)"
 display=1
 [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]] || display=0
-in_display() { if [[ $display -eq 1 ]]; then "$@"; else xvfb-run -a -s "-screen 0 1280x720x24" "$@"; fi; }
+in_display() { if [[ $display -eq 1 ]]; then "$@"; else bash "$root/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" "$@"; fi; }
 
 if [[ $check -eq 1 ]]; then
   mkdir -p "$build/demos"

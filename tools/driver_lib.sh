@@ -65,7 +65,7 @@ pba_has_display() { [[ -n "${DISPLAY:-}" || -n "${WAYLAND_DISPLAY:-}" ]]; }
 
 # Runs a command under Xvfb when there is no display.
 pba_with_display() {
-  if pba_has_display; then "$@"; else xvfb-run -a -s "-screen 0 1280x720x24" "$@"; fi
+  if pba_has_display; then "$@"; else bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" "$@"; fi
 }
 
 pba_cmd_run() {
@@ -88,7 +88,7 @@ pba_cmd_run() {
   mkdir -p "$ROOT/build/screenshots"
   local png="$ROOT/build/screenshots/$lab.png"
   pba_say "no display: rendering under Xvfb to a screenshot"
-  xvfb-run -a -s "-screen 0 1280x720x24" "$exe" "$@" --screenshot "$png" --metrics -
+  bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" "$exe" "$@" --screenshot "$png" --metrics -
   pba_say "screenshot written to $png"
 }
 
@@ -123,46 +123,65 @@ pba_cmd_student_release() {
 }
 
 # ./pba fuzz [SECONDS]: builds the fuzz preset (clang, libFuzzer, ASan + UBSan) and runs each target
-# for SECONDS (default 60), seeded from the repository and Debian's assimp-testmodels (read in place,
-# never copied). Fails on any sanitizer report, property violation, hang or memory blow-up, and copies
-# the input that caused it to tests/corpora/fuzz/TARGET/ (the replay ctest's regression inputs).
+# for SECONDS of wall time (default 60), PBA_JOBS targets at a time, seeded from the repository and
+# Debian's assimp-testmodels (read in place, never copied). Fails on any sanitizer report, property
+# violation, hang or memory blow-up, and copies the input that caused it to tests/corpora/fuzz/TARGET/
+# (the replay ctest's regression inputs).
+PBA_FUZZ_TARGETS=(scene_file command_line model_import ik_skeleton anim_clip)
+
+# pba_fuzz_one TARGET SECONDS: one libFuzzer run; its exit status goes to build/fuzz/runs/TARGET/rc.
+pba_fuzz_one() {
+  local target="$1" seconds="$2" models=/usr/share/assimp/models  # where Debian's assimp-testmodels puts them
+  local work="$ROOT/build/fuzz/runs/$target" seeds=() sub subs=()
+  rm -rf "$work" && mkdir -p "$work/corpus" "$work/artifacts"
+  case "$target" in
+    scene_file) seeds=("$ROOT/resources/scenes" "$ROOT/tests/corpora/scenes") ;;
+    command_line) seeds=("$ROOT/tests/fuzz/seeds/command_line") ;;
+    model_import) seeds=("$ROOT/tests/fuzz/seeds/model_import" "$ROOT/resources/models" "$ROOT/tests/corpora/models") ;;
+    ik_skeleton | anim_clip) seeds=("$ROOT/resources/models" "$ROOT/tests/corpora/models") ;;
+  esac
+  # Debian's test models of the formats the labs import (inputs are cut at -max_len, 1 MiB).
+  case "$target" in
+    model_import) subs=(BVH OBJ glTF2 Collada FBX X) ;;
+    ik_skeleton) subs=(BVH) ;;
+    anim_clip) subs=(BVH X) ;;
+  esac
+  for sub in "${subs[@]}"; do [[ -d "$models/$sub" ]] && seeds+=("$models/$sub"); done
+  [[ -d "$ROOT/tests/corpora/fuzz/$target" ]] && seeds+=("$ROOT/tests/corpora/fuzz/$target")
+  local rc=0
+  ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:handle_sigfpe=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+    LSAN_OPTIONS="suppressions=$ROOT/tests/support/lsan.supp:print_suppressions=0" \
+    "$ROOT/build/fuzz/bin/pba_fuzz_$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
+    -max_len=1048576 -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" "${seeds[@]}" \
+    >"$work/log.txt" 2>&1 || rc=$?
+  echo "$rc" >"$work/rc"
+}
+
 pba_cmd_fuzz() {
   local seconds="${1:-60}"
   [[ "$seconds" =~ ^[0-9]+$ && "$seconds" -ge 1 ]] || pba_die "usage: ./pba fuzz [SECONDS] (a whole number >= 1)" 2
   pba_ensure_packages
   pba_build fuzz pba_fuzz_targets
-  local models=/usr/share/assimp/models failed=0 target  # where Debian's assimp-testmodels puts them
-  for target in scene_file command_line model_import ik_skeleton; do
-    local work="$ROOT/build/fuzz/runs/$target" seeds=()
-    rm -rf "$work" && mkdir -p "$work/corpus" "$work/artifacts"
-    case "$target" in
-      scene_file) seeds=("$ROOT/resources/scenes" "$ROOT/tests/corpora/scenes") ;;
-      command_line) seeds=("$ROOT/tests/fuzz/seeds/command_line") ;;
-      model_import) seeds=("$ROOT/tests/fuzz/seeds/model_import" "$ROOT/resources/models" "$ROOT/tests/corpora/models") ;;
-      ik_skeleton) seeds=("$ROOT/resources/models" "$ROOT/tests/corpora/models") ;;
-    esac
-    # Debian's test models of the formats the labs import (inputs are cut at -max_len, 1 MiB).
-    local sub subs=()
-    [[ "$target" == model_import ]] && subs=(BVH OBJ glTF2 Collada FBX X)
-    [[ "$target" == ik_skeleton ]] && subs=(BVH)
-    for sub in "${subs[@]}"; do [[ -d "$models/$sub" ]] && seeds+=("$models/$sub"); done
-    [[ -d "$ROOT/tests/corpora/fuzz/$target" ]] && seeds+=("$ROOT/tests/corpora/fuzz/$target")
-    pba_say "fuzzing $target for $seconds s"
-    ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:handle_sigfpe=0" UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
-      LSAN_OPTIONS="suppressions=$ROOT/tests/support/lsan.supp:print_suppressions=0" \
-      "$ROOT/build/fuzz/bin/pba_fuzz_$target" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 \
-      -max_len=1048576 -print_final_stats=1 -artifact_prefix="$work/artifacts/" "$work/corpus" "${seeds[@]}" \
-      >"$work/log.txt" 2>&1
-    local rc=$?
-    local runs speed
-    runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$work/log.txt" | grep -o '[0-9]*$')"
-    speed="$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$work/log.txt" | grep -o '[0-9]*$')"
+  local failed=0 target running=0
+  pba_say "fuzzing ${PBA_FUZZ_TARGETS[*]} for $seconds s each, $PBA_JOBS at a time"
+  for target in "${PBA_FUZZ_TARGETS[@]}"; do
+    if [[ $running -ge $PBA_JOBS ]]; then wait -n || true; running=$((running - 1)); fi
+    pba_fuzz_one "$target" "$seconds" &
+    running=$((running + 1))
+  done
+  wait || true
+  for target in "${PBA_FUZZ_TARGETS[@]}"; do
+    local work="$ROOT/build/fuzz/runs/$target" rc runs speed
+    rc="$(cat "$work/rc" 2>/dev/null || echo '?')"
+    runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$work/log.txt" | grep -o '[0-9]*$' || true)"
+    speed="$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$work/log.txt" | grep -o '[0-9]*$' || true)"
     echo "$target: ${runs:-?} runs, ${speed:-?} exec/s, exit $rc (log: $work/log.txt)"
-    if [[ $rc -ne 0 ]] || compgen -G "$work/artifacts/*" >/dev/null; then
+    if [[ "$rc" != 0 ]] || compgen -G "$work/artifacts/*" >/dev/null; then
       failed=1
       mkdir -p "$ROOT/tests/corpora/fuzz/$target"
-      cp "$work"/artifacts/* "$ROOT/tests/corpora/fuzz/$target/" 2>/dev/null
+      cp "$work"/artifacts/* "$ROOT/tests/corpora/fuzz/$target/" 2>/dev/null || true
       pba_say "$target failed: the input is in tests/corpora/fuzz/$target/; the report is in $work/log.txt"
+      tail -n 30 "$work/log.txt" >&2
     fi
   done
   [[ $failed -eq 0 ]] || pba_die "fuzzing found a defect"
@@ -224,8 +243,8 @@ pba_cmd_doctor() {
   else
     echo "packages: all ${#PBA_PACKAGES[@]} installed"
   fi
-  if pba_has_display; then echo "display: ${DISPLAY:-$WAYLAND_DISPLAY}"; else echo "display: none (labs render under xvfb-run)"; fi
-  command -v xvfb-run >/dev/null && echo "xvfb-run: $(command -v xvfb-run)" || { echo "xvfb-run: MISSING (apt-get install xvfb)"; ok=0; }
+  if pba_has_display; then echo "display: ${DISPLAY:-$WAYLAND_DISPLAY}"; else echo "display: none (labs render under Xvfb: tools/with_xvfb.sh)"; fi
+  command -v Xvfb >/dev/null && echo "Xvfb: $(command -v Xvfb)" || { echo "Xvfb: MISSING (apt-get install xvfb)"; ok=0; }
   local exe="$ROOT/build/release/bin/pba-hello"
   if [[ -x "$exe" ]]; then
     local tmp

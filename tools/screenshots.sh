@@ -6,7 +6,7 @@ root="$1"
 build="$2"
 mkdir -p "$root/docs/images"
 run=()
-[[ -z "${DISPLAY:-}" ]] && run=(xvfb-run -a -s "-screen 0 1280x720x24")
+[[ -z "${DISPLAY:-}" ]] && run=(bash "$root/tools/with_xvfb.sh" -s "-screen 0 1280x720x24")
 # shellcheck source=tools/progress.sh
 source "$root/tools/progress.sh"
 count=0
