@@ -23,7 +23,7 @@ class RopeScene final : public app::Scene {
               "Damping along each spring (resists stretching speed, not swinging). Typical 2.")
         .needsReset();
     params_.real("drag", &drag_, 0.0, 2.0, "N·s/m", "Linear air drag on every particle. Typical 0.02.");
-    sim_.declareParams(params_, " Explicit methods need h < 2/ω of the stiffest spring.");
+    sim_.declareParams(params_, " Explicit methods need h below 2/ω of the stiffest mode.");
   }
 
   std::string description() const override {
