@@ -50,9 +50,12 @@ struct Pair {
 class DescentMethod final : public Method {
  public:
   explicit DescentMethod(SolverKind kind) : kind_(kind) {}
+  /// Every step leaves c.frames current: the accepted trial's frames (acceptTrial) or the start's.
+  FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::Current; }
 
   void iterate(Context& c) override {
-    const LeastSquaresSystem sys = leastSquaresSystem(c);
+    leastSquaresSystem(c, sys_);  // reuses the buffers of the previous step
+    const LeastSquaresSystem& sys = sys_;
     const size_t n = sys.dofWeights.size();
     std::vector<Real> g = multiplyTransposed(sys.J, sys.residual);
     for (Real& x : g) x = -x;
@@ -98,11 +101,12 @@ class DescentMethod final : public Method {
     if (!accepted)
       accepted = backtrack(f, f0, lbfgs && !memory_.empty() ? std::min<Real>(1.0, alphaMax) : alpha0, slope);
     if (!accepted) {
-      c.pose = start_;  // no decrease found: the driver reports a stall
+      c.pose = start_;  // no decrease found: the driver reports a stall (c.frames are still start_'s)
       memory_.clear();
       havePrevious_ = false;
       return;
     }
+    acceptTrial(c, scratch_);  // the last trial evaluated is the pose accepted: its frames are current
     if (lbfgs) {
       // s in the scaled variables, from the pose actually reached (after the projection).
       s_.assign(n, 0.0);
@@ -198,9 +202,10 @@ class DescentMethod final : public Method {
   }
 
   SolverKind kind_;
+  LeastSquaresSystem sys_;  // J, r and the layout of the current step, storage kept across steps
   Pose start_;
   std::vector<Real> delta_;
-  std::vector<Frame> scratch_;
+  TrialFrames scratch_;
   // L-BFGS state
   std::deque<Pair> memory_;
   std::vector<Real> s_, previousGradient_;

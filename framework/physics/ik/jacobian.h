@@ -34,6 +34,9 @@ JacobianLayout planJacobian(const Skeleton& s, const Pose& pose, const std::vect
 /// The analytic Jacobian (effector weights not applied).
 Matrix jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
                 const std::vector<Frame>& frames, const JacobianLayout& layout, Real orientationScale);
+/// The same into J, reusing its storage (the solvers call it every iteration).
+void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
+              const std::vector<Frame>& frames, const JacobianLayout& layout, Real orientationScale, Matrix& J);
 /// Central finite differences of the same quantities, step h (JacobianSource::CentralDifferences and
 /// tests: a reference independent of IK-3): position rows
 /// (e(θ+h) − e(θ−h)) / 2h, orientation rows s · rotvec(E(θ+h) E(θ−h)⁻¹) / 2h.

@@ -66,8 +66,12 @@ void Context::refresh() {
 
 // Joint j's frame from its parent's frame (nullptr: root) and its cached local rotation.
 Frame Context::frameFrom(int j, const Frame* parent) const {
+  return linkFrame(j, parent, pose, local[static_cast<size_t>(j)]);
+}
+
+Frame Context::linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const {
   const Link& link = links[static_cast<size_t>(j)];
-  const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), pose) : link.offset;
+  const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), p) : link.offset;
   Frame f;
   if (parent) {
     f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
@@ -76,8 +80,20 @@ Frame Context::frameFrom(int j, const Frame* parent) const {
     f.pre = link.rest;
     f.position = t;
   }
-  f.rotation = f.pre * local[static_cast<size_t>(j)];
+  f.rotation = f.pre * localRotation;
   return f;
+}
+
+void Context::evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<Frame>& framesOut) const {
+  const int n = skeleton.jointCount();
+  localOut.resize(static_cast<size_t>(n));
+  framesOut.resize(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    const auto k = static_cast<size_t>(j);
+    localOut[k] = jointRotation(skeleton.joint(j), p, j);
+    const int parent = links[k].parent;
+    framesOut[k] = linkFrame(j, parent < 0 ? nullptr : &framesOut[static_cast<size_t>(parent)], p, localOut[k]);
+  }
 }
 
 void Context::refreshFrames() {

@@ -65,6 +65,12 @@ struct Context {
   /// Joint j's frame from its parent's entry in `frames` and the cached local rotation. O(1).
   Frame frameFromParent(int j) const;
   Frame frameFrom(int j, const Frame* parent) const;
+  /// The same for any pose p and local rotation of joint j.
+  Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const;
+  /// What refresh() computes (the local rotations and every frame), for another pose p, into the
+  /// given buffers: a trial pose of a line search, whose buffers the method swaps with `local` and
+  /// `frames` when it accepts the pose (no second forward kinematics). O(n) with trigonometry.
+  void evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<Frame>& framesOut) const;
 };
 
 /// One IK method: iterate() does one pass (CCD, FABRIK) or one step (Jacobian methods).
