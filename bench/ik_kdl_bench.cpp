@@ -87,7 +87,7 @@ void ours(benchmark::State& state, SolverKind kind) {
   state.counters["success"] = solves ? double(successes) / double(solves) : 0.0;
 }
 
-#define PBA_IK_OURS(name, kind)                      \
+#define PBA_IK_OURS(name, kind)                     \
   void name(benchmark::State& s) { ours(s, kind); } \
   BENCHMARK(name)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond)->MinTime(0.3)
 
