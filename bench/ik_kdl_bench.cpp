@@ -64,12 +64,15 @@ const Problem& problem(int links) {
   return cache.back().second;
 }
 
-void ours(benchmark::State& state, SolverKind kind) {
+// maxErrorStep 0: Buss's D_max = the mean bone length (the default: 2 m / links, so DLS and SDLS need
+// O(links) steps to cross the workspace); otherwise that clamp [m] at every size.
+void ours(benchmark::State& state, SolverKind kind, Real maxErrorStep = 0.0) {
   const Problem& p = problem(static_cast<int>(state.range(0)));
   SolveOptions o;
   o.solver = kind;
   o.tolerance = kTolerance;
   o.maxIterations = kIterationCap;
+  o.maxErrorStep = maxErrorStep;
   std::vector<Effector> effectors = p.rig.effectors;
   long iterations = 0, solves = 0, successes = 0;
   size_t next = 0;
@@ -87,15 +90,20 @@ void ours(benchmark::State& state, SolverKind kind) {
   state.counters["success"] = solves ? double(successes) / double(solves) : 0.0;
 }
 
-#define PBA_IK_OURS(name, kind)                     \
-  void name(benchmark::State& s) { ours(s, kind); } \
+#define PBA_IK_OURS_CLAMP(name, kind, clamp)               \
+  void name(benchmark::State& s) { ours(s, kind, clamp); } \
   BENCHMARK(name)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond)->MinTime(0.3)
+#define PBA_IK_OURS(name, kind) PBA_IK_OURS_CLAMP(name, kind, 0.0)
 
 PBA_IK_OURS(BM_Ours_Dls, SolverKind::DampedLeastSquares);
 PBA_IK_OURS(BM_Ours_Sdls, SolverKind::SelectivelyDamped);
 PBA_IK_OURS(BM_Ours_Lbfgs, SolverKind::Lbfgs);
 PBA_IK_OURS(BM_Ours_Fabrik, SolverKind::Fabrik);
 PBA_IK_OURS(BM_Ours_Ccd, SolverKind::Ccd);
+// The same methods with Buss's clamp D_max = 0.2 m (a tenth of the reach) at every size: an option of
+// SolveOptions (maxErrorStep), not the default.
+PBA_IK_OURS_CLAMP(BM_Ours_Dls_Dmax20cm, SolverKind::DampedLeastSquares, 0.2);
+PBA_IK_OURS_CLAMP(BM_Ours_Sdls_Dmax20cm, SolverKind::SelectivelyDamped, 0.2);
 
 #ifdef PBA_HAVE_KDL
 // The same chain in KDL: per ball joint, revolute joints about x, y and z at one point, then the bone.
