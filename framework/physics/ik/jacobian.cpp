@@ -26,15 +26,20 @@ namespace {
 //   ball, R = R_pre Rx(θ₀) Ry(θ₁) Rz(θ₂): x: R_pre x̂; y: (R_pre Rx) ŷ; z: (R_pre Rx Ry) ẑ. The partial
 //   products are shared between the three axes (two half-angle sincos and two quaternion products
 //   per joint, not three of each).
-int dofWorldAxes(const Joint& joint, const Pose& pose, const Frame& f, Vec3 axes[3]) {
+int dofWorldAxes(const Joint& joint, const Pose& pose, const Frame& f, Vec3 axes[3],
+                 const EulerHalfAngles* half = nullptr) {
   if (joint.type == JointType::Hinge || joint.type == JointType::Prismatic) {
     axes[0] = f.pre * joint.axis;
     return 1;
   }
   if (joint.type != JointType::Ball) return 0;
   const Real* d = pose.dofs.data() + joint.firstDof;
-  const Quat qx = f.pre * glm::angleAxis(d[0], Vec3(1, 0, 0));
-  const Quat qxy = qx * glm::angleAxis(d[1], Vec3(0, 1, 0));
+  // Rx(θ₀) = (cos ½θ₀, sin ½θ₀ x̂), Ry(θ₁) = (cos ½θ₁, sin ½θ₁ ŷ): from forward kinematics when it has them.
+  const bool cached = half && half->angle0 == d[0] && half->angle1 == d[1];
+  const Quat rx = cached ? Quat(half->c0, half->s0, 0.0, 0.0) : glm::angleAxis(d[0], Vec3(1, 0, 0));
+  const Quat ry = cached ? Quat(half->c1, 0.0, half->s1, 0.0) : glm::angleAxis(d[1], Vec3(0, 1, 0));
+  const Quat qx = f.pre * rx;
+  const Quat qxy = qx * ry;
   axes[0] = f.pre * Vec3(1, 0, 0);
   axes[1] = qx * Vec3(0, 1, 0);
   axes[2] = qxy * Vec3(0, 0, 1);
@@ -86,10 +91,21 @@ void writeColumn(Matrix& J, int col, int row, bool oriented, const Vec3& a, cons
 }  // namespace
 
 void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
-              const std::vector<Frame>& frames, const JacobianLayout& L, Real scale, Matrix& J) {
+              const std::vector<Frame>& frames, const JacobianLayout& L, Real scale, Matrix& J,
+              const EulerHalfAngles* half) {
   J.rows = L.rows;
   J.cols = L.cols;
-  J.data.assign(static_cast<size_t>(L.rows) * static_cast<size_t>(L.cols), 0.0);
+  // Entries on no effector's path stay 0. One position effector whose path holds every DOF (a chain)
+  // writes every entry below: then J need not be cleared first.
+  int pathDofs = -1;
+  if (effectors.size() == 1 && effectors[0].kind == EffectorKind::Position && L.freeJoints.empty()) {
+    pathDofs = 0;
+    for (int j = effectors[0].joint; j >= 0; j = s.joint(j).parent) pathDofs += dofCount(s.joint(j).type);
+  }
+  if (pathDofs == L.cols)
+    J.data.resize(static_cast<size_t>(L.rows) * static_cast<size_t>(L.cols));
+  else
+    J.data.assign(static_cast<size_t>(L.rows) * static_cast<size_t>(L.cols), 0.0);
   // Effector by effector, up its path to the root: the joints that move it (O(m · depth), no lists).
   for (size_t k = 0; k < effectors.size(); ++k) {
     const Effector& e = effectors[k];
@@ -100,7 +116,7 @@ void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& 
       const Joint& joint = s.joint(j);
       const Frame& f = frames[static_cast<size_t>(j)];
       Vec3 axes[3];
-      const int count = dofWorldAxes(joint, pose, f, axes);
+      const int count = dofWorldAxes(joint, pose, f, axes, half ? half + j : nullptr);
       for (int d = 0; d < count; ++d)
         writeColumn(J, joint.firstDof + d, row, oriented, axes[d], f.position, joint.type != JointType::Prismatic, p,
                     scale);

@@ -20,7 +20,7 @@ void leastSquaresSystem(const Context& c, LeastSquaresSystem& sys) {
   const Skeleton& s = c.skeleton;
   sys.layout = planJacobian(s, c.pose, c.effectors, c.frames, c.orientationScale);
   if (c.options.jacobian == JacobianSource::Analytic)
-    jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale, sys.J);
+    jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale, sys.J, c.half.data());
   else
     sys.J = numericalJacobian(s, c.pose, c.effectors, sys.layout, c.orientationScale, kJacobianStep);
   Matrix& J = sys.J;
@@ -89,12 +89,13 @@ Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& fra
   c.pose = start;
   applyStep(c.skeleton, c.pose, frames, layout, delta);
   projectOntoLimits(c);
-  c.evaluate(c.pose, scratch.local, scratch.frames);
+  c.evaluate(c.pose, scratch.local, scratch.half, scratch.frames);
   return objective(c, scratch.frames);
 }
 
 void acceptTrial(Context& c, TrialFrames& scratch) {
   std::swap(c.local, scratch.local);
+  std::swap(c.half, scratch.half);
   std::swap(c.frames, scratch.frames);
 }
 

@@ -39,6 +39,7 @@ void projectOntoLimits(Context& c);
 /// The local rotations and frames of a trial pose (Context::evaluate).
 struct TrialFrames {
   std::vector<Quat> local;
+  std::vector<EulerHalfAngles> half;
   std::vector<Frame> frames;
 };
 
