@@ -110,8 +110,9 @@ class JacobianMethod final : public Method {
     return dy;
   }
 
-  static std::vector<Real> pseudoInverseStep(const Matrix& J, const std::vector<Real>& e, Real cutoff) {
-    const Svd d = svd(J);
+  std::vector<Real> pseudoInverseStep(const Matrix& J, const std::vector<Real>& e, Real cutoff) const {
+    svd(J, svd_, svdWorkspace_);
+    const Svd& d = svd_;
     std::vector<Real> out(static_cast<size_t>(J.cols), 0.0);
     const Real sigmaMax = d.sigma.empty() ? 0.0 : d.sigma[0];
     for (size_t i = 0; i < d.sigma.size(); ++i) {
@@ -122,8 +123,9 @@ class JacobianMethod final : public Method {
     return out;
   }
 
-  static std::vector<Real> selectivelyDampedStep(const Matrix& J, const std::vector<Real>& e) {
-    const Svd d = svd(J);
+  std::vector<Real> selectivelyDampedStep(const Matrix& J, const std::vector<Real>& e) const {
+    svd(J, svd_, svdWorkspace_);
+    const Svd& d = svd_;
     const int n = J.cols;
     // ρⱼ = Σₖ |J_kj| (3-row blocks: each effector's position, and orientation, rows).
     std::vector<Real> rho(static_cast<size_t>(n), 0.0);
@@ -195,6 +197,8 @@ class JacobianMethod final : public Method {
   SolverKind kind_;
   LeastSquaresSystem sys_;  // J, r and the layout of the current step, storage kept across steps
   TrialFrames scratch_;
+  mutable Svd svd_;                    // pinv and SDLS: the decomposition of the step, storage kept
+  mutable SvdWorkspace svdWorkspace_;  // across steps
 };
 
 }  // namespace
