@@ -86,7 +86,7 @@ void projectOntoLimits(Context& c) {
 
 Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& frames, const JacobianLayout& layout,
                     const std::vector<Real>& delta, TrialFrames& scratch) {
-  c.pose = start;
+  assignPose(c.pose, start, !layout.freeJoints.empty());
   applyStep(c.skeleton, c.pose, frames, layout, delta);
   projectOntoLimits(c);
   c.evaluate(c.pose, scratch.local, scratch.half, scratch.frames);
@@ -97,6 +97,11 @@ void acceptTrial(Context& c, TrialFrames& scratch) {
   std::swap(c.local, scratch.local);
   std::swap(c.half, scratch.half);
   std::swap(c.frames, scratch.frames);
+}
+
+void assignPose(Pose& to, const Pose& from, bool freeJoints) {
+  to.dofs = from.dofs;
+  if (freeJoints || to.rotations.size() != from.rotations.size()) to.rotations = from.rotations;
 }
 
 Real maxAbs(const std::vector<Real>& v) {

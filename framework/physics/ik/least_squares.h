@@ -52,6 +52,10 @@ Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& fra
 /// current without another forward kinematics.
 void acceptTrial(Context& c, TrialFrames& scratch);
 
+/// to = from. The rotations (read by free joints only) are copied only when `freeJoints` or when `to`
+/// has none yet: without free joints no step changes them, so they are equal already.
+void assignPose(Pose& to, const Pose& from, bool freeJoints);
+
 /// Largest |entry| of v.
 Real maxAbs(const std::vector<Real>& v);
 /// Scales v uniformly so that its largest |entry| is at most `limit` (Buss & Kim 2005, ClampMaxAbs).

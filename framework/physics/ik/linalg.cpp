@@ -33,9 +33,14 @@ std::vector<Real> multiply(const Matrix& J, const std::vector<Real>& x) {
 }
 
 std::vector<Real> multiplyTransposed(const Matrix& J, const std::vector<Real>& x) {
-  std::vector<Real> y(static_cast<size_t>(J.cols));
-  VectorMap(y.data(), J.cols).noalias() = view(J).transpose() * view(x);
+  std::vector<Real> y;
+  multiplyTransposed(J, x, y);
   return y;
+}
+
+void multiplyTransposed(const Matrix& J, const std::vector<Real>& x, std::vector<Real>& y) {
+  y.resize(static_cast<size_t>(J.cols));
+  VectorMap(y.data(), J.cols).noalias() = view(J).transpose() * view(x);
 }
 
 Matrix gram(const Matrix& J) {

@@ -28,6 +28,8 @@ struct Matrix {
 std::vector<Real> multiply(const Matrix& J, const std::vector<Real>& x);
 /// y = Jᵀ x (x has J.rows entries).
 std::vector<Real> multiplyTransposed(const Matrix& J, const std::vector<Real>& x);
+/// The same into y, reusing its storage.
+void multiplyTransposed(const Matrix& J, const std::vector<Real>& x, std::vector<Real>& y);
 /// A = J Jᵀ (rows × rows, symmetric).
 Matrix gram(const Matrix& J);
 
