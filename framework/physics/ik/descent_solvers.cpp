@@ -97,7 +97,9 @@ class DescentMethod final : public Method {
       return trialObjective(c, start_, c.frames, sys.layout, delta_, scratch_);
     };
     delta_.resize(n);
-    const Real alpha0 = std::min(alphaMax, modelMinimiser(sys.J, d, slope));
+    // L-BFGS with a memory starts its search at α = 1; α₀ (a product J d) serves the other cases.
+    const bool unitStep = lbfgs && !memory_.empty();
+    const Real alpha0 = unitStep ? 1.0 : std::min(alphaMax, modelMinimiser(sys.J, d, slope));
 
     bool accepted = false;
     if (!lbfgs && c.options.lineSearch == LineSearch::Fixed) {
@@ -106,8 +108,7 @@ class DescentMethod final : public Method {
     } else if (!lbfgs && c.options.lineSearch == LineSearch::GoldenSection) {
       accepted = golden(f, f0, alphaMax);
     }
-    if (!accepted)
-      accepted = backtrack(f, f0, lbfgs && !memory_.empty() ? std::min<Real>(1.0, alphaMax) : alpha0, slope);
+    if (!accepted) accepted = backtrack(f, f0, unitStep ? std::min<Real>(1.0, alphaMax) : alpha0, slope);
     if (!accepted) {
       assignPose(c.pose, start_, free);  // no decrease found: the driver reports a stall (frames: start_'s)
       memory_.clear();
@@ -132,13 +133,21 @@ class DescentMethod final : public Method {
 
  private:
   // DOFs at a limit whose descent direction (−g) points out of the box.
-  static void frozenDofs(const Context& c, const std::vector<Real>& g, std::vector<char>& frozen) {
+  void frozenDofs(const Context& c, const std::vector<Real>& g, std::vector<char>& frozen) {
     frozen.assign(g.size(), 0);
     if (!c.options.enforceLimits) return;
+    if (lo_.size() != static_cast<size_t>(c.skeleton.dofCount())) {  // the limits, read once per solve
+      lo_.resize(static_cast<size_t>(c.skeleton.dofCount()));
+      hi_.resize(lo_.size());
+      for (int i = 0; i < c.skeleton.dofCount(); ++i) {
+        lo_[static_cast<size_t>(i)] = c.skeleton.dofLo(i);
+        hi_[static_cast<size_t>(i)] = c.skeleton.dofHi(i);
+      }
+    }
     for (int i = 0; i < c.skeleton.dofCount(); ++i) {
       const auto k = static_cast<size_t>(i);
       const Real v = c.pose.dofs[k];
-      frozen[k] = (v <= c.skeleton.dofLo(i) + 1e-12 && g[k] > 0.0) || (v >= c.skeleton.dofHi(i) - 1e-12 && g[k] < 0.0);
+      frozen[k] = (v <= lo_[k] + 1e-12 && g[k] > 0.0) || (v >= hi_[k] - 1e-12 && g[k] < 0.0);
     }
   }
 
@@ -222,7 +231,7 @@ class DescentMethod final : public Method {
   // L-BFGS state
   std::deque<Pair> memory_;
   Pair spare_{{}, {}, 0.0};  // the last pair dropped from memory_: its vectors are reused
-  std::vector<Real> g_, d_, wd_, alphas_;
+  std::vector<Real> g_, d_, wd_, alphas_, lo_, hi_;
   std::vector<char> frozen_;
   std::vector<Real> s_, previousGradient_;
   std::vector<char> previousFrozen_;
