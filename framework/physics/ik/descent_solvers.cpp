@@ -50,35 +50,46 @@ struct Pair {
 class DescentMethod final : public Method {
  public:
   explicit DescentMethod(SolverKind kind) : kind_(kind) {}
+  /// Every step leaves c.frames current: the accepted trial's frames (acceptTrial) or the start's.
+  FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::Current; }
 
   void iterate(Context& c) override {
-    const LeastSquaresSystem sys = leastSquaresSystem(c);
+    leastSquaresSystem(c, sys_);  // reuses the buffers of the previous step
+    const LeastSquaresSystem& sys = sys_;
     const size_t n = sys.dofWeights.size();
-    std::vector<Real> g = multiplyTransposed(sys.J, sys.residual);
+    const bool free = !sys.layout.freeJoints.empty();
+    std::vector<Real>& g = g_;  // (members: storage kept across steps)
+    multiplyTransposed(sys.J, sys.residual, g);
     for (Real& x : g) x = -x;
-    const std::vector<char> frozen = frozenDofs(c, g);
+    frozenDofs(c, g, frozen_);
+    const std::vector<char>& frozen = frozen_;
     for (size_t i = 0; i < n; ++i)
       if (frozen[i]) g[i] = 0.0;
     const bool lbfgs = kind_ == SolverKind::Lbfgs;
     if (lbfgs) remember(c, sys, g, frozen);
     if (maxAbs(g) == 0.0) return;  // stationary point, or every DOF blocked: the driver sees a stall
 
-    std::vector<Real> d = lbfgs ? lbfgsDirection(g) : g;
-    if (!lbfgs)
+    std::vector<Real>& d = d_;
+    if (lbfgs) {
+      lbfgsDirection(g, d);
+    } else {
+      d.assign(g.begin(), g.end());
       for (Real& x : d) x = -x;
+    }
     for (size_t i = 0; i < n; ++i)
       if (frozen[i]) d[i] = 0.0;
     Real slope = dot(g, d);  // ∇f · d < 0 for a descent direction
     if (!(slope < 0.0)) {
       memory_.clear();
-      d = g;
+      d.assign(g.begin(), g.end());
       for (Real& x : d) x = -x;
       slope = dot(g, d);
     }
 
-    start_ = c.pose;
+    assignPose(start_, c.pose, free);
     const Real f0 = objective(c, c.frames);
-    std::vector<Real> wd(n);
+    std::vector<Real>& wd = wd_;
+    wd.resize(n);
     for (size_t i = 0; i < n; ++i) wd[i] = sys.dofWeights[i] * d[i];
     const Real alphaMax = c.options.lineSearchMaxStep / maxAbs(wd);
     auto f = [&](Real alpha) {
@@ -86,7 +97,9 @@ class DescentMethod final : public Method {
       return trialObjective(c, start_, c.frames, sys.layout, delta_, scratch_);
     };
     delta_.resize(n);
-    const Real alpha0 = std::min(alphaMax, modelMinimiser(sys.J, d, slope));
+    // L-BFGS with a memory starts its search at α = 1; α₀ (a product J d) serves the other cases.
+    const bool unitStep = lbfgs && !memory_.empty();
+    const Real alpha0 = unitStep ? 1.0 : std::min(alphaMax, modelMinimiser(sys.J, d, slope));
 
     bool accepted = false;
     if (!lbfgs && c.options.lineSearch == LineSearch::Fixed) {
@@ -95,14 +108,14 @@ class DescentMethod final : public Method {
     } else if (!lbfgs && c.options.lineSearch == LineSearch::GoldenSection) {
       accepted = golden(f, f0, alphaMax);
     }
-    if (!accepted)
-      accepted = backtrack(f, f0, lbfgs && !memory_.empty() ? std::min<Real>(1.0, alphaMax) : alpha0, slope);
+    if (!accepted) accepted = backtrack(f, f0, unitStep ? std::min<Real>(1.0, alphaMax) : alpha0, slope);
     if (!accepted) {
-      c.pose = start_;  // no decrease found: the driver reports a stall
+      assignPose(c.pose, start_, free);  // no decrease found: the driver reports a stall (frames: start_'s)
       memory_.clear();
       havePrevious_ = false;
       return;
     }
+    acceptTrial(c, scratch_);  // the last trial evaluated is the pose accepted: its frames are current
     if (lbfgs) {
       // s in the scaled variables, from the pose actually reached (after the projection).
       s_.assign(n, 0.0);
@@ -111,8 +124,8 @@ class DescentMethod final : public Method {
         s_[k] = (c.pose.dofs[k] - start_.dofs[k]) / sys.dofWeights[k];
       }
       for (size_t i = static_cast<size_t>(c.skeleton.dofCount()); i < n; ++i) s_[i] = delta_[i] / sys.dofWeights[i];
-      previousGradient_ = g;
-      previousFrozen_ = frozen;
+      previousGradient_.swap(g_);  // g_ and frozen_ are recomputed from scratch next step
+      previousFrozen_.swap(frozen_);
       previousHadFree_ = !sys.layout.freeJoints.empty();
       havePrevious_ = true;
     }
@@ -120,15 +133,22 @@ class DescentMethod final : public Method {
 
  private:
   // DOFs at a limit whose descent direction (−g) points out of the box.
-  std::vector<char> frozenDofs(const Context& c, const std::vector<Real>& g) const {
-    std::vector<char> frozen(g.size(), 0);
-    if (!c.options.enforceLimits) return frozen;
+  void frozenDofs(const Context& c, const std::vector<Real>& g, std::vector<char>& frozen) {
+    frozen.assign(g.size(), 0);
+    if (!c.options.enforceLimits) return;
+    if (lo_.size() != static_cast<size_t>(c.skeleton.dofCount())) {  // the limits, read once per solve
+      lo_.resize(static_cast<size_t>(c.skeleton.dofCount()));
+      hi_.resize(lo_.size());
+      for (int i = 0; i < c.skeleton.dofCount(); ++i) {
+        lo_[static_cast<size_t>(i)] = c.skeleton.dofLo(i);
+        hi_[static_cast<size_t>(i)] = c.skeleton.dofHi(i);
+      }
+    }
     for (int i = 0; i < c.skeleton.dofCount(); ++i) {
       const auto k = static_cast<size_t>(i);
       const Real v = c.pose.dofs[k];
-      frozen[k] = (v <= c.skeleton.dofLo(i) + 1e-12 && g[k] > 0.0) || (v >= c.skeleton.dofHi(i) - 1e-12 && g[k] < 0.0);
+      frozen[k] = (v <= lo_[k] + 1e-12 && g[k] > 0.0) || (v >= hi_[k] - 1e-12 && g[k] < 0.0);
     }
-    return frozen;
   }
 
   // α minimising the linear model ½|r − α J̃ d|² along d: −∇f·d / |J̃ d|² (∇f·d = −rᵀJ̃ d).
@@ -167,19 +187,26 @@ class DescentMethod final : public Method {
       memory_.clear();
       return;
     }
-    Pair p{s_, g, 0.0};
+    Pair p = std::move(spare_);  // the storage of the pair dropped last, if any
+    p.s.assign(s_.begin(), s_.end());
+    p.y.assign(g.begin(), g.end());
+    p.rho = 0.0;
     for (size_t i = 0; i < g.size(); ++i) p.y[i] -= previousGradient_[i];
     const Real sy = dot(p.s, p.y);
     if (!(sy > kCurvatureEpsilon * std::sqrt(dot(p.s, p.s) * dot(p.y, p.y)))) return;
     p.rho = 1.0 / sy;
     memory_.push_back(std::move(p));
-    while (static_cast<int>(memory_.size()) > c.options.lbfgsMemory) memory_.pop_front();
+    while (static_cast<int>(memory_.size()) > c.options.lbfgsMemory) {
+      spare_ = std::move(memory_.front());
+      memory_.pop_front();
+    }
   }
 
   // −H g by the two-loop recursion (Nocedal & Wright 2006, Algorithm 7.4).
-  std::vector<Real> lbfgsDirection(const std::vector<Real>& g) const {
-    std::vector<Real> q = g;
-    std::vector<Real> a(memory_.size());
+  void lbfgsDirection(const std::vector<Real>& g, std::vector<Real>& q) {
+    q.assign(g.begin(), g.end());
+    std::vector<Real>& a = alphas_;
+    a.resize(memory_.size());
     for (size_t k = memory_.size(); k-- > 0;) {
       a[k] = memory_[k].rho * dot(memory_[k].s, q);
       for (size_t i = 0; i < q.size(); ++i) q[i] -= a[k] * memory_[k].y[i];
@@ -194,15 +221,18 @@ class DescentMethod final : public Method {
       for (size_t i = 0; i < q.size(); ++i) q[i] += memory_[k].s[i] * (a[k] - b);
     }
     for (Real& x : q) x = -x;
-    return q;
   }
 
   SolverKind kind_;
+  LeastSquaresSystem sys_;  // J, r and the layout of the current step, storage kept across steps
   Pose start_;
   std::vector<Real> delta_;
-  std::vector<Frame> scratch_;
+  TrialFrames scratch_;
   // L-BFGS state
   std::deque<Pair> memory_;
+  Pair spare_{{}, {}, 0.0};  // the last pair dropped from memory_: its vectors are reused
+  std::vector<Real> g_, d_, wd_, alphas_, lo_, hi_;
+  std::vector<char> frozen_;
   std::vector<Real> s_, previousGradient_;
   std::vector<char> previousFrozen_;
   bool havePrevious_ = false, previousHadFree_ = false;

@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <span>
 
 #include "physics/exercises/not_implemented.h"
 #include "physics/ik/exercises.h"
@@ -143,12 +144,22 @@ class Fabrik final : public Method {
   void build(const Context& c) {
     built_ = true;
     const int J = c.skeleton.jointCount(), E = static_cast<int>(c.effectors.size());
-    kids_.assign(static_cast<size_t>(J), {});
-    effectorsOn_.assign(static_cast<size_t>(J), {});
+    // Active children per joint in index order, as kidList_[kidStart_[j] .. kidStart_[j + 1]) (two
+    // allocations, not one per joint).
+    kidStart_.assign(static_cast<size_t>(J) + 1, 0);
     for (int j = 0; j < J; ++j) {
       const int parent = c.skeleton.joint(j).parent;
-      if (c.active[static_cast<size_t>(j)] && parent >= 0) kids_[static_cast<size_t>(parent)].push_back(j);
+      if (c.active[static_cast<size_t>(j)] && parent >= 0) ++kidStart_[static_cast<size_t>(parent) + 1];
     }
+    for (size_t j = 0; j < static_cast<size_t>(J); ++j) kidStart_[j + 1] += kidStart_[j];
+    kidList_.resize(static_cast<size_t>(kidStart_.back()));
+    std::vector<int> fill(kidStart_.begin(), kidStart_.end() - 1);
+    for (int j = 0; j < J; ++j) {
+      const int parent = c.skeleton.joint(j).parent;
+      if (c.active[static_cast<size_t>(j)] && parent >= 0)
+        kidList_[static_cast<size_t>(fill[static_cast<size_t>(parent)]++)] = j;
+    }
+    effectorsOn_.assign(static_cast<size_t>(J), {});
     for (int e = 0; e < E; ++e)
       effectorsOn_[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)].push_back(e);
     target_.resize(static_cast<size_t>(E));
@@ -192,7 +203,7 @@ class Fabrik final : public Method {
         }
       }
     }
-    for (int k : kids_[static_cast<size_t>(j)]) {
+    for (int k : kids(j)) {
       from_.push_back(jointTranslation(c.skeleton.joint(k), c.pose));
       to_.push_back(P_[static_cast<size_t>(k)]);
       w_.push_back(1.0);
@@ -328,7 +339,7 @@ class Fabrik final : public Method {
         propose(oldP, oldR, eff.localOffset, eff.targetPosition, &Pp, &Rp);
         add(Pp, Rp);
       }
-      for (int k : kids_[static_cast<size_t>(j)]) {
+      for (int k : kids(j)) {
         propose(oldP, oldR, jointTranslation(c.skeleton.joint(k), c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
         constrain(c, k, oldP, &Pp, &Rp);
         add(Pp, Rp);
@@ -423,10 +434,18 @@ class Fabrik final : public Method {
     const int J = c.skeleton.jointCount();
     deeper_.assign(static_cast<size_t>(J), {});
     lookaheadWeight_.assign(static_cast<size_t>(J), kFarLookaheadWeight);
+    // No active hinge or prismatic joint (a chain of ball joints): no look-ahead anywhere, and no
+    // per-joint lists to build (they cost more than a pass on a long chain).
+    bool anyOneDof = false;
+    for (int j = 0; j < J && !anyOneDof; ++j) {
+      const JointType t = c.skeleton.joint(j).type;
+      anyOneDof = c.active[static_cast<size_t>(j)] && (t == JointType::Hinge || t == JointType::Prismatic);
+    }
+    if (!anyOneDof) return;
     for (int j = 0; j < J; ++j) {
       const JointType type = c.skeleton.joint(j).type;
       if (!c.active[static_cast<size_t>(j)] || (type != JointType::Ball && type != JointType::Free)) continue;
-      std::vector<int> level = kids_[static_cast<size_t>(j)], found;
+      std::vector<int> level(kids(j).begin(), kids(j).end()), found;
       bool hinged = false;
       for (int depth = 2; depth <= kLookahead; ++depth) {
         std::vector<int> next;
@@ -436,7 +455,7 @@ class Fabrik final : public Method {
           hinged = hinged || oneDof;
           if (depth == 2 && oneDof) lookaheadWeight_[static_cast<size_t>(j)] = 1.0;  // a child
           for (int e : effectorsOn_[static_cast<size_t>(n)]) found.push_back(J + e);
-          for (int k : kids_[static_cast<size_t>(n)]) next.push_back(k);
+          for (int k : kids(n)) next.push_back(k);
         }
         found.insert(found.end(), next.begin(), next.end());
         level = std::move(next);
@@ -448,13 +467,19 @@ class Fabrik final : public Method {
   static constexpr Real kFarLookaheadWeight = 0.1;
 
   bool built_ = false, pointsOnly_ = false, pointsLoaded_ = false;
-  std::vector<std::vector<int>> kids_, effectorsOn_;  // per joint: active child joints, effectors
-  std::vector<Real> lookaheadWeight_;                 // per joint: weight of its look-ahead points
-  std::vector<std::vector<int>> deeper_;              // per joint: look-ahead nodes (see buildLookahead)
-  std::vector<int> chain_;                            // points only: the joints from the root
-  std::vector<Vec3> P_;                               // per joint: body pivot after the backward pass
-  std::vector<Quat> R_;                               // per joint: body rotation after the backward pass
-  std::vector<Vec3> target_;                          // per effector: where the forward pass aims it
+  std::span<const int> kids(int j) const {  // joint j's active children
+    const auto first = static_cast<size_t>(kidStart_[static_cast<size_t>(j)]);
+    return std::span<const int>(kidList_).subspan(first,
+                                                  static_cast<size_t>(kidStart_[static_cast<size_t>(j) + 1]) - first);
+  }
+  std::vector<int> kidStart_, kidList_;        // active children per joint (see kids())
+  std::vector<std::vector<int>> effectorsOn_;  // per joint: effectors
+  std::vector<Real> lookaheadWeight_;          // per joint: weight of its look-ahead points
+  std::vector<std::vector<int>> deeper_;       // per joint: look-ahead nodes (see buildLookahead)
+  std::vector<int> chain_;                     // points only: the joints from the root
+  std::vector<Vec3> P_;                        // per joint: body pivot after the backward pass
+  std::vector<Quat> R_;                        // per joint: body rotation after the backward pass
+  std::vector<Vec3> target_;                   // per effector: where the forward pass aims it
   std::vector<Vec3> pts_, two_, from_, to_;
   std::vector<Real> lens_, one_, w_;
   Vec3 base_{0.0};

@@ -20,16 +20,36 @@ Vec3 rotationalColumn([[maybe_unused]] const Vec3& worldAxis, [[maybe_unused]] c
   // STUB: return exercises::notImplemented("IK-3", Vec3(0.0));
 }
 
-Vec3 dofWorldAxis(const Joint& joint, const Pose& pose, const Frame& f, int k) {
-  if (joint.type == JointType::Hinge || joint.type == JointType::Prismatic) return f.pre * joint.axis;
-  if (joint.type != JointType::Ball) return Vec3(0.0);
+namespace {
+// The world axes of joint j's scalar DOFs from its frame; returns how many (0–3).
+//   hinge, prismatic: R_pre a.
+//   ball, R = R_pre Rx(θ₀) Ry(θ₁) Rz(θ₂): x: R_pre x̂; y: (R_pre Rx) ŷ; z: (R_pre Rx Ry) ẑ. The partial
+//   products are shared between the three axes (two half-angle sincos and two quaternion products
+//   per joint, not three of each).
+int dofWorldAxes(const Joint& joint, const Pose& pose, const Frame& f, Vec3 axes[3],
+                 const EulerHalfAngles* half = nullptr) {
+  if (joint.type == JointType::Hinge || joint.type == JointType::Prismatic) {
+    axes[0] = f.pre * joint.axis;
+    return 1;
+  }
+  if (joint.type != JointType::Ball) return 0;
   const Real* d = pose.dofs.data() + joint.firstDof;
-  Quat q = f.pre;
-  if (k >= 1) q = q * glm::angleAxis(d[0], Vec3(1, 0, 0));
-  if (k >= 2) q = q * glm::angleAxis(d[1], Vec3(0, 1, 0));
-  Vec3 unit(0.0);
-  unit[k] = 1.0;
-  return q * unit;
+  // Rx(θ₀) = (cos ½θ₀, sin ½θ₀ x̂), Ry(θ₁) = (cos ½θ₁, sin ½θ₁ ŷ): from forward kinematics when it has them.
+  const bool cached = half && half->angle0 == d[0] && half->angle1 == d[1];
+  const Quat rx = cached ? Quat(half->c0, half->s0, 0.0, 0.0) : glm::angleAxis(d[0], Vec3(1, 0, 0));
+  const Quat ry = cached ? Quat(half->c1, 0.0, half->s1, 0.0) : glm::angleAxis(d[1], Vec3(0, 1, 0));
+  const Quat qx = f.pre * rx;
+  const Quat qxy = qx * ry;
+  axes[0] = f.pre * Vec3(1, 0, 0);
+  axes[1] = qx * Vec3(0, 1, 0);
+  axes[2] = qxy * Vec3(0, 0, 1);
+  return 3;
+}
+}  // namespace
+
+Vec3 dofWorldAxis(const Joint& joint, const Pose& pose, const Frame& f, int k) {
+  Vec3 axes[3];
+  return k < dofWorldAxes(joint, pose, f, axes) ? axes[k] : Vec3(0.0);
 }
 
 JacobianLayout planJacobian(const Skeleton& s, const Pose&, const std::vector<Effector>& effectors,
@@ -59,38 +79,61 @@ JacobianLayout planJacobian(const Skeleton& s, const Pose&, const std::vector<Ef
 }
 
 namespace {
-// Writes the column of a rotation about world axis a at pivot r (rotational = true) or a translation
-// along a, for every effector below `joint`.
-void fillColumn(Matrix& J, int col, const std::vector<int>& below, const Vec3& a, const Vec3& r, bool rotational,
-                const std::vector<Effector>& effectors, const std::vector<Frame>& frames, const JacobianLayout& L,
-                Real scale) {
-  for (int k : below) {
-    const Effector& e = effectors[static_cast<size_t>(k)];
-    const int row = L.rowOfEffector[static_cast<size_t>(k)];
-    const Vec3 v = rotational ? rotationalColumn(a, r, effectorPosition(e, frames)) : a;
-    for (int i = 0; i < 3; ++i) J(row + i, col) = v[i];
-    if (e.kind == EffectorKind::PositionOrientation && rotational)
-      for (int i = 0; i < 3; ++i) J(row + 3 + i, col) = scale * a[i];
-  }
+// Writes effector k's rows of column `col`: a rotation about world axis a at pivot r (rotational) or a
+// translation along a, for the effector point p.
+void writeColumn(Matrix& J, int col, int row, bool oriented, const Vec3& a, const Vec3& r, bool rotational,
+                 const Vec3& p, Real scale) {
+  const Vec3 v = rotational ? rotationalColumn(a, r, p) : a;
+  for (int i = 0; i < 3; ++i) J(row + i, col) = v[i];
+  if (oriented && rotational)
+    for (int i = 0; i < 3; ++i) J(row + 3 + i, col) = scale * a[i];
 }
 }  // namespace
 
+void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
+              const std::vector<Frame>& frames, const JacobianLayout& L, Real scale, Matrix& J,
+              const EulerHalfAngles* half) {
+  J.rows = L.rows;
+  J.cols = L.cols;
+  // Entries on no effector's path stay 0. One position effector whose path holds every DOF (a chain)
+  // writes every entry below: then J need not be cleared first.
+  int pathDofs = -1;
+  if (effectors.size() == 1 && effectors[0].kind == EffectorKind::Position && L.freeJoints.empty()) {
+    pathDofs = 0;
+    for (int j = effectors[0].joint; j >= 0; j = s.joint(j).parent) pathDofs += dofCount(s.joint(j).type);
+  }
+  if (pathDofs == L.cols)
+    J.data.resize(static_cast<size_t>(L.rows) * static_cast<size_t>(L.cols));
+  else
+    J.data.assign(static_cast<size_t>(L.rows) * static_cast<size_t>(L.cols), 0.0);
+  // Effector by effector, up its path to the root: the joints that move it (O(m · depth), no lists).
+  for (size_t k = 0; k < effectors.size(); ++k) {
+    const Effector& e = effectors[k];
+    const int row = L.rowOfEffector[k];
+    const bool oriented = e.kind == EffectorKind::PositionOrientation;
+    const Vec3 p = effectorPosition(e, frames);
+    for (int j = e.joint; j >= 0; j = s.joint(j).parent) {
+      const Joint& joint = s.joint(j);
+      const Frame& f = frames[static_cast<size_t>(j)];
+      Vec3 axes[3];
+      const int count = dofWorldAxes(joint, pose, f, axes, half ? half + j : nullptr);
+      for (int d = 0; d < count; ++d)
+        writeColumn(J, joint.firstDof + d, row, oriented, axes[d], f.position, joint.type != JointType::Prismatic, p,
+                    scale);
+    }
+    for (size_t q = 0; q < L.freeJoints.size(); ++q) {
+      const int j = L.freeJoints[q];
+      if (isAncestorOrSelf(s, j, e.joint))
+        writeColumn(J, s.dofCount() + static_cast<int>(q), row, oriented, L.freeAxes[q],
+                    frames[static_cast<size_t>(j)].position, true, p, scale);
+    }
+  }
+}
+
 Matrix jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
                 const std::vector<Frame>& frames, const JacobianLayout& L, Real scale) {
-  Matrix J(L.rows, L.cols);
-  const std::vector<std::vector<int>> below = effectorsBelowJoints(s, effectors);
-  for (int i = 0; i < s.dofCount(); ++i) {
-    const int j = s.dofJoint(i);
-    const Joint& joint = s.joint(j);
-    const Frame& f = frames[static_cast<size_t>(j)];
-    fillColumn(J, i, below[static_cast<size_t>(j)], dofWorldAxis(joint, pose, f, i - joint.firstDof), f.position,
-               joint.type != JointType::Prismatic, effectors, frames, L, scale);
-  }
-  for (size_t k = 0; k < L.freeJoints.size(); ++k) {
-    const int j = L.freeJoints[k];
-    fillColumn(J, s.dofCount() + static_cast<int>(k), below[static_cast<size_t>(j)], L.freeAxes[k],
-               frames[static_cast<size_t>(j)].position, true, effectors, frames, L, scale);
-  }
+  Matrix J;
+  jacobian(s, pose, effectors, frames, L, scale, J);
   return J;
 }
 

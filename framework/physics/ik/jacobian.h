@@ -34,6 +34,12 @@ JacobianLayout planJacobian(const Skeleton& s, const Pose& pose, const std::vect
 /// The analytic Jacobian (effector weights not applied).
 Matrix jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
                 const std::vector<Frame>& frames, const JacobianLayout& layout, Real orientationScale);
+/// The same into J, reusing its storage (the solvers call it every iteration). `half`, when given:
+/// per joint, the half angles of a ball joint's θ₀ and θ₁ from forward kinematics; an entry whose
+/// angles equal the pose's saves the axes their sin and cos (the result is the same to the bit).
+void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
+              const std::vector<Frame>& frames, const JacobianLayout& layout, Real orientationScale, Matrix& J,
+              const EulerHalfAngles* half = nullptr);
 /// Central finite differences of the same quantities, step h (JacobianSource::CentralDifferences and
 /// tests: a reference independent of IK-3): position rows
 /// (e(θ+h) − e(θ−h)) / 2h, orientation rows s · rotvec(E(θ+h) E(θ−h)⁻¹) / 2h.

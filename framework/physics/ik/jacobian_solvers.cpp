@@ -63,9 +63,8 @@ class JacobianMethod final : public Method {
   explicit JacobianMethod(SolverKind kind) : kind_(kind) {}
 
   void iterate(Context& c) override {
-    LeastSquaresSystem sys = leastSquaresSystem(c);
-    layout_ = std::move(sys.layout);
-    weights_ = std::move(sys.dofWeights);
+    leastSquaresSystem(c, sys_);  // reuses the buffers of the previous step
+    LeastSquaresSystem& sys = sys_;
     Matrix& J = sys.J;
     std::vector<Real> delta = step(c, J, sys.residual, sys.clamped);
     if (c.options.enforceLimits && c.options.limitMode == JacobianLimitMode::ZeroColumns &&
@@ -83,7 +82,7 @@ class JacobianMethod final : public Method {
     }
     // As published: take the step.
     for (Real& x : delta) x *= alpha;
-    applyStep(c.skeleton, c.pose, c.frames, layout_, delta);
+    applyStep(c.skeleton, c.pose, c.frames, sys.layout, delta);
     projectOntoLimits(c);
   }
 
@@ -106,12 +105,14 @@ class JacobianMethod final : public Method {
         dy = selectivelyDampedStep(J, clamped);
         break;
     }
-    for (size_t i = 0; i < dy.size(); ++i) dy[i] *= weights_[i];
+    if (!sys_.unitDofWeights)
+      for (size_t i = 0; i < dy.size(); ++i) dy[i] *= sys_.dofWeights[i];
     return dy;
   }
 
-  static std::vector<Real> pseudoInverseStep(const Matrix& J, const std::vector<Real>& e, Real cutoff) {
-    const Svd d = svd(J);
+  std::vector<Real> pseudoInverseStep(const Matrix& J, const std::vector<Real>& e, Real cutoff) const {
+    svd(J, svd_, svdWorkspace_);
+    const Svd& d = svd_;
     std::vector<Real> out(static_cast<size_t>(J.cols), 0.0);
     const Real sigmaMax = d.sigma.empty() ? 0.0 : d.sigma[0];
     for (size_t i = 0; i < d.sigma.size(); ++i) {
@@ -122,8 +123,9 @@ class JacobianMethod final : public Method {
     return out;
   }
 
-  static std::vector<Real> selectivelyDampedStep(const Matrix& J, const std::vector<Real>& e) {
-    const Svd d = svd(J);
+  std::vector<Real> selectivelyDampedStep(const Matrix& J, const std::vector<Real>& e) const {
+    svd(J, svd_, svdWorkspace_);
+    const Svd& d = svd_;
     const int n = J.cols;
     // ρⱼ = Σₖ |J_kj| (3-row blocks: each effector's position, and orientation, rows).
     std::vector<Real> rho(static_cast<size_t>(n), 0.0);
@@ -187,15 +189,16 @@ class JacobianMethod final : public Method {
     std::vector<Real> trial(delta.size());
     auto f = [&](Real a) {
       for (size_t i = 0; i < trial.size(); ++i) trial[i] = a * delta[i];
-      return trialObjective(c, start, c.frames, layout_, trial, scratch_);
+      return trialObjective(c, start, c.frames, sys_.layout, trial, scratch_);
     };
     if (!backtrack(f, f0, alpha, slope)) c.pose = start;
   }
 
   SolverKind kind_;
-  JacobianLayout layout_;
-  std::vector<Real> weights_;
-  std::vector<Frame> scratch_;
+  LeastSquaresSystem sys_;  // J, r and the layout of the current step, storage kept across steps
+  TrialFrames scratch_;
+  mutable Svd svd_;                    // pinv and SDLS: the decomposition of the step, storage kept
+  mutable SvdWorkspace svdWorkspace_;  // across steps
 };
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "physics/ik/exercises.h"
 
@@ -15,13 +16,13 @@ Vec3 clampLength(const Vec3& v, Real maxLength) {
 }
 }  // namespace
 
-LeastSquaresSystem leastSquaresSystem(const Context& c) {
+void leastSquaresSystem(const Context& c, LeastSquaresSystem& sys) {
   const Skeleton& s = c.skeleton;
-  LeastSquaresSystem sys;
   sys.layout = planJacobian(s, c.pose, c.effectors, c.frames, c.orientationScale);
-  sys.J = c.options.jacobian == JacobianSource::Analytic
-              ? jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale)
-              : numericalJacobian(s, c.pose, c.effectors, sys.layout, c.orientationScale, kJacobianStep);
+  if (c.options.jacobian == JacobianSource::Analytic)
+    jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale, sys.J, c.half.data());
+  else
+    sys.J = numericalJacobian(s, c.pose, c.effectors, sys.layout, c.orientationScale, kJacobianStep);
   Matrix& J = sys.J;
   const int m = J.rows, n = J.cols;
   sys.residual.assign(static_cast<size_t>(m), 0.0);
@@ -44,13 +45,24 @@ LeastSquaresSystem leastSquaresSystem(const Context& c) {
         sys.clamped[static_cast<size_t>(row + 3 + i)] = e.weight * cw[i];
       }
     }
-    for (int r = row; r < row + (oriented ? 6 : 3); ++r)
-      for (int col = 0; col < n; ++col) J(r, col) *= e.weight;
+    if (e.weight != 1.0)  // (a product by 1 is exact: skipping it changes nothing)
+      for (int r = row; r < row + (oriented ? 6 : 3); ++r)
+        for (int col = 0; col < n; ++col) J(r, col) *= e.weight;
   }
-  sys.dofWeights.assign(static_cast<size_t>(n), 1.0);
-  for (int i = 0; i < s.dofCount(); ++i) sys.dofWeights[static_cast<size_t>(i)] = s.dofWeight(i);
-  for (int r = 0; r < m; ++r)
-    for (int col = 0; col < n; ++col) J(r, col) *= sys.dofWeights[static_cast<size_t>(col)];
+  if (sys.dofWeights.size() != static_cast<size_t>(n)) {  // the weights are the skeleton's: set once
+    sys.dofWeights.assign(static_cast<size_t>(n), 1.0);
+    for (int i = 0; i < s.dofCount(); ++i) sys.dofWeights[static_cast<size_t>(i)] = s.dofWeight(i);
+    sys.unitDofWeights = true;
+    for (Real w : sys.dofWeights) sys.unitDofWeights = sys.unitDofWeights && w == 1.0;
+  }
+  if (!sys.unitDofWeights)
+    for (int r = 0; r < m; ++r)
+      for (int col = 0; col < n; ++col) J(r, col) *= sys.dofWeights[static_cast<size_t>(col)];
+}
+
+LeastSquaresSystem leastSquaresSystem(const Context& c) {
+  LeastSquaresSystem sys;
+  leastSquaresSystem(c, sys);
   return sys;
 }
 
@@ -73,12 +85,23 @@ void projectOntoLimits(Context& c) {
 }
 
 Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& frames, const JacobianLayout& layout,
-                    const std::vector<Real>& delta, std::vector<Frame>& scratch) {
-  c.pose = start;
+                    const std::vector<Real>& delta, TrialFrames& scratch) {
+  assignPose(c.pose, start, !layout.freeJoints.empty());
   applyStep(c.skeleton, c.pose, frames, layout, delta);
   projectOntoLimits(c);
-  forwardKinematics(c.skeleton, c.pose, scratch);
-  return objective(c, scratch);
+  c.evaluate(c.pose, scratch.local, scratch.half, scratch.frames);
+  return objective(c, scratch.frames);
+}
+
+void acceptTrial(Context& c, TrialFrames& scratch) {
+  std::swap(c.local, scratch.local);
+  std::swap(c.half, scratch.half);
+  std::swap(c.frames, scratch.frames);
+}
+
+void assignPose(Pose& to, const Pose& from, bool freeJoints) {
+  to.dofs = from.dofs;
+  if (freeJoints || to.rotations.size() != from.rotations.size()) to.rotations = from.rotations;
 }
 
 Real maxAbs(const std::vector<Real>& v) {

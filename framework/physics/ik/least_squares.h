@@ -20,10 +20,14 @@ struct LeastSquaresSystem {
   std::vector<Real> residual;    ///< r = Wₑ (g − e) (orientation rows s·ω)
   std::vector<Real> clamped;     ///< r with each effector's block clamped to maxErrorStep (Buss's D_max)
   std::vector<Real> dofWeights;  ///< diagonal of W (1 for free-joint columns)
+  bool unitDofWeights = true;    ///< every entry of dofWeights is 1 (W = I: no column scaling)
 };
 
 /// The system at the current pose (c.frames must be current).
 LeastSquaresSystem leastSquaresSystem(const Context& c);
+/// The same into `sys`, reusing its storage: a method keeps one system for the whole solve (the
+/// DOF weights, fixed by the skeleton, are read on the first call only).
+void leastSquaresSystem(const Context& c, LeastSquaresSystem& sys);
 
 /// f at `frames` (see above).
 Real objective(const Context& c, const std::vector<Frame>& frames);
@@ -32,11 +36,25 @@ Real objective(const Context& c, const std::vector<Frame>& frames);
 /// enforced; otherwise leaves it alone.
 void projectOntoLimits(Context& c);
 
+/// The local rotations and frames of a trial pose (Context::evaluate).
+struct TrialFrames {
+  std::vector<Quat> local;
+  std::vector<EulerHalfAngles> half;
+  std::vector<Frame> frames;
+};
+
 /// Sets c.pose = start + Δθ (free joints turn about their column's axis in `layout`), projected onto
 /// the box of the joint limits when they are enforced, and returns f there. `frames` are those of
-/// `start`; `scratch` receives the trial pose's frames. c.frames is left alone.
+/// `start`; `scratch` receives the trial pose's local rotations and frames. c.frames is left alone.
 Real trialObjective(Context& c, const Pose& start, const std::vector<Frame>& frames, const JacobianLayout& layout,
-                    const std::vector<Real>& delta, std::vector<Frame>& scratch);
+                    const std::vector<Real>& delta, TrialFrames& scratch);
+/// After the trial that left c.pose where it is: makes its frames c's (swaps the buffers), so c is
+/// current without another forward kinematics.
+void acceptTrial(Context& c, TrialFrames& scratch);
+
+/// to = from. The rotations (read by free joints only) are copied only when `freeJoints` or when `to`
+/// has none yet: without free joints no step changes them, so they are equal already.
+void assignPose(Pose& to, const Pose& from, bool freeJoints);
 
 /// Largest |entry| of v.
 Real maxAbs(const std::vector<Real>& v);

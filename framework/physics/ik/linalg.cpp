@@ -33,9 +33,14 @@ std::vector<Real> multiply(const Matrix& J, const std::vector<Real>& x) {
 }
 
 std::vector<Real> multiplyTransposed(const Matrix& J, const std::vector<Real>& x) {
-  std::vector<Real> y(static_cast<size_t>(J.cols));
-  VectorMap(y.data(), J.cols).noalias() = view(J).transpose() * view(x);
+  std::vector<Real> y;
+  multiplyTransposed(J, x, y);
   return y;
+}
+
+void multiplyTransposed(const Matrix& J, const std::vector<Real>& x, std::vector<Real>& y) {
+  y.resize(static_cast<size_t>(J.cols));
+  VectorMap(y.data(), J.cols).noalias() = view(J).transpose() * view(x);
 }
 
 Matrix gram(const Matrix& J) {
@@ -58,21 +63,42 @@ bool solveSpd(const Matrix& A, const std::vector<Real>& b, std::vector<Real>& x)
   return true;
 }
 
-Svd svd(const Matrix& J) {
-  Svd out;
-  if (J.rows == 0 || J.cols == 0) return out;
-  const Eigen::JacobiSVD<Eigen::MatrixXd> d(view(J), Eigen::ComputeThinU | Eigen::ComputeThinV);
+struct SvdWorkspace::Impl {
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd;
+};
+SvdWorkspace::SvdWorkspace() : impl_(std::make_unique<Impl>()) {}
+SvdWorkspace::~SvdWorkspace() = default;
+
+void svd(const Matrix& J, Svd& out, SvdWorkspace& workspace) {
+  out.sigma.clear();
+  if (J.rows == 0 || J.cols == 0) {
+    out.u.clear();
+    out.v.clear();
+    return;
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd>& d = workspace.impl().svd;
+  d.compute(view(J), Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd& s = d.singularValues();
   const Real zero = Real(std::max(J.rows, J.cols)) * std::numeric_limits<Real>::epsilon() * (s.size() ? s(0) : 0.0);
+  const auto count = static_cast<size_t>(s.size());
+  out.u.resize(count);
+  out.v.resize(count);
   for (Eigen::Index i = 0; i < s.size(); ++i) {
     const bool nonzero = s(i) > zero && s(i) > 0.0;
+    const auto k = static_cast<size_t>(i);
     out.sigma.push_back(nonzero ? s(i) : 0.0);
-    out.u.emplace_back(d.matrixU().col(i).data(), d.matrixU().col(i).data() + J.rows);
+    out.u[k].assign(d.matrixU().col(i).data(), d.matrixU().col(i).data() + J.rows);
     if (nonzero)
-      out.v.emplace_back(d.matrixV().col(i).data(), d.matrixV().col(i).data() + J.cols);
+      out.v[k].assign(d.matrixV().col(i).data(), d.matrixV().col(i).data() + J.cols);
     else
-      out.v.emplace_back();
+      out.v[k].clear();
   }
+}
+
+Svd svd(const Matrix& J) {
+  Svd out;
+  SvdWorkspace workspace;
+  svd(J, out, workspace);
   return out;
 }
 

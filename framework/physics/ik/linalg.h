@@ -3,6 +3,7 @@
 // J Jᵀ, a Cholesky solve and the singular value decomposition. The factorisations come from Eigen 3.4
 // (docs/architecture.md §1: linear algebra that is not the lesson); the lesson, the damped
 // least-squares step of IK-4, is written on top of solveSpd.
+#include <memory>
 #include <vector>
 
 #include "physics/core/types.h"
@@ -27,6 +28,8 @@ struct Matrix {
 std::vector<Real> multiply(const Matrix& J, const std::vector<Real>& x);
 /// y = Jᵀ x (x has J.rows entries).
 std::vector<Real> multiplyTransposed(const Matrix& J, const std::vector<Real>& x);
+/// The same into y, reusing its storage.
+void multiplyTransposed(const Matrix& J, const std::vector<Real>& x, std::vector<Real>& y);
 /// A = J Jᵀ (rows × rows, symmetric).
 Matrix gram(const Matrix& J);
 
@@ -50,6 +53,21 @@ struct Svd {
   std::vector<std::vector<Real>> v;  ///< right singular vectors (J.cols entries each); empty where σ = 0
 };
 Svd svd(const Matrix& J);
+/// The same into `out`, keeping the factorisation's storage in `workspace` from call to call (a solver
+/// that decomposes a J of the same size every step allocates nothing after the first). Same result.
+class SvdWorkspace {
+ public:
+  SvdWorkspace();
+  ~SvdWorkspace();
+  SvdWorkspace(const SvdWorkspace&) = delete;
+  SvdWorkspace& operator=(const SvdWorkspace&) = delete;
+  struct Impl;
+  Impl& impl() { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+void svd(const Matrix& J, Svd& out, SvdWorkspace& workspace);
 
 Real dot(const std::vector<Real>& a, const std::vector<Real>& b);
 

@@ -183,9 +183,20 @@ Vec3 eulerXYZFromQuat(const Quat& q) {
   return Vec3(std::atan2(-r12, r22), b, std::atan2(-r01, r00));
 }
 
-Quat quatFromEulerXYZ(const Vec3& e) {
-  if (e.x == 0.0 && e.y == 0.0 && e.z == 0.0) return Quat(1, 0, 0, 0);  // rest poses: skip three sincos
-  return glm::angleAxis(e.x, Vec3(1, 0, 0)) * glm::angleAxis(e.y, Vec3(0, 1, 0)) * glm::angleAxis(e.z, Vec3(0, 0, 1));
+Quat quatFromEulerXYZ(const Vec3& e) { return quatFromEulerXYZ(e, nullptr); }
+
+Quat quatFromEulerXYZ(const Vec3& e, EulerHalfAngles* half) {
+  if (e.x == 0.0 && e.y == 0.0 && e.z == 0.0) {  // rest poses: skip three sincos
+    if (half) *half = EulerHalfAngles{};
+    return Quat(1, 0, 0, 0);
+  }
+  // Rx(a)·Ry(b)·Rz(c) as quaternions (cos ½, sin ½ axis), with the products by their zero components
+  // left out: the same roundings as the three general products, a third of the work.
+  const Real cx = std::cos(0.5 * e.x), sx = std::sin(0.5 * e.x), cy = std::cos(0.5 * e.y), sy = std::sin(0.5 * e.y);
+  const Real cz = std::cos(0.5 * e.z), sz = std::sin(0.5 * e.z);
+  if (half) *half = EulerHalfAngles{e.x, e.y, cx, sx, cy, sy};
+  const Real w = cx * cy, x = sx * cy, y = cx * sy, z = sx * sy;  // Rx·Ry
+  return Quat(w * cz - z * sz, x * cz + y * sz, y * cz - x * sz, w * sz + z * cz);
 }
 
 Vec3 rotationVector(const Quat& qIn) {

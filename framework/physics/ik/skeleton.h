@@ -106,6 +106,15 @@ std::vector<Frame> forwardKinematics(const Skeleton& skeleton, const Pose& pose)
 /// XYZ Euler angles (a, b, c) with R = Rx(a)·Ry(b)·Rz(c); b in [−π/2, π/2]. Safe at gimbal lock.
 Vec3 eulerXYZFromQuat(const Quat& q);
 Quat quatFromEulerXYZ(const Vec3& angles);
+/// cos ½θ and sin ½θ of a ball joint's first two Euler angles (θ₀ about x, θ₁ about y) as
+/// quatFromEulerXYZ computes them, with the angles they belong to: the Jacobian's axes reuse them
+/// (jacobian.h) instead of calling sin and cos again. A pure function of (angle0, angle1).
+struct EulerHalfAngles {
+  Real angle0 = 0.0, angle1 = 0.0;  ///< [rad] θ₀, θ₁
+  Real c0 = 1.0, s0 = 0.0, c1 = 1.0, s1 = 0.0;
+};
+/// quatFromEulerXYZ, also writing the half angles of θ₀ and θ₁ to *half.
+Quat quatFromEulerXYZ(const Vec3& angles, EulerHalfAngles* half);
 /// Rotation vector (axis · angle, angle in [0, π]) of a unit quaternion, without acos/asin traps.
 Vec3 rotationVector(const Quat& q);
 /// Unit quaternion of a rotation vector.

@@ -37,6 +37,15 @@ const char* statusName(SolveStatus s) {
 
 namespace detail {
 
+namespace {
+// jointRotation(), also keeping a ball joint's half angles (the Jacobian reuses them).
+Quat localRotation(const Joint& joint, const Pose& p, int j, EulerHalfAngles* half) {
+  if (joint.type != JointType::Ball) return jointRotation(joint, p, j);
+  const Real* d = p.dofs.data() + joint.firstDof;
+  return quatFromEulerXYZ(Vec3(d[0], d[1], d[2]), half);
+}
+}  // namespace
+
 void Context::flushPose() {
   for (size_t j = 0; j < staleEuler.size(); ++j) {
     if (!staleEuler[j]) continue;
@@ -59,15 +68,20 @@ void Context::refresh() {
   flushPose();
   staleEuler.assign(static_cast<size_t>(skeleton.jointCount()), 0);
   local.resize(static_cast<size_t>(skeleton.jointCount()));
+  half.resize(static_cast<size_t>(skeleton.jointCount()));
   for (int j = 0; j < skeleton.jointCount(); ++j)
-    local[static_cast<size_t>(j)] = jointRotation(skeleton.joint(j), pose, j);
+    local[static_cast<size_t>(j)] = localRotation(skeleton.joint(j), pose, j, &half[static_cast<size_t>(j)]);
   refreshFrames();
 }
 
 // Joint j's frame from its parent's frame (nullptr: root) and its cached local rotation.
 Frame Context::frameFrom(int j, const Frame* parent) const {
+  return linkFrame(j, parent, pose, local[static_cast<size_t>(j)]);
+}
+
+Frame Context::linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const {
   const Link& link = links[static_cast<size_t>(j)];
-  const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), pose) : link.offset;
+  const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), p) : link.offset;
   Frame f;
   if (parent) {
     f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
@@ -76,8 +90,22 @@ Frame Context::frameFrom(int j, const Frame* parent) const {
     f.pre = link.rest;
     f.position = t;
   }
-  f.rotation = f.pre * local[static_cast<size_t>(j)];
+  f.rotation = f.pre * localRotation;
   return f;
+}
+
+void Context::evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<EulerHalfAngles>& halfOut,
+                       std::vector<Frame>& framesOut) const {
+  const int n = skeleton.jointCount();
+  localOut.resize(static_cast<size_t>(n));
+  halfOut.resize(static_cast<size_t>(n));
+  framesOut.resize(static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    const auto k = static_cast<size_t>(j);
+    localOut[k] = localRotation(skeleton.joint(j), p, j, &halfOut[k]);
+    const int parent = links[k].parent;
+    framesOut[k] = linkFrame(j, parent < 0 ? nullptr : &framesOut[static_cast<size_t>(parent)], p, localOut[k]);
+  }
 }
 
 void Context::refreshFrames() {

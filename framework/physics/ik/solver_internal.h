@@ -42,6 +42,9 @@ struct Context {
   std::vector<Real> insideCosHalf;
   bool surelyWithinLimits(int j, const Quat& q) const { return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)]; }
   std::vector<Quat> local;  ///< R_dof per joint for `pose` (see above)
+  /// Per joint: the half angles refresh() computed for a ball joint's `local` (EulerHalfAngles; the
+  /// Jacobian's axes reuse the entries whose angles still match the pose).
+  std::vector<EulerHalfAngles> half;
   /// Per joint: its Euler DOFs in `pose` lag behind `local` (alignJoint defers the quaternion → Euler
   /// conversion, two atan2 and a hypot, while no limit needs the angles); flushPose() writes them.
   std::vector<char> staleEuler;
@@ -65,6 +68,13 @@ struct Context {
   /// Joint j's frame from its parent's entry in `frames` and the cached local rotation. O(1).
   Frame frameFromParent(int j) const;
   Frame frameFrom(int j, const Frame* parent) const;
+  /// The same for any pose p and local rotation of joint j.
+  Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const;
+  /// What refresh() computes (the local rotations and every frame), for another pose p, into the
+  /// given buffers: a trial pose of a line search, whose buffers the method swaps with `local` and
+  /// `frames` when it accepts the pose (no second forward kinematics). O(n) with trigonometry.
+  void evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<EulerHalfAngles>& halfOut,
+                std::vector<Frame>& framesOut) const;
 };
 
 /// One IK method: iterate() does one pass (CCD, FABRIK) or one step (Jacobian methods).
