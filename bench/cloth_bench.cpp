@@ -251,6 +251,7 @@ void BM_XpbdRibbonSelfCollision(benchmark::State& state) {
   s.substeps = 10;
   s.bending = BendingModel::Distance;
   s.selfCollision = state.range(0) != 0;
+  s.selfCollisionSubList = state.range(0) != 2;
   ClothEnvironment env;
   env.massDamping = 0.1;
   const std::vector<Collider> floor{Collider{}};
@@ -263,7 +264,7 @@ void BM_XpbdRibbonSelfCollision(benchmark::State& state) {
   state.SetLabel(std::string(s.selfCollision ? "with" : "without") + " self-collision, max stretch " +
                  percent(edgeStrain(c).max) + " at the end");
 }
-BENCHMARK(BM_XpbdRibbonSelfCollision)->Arg(1)->Arg(0)->Iterations(kFrames)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_XpbdRibbonSelfCollision)->Arg(1)->Arg(2)->Arg(0)->Iterations(kFrames)->Unit(benchmark::kMillisecond);
 
 /// The comparison scene's cloth (16 × 16, k = 5000 N/m) under each solver. range(0): solver; range(1):
 /// substeps (explicit: its stability bound needs them; XPBD: raised until its stretch matches implicit's).
