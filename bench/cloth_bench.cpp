@@ -251,7 +251,7 @@ void BM_XpbdRibbonSelfCollision(benchmark::State& state) {
   s.substeps = 10;
   s.bending = BendingModel::Distance;
   s.selfCollision = state.range(0) != 0;
-  s.selfCollisionSubList = state.range(0) != 2;
+  s.selfCollisionNearList = state.range(0) != 2;
   ClothEnvironment env;
   env.massDamping = 0.1;
   const std::vector<Collider> floor{Collider{}};

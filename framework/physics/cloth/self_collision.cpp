@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace pba::cloth {
 namespace {
@@ -16,157 +17,138 @@ Real distance2(const Vec3& a, const Vec3& b) {
   return glm::dot(d, d);
 }
 
-/// |v|₁ ≥ |v|: a bound of a displacement without a square root.
-Real taxicab(const Vec3& v) { return std::abs(v.x) + std::abs(v.y) + std::abs(v.z); }
 }  // namespace
 
-bool SelfCollision::inFrame(std::uint32_t i, std::uint32_t j) const {
-  return distance2(start_[i], start_[j]) < reach_ * reach_ && !neighbours(rest_[i], rest_[j], thickness_);
-}
-
-bool SelfCollision::pathsMeet(std::uint32_t i, std::uint32_t j) const {
-  // Closest approach of r(τ) = r₀ + u τ over τ ∈ [0, dt]: τ* = −r₀·u / u·u, clamped.
-  const Vec3 r0 = start_[i] - start_[j];
-  const Vec3 u = velocity_[i] - velocity_[j];
-  const Real uu = glm::dot(u, u);
-  const Real tau = uu > 0.0 ? std::clamp(-glm::dot(r0, u) / uu, 0.0, dt_) : 0.0;
-  const Vec3 r = r0 + tau * u;
-  const Real meet = thickness_ + 2.0 * skin_;
-  return glm::dot(r, r) < meet * meet;
-}
-
-void SelfCollision::buildWideGrid() {
-  if (wideBuilt_) return;
-  wide_.build(start_, {}, reach_);
-  wideBuilt_ = true;
-}
-
-void SelfCollision::collectSlowPairs(std::span<const std::uint32_t> slow) {
-  // Two slow particles close in by at most 2 s in the frame: paths that meet start within thickness + 4 s
-  // (half a skin more: no round-off can lose one).
-  const Real cell = std::min(reach_, thickness_ + 4.5 * skin_);
-  narrow_.build(start_, slow, cell);
-  const Real cell2 = cell * cell;
-  for (std::uint32_t e = 0; e < narrow_.particle.size(); ++e) {
-    const std::uint32_t i = narrow_.particle[e];
-    const Vec3 p = narrow_.position[e];
-    const std::uint32_t own = narrow_.bucketOfEntry(e);
-    narrow_.forEachNearBucket(p, [&](std::uint32_t b, std::uint32_t first, std::uint32_t last) {
-      if (b < own) return;  // visited from the other side
-      for (std::uint32_t f = b == own ? e + 1 : first; f < last; ++f) {
-        if (distance2(p, narrow_.position[f]) >= cell2) continue;
-        const std::uint32_t j = narrow_.particle[f];
-        if (inFrame(i, j) && pathsMeet(i, j)) pairs_.emplace_back(std::min(i, j), std::max(i, j));
-      }
-    });
-  }
-}
-
-void SelfCollision::collectFastPairs(std::span<const std::uint32_t> fast) {
-  // Every pair with a fast particle, found from the fast one (from the smaller index when both are).
-  buildWideGrid();
-  const Real reach2 = reach_ * reach_;
-  for (std::uint32_t i : fast) {
-    const Vec3 p = start_[i];
-    wide_.forEachNearBucket(p, [&](std::uint32_t, std::uint32_t first, std::uint32_t last) {
-      for (std::uint32_t f = first; f < last; ++f) {
-        if (distance2(p, wide_.position[f]) >= reach2) continue;
-        const std::uint32_t j = wide_.particle[f];
-        if (j == i || (fast_[j] && j < i) || neighbours(rest_[i], rest_[j], thickness_)) continue;
-        if (!tracked_[i] || !tracked_[j] || pathsMeet(i, j)) pairs_.emplace_back(std::min(i, j), std::max(i, j));
-      }
-    });
-  }
-}
-
 void SelfCollision::buildPairs(std::span<const Vec3> x, std::span<const Vec3> rest, Real thickness, Real reach,
-                               std::span<const Vec3> v, Real dt) {
+                               bool nearList) {
   pairs_.clear();
-  promotions_ = 0;
-  wideBuilt_ = false;
-  anyTracked_ = false;
+  near_.clear();
+  framePairsBuilt_ = false;
+  nearThickness_ = 0.0;
+  skin_ = kSelfSkinFactor * thickness;
+  untracked_.assign(x.size(), 0);
+  untrackedPairs_.clear();
+  untrackedCount_ = 0;
+  nearList_ = nearList;
+  nearBuilds_ = fullSweeps_ = 0;
   start_.assign(x.begin(), x.end());
   rest_.assign(rest.begin(), rest.end());
   thickness_ = thickness;
   if (x.empty() || !(thickness > 0.0)) return;
-  const auto n = static_cast<std::uint32_t>(x.size());
   reach_ = std::max(reach, thickness);
-  skin_ = kSelfSkinFactor * thickness;
-  dt_ = std::max(dt, 0.0);
-  // Tracking gains nothing when the meeting distance reaches the reach: then every particle is untracked.
-  anyTracked_ = v.size() == n && thickness + 2.0 * skin_ < reach_;
-  tracked_.assign(n, anyTracked_ ? 1 : 0);
-  velocity_.assign(n, Vec3(0.0));
-  if (anyTracked_) velocity_.assign(v.begin(), v.end());
-  strayed_.assign(n, 0.0);
-  moved_.assign(n, 0.0);
-  fast_.assign(n, 1);
-  slow_.clear();
-  fastList_.clear();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    fast_[i] = !anyTracked_ || glm::length(velocity_[i]) * dt_ > skin_ ? 1 : 0;
-    (fast_[i] ? fastList_ : slow_).push_back(i);
-  }
-  if (!slow_.empty()) collectSlowPairs(slow_);
-  if (!fastList_.empty()) collectFastPairs(fastList_);
-  sortPairs(pairs_);
+  // The grid of TMP's query (cells of the reach at the frame's start): it lists F, or a particle's pairs.
+  wide_.build(start_, {}, reach_);
+  away_.assign(x.size(), 0.0);
+  moved_.assign(x.size(), 0.0);
+  if (!nearList) buildFramePairs();
 }
 
-void SelfCollision::sortPairs(std::vector<Pair>& pairs) {
+[[gnu::always_inline]] inline bool SelfCollision::inFrame(std::uint32_t i, std::uint32_t j) const {
+  return distance2(start_[i], start_[j]) < reach_ * reach_ && !neighbours(rest_[i], rest_[j], thickness_);
+}
+
+void SelfCollision::framePairsOf(std::uint32_t k, std::vector<std::uint64_t>& out) const {
+  const Real reach2 = reach_ * reach_;
+  const Vec3 p = start_[k];
+  wide_.forEachNearBucket(p, [&](std::uint32_t, std::uint32_t first, std::uint32_t last) {
+    for (std::uint32_t f = first; f < last; ++f) {
+      if (distance2(p, wide_.position[f]) >= reach2) continue;
+      const std::uint32_t j = wide_.particle[f];
+      if (j != k && !neighbours(rest_[k], rest_[j], thickness_)) out.push_back(key(std::min(k, j), std::max(k, j)));
+    }
+  });
+}
+
+void SelfCollision::sortKeys(std::vector<std::uint64_t>& keys) {
+  // Counting sort by i (the high half), then each row by j, without repeats.
   const std::size_t n = start_.size();
-  rowCount_.assign(n + 1, 0);
-  for (const Pair& p : pairs) ++rowCount_[p.first + 1];
-  for (std::size_t i = 0; i < n; ++i) rowCount_[i + 1] += rowCount_[i];
-  scratch_.resize(pairs.size());
-  for (const Pair& p : pairs) scratch_[rowCount_[p.first]++] = p;
-  // rowCount_[i] is now the end of row i, the start of row i + 1.
+  rowEnd_.assign(n + 1, 0);
+  for (const std::uint64_t q : keys) ++rowEnd_[(q >> 32) + 1];
+  for (std::size_t i = 0; i < n; ++i) rowEnd_[i + 1] += rowEnd_[i];
+  byRow_.resize(keys.size());
+  for (const std::uint64_t q : keys) byRow_[rowEnd_[q >> 32]++] = q;
   std::size_t begin = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t end = rowCount_[i];
+    const std::size_t end = rowEnd_[i];
     if (end - begin > 1) {
-      std::sort(scratch_.begin() + static_cast<std::ptrdiff_t>(begin),
-                scratch_.begin() + static_cast<std::ptrdiff_t>(end));
+      std::sort(byRow_.begin() + static_cast<std::ptrdiff_t>(begin), byRow_.begin() + static_cast<std::ptrdiff_t>(end));
     }
     begin = end;
   }
-  pairs.swap(scratch_);
+  byRow_.erase(std::unique(byRow_.begin(), byRow_.end()), byRow_.end());
+  keys.swap(byRow_);
 }
 
-void SelfCollision::promote(std::span<const std::uint32_t> particles) {
-  buildWideGrid();
-  // A pair of F of a tracked particle k is in the list already when its partner is untracked or when their
-  // paths meet; the others join. tracked_ changes only after the whole batch, so a pair of two untracked
-  // particles is found twice and kept once.
-  scratch_.clear();
+void SelfCollision::buildFramePairs() {
+  // TMP's query: every particle i asks the 27 cells around it for particles j > i. The grid holds the
+  // positions in cell order and each cell's particles in increasing index, so the j > i of a cell are the
+  // tail of its range and their positions are read in sequence.
+  pairs_.clear();
   const Real reach2 = reach_ * reach_;
-  for (std::uint32_t k : particles) {
-    if (!tracked_[k]) continue;
-    const Vec3 p = start_[k];
+  for (std::uint32_t i = 0; i < start_.size(); ++i) {
+    const Vec3 p = start_[i];
+    const std::size_t rowBegin = pairs_.size();
     wide_.forEachNearBucket(p, [&](std::uint32_t, std::uint32_t first, std::uint32_t last) {
-      for (std::uint32_t f = first; f < last; ++f) {
+      const auto begin = wide_.particle.begin();
+      for (auto f = static_cast<std::uint32_t>(std::upper_bound(begin + first, begin + last, i) - begin); f < last;
+           ++f) {
         if (distance2(p, wide_.position[f]) >= reach2) continue;
         const std::uint32_t j = wide_.particle[f];
-        if (j == k || !tracked_[j] || neighbours(rest_[k], rest_[j], thickness_) || pathsMeet(k, j)) continue;
-        scratch_.emplace_back(std::min(k, j), std::max(k, j));
+        if (!neighbours(rest_[i], rest_[j], thickness_)) pairs_.push_back(key(i, j));
       }
     });
+    std::sort(pairs_.begin() + static_cast<std::ptrdiff_t>(rowBegin), pairs_.end());
   }
-  for (std::uint32_t k : particles) {
-    if (tracked_[k]) ++promotions_;
-    tracked_[k] = 0;
-  }
-  std::sort(scratch_.begin(), scratch_.end());
-  scratch_.erase(std::unique(scratch_.begin(), scratch_.end()), scratch_.end());
-  merged_.resize(pairs_.size() + scratch_.size());
-  std::merge(pairs_.begin(), pairs_.end(), scratch_.begin(), scratch_.end(), merged_.begin());
-  pairs_.swap(merged_);
+  framePairsBuilt_ = true;
 }
 
-SelfCollisionStats SelfCollision::sweep(std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> w,
+void SelfCollision::buildNearList(std::span<const Vec3> x) {
+  // The pairs of F closer than thickness + s now, found in cells of that size, with every pair of F of an
+  // untracked particle; in F's order.
+  const Real near = thickness_ + skin_;
+  const Real near2 = near * near;
+  near_.clear();
+  narrow_.build(x, near);
+  narrow_.forEachNearPair([&](std::uint32_t e, std::uint32_t f) __attribute__((always_inline)) {
+    if (distance2(narrow_.position[e], narrow_.position[f]) >= near2) return;
+    const std::uint32_t i = narrow_.particle[e], j = narrow_.particle[f];
+    if (inFrame(i, j)) near_.push_back(key(std::min(i, j), std::max(i, j)));
+  });
+  sortKeys(near_);
+  if (!untrackedPairs_.empty()) {
+    merged_.clear();
+    std::set_union(near_.begin(), near_.end(), untrackedPairs_.begin(), untrackedPairs_.end(),
+                   std::back_inserter(merged_));
+    near_.swap(merged_);
+  }
+  builtAt_.assign(x.begin(), x.end());
+  nearThickness_ = thickness_;
+  ++nearBuilds_;
+}
+
+void SelfCollision::untrack(std::span<const std::uint32_t> particles) {
+  added_.clear();
+  for (std::uint32_t k : particles) {
+    if (untracked_[k]) continue;
+    untracked_[k] = 1;
+    ++untrackedCount_;
+    framePairsOf(k, added_);
+  }
+  sortKeys(added_);
+  for (std::vector<std::uint64_t>* list : {&untrackedPairs_, &near_}) {
+    merged_.clear();
+    std::set_union(list->begin(), list->end(), added_.begin(), added_.end(), std::back_inserter(merged_));
+    list->swap(merged_);
+  }
+}
+
+SelfCollisionStats SelfCollision::sweep(std::span<const std::uint64_t> pairs, std::span<Vec3> x,
+                                        std::span<const Vec3> xPrev, std::span<const Real> w, Real thickness,
                                         Real friction, bool track) {
   SelfCollisionStats stats;
-  const Real thickness2 = thickness_ * thickness_;
-  for (const auto& [i, j] : pairs_) {
+  const Real thickness2 = thickness * thickness;
+  for (const std::uint64_t pair : pairs) {
+    const auto i = static_cast<std::uint32_t>(pair >> 32), j = static_cast<std::uint32_t>(pair);
     const Vec3 d = x[i] - x[j];
     const Real dist2 = glm::dot(d, d);
     if (dist2 >= thickness2 || dist2 == 0.0) continue;
@@ -174,7 +156,7 @@ SelfCollisionStats SelfCollision::sweep(std::span<Vec3> x, std::span<const Vec3>
     if (wSum == 0.0) continue;
     const Vec3 oldI = x[i], oldJ = x[j];
     const Real dist = std::sqrt(dist2);
-    const Real overlap = thickness_ - dist;
+    const Real overlap = thickness - dist;
     stats.deepest = std::max(stats.deepest, overlap);
     ++stats.contacts;
     const Vec3 correction = (overlap / dist) * d;
@@ -186,50 +168,59 @@ SelfCollisionStats SelfCollision::sweep(std::span<Vec3> x, std::span<const Vec3>
     if (w[i] > 0.0) x[i] += friction * (mean - di);
     if (w[j] > 0.0) x[j] += friction * (mean - dj);
     if (track) {
-      undo_.push_back({i, oldI});
-      undo_.push_back({j, oldJ});
-      moved_[i] += taxicab(x[i] - oldI);
-      moved_[j] += taxicab(x[j] - oldJ);
+      undo_[undone_++] = {i, oldI};
+      undo_[undone_++] = {j, oldJ};
+      moved_[i] += glm::length(x[i] - oldI);
+      moved_[j] += glm::length(x[j] - oldJ);
     }
   }
   return stats;
 }
 
+void SelfCollision::undo(std::span<Vec3> x) {
+  for (std::size_t u = undone_; u-- > 0;) x[undo_[u].particle] = undo_[u].position;
+}
+
 SelfCollisionStats SelfCollision::solve(std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> w,
-                                        Real thickness, Real friction, Real time) {
+                                        Real thickness, Real friction) {
   if (x.size() != start_.size() || x.empty() || thickness != thickness_) return {};
-  if (!anyTracked_) return sweep(x, xPrev, w, friction, false);
-  const auto n = static_cast<std::uint32_t>(x.size());
-  stray_.clear();
-  if (!(time >= 0.0 && time <= dt_ * (1.0 + 1e-9))) {  // outside the frame the paths say nothing
-    for (std::uint32_t i = 0; i < n; ++i) stray_.push_back(i);
-    promote(stray_);
-    anyTracked_ = false;
-    return sweep(x, xPrev, w, friction, false);
+  if (!nearList_) {
+    if (!framePairsBuilt_) buildFramePairs();
+    ++fullSweeps_;
+    return sweep(pairs_, x, xPrev, w, thickness, friction, false);
   }
-  // How far a tracked particle may stray from its path: the skin, less a margin far above round-off.
-  const Real budget = skin_ - 1e-6 * thickness_;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!tracked_[i]) continue;
-    strayed_[i] = glm::length(x[i] - (start_[i] + time * velocity_[i]));
-    if (strayed_[i] > budget) stray_.push_back(i);
+  // How far a tracked particle may go from where it was at the build: half the skin, less a margin far
+  // above round-off (a pair of F left out was ≥ thickness + skin apart).
+  const Real budget = 0.5 * skin_ - 1e-6 * thickness;
+  far_.clear();
+  if (nearThickness_ == thickness) {
+    for (std::uint32_t i = 0; i < x.size(); ++i) {
+      if (untracked_[i]) continue;
+      away_[i] = std::sqrt(distance2(x[i], builtAt_[i]));
+      if (away_[i] > budget) far_.push_back(i);
+    }
   }
-  if (!stray_.empty()) promote(stray_);
+  // Many particles went too far (or there is no list yet): a new list; a few: they are untracked.
+  if (nearThickness_ != thickness || static_cast<Real>(far_.size()) > kSelfRebuildShare * static_cast<Real>(x.size())) {
+    buildNearList(x);
+    std::fill(away_.begin(), away_.end(), 0.0);
+  } else if (!far_.empty()) {
+    untrack(far_);
+  }
   for (;;) {
-    undo_.clear();
-    const SelfCollisionStats stats = sweep(x, xPrev, w, friction, true);
-    stray_.clear();
-    for (const Undo& u : undo_) {
-      const std::uint32_t k = u.particle;  // a particle listed twice is judged at its first entry
-      if (tracked_[k] && strayed_[k] + moved_[k] > budget) stray_.push_back(k);
+    undone_ = 0;
+    if (undo_.size() < 2 * near_.size()) undo_.resize(2 * near_.size());
+    const SelfCollisionStats stats = sweep(near_, x, xPrev, w, thickness, friction, true);
+    far_.clear();
+    for (std::size_t u = 0; u < undone_; ++u) {
+      const std::uint32_t k = undo_[u].particle;  // a particle listed twice is judged at its first entry
+      if (!untracked_[k] && away_[k] + moved_[k] > budget) far_.push_back(k);
       moved_[k] = 0.0;
     }
-    if (stray_.empty()) return stats;
-    // A tracked particle strayed during the sweep: undo it, let the particle's pairs in, sweep again.
-    for (auto u = undo_.rbegin(); u != undo_.rend(); ++u) x[u->particle] = u->position;
-    std::sort(stray_.begin(), stray_.end());
-    stray_.erase(std::unique(stray_.begin(), stray_.end()), stray_.end());
-    promote(stray_);
+    if (far_.empty()) return stats;
+    // A tracked particle went too far during the sweep: undo it, let its pairs in, sweep again.
+    undo(x);
+    untrack(far_);
   }
 }
 

@@ -112,7 +112,6 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
   for (std::size_t k = 0; k < cloth.pins.size(); ++k) pinStart_[k] = cloth.position[cloth.pins[k].particle];
   for (int k = 0; k < n; ++k) {
     const Real fraction = static_cast<Real>(k + 1) / n;
-    substepEnd_ = (k + 1) * h;
     const Real time = t + k * h;
     switch (s.kind) {
       case ClothSolverKind::Explicit:
@@ -161,8 +160,7 @@ void ClothSolver::beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s,
     for (const Vec3& v : cloth.velocity) fastest = std::max(fastest, glm::length(v));
     reach += 2.0 * (fastest + glm::length(Vec3(0.0, kStandardGravity, 0.0)) * dt) * dt;
   }
-  self_.buildPairs(cloth.position, cloth.restPosition, thickness, reach,
-                   s.selfCollisionSubList ? std::span<const Vec3>(cloth.velocity) : std::span<const Vec3>(), dt);
+  self_.buildPairs(cloth.position, cloth.restPosition, thickness, reach, s.selfCollisionNearList);
 }
 
 void ClothSolver::explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
@@ -190,10 +188,8 @@ void ClothSolver::endSubstep(Cloth& cloth, std::span<const Collider> colliders, 
   if (s.selfCollision) {
     if (velocityLevel) beforeSelf_ = cloth.position;
     for (int sweep = 0; sweep < std::max(1, s.selfCollisionSweeps); ++sweep) {
-      const std::size_t contacts = self_
-                                       .solve(cloth.position, previous_, cloth.inverseMass, cloth.material.thickness,
-                                              s.selfFriction, substepEnd_)
-                                       .contacts;
+      const std::size_t contacts =
+          self_.solve(cloth.position, previous_, cloth.inverseMass, cloth.material.thickness, s.selfFriction).contacts;
       if (sweep == 0) stats.selfContacts = contacts;
     }
     if (velocityLevel) {

@@ -54,9 +54,9 @@ struct ClothSolverSettings {
   /// It bounds how far a particle travels in a frame, so the pair list of the frame stays complete.
   Real selfCollisionMaxTravel = 0.2;
   int selfCollisionSweeps = 1;  ///< Gauss–Seidel sweeps over the self-collision pairs per substep (TMP: 1)
-  /// Sweep only the sub-list of the frame's pairs that can come into contact (self_collision.h: same result,
-  /// bit for bit); false sweeps all of them (the reference the tests compare with).
-  bool selfCollisionSubList = true;
+  /// Sweep only the near list of the frame's pairs (self_collision.h: the same result, bit for bit); false
+  /// sweeps all of them (the reference the tests compare with).
+  bool selfCollisionNearList = true;
   TearSettings tearing;
 };
 Status validate(const ClothSolverSettings& s);
@@ -109,7 +109,6 @@ class ClothSolver {
   SelfCollision self_;
   std::vector<Vec3> previous_, force_, beforeSelf_, pinStart_;
   std::vector<Real> lambda_, bendLinkLambda_;
-  Real substepEnd_ = 0.0;  ///< [s] since the start of the step, at the end of the current substep
   std::vector<Vec3> bendLambda_;
 };
 

@@ -19,7 +19,7 @@ void SortedGrid::build(std::span<const Vec3> x, std::span<const std::uint32_t> w
   start_.assign(table + 1, 0);
   bucketOfInput_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    bucketOfInput_[k] = bucket(x[input(k)], 0, 0, 0);
+    bucketOfInput_[k] = bucketAt(x[input(k)]);
     ++start_[bucketOfInput_[k] + 1];
   }
   for (std::size_t b = 0; b < table; ++b) start_[b + 1] += start_[b];
@@ -32,10 +32,6 @@ void SortedGrid::build(std::span<const Vec3> x, std::span<const std::uint32_t> w
     particle[e] = input(k);
     position[e] = x[input(k)];
     bucketOfEntry_[e] = bucketOfInput_[k];
-  }
-  if (visited_.size() != table) {
-    visited_.assign(table, 0u);
-    query_ = 0;
   }
 }
 

@@ -4,6 +4,8 @@
 // particles/spatial_hash.h), filled by counting sort, and each particle's position copied in that order.
 // A query visits the 27 cells around a point as ranges of entries; a pair search visits every pair once by
 // reading, from entry e of bucket b, only buckets after b and the entries after e in b itself.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -22,45 +24,54 @@ class SortedGrid {
   /// of entries [first, last).
   template <typename Visit>
   void forEachNearBucket(const Vec3& p, Visit&& visit) const;
-  /// The bucket of entry e.
+  /// The bucket of entry e, and the bucket of the cell holding p.
   std::uint32_t bucketOfEntry(std::uint32_t e) const { return bucketOfEntry_[e]; }
+  std::uint32_t bucketAt(const Vec3& p) const;
 
   std::vector<std::uint32_t> particle;  ///< entry → particle index
   std::vector<Vec3> position;           ///< entry → position [m]
 
  private:
-  std::uint32_t bucket(const Vec3& p, int di, int dj, int dk) const;
+  std::uint32_t bucket(std::int64_t i, std::int64_t j, std::int64_t k) const;
   Real inverseCell_ = 1.0;
   unsigned shift_ = 58;
   std::vector<std::uint32_t> start_;  ///< table size + 1 prefix sums
   std::vector<std::uint32_t> bucketOfEntry_, fill_, bucketOfInput_;
-  // Buckets visited by the current query: bucket b was when visited_[b] == query_ (two cells may share one).
-  mutable std::vector<std::uint32_t> visited_;
-  mutable std::uint32_t query_ = 0;
 };
 
-inline std::uint32_t SortedGrid::bucket(const Vec3& p, int di, int dj, int dk) const {
-  const auto i = static_cast<std::int64_t>(std::floor(p.x * inverseCell_)) + di;
-  const auto j = static_cast<std::int64_t>(std::floor(p.y * inverseCell_)) + dj;
-  const auto k = static_cast<std::int64_t>(std::floor(p.z * inverseCell_)) + dk;
+inline std::uint32_t SortedGrid::bucket(std::int64_t i, std::int64_t j, std::int64_t k) const {
   const auto h = static_cast<std::uint64_t>(i * 73856093) ^ static_cast<std::uint64_t>(j * 19349663) ^
                  static_cast<std::uint64_t>(k * 83492791);
   return static_cast<std::uint32_t>((h * 0x9E3779B97F4A7C15ull) >> shift_);
 }
 
+inline std::uint32_t SortedGrid::bucketAt(const Vec3& p) const {
+  return bucket(static_cast<std::int64_t>(std::floor(p.x * inverseCell_)),
+                static_cast<std::int64_t>(std::floor(p.y * inverseCell_)),
+                static_cast<std::int64_t>(std::floor(p.z * inverseCell_)));
+}
+
 template <typename Visit>
 void SortedGrid::forEachNearBucket(const Vec3& p, Visit&& visit) const {
   if (start_.empty()) return;
-  if (++query_ == 0) {
-    std::fill(visited_.begin(), visited_.end(), 0u);
-    query_ = 1;
-  }
-  for (int di = -1; di <= 1; ++di)
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int dk = -1; dk <= 1; ++dk) {
-        const std::uint32_t b = bucket(p, di, dj, dk);
-        if (visited_[b] == query_) continue;
-        visited_[b] = query_;
+  const auto ci = static_cast<std::int64_t>(std::floor(p.x * inverseCell_));
+  const auto cj = static_cast<std::int64_t>(std::floor(p.y * inverseCell_));
+  const auto ck = static_cast<std::int64_t>(std::floor(p.z * inverseCell_));
+  // Two of the 27 cells may share a bucket: each bucket is visited once. A 64-bit mask of the buckets'
+  // low bits answers "surely new" for most; the rest are compared with the buckets seen so far.
+  std::array<std::uint32_t, 27> seen;
+  std::size_t count = 0;
+  std::uint64_t mask = 0;
+  for (std::int64_t di = -1; di <= 1; ++di)
+    for (std::int64_t dj = -1; dj <= 1; ++dj)
+      for (std::int64_t dk = -1; dk <= 1; ++dk) {
+        const std::uint32_t b = bucket(ci + di, cj + dj, ck + dk);
+        const std::uint64_t bit = std::uint64_t{1} << (b & 63u);
+        if ((mask & bit) && std::find(seen.begin(), seen.begin() + static_cast<std::ptrdiff_t>(count), b) !=
+                                seen.begin() + static_cast<std::ptrdiff_t>(count))
+          continue;
+        mask |= bit;
+        seen[count++] = b;
         if (start_[b] != start_[b + 1]) visit(b, start_[b], start_[b + 1]);
       }
 }

@@ -1,7 +1,7 @@
-// Self-collision's sub-list (self_collision.h): sweeping only the pairs that can come into contact gives the
-// positions of sweeping every pair of the frame, bit for bit, including when a "slow" particle strays and
-// the sweep is undone and run again. The reference is the same class with every particle fast (the whole
-// frame list). No exercise code: pair sweeps and the explicit mass-spring solver only.
+// Self-collision's near list (self_collision.h): sweeping only the pairs that can come into contact gives
+// the positions of sweeping every pair of the frame, bit for bit, including when a particle goes too far
+// and the list is rebuilt or the sweep undone and run again. The reference is the same class sweeping the
+// whole frame list. No exercise code: pair sweeps and the explicit mass-spring solver only.
 #include <cstring>
 #include <random>
 #include <vector>
@@ -35,65 +35,64 @@ Cluster randomCluster(std::uint32_t seed, int n) {
   return c;
 }
 
-TEST(SelfCollision, SubListSweepsEqualFullSweepsWhileParticlesStray) {
-  // Every particle starts at rest (its path: staying where it is); then each substep moves them by up to
-  // 0.9 cm, far past the skin, so they are untracked during the sweeps: before (measured) and inside (undo
-  // and sweep again).
+TEST(SelfCollision, NearListSweepsEqualFullSweepsWhileParticlesMove) {
+  // Each substep moves the free particles by up to 0.5 cm along each axis, past the skin, so the near list
+  // is rebuilt before sweeps and, when contacts push particles far, undone and swept again.
   const Real thickness = 0.01, reach = 0.03;
+  std::size_t rebuilds = 0;
   for (std::uint32_t seed = 1; seed <= 20; ++seed) {
     Cluster a = randomCluster(seed, 120);
     Cluster b = a;
-    SelfCollision sub, full;
-    const std::vector<Vec3> still(a.x.size(), Vec3(0.0));
-    sub.buildPairs(a.x, a.rest, thickness, reach, still, 0.1);
-    full.buildPairs(b.x, b.rest, thickness, reach);
-    EXPECT_LT(sub.pairs(), full.pairs()) << "seed " << seed;
+    SelfCollision near, full;
+    near.buildPairs(a.x, a.rest, thickness, reach);
+    full.buildPairs(b.x, b.rest, thickness, reach, false);
     std::mt19937 rng(seed + 100);
     std::uniform_real_distribution<Real> kick(-0.005, 0.005);
     for (int substep = 0; substep < 6; ++substep) {
       const std::vector<Vec3> previous = a.x;
+      const Real scale = substep % 2 == 0 ? 1.0 : 0.05;  // some small steps, which keep the list
       for (std::size_t i = 0; i < a.x.size(); ++i) {
         if (a.w[i] == 0.0) continue;
-        const Vec3 k(kick(rng), kick(rng), kick(rng));
+        const Vec3 k(scale * kick(rng), scale * kick(rng), scale * kick(rng));
         a.x[i] += k;
         b.x[i] += k;
       }
-      const SelfCollisionStats sa = sub.solve(a.x, previous, a.w, thickness, 0.1, 0.01 * substep);
-      const SelfCollisionStats sb = full.solve(b.x, previous, b.w, thickness, 0.1, 0.01 * substep);
+      const SelfCollisionStats sa = near.solve(a.x, previous, a.w, thickness, 0.1);
+      const SelfCollisionStats sb = full.solve(b.x, previous, b.w, thickness, 0.1);
       ASSERT_TRUE(sameBits(a.x, b.x)) << "seed " << seed << ", substep " << substep;
       EXPECT_EQ(sa.contacts, sb.contacts);
       EXPECT_EQ(sa.deepest, sb.deepest);
+      EXPECT_LT(near.nearPairs(), full.framePairs());
     }
-    EXPECT_GT(sub.promotions(), 0u) << "seed " << seed;
+    rebuilds += near.nearBuilds();
   }
+  EXPECT_GT(rebuilds, 20u * 3u);  // the moves did force rebuilds
 }
 
 TEST(SelfCollision, ParticlesPushedFarWithinOneSweepBringTheirPairsIn) {
-  // Free particles 2 and 3 start 2.945 cm apart (beyond thickness + 2 skins = 2 cm, so their pair is not
-  // in the sub-list) and each overlaps a pinned particle (0, 1) almost completely: the sweep pushes them
-  // 0.985 cm towards each other, into contact, which only the undone and repeated sweep sees.
+  // Free particles 2 and 3 are 2.945 cm apart when the near list is built (beyond thickness + skin =
+  // 1.5 cm, so their pair is left out) and each overlaps a pinned particle (0, 1) almost completely: the
+  // sweep pushes them 0.985 cm towards each other, into contact, which only the repeated sweep sees.
   const Real thickness = 0.01;
   std::vector<Vec3> x{{0.0, 0.0, 0.0}, {0.0, 0.02975, 0.0}, {0.0, 0.00015, 0.0}, {0.0, 0.0296, 0.0}};
   const std::vector<Vec3> rest{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {2.0, 0.0, 0.0}, {3.0, 0.0, 0.0}};
   const std::vector<Real> w{0.0, 0.0, 1.0, 1.0};
   std::vector<Vec3> y = x;
-  SelfCollision sub, full;
-  const std::vector<Vec3> still(x.size(), Vec3(0.0));
-  sub.buildPairs(x, rest, thickness, 0.03, still, 1.0 / 60.0);
-  full.buildPairs(y, rest, thickness, 0.03);
-  EXPECT_EQ(sub.pairs(), 2u);   // (0, 2) and (1, 3)
-  EXPECT_EQ(full.pairs(), 6u);  // every pair is within the reach
+  SelfCollision near, full;
+  near.buildPairs(x, rest, thickness, 0.03);
+  full.buildPairs(y, rest, thickness, 0.03, false);
+  EXPECT_EQ(full.framePairs(), 6u);  // every pair is within the reach
   const std::vector<Vec3> previous = x;
-  const SelfCollisionStats s = sub.solve(x, previous, w, thickness, 0.0, 1.0 / 600.0);
-  const SelfCollisionStats reference = full.solve(y, previous, w, thickness, 0.0, 1.0 / 600.0);
+  const SelfCollisionStats s = near.solve(x, previous, w, thickness, 0.0);
+  const SelfCollisionStats reference = full.solve(y, previous, w, thickness, 0.0);
   EXPECT_EQ(reference.contacts, 3u);  // (0, 2), (1, 3), then (2, 3)
   EXPECT_EQ(s.contacts, 3u);
-  EXPECT_EQ(sub.promotions(), 2u);
+  EXPECT_EQ(near.untracked(), 2u);  // 2 and 3 went too far inside the sweep: their pairs joined the list
   EXPECT_TRUE(sameBits(x, y));
   EXPECT_LT(x[2].y, 0.01);  // pushed back down by particle 3
 }
 
-TEST(SelfCollision, SubListGivesTheSolversPositionsBitForBit) {
+TEST(SelfCollision, NearListGivesTheSolversPositionsBitForBit) {
   // The two-sheet scene of AFallingSheetNeverPassesThroughAPinnedOne, shorter, through the whole solver.
   const Real spacing = 0.02;
   GridDesc d;
@@ -120,7 +119,7 @@ TEST(SelfCollision, SubListGivesTheSolversPositionsBitForBit) {
   s.substeps = 80;
   s.selfCollision = true;
   ClothSolverSettings reference = s;
-  reference.selfCollisionSubList = false;
+  reference.selfCollisionNearList = false;
   ClothSolver solverA, solverB;
   Real t = 0.0;
   for (int f = 0; f < 45; ++f) {
@@ -130,7 +129,7 @@ TEST(SelfCollision, SubListGivesTheSolversPositionsBitForBit) {
     ASSERT_TRUE(sameBits(a.position, b.position)) << "frame " << f;
     ASSERT_TRUE(sameBits(a.velocity, b.velocity)) << "frame " << f;
   }
-  EXPECT_LT(solverA.selfCollision().pairs(), solverB.selfCollision().pairs());
+  EXPECT_LT(solverA.selfCollision().nearPairs(), solverB.selfCollision().framePairs());
 }
 
 }  // namespace
