@@ -43,7 +43,7 @@ namespace pba::cloth {
 /// Rest distance [in thicknesses] below which two particles are neighbours, not candidates.
 inline constexpr Real kSelfNeighbourFactor = 1.5;
 /// The near list's skin s [in thicknesses]: a shorter list against more rebuilds.
-inline constexpr Real kSelfSkinFactor = 0.5;
+inline constexpr Real kSelfSkinFactor = 0.75;
 /// When more than this share of the particles went too far before a sweep, the near list is rebuilt;
 /// fewer are untracked instead.
 inline constexpr Real kSelfRebuildShare = 0.02;
