@@ -263,7 +263,7 @@ void BM_XpbdRibbonSelfCollision(benchmark::State& state) {
     solver.step(c, env, floor, s, kFrame, t);
     t += kFrame;
   }
-  const char* mode = !s.selfCollision ? "without self-collision"
+  const char* mode = !s.selfCollision          ? "without self-collision"
                      : s.selfCollisionNearList ? "with self-collision (near list)"
                                                : "with self-collision (every pair of the frame, the reference)";
   state.SetLabel(std::string(mode) + ", max stretch " + percent(edgeStrain(c).max) + " at the end");

@@ -36,11 +36,44 @@ void SelfCollision::buildPairs(std::span<const Vec3> x, std::span<const Vec3> re
   thickness_ = thickness;
   if (x.empty() || !(thickness > 0.0)) return;
   reach_ = std::max(reach, thickness);
-  // The grid of TMP's query (cells of the reach at the frame's start): it lists F, or a particle's pairs.
+  // The grid of TMP's query (cells of the reach at the frame's start): it lists F, or a particle's pairs,
+  // and orders them. A query visits its 27 cells in turn but a bucket only once: where two of them share a
+  // bucket (rare), the rank of a cell is that of the first.
   wide_.build(start_, {}, reach_);
+  cell_.resize(x.size());
+  bucket_.resize(x.size());
+  shared_.assign(x.size(), 0);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    cell_[i] = wide_.cellAt(start_[i]);
+    bucket_[i] = wide_.bucketNear(cell_[i], 0, 0, 0);
+    std::array<std::uint32_t, 27> b{};
+    int o = 0;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int dk = -1; dk <= 1; ++dk) b[o++] = wide_.bucketNear(cell_[i], di, dj, dk);
+    std::sort(b.begin(), b.end());
+    shared_[i] = std::adjacent_find(b.begin(), b.end()) != b.end() ? 1 : 0;
+  }
   away_.assign(x.size(), 0.0);
   moved_.assign(x.size(), 0.0);
   if (!nearList) buildFramePairs();
+}
+
+std::uint64_t SelfCollision::key(std::uint32_t i, std::uint32_t j) const {
+  const auto& ci = cell_[i];
+  const auto& cj = cell_[j];
+  std::uint32_t rank =
+      static_cast<std::uint32_t>((cj[0] - ci[0] + 1) * 9 + (cj[1] - ci[1] + 1) * 3 + (cj[2] - ci[2] + 1));
+  if (shared_[i]) {  // the first of the 27 cells with j's bucket
+    rank = 0;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int dk = -1; dk <= 1; ++dk, ++rank) {
+          if (wide_.bucketNear(ci, di, dj, dk) == bucket_[j])
+            return std::uint64_t{i} << 37 | std::uint64_t{rank} << 32 | j;
+        }
+  }
+  return std::uint64_t{i} << 37 | std::uint64_t{rank} << 32 | j;
 }
 
 [[gnu::always_inline]] inline bool SelfCollision::inFrame(std::uint32_t i, std::uint32_t j) const {
@@ -60,13 +93,13 @@ void SelfCollision::framePairsOf(std::uint32_t k, std::vector<std::uint64_t>& ou
 }
 
 void SelfCollision::sortKeys(std::vector<std::uint64_t>& keys) {
-  // Counting sort by i (the high half), then each row by j, without repeats.
+  // Counting sort by i, then each row by (rank, j), without repeats.
   const std::size_t n = start_.size();
   rowEnd_.assign(n + 1, 0);
-  for (const std::uint64_t q : keys) ++rowEnd_[(q >> 32) + 1];
+  for (const std::uint64_t q : keys) ++rowEnd_[(q >> 37) + 1];
   for (std::size_t i = 0; i < n; ++i) rowEnd_[i + 1] += rowEnd_[i];
   byRow_.resize(keys.size());
-  for (const std::uint64_t q : keys) byRow_[rowEnd_[q >> 32]++] = q;
+  for (const std::uint64_t q : keys) byRow_[rowEnd_[q >> 37]++] = q;
   std::size_t begin = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t end = rowEnd_[i];
@@ -148,7 +181,7 @@ SelfCollisionStats SelfCollision::sweep(std::span<const std::uint64_t> pairs, st
   SelfCollisionStats stats;
   const Real thickness2 = thickness * thickness;
   for (const std::uint64_t pair : pairs) {
-    const auto i = static_cast<std::uint32_t>(pair >> 32), j = static_cast<std::uint32_t>(pair);
+    const auto i = static_cast<std::uint32_t>(pair >> 37), j = static_cast<std::uint32_t>(pair);
     const Vec3 d = x[i] - x[j];
     const Real dist2 = glm::dot(d, d);
     if (dist2 >= thickness2 || dist2 == 0.0) continue;

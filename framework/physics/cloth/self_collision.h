@@ -88,14 +88,18 @@ class SelfCollision {
   void framePairsOf(std::uint32_t k, std::vector<std::uint64_t>& out) const;
   /// Sorts keys, without repeats.
   void sortKeys(std::vector<std::uint64_t>& keys);
-  /// A pair's place in the order of the sweeps: by i, then by j (i < j).
-  static std::uint64_t key(std::uint32_t i, std::uint32_t j) { return std::uint64_t{i} << 32 | j; }
+  /// A pair's place in F's order (i < j): by i, then by the rank of j's cell among the 27 cells of i's query
+  /// (TMP's order: the cells in turn, each cell's particles by index), then by j.
+  std::uint64_t key(std::uint32_t i, std::uint32_t j) const;
   /// The pair (i, j) is in F: not neighbours at rest and closer than the reach at the start of the frame.
   bool inFrame(std::uint32_t i, std::uint32_t j) const;
   void undo(std::span<Vec3> x);
 
   SortedGrid wide_;                                    ///< cells of the reach at the frame's start: TMP's query
   DenseGrid narrow_;                                   ///< cells of thickness + s: the near list's search
+  std::vector<std::array<std::int64_t, 3>> cell_;      ///< per particle: its cell in wide_
+  std::vector<std::uint32_t> bucket_;                  ///< per particle: its bucket in wide_
+  std::vector<std::uint8_t> shared_;                   ///< per particle: two of its query's 27 cells share a bucket
   std::vector<std::uint64_t> pairs_;                   ///< F as keys (listed only when a sweep needs all of it)
   std::vector<std::uint64_t> near_;                    ///< the near list as keys, a subsequence of F
   std::vector<std::uint64_t> untrackedPairs_;          ///< the pairs of F of the untracked particles

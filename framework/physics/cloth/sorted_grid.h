@@ -27,6 +27,11 @@ class SortedGrid {
   /// The bucket of entry e, and the bucket of the cell holding p.
   std::uint32_t bucketOfEntry(std::uint32_t e) const { return bucketOfEntry_[e]; }
   std::uint32_t bucketAt(const Vec3& p) const;
+  /// The integer coordinates of the cell holding p, and the bucket of cell c + (di, dj, dk).
+  std::array<std::int64_t, 3> cellAt(const Vec3& p) const;
+  std::uint32_t bucketNear(const std::array<std::int64_t, 3>& c, int di, int dj, int dk) const {
+    return bucket(c[0] + di, c[1] + dj, c[2] + dk);
+  }
 
   std::vector<std::uint32_t> particle;  ///< entry → particle index
   std::vector<Vec3> position;           ///< entry → position [m]
@@ -43,6 +48,12 @@ inline std::uint32_t SortedGrid::bucket(std::int64_t i, std::int64_t j, std::int
   const auto h = static_cast<std::uint64_t>(i * 73856093) ^ static_cast<std::uint64_t>(j * 19349663) ^
                  static_cast<std::uint64_t>(k * 83492791);
   return static_cast<std::uint32_t>((h * 0x9E3779B97F4A7C15ull) >> shift_);
+}
+
+inline std::array<std::int64_t, 3> SortedGrid::cellAt(const Vec3& p) const {
+  return {static_cast<std::int64_t>(std::floor(p.x * inverseCell_)),
+          static_cast<std::int64_t>(std::floor(p.y * inverseCell_)),
+          static_cast<std::int64_t>(std::floor(p.z * inverseCell_))};
 }
 
 inline std::uint32_t SortedGrid::bucketAt(const Vec3& p) const {

@@ -55,9 +55,9 @@ void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::sp
   const Real scale = xpbd ? 1.0 : mode.pbdStiffness;
   for (std::size_t k = 0; k < links.size(); ++k) {
     const Link& l = links[k];
-    const DistanceCorrection c = xpbdDistanceCorrection(x[l.i], x[l.j], w[l.i], w[l.j], l.restLength,
-                                                        alphaTilde[static_cast<std::size_t>(l.kind)], 1.0,
-                                                        xpbd ? lambda[k] : 0.0);
+    const DistanceCorrection c =
+        xpbdDistanceCorrection(x[l.i], x[l.j], w[l.i], w[l.j], l.restLength,
+                               alphaTilde[static_cast<std::size_t>(l.kind)], 1.0, xpbd ? lambda[k] : 0.0);
     x[l.i] += scale * c.deltaI;
     x[l.j] += scale * c.deltaJ;
     lambda[k] += c.deltaLambda;
