@@ -26,12 +26,10 @@ void SortedGrid::build(std::span<const Vec3> x, std::span<const std::uint32_t> w
   fill_.assign(start_.begin(), start_.end() - 1);
   particle.resize(n);
   position.resize(n);
-  bucketOfEntry_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t e = fill_[bucketOfInput_[k]]++;
     particle[e] = input(k);
     position[e] = x[input(k)];
-    bucketOfEntry_[e] = bucketOfInput_[k];
   }
 }
 

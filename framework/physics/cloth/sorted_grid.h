@@ -1,9 +1,9 @@
 #pragma once
 // Particles sorted by the cell of a uniform grid, for pair searches that read positions in sequence: the
-// cells hashed into a power-of-two table (Teschner et al. 2003's hash, Fibonacci-hashed to the table as in
-// particles/spatial_hash.h), filled by counting sort, and each particle's position copied in that order.
-// A query visits the 27 cells around a point as ranges of entries; a pair search visits every pair once by
-// reading, from entry e of bucket b, only buckets after b and the entries after e in b itself.
+// cells hashed into a power-of-two table (Teschner et al. 2003's hash, Fibonacci-hashed to the table), filled
+// by counting sort, and each particle's position copied in that order. Table size, hash and the order of a
+// query's 27 cells are exactly those of particles::SpatialHash, so a query meets the particles in the same
+// order (self-collision's order of pairs depends on it); within a bucket, particles are by index.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,8 +24,7 @@ class SortedGrid {
   /// of entries [first, last).
   template <typename Visit>
   void forEachNearBucket(const Vec3& p, Visit&& visit) const;
-  /// The bucket of entry e, and the bucket of the cell holding p.
-  std::uint32_t bucketOfEntry(std::uint32_t e) const { return bucketOfEntry_[e]; }
+  /// The bucket of the cell holding p.
   std::uint32_t bucketAt(const Vec3& p) const;
   /// The integer coordinates of the cell holding p, and the bucket of cell c + (di, dj, dk).
   std::array<std::int64_t, 3> cellAt(const Vec3& p) const;
@@ -41,7 +40,7 @@ class SortedGrid {
   Real inverseCell_ = 1.0;
   unsigned shift_ = 58;
   std::vector<std::uint32_t> start_;  ///< table size + 1 prefix sums
-  std::vector<std::uint32_t> bucketOfEntry_, fill_, bucketOfInput_;
+  std::vector<std::uint32_t> fill_, bucketOfInput_;
 };
 
 inline std::uint32_t SortedGrid::bucket(std::int64_t i, std::int64_t j, std::int64_t k) const {
