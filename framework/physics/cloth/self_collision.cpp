@@ -216,7 +216,7 @@ void SelfCollision::undo(std::span<Vec3> x) {
 
 SelfCollisionStats SelfCollision::solve(std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> w,
                                         Real thickness, Real friction) {
-  if (x.size() != start_.size() || x.empty() || thickness != thickness_) return {};
+  if (x.size() != start_.size() || x.empty() || !(thickness_ > 0.0) || thickness != thickness_) return {};
   if (!nearList_) {
     if (!framePairsBuilt_) buildFramePairs();
     ++fullSweeps_;
