@@ -160,7 +160,7 @@ void ClothSolver::beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s,
     for (const Vec3& v : cloth.velocity) fastest = std::max(fastest, glm::length(v));
     reach += 2.0 * (fastest + glm::length(Vec3(0.0, kStandardGravity, 0.0)) * dt) * dt;
   }
-  self_.buildPairs(cloth.position, cloth.restPosition, thickness, reach);
+  self_.buildPairs(cloth.position, cloth.restPosition, thickness, reach, s.selfCollisionNearList);
 }
 
 void ClothSolver::explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,

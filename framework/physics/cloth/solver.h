@@ -54,6 +54,9 @@ struct ClothSolverSettings {
   /// It bounds how far a particle travels in a frame, so the pair list of the frame stays complete.
   Real selfCollisionMaxTravel = 0.2;
   int selfCollisionSweeps = 1;  ///< Gauss–Seidel sweeps over the self-collision pairs per substep (TMP: 1)
+  /// Sweep only the near list of the frame's pairs (self_collision.h: the same result, bit for bit); false
+  /// sweeps all of them (the reference the tests compare with).
+  bool selfCollisionNearList = true;
   TearSettings tearing;
 };
 Status validate(const ClothSolverSettings& s);

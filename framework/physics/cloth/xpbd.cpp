@@ -43,16 +43,21 @@ void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::sp
 }
 
 // flatten: CLOTH-2's correction is inlined into the sweep (half the cost of a sweep was the call).
+// The sweep hands CLOTH-2 the scaled compliance α̃ = α/h² of each kind, computed once, with h = 1: then
+// α̃/h² is α̃ exactly and the compiler drops the division, one of the four a constraint costs.
 [[gnu::flatten]] void sweepDistanceConstraints(std::span<const Link> links,
                                                const std::array<Real, kLinkKinds>& compliance, const SweepMode& mode,
                                                Real h, std::span<Vec3> x, std::span<const Real> w,
                                                std::span<Real> lambda) {
+  std::array<Real, kLinkKinds> alphaTilde{};
+  for (std::size_t k = 0; k < kLinkKinds; ++k) alphaTilde[k] = mode.xpbd ? compliance[k] / (h * h) : 0.0;
+  const bool xpbd = mode.xpbd;
+  const Real scale = xpbd ? 1.0 : mode.pbdStiffness;
   for (std::size_t k = 0; k < links.size(); ++k) {
     const Link& l = links[k];
-    const Real alpha = mode.xpbd ? compliance[static_cast<std::size_t>(l.kind)] : 0.0;
     const DistanceCorrection c =
-        xpbdDistanceCorrection(x[l.i], x[l.j], w[l.i], w[l.j], l.restLength, alpha, h, mode.xpbd ? lambda[k] : 0.0);
-    const Real scale = mode.xpbd ? 1.0 : mode.pbdStiffness;
+        xpbdDistanceCorrection(x[l.i], x[l.j], w[l.i], w[l.j], l.restLength,
+                               alphaTilde[static_cast<std::size_t>(l.kind)], 1.0, xpbd ? lambda[k] : 0.0);
     x[l.i] += scale * c.deltaI;
     x[l.j] += scale * c.deltaJ;
     lambda[k] += c.deltaLambda;
