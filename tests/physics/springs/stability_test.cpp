@@ -5,8 +5,8 @@
 #include <random>
 #include <vector>
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include "physics/springs/builders.h"
 #include "physics/springs/stability.h"
@@ -34,7 +34,8 @@ TEST(SpringStability, ALongFreeChainApproachesTwoSqrtKOverMFromBelow) {
   std::vector<Vec3> x;
   std::vector<Spring> springs;
   for (int i = 0; i < count; ++i) x.emplace_back(0.1 * i, 0.0, 0.0);
-  for (int i = 0; i + 1 < count; ++i) springs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(i + 1), 0.1, 1000.0, 0.0});
+  for (int i = 0; i + 1 < count; ++i)
+    springs.push_back({static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(i + 1), 0.1, 1000.0, 0.0});
   const std::vector<Real> w(count, 1.0 / 0.05);
   const Real exact = 2.0 * std::sqrt(1000.0 / 0.05) * std::sin((count - 1) * kPi / (2.0 * count));
   EXPECT_NEAR(highestAngularFrequency(springs, x, w, 100000, 1e-15), exact, 1e-6 * exact);
