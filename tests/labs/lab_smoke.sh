@@ -121,7 +121,7 @@ case "$check" in
     ;;
   screenshot)
     run=("$exe")
-    [[ -z "${DISPLAY:-}" ]] && run=("$with_xvfb" -s "-screen 0 1280x720x24" "$exe")
+    [[ -z "${DISPLAY:-}" ]] && run=(bash "$with_xvfb" -s "-screen 0 1280x720x24" "$exe")
     # 8 frames: the panels have settled (ImGui sizes a window in its first two frames) and the scene has
     # stepped; each frame is software rendering, so more frames only cost time here.
     for s in $(scenes); do
@@ -138,7 +138,7 @@ case "$check" in
     expect_exit 2 "--record: expected FILE.mp4, FILE.gif or DIR/" --record "$work/a.avi"
     expect_exit 2 "--record needs a window" --headless --record "$work/a.mp4"
     run=()
-    [[ -z "${DISPLAY:-}" ]] && run=("$with_xvfb" -s "-screen 0 1280x720x24")
+    [[ -z "${DISPLAY:-}" ]] && run=(bash "$with_xvfb" -s "-screen 0 1280x720x24")
     "${run[@]}" "$exe" --record "$work/a.mp4" --seconds 2 --metrics "$work/a.json" 2>"$work/a.err" ||
       fail "--record a.mp4 exited $?: $(cat "$work/a.err")"
     probe="$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=codec_name,width,height,nb_read_frames -of csv=p=0 "$work/a.mp4")"
