@@ -92,29 +92,36 @@ pba_cmd_run() {
   pba_say "screenshot written to $png"
 }
 
-pba_cmd_test() {
-  local preset="release"
+# pba_take_preset DEFAULT ARGS...: PBA_PRESET from `--preset P` or `--preset=P` anywhere in ARGS (else
+# DEFAULT), PBA_ARGS the other arguments in their order (test, grade and bench share it).
+pba_take_preset() {
+  PBA_PRESET="$1"
+  shift
+  PBA_ARGS=()
   while [[ $# -gt 0 ]]; do
     case "$1" in
-      --preset) preset="${2:?--preset needs a value}"; shift 2 ;;
-      --preset=*) preset="${1#--preset=}"; shift ;;
-      *) break ;;
+      --preset) PBA_PRESET="${2:?--preset needs a value}"; shift 2 ;;
+      --preset=*) PBA_PRESET="${1#--preset=}"; shift ;;
+      *) PBA_ARGS+=("$1"); shift ;;
     esac
   done
+}
+
+pba_cmd_test() {
+  pba_take_preset release "$@"
   pba_ensure_packages
-  pba_build "$preset"
-  pba_say "running the tests ($preset)"
-  ctest --preset "$preset" -j "$PBA_JOBS" "$@"
+  pba_build "$PBA_PRESET"
+  pba_say "running the tests ($PBA_PRESET)"
+  ctest --preset "$PBA_PRESET" -j "$PBA_JOBS" "${PBA_ARGS[@]}"
 }
 
 pba_cmd_grade() {
-  local preset="release"
-  [[ "${1:-}" == "--preset" ]] && { preset="${2:?}"; shift 2; }
+  pba_take_preset release "$@"
   pba_ensure_packages
   # Everything: exercise tests include command-line tests of the lab executables, and a partial
   # build would grade stale binaries.
-  pba_build "$preset"
-  bash "$ROOT/tools/grade.sh" "$ROOT/build/$preset" "$ROOT/resources/exercises.tsv" "$@"
+  pba_build "$PBA_PRESET"
+  bash "$ROOT/tools/grade.sh" "$ROOT/build/$PBA_PRESET" "$ROOT/resources/exercises.tsv" "${PBA_ARGS[@]}"
 }
 
 pba_cmd_student_release() {
@@ -190,14 +197,8 @@ pba_cmd_fuzz() {
 
 # ./pba bench [--preset release|native] [--filter REGEX] [--compare REF.json] (tools/bench.sh).
 pba_cmd_bench() {
-  local preset=release args=()
-  while [[ $# -gt 0 ]]; do
-    case "$1" in
-      --preset) preset="${2:?--preset needs a value}"; shift 2 ;;
-      --preset=*) preset="${1#--preset=}"; shift ;;
-      *) args+=("$1"); shift ;;
-    esac
-  done
+  pba_take_preset release "$@"
+  local preset="$PBA_PRESET" args=("${PBA_ARGS[@]}")
   [[ "$preset" == release || "$preset" == native ]] || pba_die "bench: --preset $preset: benchmarks build in release or native" 2
   local i  # a bad --compare file fails before the build, not after it
   for ((i = 0; i < ${#args[@]}; i++)); do

@@ -10,12 +10,8 @@ void SortedGrid::build(std::span<const Vec3> x, std::span<const std::uint32_t> w
   inverseCell_ = 1.0 / cell;
   const std::size_t n = which.empty() ? x.size() : which.size();
   auto input = [&](std::size_t k) { return which.empty() ? static_cast<std::uint32_t>(k) : which[k]; };
-  std::size_t table = 64;  // power of two, load factor ≤ ½
-  shift_ = 58;
-  while (table < 2 * n) {
-    table *= 2;
-    --shift_;
-  }
+  layout_ = particles::HashLayout::forEntries(n);
+  const std::size_t table = layout_.buckets;
   start_.assign(table + 1, 0);
   bucketOfInput_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {

@@ -1,9 +1,10 @@
 #pragma once
 // Particles sorted by the cell of a uniform grid, for pair searches that read positions in sequence: the
 // cells hashed into a power-of-two table (Teschner et al. 2003's hash, Fibonacci-hashed to the table), filled
-// by counting sort, and each particle's position copied in that order. Table size, hash and the order of a
-// query's 27 cells are exactly those of particles::SpatialHash, so a query meets the particles in the same
-// order (self-collision's order of pairs depends on it); within a bucket, particles are by index.
+// by counting sort, and each particle's position copied in that order. Table size and hash are
+// particles::SpatialHash's own (particles::HashLayout), and a query visits the 27 cells in its order, so a
+// query meets the particles in the same order (self-collision's order of pairs depends on it); within a
+// bucket, particles are by index.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "physics/core/types.h"
+#include "physics/particles/spatial_hash.h"
 
 namespace pba::cloth {
 
@@ -36,18 +38,12 @@ class SortedGrid {
   std::vector<Vec3> position;           ///< entry → position [m]
 
  private:
-  std::uint32_t bucket(std::int64_t i, std::int64_t j, std::int64_t k) const;
+  std::uint32_t bucket(std::int64_t i, std::int64_t j, std::int64_t k) const { return layout_.bucket(i, j, k); }
   Real inverseCell_ = 1.0;
-  unsigned shift_ = 58;
+  particles::HashLayout layout_;
   std::vector<std::uint32_t> start_;  ///< table size + 1 prefix sums
   std::vector<std::uint32_t> fill_, bucketOfInput_;
 };
-
-inline std::uint32_t SortedGrid::bucket(std::int64_t i, std::int64_t j, std::int64_t k) const {
-  const auto h = static_cast<std::uint64_t>(i * 73856093) ^ static_cast<std::uint64_t>(j * 19349663) ^
-                 static_cast<std::uint64_t>(k * 83492791);
-  return static_cast<std::uint32_t>((h * 0x9E3779B97F4A7C15ull) >> shift_);
-}
 
 inline std::array<std::int64_t, 3> SortedGrid::cellAt(const Vec3& p) const {
   return {static_cast<std::int64_t>(std::floor(p.x * inverseCell_)),

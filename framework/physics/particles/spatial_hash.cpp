@@ -10,12 +10,8 @@ void SpatialHash::build(std::span<const Vec3> positions, Real cellSize) {
   assert(cellSize > 0.0);
   inverseCell_ = 1.0 / cellSize;
   const std::size_t n = positions.size();
-  std::size_t table = 64;  // power of two, load factor ≤ ½
-  shift_ = 58;
-  while (table < 2 * n) {
-    table *= 2;
-    --shift_;
-  }
+  layout_ = HashLayout::forEntries(n);
+  const std::size_t table = layout_.buckets;
   // assign/resize reuse the capacity of earlier builds: no allocation once the count has been reached.
   cellStart_.assign(table + 1, 0);
   entries_.resize(n);

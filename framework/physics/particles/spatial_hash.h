@@ -5,6 +5,7 @@
 // or adjacent cells: each particle checks 27 cells. Built by counting sort into one index array
 // (no per-cell allocation): O(n) build, O(n) queries for bounded density.
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <utility>
@@ -14,6 +15,30 @@
 #include "physics/particles/particles.h"
 
 namespace pba::particles {
+
+/// The bucket layout of SpatialHash, shared with cloth::SortedGrid (whose order of pairs must be the
+/// hash's): a table of 2^b ≥ max(64, 2n) buckets for n entries (load factor ≤ ½), and cell (i, j, k) in the
+/// bucket given by the top b bits of Teschner's hash times 2⁶⁴/φ. Departure from Teschner's "mod T":
+/// Fibonacci hashing (Knuth TAOCP 6.4), a multiply and a shift instead of a 64-bit modulo, 27 of which per
+/// query were the most expensive part of a sweep.
+struct HashLayout {
+  std::size_t buckets = 64;
+  unsigned shift = 58;  ///< 64 − b
+
+  static HashLayout forEntries(std::size_t n) {
+    HashLayout layout;
+    while (layout.buckets < 2 * n) {
+      layout.buckets *= 2;
+      --layout.shift;
+    }
+    return layout;
+  }
+  std::uint32_t bucket(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    const auto h = static_cast<std::uint64_t>(i * 73856093) ^ static_cast<std::uint64_t>(j * 19349663) ^
+                   static_cast<std::uint64_t>(k * 83492791);
+    return static_cast<std::uint32_t>((h * 0x9E3779B97F4A7C15ull) >> shift);
+  }
+};
 
 class SpatialHash {
  public:
@@ -26,18 +51,15 @@ class SpatialHash {
   void forEachNear(const Vec3& p, Visit&& visit) const;
 
   std::size_t tableSize() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
-  /// Departure from Teschner's "mod T": the table is a power of two 2^b and the bucket is the top b bits
-  /// of the hash times 2⁶⁴/φ (Fibonacci hashing, Knuth TAOCP 6.4): a multiply and a shift instead of a
-  /// 64-bit modulo, 27 of which per query were the most expensive part of a sweep.
 
  private:
-  std::uint32_t bucket(std::int64_t i, std::int64_t j, std::int64_t k) const;
+  std::uint32_t bucket(std::int64_t i, std::int64_t j, std::int64_t k) const { return layout_.bucket(i, j, k); }
   Real inverseCell_ = 1.0;
   std::vector<std::uint32_t> cellStart_;  ///< T + 1 prefix sums
   std::vector<std::uint32_t> entries_;    ///< particle indices grouped by bucket
   std::vector<std::uint32_t> bucketOf_;  ///< scratch of build(): each particle's bucket (kept: no allocation per build)
   std::vector<std::uint32_t> fill_;      ///< scratch of build(): next free entry per bucket
-  unsigned shift_ = 58;                  ///< 64 − b, where tableSize() = 2^b
+  HashLayout layout_;
   // forEachNear()'s record of the buckets it has visited: bucket b was visited by the current query
   // when visited_[b] == query_. One store and one load per cell instead of comparing each of the 27
   // buckets with all earlier ones (27·26/2 comparisons, a third of a collision sweep before).
@@ -62,12 +84,6 @@ void SpatialHash::forEachNear(const Vec3& p, Visit&& visit) const {
         visited_[b] = query_;
         for (std::uint32_t e = cellStart_[b]; e < cellStart_[b + 1]; ++e) visit(entries_[e]);
       }
-}
-
-inline std::uint32_t SpatialHash::bucket(std::int64_t i, std::int64_t j, std::int64_t k) const {
-  const auto h = static_cast<std::uint64_t>(i * 73856093) ^ static_cast<std::uint64_t>(j * 19349663) ^
-                 static_cast<std::uint64_t>(k * 83492791);
-  return static_cast<std::uint32_t>((h * 0x9E3779B97F4A7C15ull) >> shift_);
 }
 
 struct PairCollisionStats {

@@ -16,6 +16,8 @@ using testing::chainExtension;
 using testing::hangingChain;
 using testing::meshGrid;
 using testing::run;
+using testing::StackedSheets;
+using testing::stackedSheets;
 
 ClothSolverSettings explicitSettings(int substeps) {
   ClothSolverSettings s;
@@ -128,25 +130,10 @@ TEST(SelfCollision, AFallingSheetNeverPassesThroughAPinnedOne) {
   // Two sheets in one cloth: the lower one is pinned flat, the upper one falls on it. Without
   // self-collision it would fall straight through.
   const Real spacing = 0.02;
-  GridDesc d;
-  d.resolutionX = d.resolutionY = 11;
-  d.width = d.height = 10 * spacing;
-  d.layout = SpringLayout::Mesh;
-  TriangleMesh lower = gridMesh(d);
-  d.center.y += 0.08;
-  TriangleMesh both = lower;
-  const TriangleMesh upper = gridMesh(d);
-  const auto offset = static_cast<std::uint32_t>(both.vertices.size());
-  both.vertices.insert(both.vertices.end(), upper.vertices.begin(), upper.vertices.end());
-  for (Triangle t : upper.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  std::vector<std::uint32_t> pinned(offset);
-  for (std::uint32_t i = 0; i < offset; ++i) pinned[i] = i;
-  ClothMaterial m;
-  m.thickness = spacing;
-  m.stretchStiffness = m.shearStiffness = 100.0;
-  m.bendStiffness = 10.0;
-  m.springDamping = 0.005;
-  Cloth c = buildCloth(both, m, pinned).value();
+  StackedSheets sheets = stackedSheets(11, spacing, 0.08);
+  Cloth& c = sheets.cloth;
+  const ClothMaterial& m = sheets.material;
+  const std::uint32_t offset = sheets.upperFirst;
   ClothSolverSettings s = explicitSettings(80);
   s.selfCollision = true;
   ClothSolver solver;

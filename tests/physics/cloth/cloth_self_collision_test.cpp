@@ -96,25 +96,7 @@ TEST(SelfCollision, ParticlesPushedFarWithinOneSweepBringTheirPairsIn) {
 
 TEST(SelfCollision, NearListGivesTheSolversPositionsBitForBit) {
   // The two-sheet scene of AFallingSheetNeverPassesThroughAPinnedOne, shorter, through the whole solver.
-  const Real spacing = 0.02;
-  GridDesc d;
-  d.resolutionX = d.resolutionY = 9;
-  d.width = d.height = 8 * spacing;
-  d.layout = SpringLayout::Mesh;
-  TriangleMesh both = gridMesh(d);
-  const auto offset = static_cast<std::uint32_t>(both.vertices.size());
-  d.center.y += 0.06;
-  const TriangleMesh upper = gridMesh(d);
-  both.vertices.insert(both.vertices.end(), upper.vertices.begin(), upper.vertices.end());
-  for (Triangle t : upper.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  std::vector<std::uint32_t> pinned(offset);
-  for (std::uint32_t i = 0; i < offset; ++i) pinned[i] = i;
-  ClothMaterial m;
-  m.thickness = spacing;
-  m.stretchStiffness = m.shearStiffness = 100.0;
-  m.bendStiffness = 10.0;
-  m.springDamping = 0.005;
-  Cloth a = buildCloth(both, m, pinned).value();
+  Cloth a = testing::stackedSheets(9, 0.02, 0.06).cloth;
   Cloth b = a;
   ClothSolverSettings s;
   s.kind = ClothSolverKind::Explicit;

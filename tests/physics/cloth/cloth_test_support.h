@@ -23,6 +23,37 @@ inline Cloth meshGrid(int n, Real size, Real y, GridPins pins, const ClothMateri
   return buildClothGrid(d, material).value();
 }
 
+/// Two horizontal sheets of n × n particles `spacing` apart in one cloth, the upper one `gap` above the
+/// lower one (at the grid's default height, 1.5 m); the lower one's particles come first and are pinned.
+/// Mesh layout, soft springs (k = 100 N/m stretch and shear, 10 bend), thickness = spacing.
+struct StackedSheets {
+  Cloth cloth;
+  ClothMaterial material;
+  std::uint32_t upperFirst = 0;  ///< index of the upper sheet's first particle
+};
+inline StackedSheets stackedSheets(int n, Real spacing, Real gap) {
+  GridDesc d;
+  d.resolutionX = d.resolutionY = n;
+  d.width = d.height = (n - 1) * spacing;
+  d.layout = SpringLayout::Mesh;
+  TriangleMesh both = gridMesh(d);
+  const auto offset = static_cast<std::uint32_t>(both.vertices.size());
+  d.center.y += gap;
+  const TriangleMesh upper = gridMesh(d);
+  both.vertices.insert(both.vertices.end(), upper.vertices.begin(), upper.vertices.end());
+  for (Triangle t : upper.triangles) both.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  std::vector<std::uint32_t> pinned(offset);
+  for (std::uint32_t i = 0; i < offset; ++i) pinned[i] = i;
+  StackedSheets sheets;
+  sheets.material.thickness = spacing;
+  sheets.material.stretchStiffness = sheets.material.shearStiffness = 100.0;
+  sheets.material.bendStiffness = 10.0;
+  sheets.material.springDamping = 0.005;
+  sheets.cloth = buildCloth(both, sheets.material, pinned).value();
+  sheets.upperFirst = offset;
+  return sheets;
+}
+
 /// A vertical chain of `particles` (mass m each) hanging from a pinned top at height `top`, links of rest
 /// length L, with the chain's links as springs AND as distance constraints (no triangles: the solvers
 /// only need the arrays). Starts at rest length.
