@@ -49,6 +49,7 @@ Status validate(const ClothSolverSettings& s) {
   if (s.implicit.cg.maxIterations < 1) return Error{"cgMaxIterations: must be ≥ 1"};
   if (!(s.implicit.cg.tolerance > 0.0 && s.implicit.cg.tolerance < 1.0)) return Error{"cgTolerance: must be in (0, 1)"};
   if (s.tearing.enabled && !(s.tearing.threshold > 0.0)) return Error{"tearThreshold: must be > 0"};
+  if (!(s.divergedSpeed >= 0.0)) return Error{"divergedSpeed: must be ≥ 0 (0 = no check)"};
   return Status::success();
 }
 
@@ -102,15 +103,30 @@ void ClothSolver::movePins(Cloth& cloth, Real fraction) {
   }
 }
 
+namespace {
+// Some velocity is faster than `limit` or not finite (limit 0: never).
+bool diverged(std::span<const Vec3> velocity, Real limit) {
+  if (limit <= 0.0) return false;
+  bool tooFast = false;
+  for (const Vec3& v : velocity) tooFast |= !(glm::dot(v, v) <= limit * limit);
+  return tooFast;
+}
+}  // namespace
+
 ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
                                  const ClothSolverSettings& s, Real dt, Real t) {
   ClothStepStats stats;
   const int n = std::max(1, s.substeps);
   const Real h = dt / n;
+  if (diverged(cloth.velocity, s.divergedSpeed)) {
+    stats.diverged = true;  // nothing to gain from stepping a blown-up state; the lab's guard pauses
+    return stats;
+  }
   if (s.selfCollision) beginSelfCollision(cloth, s, dt);
   pinStart_.resize(cloth.pins.size());
   for (std::size_t k = 0; k < cloth.pins.size(); ++k) pinStart_[k] = cloth.position[cloth.pins[k].particle];
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < n && !stats.diverged; ++k) {
+    ++stats.substepsTaken;
     const Real fraction = static_cast<Real>(k + 1) / n;
     const Real time = t + k * h;
     switch (s.kind) {
@@ -172,11 +188,16 @@ void ClothSolver::explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std
   accumulateSpringForces(cloth.springs, cloth.material, cloth.position, cloth.velocity, true, force_);
   accumulateExternalForces(cloth, env, t, cloth.position, cloth.velocity, force_);
   previous_ = cloth.position;
+  const Real limit2 = s.divergedSpeed * s.divergedSpeed;
+  bool tooFast = false;
   for (std::size_t i = 0; i < n; ++i) {
     if (cloth.inverseMass[i] == 0.0) continue;
     cloth.velocity[i] += h * cloth.inverseMass[i] * force_[i];
     cloth.position[i] += h * cloth.velocity[i];
+    tooFast |= !(glm::dot(cloth.velocity[i], cloth.velocity[i]) <= limit2);  // also true for NaN
   }
+  // This substep ends as usual; the step takes no more (the rest would only spend time on a blow-up).
+  stats.diverged = tooFast && s.divergedSpeed > 0.0;
   movePins(cloth, pinFraction);
   for (const Pin& p : cloth.pins) cloth.velocity[p.particle] = (cloth.position[p.particle] - previous_[p.particle]) / h;
   endSubstep(cloth, colliders, s, h, true, stats);

@@ -58,6 +58,13 @@ struct ClothSolverSettings {
   /// sweeps all of them (the reference the tests compare with).
   bool selfCollisionNearList = true;
   TearSettings tearing;
+  /// [m/s] A safety limit, not part of any published method: a particle faster than this (or not finite)
+  /// means the solver has diverged (symplectic Euler above its stability limit grows without bound). The
+  /// step then stops at once: the explicit substeps stop at the first substep that diverges, and a step
+  /// that starts from a diverged state does nothing. It bounds the cost of a blow-up (the self-collision
+  /// search of a frame grows with the speeds; one frame of the ribbon took 80 s) until the lab's guard
+  /// pauses. 0 turns the check off. No cloth in the labs comes near it (a free fall from 10 m: 14 m/s).
+  Real divergedSpeed = 1000.0;
 };
 Status validate(const ClothSolverSettings& s);
 
@@ -68,6 +75,8 @@ struct ClothStepStats {
   std::size_t contacts = 0;      ///< particle–collider contacts in the last (sub)step
   std::size_t selfContacts = 0;  ///< self-collision pairs separated in the last (sub)step
   std::size_t tears = 0;         ///< vertex splits this step
+  int substepsTaken = 0;         ///< substeps done this step (fewer than asked when it diverged)
+  bool diverged = false;         ///< a particle passed ClothSolverSettings::divergedSpeed (or is not finite)
 };
 
 /// Stretch (l − L)/L of the mesh edges, the same measure for every model: largest and mean over the

@@ -102,6 +102,64 @@ TEST(ExplicitCloth, BlowsUpAtTheFrameStepWithStiffSprings) {
   EXPECT_TRUE(!std::isfinite(e) || e > 100.0 * std::abs(e0));
 }
 
+/// The fastest particle's speed [m/s] (NaN when a velocity is not finite).
+Real fastestSpeed(const Cloth& c) {
+  Real fastest = 0.0;
+  for (const Vec3& v : c.velocity) {
+    const Real speed = glm::length(v);
+    if (!(speed <= fastest)) fastest = speed;
+  }
+  return fastest;
+}
+
+TEST(ExplicitCloth, ADivergingStepStopsAtTheFirstSubstepPastTheSpeedLimit) {
+  // The stiff cloth above, 4 substeps per step of 3× its stability bound: it diverges over a few steps.
+  // Reference: the same substeps one by one, with the check off; the first substep after which a
+  // particle is faster than 1000 m/s is where the checked step must stop, with the same state.
+  ClothMaterial m;
+  m.stretchStiffness = m.shearStiffness = m.bendStiffness = 1e5;
+  Cloth checked = meshGrid(8, 1.0, 1.5, GridPins::TopCorners, m);
+  Cloth reference = checked;
+  const int substeps = 4;
+  const Real h = 3.0 * explicitStabilityLimit(checked), dt = substeps * h;
+  pba::testing::FloatingPointTrapsOff traps;  // the reference overflows on purpose
+  ClothSolverSettings off = explicitSettings(1);
+  off.divergedSpeed = 0.0;
+  ClothSolver referenceSolver, solver;
+  int firstPast = -1;  // counted in substeps from the start
+  for (int k = 0; k < 20 * substeps && firstPast < 0; ++k) {
+    referenceSolver.step(reference, ClothEnvironment{}, {}, off, h, k * h);
+    if (!(fastestSpeed(reference) <= 1000.0)) firstPast = k + 1;
+  }
+  ASSERT_GT(firstPast, substeps) << "diverges within the first frame: the test would not see a whole step";
+  ClothStepStats stats;
+  int frames = 0;
+  for (; frames < 20 && !stats.diverged; ++frames) {
+    stats = solver.step(checked, ClothEnvironment{}, {}, explicitSettings(substeps), dt, frames * dt);
+  }
+  ASSERT_TRUE(stats.diverged);
+  EXPECT_EQ((frames - 1) * substeps + stats.substepsTaken, firstPast);
+  ASSERT_EQ(checked.size(), reference.size());
+  for (std::size_t i = 0; i < checked.size(); ++i) {
+    // Substeps of h, whether as 40 per step or one per step, are the same arithmetic.
+    EXPECT_EQ(checked.position[i], reference.position[i]) << "particle " << i;
+  }
+  // A step from the diverged state does nothing, and says so.
+  const std::vector<Vec3> before = checked.position;
+  stats = solver.step(checked, ClothEnvironment{}, {}, explicitSettings(substeps), dt, frames * dt);
+  EXPECT_TRUE(stats.diverged);
+  EXPECT_EQ(stats.substepsTaken, 0);
+  EXPECT_EQ(checked.position, before);
+}
+
+TEST(ExplicitCloth, AStableStepTakesEverySubstep) {
+  Cloth c = meshGrid(10, 1.0, 1.5, GridPins::TopCorners);
+  ClothSolver solver;
+  const ClothStepStats stats = solver.step(c, ClothEnvironment{}, {}, explicitSettings(40), 1.0 / 60.0, 0.0);
+  EXPECT_FALSE(stats.diverged);
+  EXPECT_EQ(stats.substepsTaken, 40);
+}
+
 TEST(ClothTearing, KeepsTheMeshValidAndFiniteWhilePulledApart) {
   ClothMaterial m;
   m.springDamping = 0.1;
