@@ -102,6 +102,9 @@ class Scene {
   virtual Real defaultDt() const { return 1.0 / 120.0; }
   /// Empty when the state is finite; otherwise names what is not ("ball velocity is NaN").
   virtual std::optional<std::string> nonFiniteState() const = 0;
+  /// Empty unless the scene's solver says it has diverged while the state is still finite (the cloth's
+  /// speed limit): the guard then pauses as for a runaway, naming what this returns.
+  virtual std::optional<std::string> divergedState() const { return std::nullopt; }
   /// Total energy [J] for the runaway guard, when the scene has one.
   virtual std::optional<Real> energy() const { return std::nullopt; }
   /// Metrics plotted over time when the user has not chosen any (e.g. {"energy_J"}).

@@ -105,6 +105,13 @@ void SceneRunner::checkGuard() {
                     "integrator or more solver iterations, then press R to reset.";
     return;
   }
+  if (std::optional<std::string> diverged = scene_->divergedState()) {
+    paused_ = true;
+    guardMessage_ = "Paused: " + *diverged + " at t = " + formatTime(simTime_) +
+                    " s (runaway). Try a smaller time step (dt), more substeps, more damping or a more stable "
+                    "integrator, then press R to reset.";
+    return;
+  }
   if (energyScale_ > 0.0) {
     const std::optional<Real> e = scene_->energy();
     if (e && std::abs(*e) > kRunawayEnergyFactor * energyScale_) {

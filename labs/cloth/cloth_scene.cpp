@@ -147,13 +147,11 @@ void ClothScene::step(Real dt) {
   }
 }
 
-std::optional<std::string> ClothScene::nonFiniteState() const {
-  if (stats_.diverged) {
-    return "the " + std::string(solverName(settings_.kind)) + " solver diverged (a particle passed " +
-           std::to_string(static_cast<int>(settings_.divergedSpeed)) + " m/s after " +
-           std::to_string(stats_.substepsTaken) + " of " + std::to_string(settings_.substeps) + " substeps)";
-  }
-  return describeNonFinite(cloth_);
+std::optional<std::string> ClothScene::divergedState() const {
+  if (!stats_.diverged) return std::nullopt;
+  return "the " + std::string(solverName(settings_.kind)) + " solver diverged (a particle passed " +
+         std::to_string(static_cast<int>(settings_.divergedSpeed)) + " m/s after " +
+         std::to_string(stats_.substepsTaken) + " of " + std::to_string(settings_.substeps) + " substeps)";
 }
 
 nlohmann::json ClothScene::clothMetrics(const Cloth& c, const ClothStepStats& stats, ClothSolverKind kind) const {

@@ -27,7 +27,8 @@ class ClothScene : public app::Scene {
   void draw(DebugDraw& d) const override;
   nlohmann::json metrics() const override;
   Real defaultDt() const override { return 1.0 / 60.0; }
-  std::optional<std::string> nonFiniteState() const override;
+  std::optional<std::string> nonFiniteState() const override { return describeNonFinite(cloth_); }
+  std::optional<std::string> divergedState() const override;
   std::optional<Real> energy() const override { return clothEnergy(cloth_, env_, settings_.kind, settings_.bending); }
   std::vector<std::string> defaultPlots() const override { return {"energy_J", "max_strain"}; }
   std::vector<app::Preset> presets() const override;

@@ -106,6 +106,22 @@ TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   EXPECT_NE(r.guardMessage()->find("runaway"), std::string::npos);
 }
 
+TEST(SceneRunner, ASolverThatSaysItDivergedPausesTheSceneWhileItsStateIsFinite) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  r.advanceFrame(0.1);
+  EXPECT_FALSE(r.paused());
+  testing::constantVelocitySceneOf(r).diverged = true;
+  const long before = r.steps();
+  r.advanceFrame(0.1);
+  EXPECT_EQ(r.steps(), before + 1) << "caught within one step";
+  EXPECT_TRUE(r.paused());
+  EXPECT_TRUE(r.finite()) << "a runaway, not a non-finite state (the soak tells them apart)";
+  ASSERT_TRUE(r.guardMessage().has_value());
+  EXPECT_NE(r.guardMessage()->find("the test solver diverged"), std::string::npos);
+  EXPECT_NE(r.guardMessage()->find("runaway"), std::string::npos);
+}
+
 TEST(SceneRunner, PanelDtLastsOneSceneAndCommandLineDtLastsForAll) {
   SceneRunner r;
   ASSERT_TRUE(r.load("constant", 1).ok());

@@ -41,6 +41,9 @@ class ConstantVelocityScene final : public Scene {
     return std::nullopt;
   }
   std::optional<Real> energy() const override { return 0.5 * speed * speed + energyBoost; }
+  std::optional<std::string> divergedState() const override {
+    return diverged ? std::optional<std::string>("the test solver diverged") : std::nullopt;
+  }
   std::vector<Preset> presets() const override { return {{"fast", {{"speed", 5.0}}}, {"broken", {{"speed", 99.0}}}}; }
 
   Real speed = 1.0;
@@ -53,6 +56,7 @@ class ConstantVelocityScene final : public Scene {
   int stepsTaken = 0;
   bool poison = false;
   Real energyBoost = 0.0;
+  bool diverged = false;  ///< the solver says it diverged, with a finite state
 };
 
 /// The runner's scene as the constant-velocity scene it was given.
