@@ -316,6 +316,11 @@ PenetrationResult epaPenetration(const ConvexProxy& a, const Transform& poseA, c
     faces.push_back(f);
   }
   constexpr int kMaxIterations = 128;
+  // Each iteration adds at most the horizon's edges as faces; on degenerate input (nearly coplanar
+  // faces, or bodies far outside any sensible range) the horizon can take most of the polytope, and the
+  // horizon search is quadratic in it. Past this many faces the best face so far is the answer (Bullet's
+  // EPA bounds its faces the same way).
+  constexpr std::size_t kMaxFaces = 1024;
   int bestFace = -1;
   std::vector<std::pair<int, int>> edges;
   for (out.iterations = 0; out.iterations < kMaxIterations; ++out.iterations) {
@@ -326,7 +331,10 @@ PenetrationResult epaPenetration(const ConvexProxy& a, const Transform& poseA, c
     if (bestFace < 0) return out;
     const EpaFace face = faces[bestFace];
     const SimplexVertex w = support(face.normal);
+    // A support point that is not finite (a body's pose already NaN or ±∞): no penetration to report.
+    if (!std::isfinite(glm::dot(w.w, w.w))) return PenetrationResult{};
     if (glm::dot(face.normal, w.w) - face.distance <= eps) break;  // the face is on the boundary of A − B
+    if (faces.size() >= kMaxFaces) break;
     const int index = static_cast<int>(verts.size());
     verts.push_back(w);
     // Remove every face w can see; the boundary of the hole (edges not shared by two removed faces,

@@ -2,6 +2,7 @@
 // root finding on a signed distance along the ray, the separating-plane certificate of a distance.
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include "physics/collision/raycast.h"
 #include "physics/collision/toi.h"
 #include "support/expect_helpers.h"
+#include "support/fp_traps.h"
 
 namespace pba::collision {
 namespace {
@@ -181,6 +183,26 @@ TEST(Gjk, DistancesBetweenRandomHullsAreCertifiedBySeparatingPlanes) {
     EXPECT_NEAR(minB, glm::dot(dir, g.pointB), 1e-9) << "trial " << trial;
   }
   EXPECT_GT(separated, 50);
+}
+
+TEST(Epa, FindsTheDepthOfTwoOverlappingBoxesAndStopsOnABodyThatIsNotFinite) {
+  // Two unit boxes 0.8 m apart along x overlap by 0.2 m: depth 0.2, normal ±x (closed form).
+  const Shape box = makeBox(Vec3(0.5)).value();
+  const ConvexProxy p = makeProxy(box);
+  const Transform xa{Vec3(0.0), Quat(1, 0, 0, 0)}, xb{Vec3(0.8, 0.1, 0.05), Quat(1, 0, 0, 0)};
+  const DistanceResult g = gjkDistance(p, xa, p, xb);
+  ASSERT_TRUE(g.overlap);
+  const PenetrationResult e = epaPenetration(p, xa, p, xb, g);
+  ASSERT_TRUE(e.valid);
+  EXPECT_NEAR(e.depth, 0.2, 1e-9);
+  EXPECT_NEAR(std::abs(e.normal.x), 1.0, 1e-9);
+  // The same call with B at infinity or NaN (a ragdoll's box after a blow-up): no answer, and the
+  // call returns (the ragdoll soak once spent minutes in one such EPA call).
+  pba::testing::FloatingPointTrapsOff traps;  // the arithmetic on ∞ and NaN is the point
+  for (const Real bad : {std::numeric_limits<Real>::infinity(), std::numeric_limits<Real>::quiet_NaN()}) {
+    const Transform far{Vec3(bad, 0.1, 0.05), Quat(1, 0, 0, 0)};
+    EXPECT_FALSE(epaPenetration(p, xa, p, far, g).valid) << bad;
+  }
 }
 
 TEST(TimeOfImpact, ASphereFlyingAtABoxStopsWhereItFirstTouches) {
