@@ -211,8 +211,7 @@ void BM_Integrator(benchmark::State& state) {
   char label[160];
   std::snprintf(label, sizeof label, "%s: floor %.2f ns/DOF-step (%s-bound) measured %.1fx the floor",
                 std::string(ode::integratorName(kind)).c_str(), floorNs,
-                cost.bytes / roofline.bytesPerNs >= cost.flops / roofline.flopsPerNs ? "memory" : "arithmetic",
-                nsPerDofStep / floorNs);
+                roofline.memoryBound(cost.bytes, cost.flops) ? "memory" : "arithmetic", nsPerDofStep / floorNs);
   state.SetLabel(label);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * desc.copies));
   state.counters["floor_ns"] = floorNs;

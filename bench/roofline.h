@@ -19,6 +19,8 @@ struct Roofline {
 
   /// The floor on one item that moves `bytes` and does `flops` [ns].
   double floorNs(double bytes, double flops) const { return std::max(bytes / bytesPerNs, flops / flopsPerNs); }
+  /// Whether that floor is the memory's (else the arithmetic's).
+  bool memoryBound(double bytes, double flops) const { return bytes / bytesPerNs >= flops / flopsPerNs; }
 };
 
 /// a = b + s·c (STREAM's triad): 24 bytes moved per element (two reads, one write).

@@ -104,11 +104,13 @@ void ClothSolver::movePins(Cloth& cloth, Real fraction) {
 }
 
 namespace {
+// v is faster than √limit2 or not finite (the comparison is false for NaN).
+bool fasterThan(const Vec3& v, Real limit2) { return !(glm::dot(v, v) <= limit2); }
 // Some velocity is faster than `limit` or not finite (limit 0: never).
 bool diverged(std::span<const Vec3> velocity, Real limit) {
   if (limit <= 0.0) return false;
   bool tooFast = false;
-  for (const Vec3& v : velocity) tooFast |= !(glm::dot(v, v) <= limit * limit);
+  for (const Vec3& v : velocity) tooFast |= fasterThan(v, limit * limit);
   return tooFast;
 }
 }  // namespace
@@ -194,7 +196,7 @@ void ClothSolver::explicitSubstep(Cloth& cloth, const ClothEnvironment& env, std
     if (cloth.inverseMass[i] == 0.0) continue;
     cloth.velocity[i] += h * cloth.inverseMass[i] * force_[i];
     cloth.position[i] += h * cloth.velocity[i];
-    tooFast |= !(glm::dot(cloth.velocity[i], cloth.velocity[i]) <= limit2);  // also true for NaN
+    tooFast |= fasterThan(cloth.velocity[i], limit2);
   }
   // This substep ends as usual; the step takes no more (the rest would only spend time on a blow-up).
   stats.diverged = tooFast && s.divergedSpeed > 0.0;
