@@ -126,7 +126,7 @@ void noticeWindow(const UiState& ui) {
   ImGui::End();
 }
 
-void banners(LabSession& session) {
+void banners(LabSession& session, const UiState& ui) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   std::string text;
   ImVec4 colour = kAlertRed;
@@ -138,8 +138,12 @@ void banners(LabSession& session) {
     colour = kWarnOrange;
   }
   if (text.empty()) return;
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f + 100, 10), ImGuiCond_Always, ImVec2(0.5f, 0));
-  ImGui::SetNextWindowSize(ImVec2(std::min(display.x * 0.55f, 900.0f), 0), ImGuiCond_Always);
+  // In the free area right of the panel (as the legend), centred there and never under the panel: the
+  // guard's message must be read whole.
+  const float left = ui.hideUi ? 8.0f : panelWidthPixels(ui) + 8.0f;
+  const float width = std::min(display.x - left - 8.0f, 900.0f);
+  ImGui::SetNextWindowPos(ImVec2(left + 0.5f * (display.x - left - 8.0f - width), 10), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Always);
   ImGui::PushStyleColor(ImGuiCol_WindowBg, colour);
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
   ImGui::Begin("##banner", nullptr,

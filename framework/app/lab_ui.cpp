@@ -438,7 +438,7 @@ LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, floa
 
 void drawLabUi(LabSession& session, UiState& ui) {
   ui.widgets.clear();
-  detail::banners(session);
+  detail::banners(session, ui);
   detail::noticeWindow(ui);
   if (ui.noticeFrames > 0) --ui.noticeFrames;
   if (ui.showHelp) helpOverlay(ui);

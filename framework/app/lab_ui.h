@@ -91,7 +91,7 @@ void legendWindow(const Scene& scene, float left, float bottom);
 /// returns its top (the display height when there is none).
 float timelineStrip(LabSession& session, UiState& ui, float left, float right);
 void noticeWindow(const UiState& ui);
-void banners(LabSession& session);
+void banners(LabSession& session, const UiState& ui);
 }  // namespace detail
 
 }  // namespace pba::app
