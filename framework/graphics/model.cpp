@@ -1,6 +1,7 @@
 // Assimp import into the plain Model structure (see model.h).
 #include "graphics/model.h"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <new>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -220,10 +222,40 @@ std::string checkBvhText(const std::string& path) {
   return {};
 }
 
-bool isBvh(const std::string& path) {
+std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".bvh";
+  return ext;
+}
+
+std::string modelExtensionList() {
+  std::string list;
+  for (const std::string_view ext : kModelExtensions) list += (list.empty() ? "" : ", ") + std::string(ext);
+  return list;
+}
+
+bool isBvh(const std::string& path) { return lowerExtension(path) == ".bvh"; }
+
+/// Leaves in `importer` only the readers that claim the file's extension, one of kModelExtensions; false
+/// for any other extension. When two readers claim it (.gltf, .glb) and neither recognises the contents,
+/// Assimp 5.2 falls back to offering the file to every reader it has, and readers of formats we never
+/// asked for parse it: a 31-byte .glb went to the OpenGEX reader, which read past its buffer (found by
+/// fuzz_model_import). A model file is read by the reader its extension names, or refused.
+bool keepOnlyReadersOfExtension(Assimp::Importer& importer, const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (std::find(kModelExtensions.begin(), kModelExtensions.end(), ext) == kModelExtensions.end()) return false;
+  std::vector<Assimp::BaseImporter*> others;
+  for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
+    Assimp::BaseImporter* reader = importer.GetImporter(i);
+    std::set<std::string> extensions;
+    reader->GetExtensionList(extensions);
+    if (extensions.count(ext.substr(1)) == 0) others.push_back(reader);
+  }
+  for (Assimp::BaseImporter* reader : others) {
+    importer.UnregisterLoader(reader);  // the importer no longer owns it
+    delete reader;
+  }
+  return true;
 }
 
 /// What the importers let through and the code downstream must not see: non-finite numbers, triangles
@@ -283,6 +315,12 @@ std::optional<Model> loadModel(const std::string& path, std::string* error) {
     return fail("is " + std::to_string(size) + " bytes; model files are read up to " +
                 std::to_string(kMaxModelFileBytes) + " bytes");
   Assimp::Importer importer;
+  if (!keepOnlyReadersOfExtension(importer, path)) {
+    const std::string ext = oneLine(std::filesystem::path(path).extension().string());
+    return fail(
+        (ext.empty() ? std::string("the name has no extension") : "'" + ext + "' is not a model format read here") +
+        " (" + modelExtensionList() + ")");
+  }
   const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
                          aiProcess_LimitBoneWeights | aiProcess_SortByPType;
   const aiScene* scene = nullptr;

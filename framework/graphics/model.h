@@ -7,9 +7,11 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace pba::graphics {
@@ -18,6 +20,10 @@ inline constexpr int kMaxBonesPerVertex = 4;
 inline constexpr int kMaxSkinningBones = 128;  ///< size of the shader's bone array
 /// Larger files are refused before Assimp reads them (it holds the whole file in memory, several times).
 inline constexpr std::uintmax_t kMaxModelFileBytes = std::uintmax_t{512} << 20;  ///< 512 MiB
+/// The model formats loadModel reads, by extension (lower case): the ones the labs use and the fuzz
+/// target tests. Assimp's other readers are never offered a file (see loadModel).
+inline constexpr std::array<std::string_view, 10> kModelExtensions = {".bvh", ".obj", ".gltf", ".glb", ".dae",
+                                                                      ".fbx", ".x",   ".ply",  ".stl", ".off"};
 
 struct ModelMesh {
   std::string name;
@@ -75,9 +81,9 @@ struct Model {
   int findBone(const std::string& name) const;  ///< -1 when absent
 };
 
-/// Loads any format Assimp reads (glTF, FBX, Collada, BVH, OBJ, ...). On failure returns nullopt and
-/// sets *error to "<path>: <reason>" on one line (Assimp's own message where it has one). Refuses
-/// directories, files over kMaxModelFileBytes, non-finite numbers and triangles that use a vertex the
+/// Loads a file of one of kModelExtensions through the Assimp reader(s) of that extension only. On failure
+/// returns nullopt and sets *error to "<path>: <reason>" on one line (Assimp's own message where it has
+/// one). Refuses other extensions, directories, files over kMaxModelFileBytes, non-finite numbers and triangles that use a vertex the
 /// mesh does not have (naming the node, mesh or animation). Never throws.
 std::optional<Model> loadModel(const std::string& path, std::string* error);
 

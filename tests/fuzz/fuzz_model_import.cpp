@@ -14,10 +14,8 @@
 using namespace pba;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const char* const kExtensions[] = {".bvh", ".obj", ".gltf", ".glb", ".dae",
-                                            ".fbx", ".x",   ".ply",  ".stl", ".off"};
   if (size == 0) return 0;
-  const std::string ext = kExtensions[data[0] % (sizeof kExtensions / sizeof *kExtensions)];
+  const std::string ext(graphics::kModelExtensions[data[0] % graphics::kModelExtensions.size()]);
   const std::string path = fuzz::writeInput(data + 1, size - 1, ext);
   std::string error;
   const std::optional<graphics::Model> model = graphics::loadModel(path, &error);

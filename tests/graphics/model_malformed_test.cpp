@@ -85,6 +85,16 @@ TEST(ModelMalformed, AssimpsFileAndLinePrefixBecomesALineNumber) {
             "line 5: Invalid channel specifier \"Wrotation\".");
 }
 
+TEST(ModelMalformed, AFileGoesOnlyToTheReadersItsExtensionNames) {
+  // Neither glTF reader recognises this .glb; Assimp then offered it to every reader it has, and the
+  // OpenGEX reader, matching "indexarray", read past the end of the file (ASan, fuzz_model_import).
+  const std::string notGlb("lTasset\":indexarray\0ON{\"asset\":", 31);
+  EXPECT_EQ(loadError("opengex-bait.glb", notGlb).rfind("No suitable reader found for the file format", 0), 0u);
+  EXPECT_EQ(loadError("mesh.3ds", "MM"),
+            "'.3ds' is not a model format read here (.bvh, .obj, .gltf, .glb, .dae, .fbx, .x, .ply, .stl, .off)");
+  EXPECT_EQ(loadError("no-extension", "v 0 0 0\n").rfind("the name has no extension (.bvh, ", 0), 0u);
+}
+
 TEST(ModelMalformed, DirectoriesAndFilesOverTheSizeLimitAreRefusedUnread) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "pba_malformed_dir.bvh";
   std::filesystem::create_directories(dir);
