@@ -114,7 +114,7 @@ TEST(RagdollCharacter, HumanoidBvhLandsAndComesToRestWithBothMethods) {
 }
 
 TEST(RagdollCharacter, CmuBvhOfAssimpTestModelsAtFrame100LandsAndComesToRestWithBothMethods) {
-  if (!std::filesystem::exists(kCmu)) GTEST_SKIP() << kCmu << " absent (Debian package assimp-testmodels)";
+  ASSERT_TRUE(std::filesystem::exists(kCmu)) << kCmu << " is missing: install assimp-testmodels (./pba does)";
   // Its 31 joints make 21 bones: the helper joints at the hips (LHipJoint, RHipJoint, LowerBack) and the
   // thumbs merge into their parents (skeleton_ragdoll.h).
   const LoadedSkeleton s = load(kCmu, 100);
