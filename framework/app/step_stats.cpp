@@ -5,6 +5,15 @@
 
 namespace pba::app {
 
+void StepStats::add(double milliseconds) {
+  if (samples_.size() < window_) {
+    samples_.push_back(milliseconds);
+    return;
+  }
+  samples_[next_] = milliseconds;
+  next_ = (next_ + 1) % window_;
+}
+
 StepSummary StepStats::summary() const {
   if (samples_.empty()) return {};
   std::vector<double> sorted = samples_;
