@@ -155,7 +155,10 @@ int runLab(const std::string& lab, int argc, const char* const* argv) {
       const GoldenOptions golden{o.goldenFile, o.goldenUpdate, o.frames.value_or(kDefaultGoldenFrames)};
       return runGoldenCheck(lab, golden, std::cout, std::cerr);
     }
-    if (o.soakSeconds) return runSoak(lab, SoakOptions{*o.soakSeconds, o.seed}, std::cout, std::cerr);
+    if (o.soakSeconds) {
+      restartWithoutThreadCache(argv);
+      return runSoak(lab, SoakOptions{*o.soakSeconds, o.seed}, std::cout, std::cerr);
+    }
     SceneRunner runner;
     if (!o.demo.empty()) return runDemo(lab, o, runner);
     if (Status s = prepareRunner(lab, o, runner); !s) {

@@ -33,6 +33,13 @@ inline constexpr double kSoakStallSeconds = 30.0;    ///< [s] wall time of one f
 inline constexpr double kSoakMemoryGrowth = 0.01;    ///< growth allowed after warm-up, a fraction of resident memory
 inline constexpr double kSoakWarmupFraction = 0.25;  ///< of the run's duration, at least
 
+/// For `--soak`, before anything else runs: execs the program again with glibc's per-thread malloc cache
+/// off (GLIBC_TUNABLES), whose freed chunks mallinfo2 would count as memory in use. Returns when the cache
+/// is already off, in sanitizer builds, or when exec fails (the soak then measures with the cache on).
+void restartWithoutThreadCache(const char* const* argv);
+/// The cache is off in this process (the soak's report says which).
+bool threadCacheOff();
+
 struct SoakOptions {
   double seconds = 60.0;  ///< [s] wall time
   std::uint64_t seed = 1;
