@@ -222,8 +222,11 @@ class Fabrik final : public Method {
   }
 
   // Joint k (child of body j) must relate body j's proposal (*Pp, *Rp) to body k's new pose: moves
-  // the proposal to the nearest one the joint allows. `oldP`: body j's pivot before the pass.
-  void constrain(Context& c, int k, const Vec3& oldP, Vec3* Pp, Quat* Rp) const {
+  // the proposal to the nearest one the joint allows. `oldP`, `oldR`: body j's pose before the pass.
+  // Only ball and free joints start from the point rule's proposal (the caller's propose()); the others
+  // fix body j from body k and their one DOF, and a hinge asks for the proposal only where its optimum
+  // is undefined.
+  void constrain(Context& c, int k, const Vec3& oldP, const Quat& oldR, Vec3* Pp, Quat* Rp) {
     const Joint& joint = c.skeleton.joint(k);
     const Vec3& Pk = P_[static_cast<size_t>(k)];
     const Quat& Rk = R_[static_cast<size_t>(k)];
@@ -255,6 +258,7 @@ class Fabrik final : public Method {
         if (std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk))) {
           theta = -std::atan2(S, C);
         } else {
+          propose(oldP, oldR, t, Pk, Pp, Rp);
           const Quat local = glm::conjugate(*Rp * joint.restRotation) * Rk;
           theta = 2.0 * std::atan2(glm::dot(Vec3(local.x, local.y, local.z), joint.axis), local.w);
         }
@@ -340,8 +344,10 @@ class Fabrik final : public Method {
         add(Pp, Rp);
       }
       for (int k : kids(j)) {
-        propose(oldP, oldR, jointTranslation(c.skeleton.joint(k), c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
-        constrain(c, k, oldP, &Pp, &Rp);
+        const Joint& kid = c.skeleton.joint(k);
+        if (kid.type == JointType::Ball || kid.type == JointType::Free)
+          propose(oldP, oldR, jointTranslation(kid, c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
+        constrain(c, k, oldP, oldR, &Pp, &Rp);
         add(Pp, Rp);
       }
       if (proposals == 1) {
