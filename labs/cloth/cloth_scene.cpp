@@ -41,6 +41,21 @@ ClothScene::ClothScene() {
                "Implicit: at most this many conjugate-gradient iterations per step. Typical 500.")
       .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
   params_
+      .real("max_strain_growth", &settings_.implicit.maxStrainGrowth, 0.0, 1.0, "",
+            "Implicit: a step in which some spring's strain grows by more than this is retried as two half steps "
+            "(step control as in Baraff & Witkin's simulator; 0 = off). Typical 0.1.")
+      .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
+  params_
+      .flag("speculative_contacts", &settings_.implicit.speculativeContacts,
+            "Implicit: also constrain particles that would reach a collider within the step, so that they land on "
+            "it inside the solve (our addition to Baraff & Witkin; off: only touching particles).")
+      .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
+  params_
+      .flag("static_friction", &settings_.implicit.staticFriction,
+            "Implicit: a contact that friction stopped is held to the collider inside the next solve, so its "
+            "springs see it hold (off: friction only after the solve, which makes stiff cloth jitter).")
+      .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
+  params_
       .real("compliance", &compliance_, 0.0, 1e-2, "m/N",
             "XPBD compliance α = 1/k of the stretch and shear constraints: 0 is inextensible. Independent of "
             "iterations and substeps, unlike PBD's stiffness. Typical 0–10⁻⁴.")
@@ -168,6 +183,7 @@ nlohmann::json ClothScene::clothMetrics(const Cloth& c, const ClothStepStats& st
                    {"mesh_valid", checkMeshConsistency(c).empty()},
                    {"cg_iterations", stats.cgIterations},
                    {"cg_residual", stats.cgResidual},
+                   {"implicit_retries", stats.implicitRetries},
                    {"constraint_iterations", stats.constraintIterations},
                    {"contacts", stats.contacts},
                    {"torn", c.torn}};

@@ -49,6 +49,9 @@ Status validate(const ClothSolverSettings& s) {
   if (s.implicit.cg.maxIterations < 1) return Error{"cgMaxIterations: must be ≥ 1"};
   if (!(s.implicit.cg.tolerance > 0.0 && s.implicit.cg.tolerance < 1.0)) return Error{"cgTolerance: must be in (0, 1)"};
   if (s.tearing.enabled && !(s.tearing.threshold > 0.0)) return Error{"tearThreshold: must be > 0"};
+  if (!(s.implicit.maxStrainGrowth >= 0.0)) return Error{"maxStrainGrowth: must be ≥ 0 (0 = no step control)"};
+  if (s.implicit.maxHalvings < 0 || s.implicit.maxHalvings > 20)
+    return Error{"maxHalvings: must be in [0, 20], got " + std::to_string(s.implicit.maxHalvings)};
   if (!(s.divergedSpeed >= 0.0)) return Error{"divergedSpeed: must be ≥ 0 (0 = no check)"};
   return Status::success();
 }
@@ -135,21 +138,9 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
       case ClothSolverKind::Explicit:
         explicitSubstep(cloth, env, colliders, s, h, time, fraction, stats);
         break;
-      case ClothSolverKind::Implicit: {
-        // Pins move along their path within the step: each implicit substep aims at its share of it.
-        std::vector<Pin> finalPins = cloth.pins;
-        for (std::size_t p = 0; p < cloth.pins.size(); ++p) {
-          cloth.pins[p].target =
-              fraction >= 1.0 ? finalPins[p].target : pinStart_[p] + fraction * (finalPins[p].target - pinStart_[p]);
-        }
-        previous_ = cloth.position;
-        const ImplicitStats is = implicitStep(cloth, env, colliders, s.implicit, h, time, implicit_);
-        cloth.pins = std::move(finalPins);
-        stats.cgIterations = is.cg.iterations;
-        stats.cgResidual = is.cg.relativeResidual;
-        endSubstep(cloth, colliders, s, h, true, stats);
+      case ClothSolverKind::Implicit:
+        implicitSpan(cloth, env, colliders, s, time, h, static_cast<Real>(k) / n, fraction, 0, stats);
         break;
-      }
       case ClothSolverKind::Pbd:
       case ClothSolverKind::Xpbd:
         positionBasedSubstep(cloth, env, colliders, s, h, time, fraction, stats);
@@ -160,6 +151,52 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
   stats.tears = tearOverstretched(cloth, s.tearing);
   if (stats.tears > 0) implicit_.colouredSprings = ~std::size_t{0};
   return stats;
+}
+
+namespace {
+/// Largest growth of a spring's strain |l − L| / L from positions x0 to x1 (a spring that relaxes counts 0).
+Real largestStrainGrowth(std::span<const Link> springs, std::span<const Vec3> x0, std::span<const Vec3> x1) {
+  Real largest = 0.0;
+  for (const Link& l : springs) {
+    const Real before = std::abs(glm::length(x0[l.j] - x0[l.i]) - l.restLength);
+    const Real after = std::abs(glm::length(x1[l.j] - x1[l.i]) - l.restLength);
+    largest = std::max(largest, (after - before) / l.restLength);
+  }
+  return largest;
+}
+}  // namespace
+
+void ClothSolver::implicitSpan(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
+                               const ClothSolverSettings& s, Real t, Real h, Real from, Real to, int halvings,
+                               ClothStepStats& stats) {
+  // Pins move along their path within the step: each implicit step aims at its share of it.
+  std::vector<Pin> finalPins = cloth.pins;
+  for (std::size_t p = 0; p < cloth.pins.size(); ++p) {
+    cloth.pins[p].target = to >= 1.0 ? finalPins[p].target : pinStart_[p] + to * (finalPins[p].target - pinStart_[p]);
+  }
+  const bool control = s.implicit.maxStrainGrowth > 0.0 && halvings < s.implicit.maxHalvings;
+  previous_ = cloth.position;
+  if (control) {
+    savedVelocity_ = cloth.velocity;
+    savedReleased_ = implicit_.released;
+    savedSticking_ = implicit_.sticking;
+  }
+  const ImplicitStats is = implicitStep(cloth, env, colliders, s.implicit, h, t, implicit_);
+  cloth.pins = std::move(finalPins);
+  if (control && largestStrainGrowth(cloth.springs, previous_, cloth.position) > s.implicit.maxStrainGrowth) {
+    cloth.position = previous_;
+    cloth.velocity = savedVelocity_;
+    implicit_.released = savedReleased_;
+    implicit_.sticking = savedSticking_;
+    ++stats.implicitRetries;
+    const Real middle = 0.5 * (from + to);
+    implicitSpan(cloth, env, colliders, s, t, 0.5 * h, from, middle, halvings + 1, stats);
+    implicitSpan(cloth, env, colliders, s, t + 0.5 * h, 0.5 * h, middle, to, halvings + 1, stats);
+    return;
+  }
+  stats.cgIterations = is.cg.iterations;
+  stats.cgResidual = is.cg.relativeResidual;
+  endSubstep(cloth, colliders, s, h, true, stats);
 }
 
 void ClothSolver::beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s, Real dt) {

@@ -77,6 +77,7 @@ struct ClothStepStats {
   std::size_t tears = 0;         ///< vertex splits this step
   int substepsTaken = 0;         ///< substeps done this step (fewer than asked when it diverged)
   bool diverged = false;         ///< a particle passed ClothSolverSettings::divergedSpeed (or is not finite)
+  int implicitRetries = 0;       ///< implicit steps discarded by the step control and retried at half size
 };
 
 /// Stretch (l − L)/L of the mesh edges, the same measure for every model: largest and mean over the
@@ -112,11 +113,17 @@ class ClothSolver {
   void endSubstep(Cloth& cloth, std::span<const Collider> colliders, const ClothSolverSettings& s, Real h,
                   bool velocityLevel, ClothStepStats& stats);
   void movePins(Cloth& cloth, Real fraction);
+  /// Implicit steps over [from, to] of the step (pin fractions) from time t, of size h, halved while the
+  /// step control rejects them (ImplicitSettings::maxStrainGrowth).
+  void implicitSpan(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
+                    const ClothSolverSettings& s, Real t, Real h, Real from, Real to, int halvings,
+                    ClothStepStats& stats);
   void beginSelfCollision(Cloth& cloth, const ClothSolverSettings& s, Real dt);
 
   ImplicitWorkspace implicit_;
   SelfCollision self_;
-  std::vector<Vec3> previous_, force_, beforeSelf_, pinStart_;
+  std::vector<Vec3> previous_, force_, beforeSelf_, pinStart_, savedVelocity_;
+  std::vector<char> savedReleased_, savedSticking_;  ///< contact memory before a step the control may discard
   std::vector<Real> lambda_, bendLinkLambda_;
   std::vector<Vec3> bendLambda_;
 };

@@ -1,0 +1,134 @@
+// CLOTH-5's implicit Euler with contacts and step control (implicit.h, solver.h): a particle inside a
+// collider is moved onto its surface inside the solve without being set moving (the position alteration
+// of Baraff & Witkin §6), one that would pass the surface within the step lands on it (speculative
+// contact), and a pin dragged far in one frame does not overstretch stiff cloth when the step control
+// halves the step. Frictionless colliders only, so that no other exercise's code runs (CLOTH-4 is the
+// friction). Reference values: closed forms (surface heights, free fall, the closing speed).
+#include <gtest/gtest.h>
+
+#include "cloth_test_support.h"
+#include "physics/cloth/implicit.h"
+#include "support/expect_helpers.h"
+
+namespace pba::cloth {
+namespace {
+
+using testing::meshGrid;
+
+constexpr Real kH = 1.0 / 60.0;
+
+/// A flat 4 × 4 cloth at height y, every particle moving at vy, over a frictionless floor (y = 0).
+struct FlatOverFloor {
+  Cloth cloth;
+  std::vector<Collider> colliders;
+  Real margin = 0.0;
+};
+FlatOverFloor flatOverFloor(Real y, Real vy) {
+  FlatOverFloor s;
+  ClothMaterial m;
+  m.thickness = 0.01;
+  s.cloth = meshGrid(4, 0.3, y, GridPins::None, m);
+  for (Vec3& v : s.cloth.velocity) v = Vec3(0.0, vy, 0.0);
+  Collider floor;
+  floor.friction = 0.0;
+  s.colliders = {floor};
+  s.margin = 0.5 * m.thickness;
+  return s;
+}
+
+ImplicitSettings exactSolve() {
+  ImplicitSettings settings;
+  settings.cg.tolerance = 1e-12;
+  return settings;
+}
+
+TEST(CLOTH_5_ImplicitContacts, AParticleInsideAColliderEndsTheStepOnItsSurfaceWithoutBeingSetMoving) {
+  const Real depth = 0.004;
+  FlatOverFloor s = flatOverFloor(0.005 - depth, 0.0);  // margin 5 mm: 4 mm inside, at rest
+  ImplicitWorkspace w;
+  const ImplicitStats stats = implicitStep(s.cloth, ClothEnvironment{}, s.colliders, exactSolve(), kH, 0.0, w);
+  EXPECT_EQ(stats.contactConstraints, s.cloth.size());
+  for (std::size_t i = 0; i < s.cloth.size(); ++i) {
+    EXPECT_NEAR(s.cloth.position[i].y, s.margin, 1e-12) << "particle " << i;
+    // Moved out by the depth, not launched at depth / h = 0.24 m/s: resting contact stays resting.
+    EXPECT_NEAR(s.cloth.velocity[i].y, 0.0, 1e-12) << "particle " << i;
+  }
+}
+
+TEST(CLOTH_5_ImplicitContacts, AParticleThatWouldPassTheSurfaceWithinTheStepLandsOnIt) {
+  const Real gap = 0.002, speed = 1.0;  // h · speed = 16.7 mm > gap
+  FlatOverFloor s = flatOverFloor(0.005 + gap, -speed);
+  ImplicitWorkspace w;
+  const ImplicitStats stats = implicitStep(s.cloth, ClothEnvironment{}, s.colliders, exactSolve(), kH, 0.0, w);
+  EXPECT_EQ(stats.contactConstraints, s.cloth.size());
+  for (std::size_t i = 0; i < s.cloth.size(); ++i) {
+    EXPECT_NEAR(s.cloth.position[i].y, s.margin, 1e-12) << "particle " << i;
+    EXPECT_NEAR(s.cloth.velocity[i].y, -gap / kH, 1e-9) << "particle " << i;  // it closed the gap, no more
+  }
+}
+
+TEST(CLOTH_5_ImplicitContacts, AColliderFartherThanOneStepLeavesTheFreeFallAlone) {
+  FlatOverFloor s = flatOverFloor(0.5, -1.0);  // 0.5 m up, 1 m/s: not within reach of one step
+  ImplicitWorkspace w;
+  const ImplicitStats stats = implicitStep(s.cloth, ClothEnvironment{}, s.colliders, exactSolve(), kH, 0.0, w);
+  EXPECT_EQ(stats.contactConstraints, 0u);
+  // Springs at rest length and a uniform velocity: backward Euler of gravity alone, v₁ = v₀ − g h.
+  for (std::size_t i = 0; i < s.cloth.size(); ++i) {
+    EXPECT_NEAR(s.cloth.velocity[i].y, -1.0 - kStandardGravity * kH, 1e-9) << "particle " << i;
+  }
+}
+
+/// A stiff cloth hanging from two corners; one second in, one corner's pin is moved 10 cm sideways and
+/// 10 cm up within one frame (a fast mouse drag). Largest edge strain over the next three seconds.
+struct DragResult {
+  Real worstStrain = 0.0, finalStrain = 0.0;
+  int retries = 0;
+};
+DragResult dragAPin(Real maxStrainGrowth) {
+  ClothMaterial m;
+  m.stretchStiffness = m.shearStiffness = 1e5;
+  m.bendStiffness = 1e4;
+  m.springDamping = 0.1;
+  Cloth c = meshGrid(16, 1.0, 1.5, GridPins::TopCorners, m);
+  ClothSolverSettings s;
+  s.kind = ClothSolverKind::Implicit;
+  s.substeps = 1;
+  s.implicit.maxStrainGrowth = maxStrainGrowth;
+  ClothSolver solver;
+  DragResult r;
+  for (int f = 0; f < 240; ++f) {
+    if (f == 60) c.pins[0].target += Vec3(0.1, 0.1, 0.0);
+    r.retries += solver.step(c, ClothEnvironment{}, {}, s, kH, f * kH).implicitRetries;
+    EXPECT_FALSE(describeNonFinite(c).has_value()) << "frame " << f;
+    if (f >= 60) r.worstStrain = std::max(r.worstStrain, edgeStrain(c).max);
+  }
+  r.finalStrain = edgeStrain(c).max;
+  return r;
+}
+
+TEST(CLOTH_5_ImplicitStepControl, APinDraggedFarInOneFrameDoesNotOverstretchStiffCloth) {
+  const DragResult controlled = dragAPin(0.1);
+  EXPECT_GT(controlled.retries, 0);  // the drag's frame was split
+  // No step grows a strain by more than the threshold, from a taut cloth (the bare method: 4.9).
+  EXPECT_LT(controlled.worstStrain, 0.1);
+  EXPECT_LT(controlled.finalStrain, 0.002);  // and the cloth hangs taut again (k = 10⁵ N/m)
+}
+
+TEST(CLOTH_5_ImplicitStepControl, OffTakesEveryStepAsAskedAndCalmStepsAreNeverSplit) {
+  const DragResult bare = dragAPin(0.0);
+  EXPECT_EQ(bare.retries, 0);
+  // A cloth hanging at rest never trips the control.
+  ClothMaterial m;
+  m.stretchStiffness = m.shearStiffness = 1e5;
+  Cloth c = meshGrid(16, 1.0, 1.5, GridPins::TopCorners, m);
+  ClothSolverSettings s;
+  s.kind = ClothSolverKind::Implicit;
+  s.substeps = 1;
+  ClothSolver solver;
+  int retries = 0;
+  for (int f = 0; f < 120; ++f) retries += solver.step(c, ClothEnvironment{}, {}, s, kH, f * kH).implicitRetries;
+  EXPECT_EQ(retries, 0);
+}
+
+}  // namespace
+}  // namespace pba::cloth
