@@ -3,7 +3,8 @@
 // of Baraff & Witkin §6), one that would pass the surface within the step lands on it (speculative
 // contact), and a pin dragged far in one frame does not overstretch stiff cloth when the step control
 // halves the step. Frictionless colliders only, so that no other exercise's code runs (CLOTH-4 is the
-// friction). Reference values: closed forms (surface heights, free fall, the closing speed).
+// friction). Reference values: closed forms (surface heights, free fall, the closing speed, one spring's
+// backward Euler pull).
 #include <gtest/gtest.h>
 
 #include "cloth_test_support.h"
@@ -17,22 +18,33 @@ using testing::meshGrid;
 
 constexpr Real kH = 1.0 / 60.0;
 
-/// A flat 4 × 4 cloth at height y, every particle moving at vy, over a frictionless floor (y = 0).
-struct FlatOverFloor {
+/// Two particles of mass m on one spring along x, stretched from its rest length L to l, at height y,
+/// both moving at vy, over a frictionless floor (y = 0). No spring damping, so that backward Euler has a
+/// closed form along the spring: v = ± h k (l − L) / (m + 2 h² k) towards each other.
+struct PairOverFloor {
   Cloth cloth;
   std::vector<Collider> colliders;
-  Real margin = 0.0;
+  Real margin = 0.0, inwardSpeed = 0.0;
 };
-FlatOverFloor flatOverFloor(Real y, Real vy) {
-  FlatOverFloor s;
-  ClothMaterial m;
-  m.thickness = 0.01;
-  s.cloth = meshGrid(4, 0.3, y, GridPins::None, m);
-  for (Vec3& v : s.cloth.velocity) v = Vec3(0.0, vy, 0.0);
+PairOverFloor pairOverFloor(Real y, Real vy) {
+  constexpr Real m = 0.01, k = 500.0, L = 0.1, l = 0.12;
+  PairOverFloor s;
+  s.cloth.material.stretchStiffness = k;
+  s.cloth.material.springDamping = 0.0;
+  s.cloth.material.thickness = 0.01;
+  for (const Real x : {-0.5 * l, 0.5 * l}) {
+    s.cloth.position.emplace_back(x, y, 0.0);
+    s.cloth.restPosition.emplace_back(x * L / l, y, 0.0);
+    s.cloth.velocity.emplace_back(0.0, vy, 0.0);
+    s.cloth.mass.push_back(m);
+    s.cloth.inverseMass.push_back(1.0 / m);
+  }
+  s.cloth.springs.push_back(Link{0, 1, L, LinkKind::Stretch});
   Collider floor;
   floor.friction = 0.0;
   s.colliders = {floor};
-  s.margin = 0.5 * m.thickness;
+  s.margin = 0.5 * s.cloth.material.thickness;
+  s.inwardSpeed = kH * k * (l - L) / (m + 2.0 * kH * kH * k);
   return s;
 }
 
@@ -42,40 +54,48 @@ ImplicitSettings exactSolve() {
   return settings;
 }
 
+/// The spring's pull, solved with the contact: particle 0 moves +x, particle 1 −x, at the closed form.
+void expectThePullAlongTheSpring(const PairOverFloor& s) {
+  EXPECT_NEAR(s.cloth.velocity[0].x, s.inwardSpeed, 1e-9);
+  EXPECT_NEAR(s.cloth.velocity[1].x, -s.inwardSpeed, 1e-9);
+}
+
 TEST(CLOTH_5_ImplicitContacts, AParticleInsideAColliderEndsTheStepOnItsSurfaceWithoutBeingSetMoving) {
   const Real depth = 0.004;
-  FlatOverFloor s = flatOverFloor(0.005 - depth, 0.0);  // margin 5 mm: 4 mm inside, at rest
+  PairOverFloor s = pairOverFloor(0.005 - depth, 0.0);  // margin 5 mm: 4 mm inside, at rest
   ImplicitWorkspace w;
   const ImplicitStats stats = implicitStep(s.cloth, ClothEnvironment{}, s.colliders, exactSolve(), kH, 0.0, w);
-  EXPECT_EQ(stats.contactConstraints, s.cloth.size());
-  for (std::size_t i = 0; i < s.cloth.size(); ++i) {
+  EXPECT_EQ(stats.contactConstraints, 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_NEAR(s.cloth.position[i].y, s.margin, 1e-12) << "particle " << i;
     // Moved out by the depth, not launched at depth / h = 0.24 m/s: resting contact stays resting.
     EXPECT_NEAR(s.cloth.velocity[i].y, 0.0, 1e-12) << "particle " << i;
   }
+  expectThePullAlongTheSpring(s);
 }
 
 TEST(CLOTH_5_ImplicitContacts, AParticleThatWouldPassTheSurfaceWithinTheStepLandsOnIt) {
   const Real gap = 0.002, speed = 1.0;  // h · speed = 16.7 mm > gap
-  FlatOverFloor s = flatOverFloor(0.005 + gap, -speed);
+  PairOverFloor s = pairOverFloor(0.005 + gap, -speed);
   ImplicitWorkspace w;
   const ImplicitStats stats = implicitStep(s.cloth, ClothEnvironment{}, s.colliders, exactSolve(), kH, 0.0, w);
-  EXPECT_EQ(stats.contactConstraints, s.cloth.size());
-  for (std::size_t i = 0; i < s.cloth.size(); ++i) {
+  EXPECT_EQ(stats.contactConstraints, 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
     EXPECT_NEAR(s.cloth.position[i].y, s.margin, 1e-12) << "particle " << i;
     EXPECT_NEAR(s.cloth.velocity[i].y, -gap / kH, 1e-9) << "particle " << i;  // it closed the gap, no more
   }
+  expectThePullAlongTheSpring(s);
 }
 
 TEST(CLOTH_5_ImplicitContacts, AColliderFartherThanOneStepLeavesTheFreeFallAlone) {
-  FlatOverFloor s = flatOverFloor(0.5, -1.0);  // 0.5 m up, 1 m/s: not within reach of one step
+  PairOverFloor s = pairOverFloor(0.5, -1.0);  // 0.5 m up at 1 m/s: out of reach of one step
   ImplicitWorkspace w;
   const ImplicitStats stats = implicitStep(s.cloth, ClothEnvironment{}, s.colliders, exactSolve(), kH, 0.0, w);
   EXPECT_EQ(stats.contactConstraints, 0u);
-  // Springs at rest length and a uniform velocity: backward Euler of gravity alone, v₁ = v₀ − g h.
-  for (std::size_t i = 0; i < s.cloth.size(); ++i) {
+  for (std::size_t i = 0; i < 2; ++i) {  // backward Euler of gravity: v₁ = v₀ − g h
     EXPECT_NEAR(s.cloth.velocity[i].y, -1.0 - kStandardGravity * kH, 1e-9) << "particle " << i;
   }
+  expectThePullAlongTheSpring(s);
 }
 
 /// A stiff cloth hanging from two corners; one second in, one corner's pin is moved 10 cm sideways and
@@ -126,8 +146,11 @@ TEST(CLOTH_5_ImplicitStepControl, OffTakesEveryStepAsAskedAndCalmStepsAreNeverSp
   s.substeps = 1;
   ClothSolver solver;
   int retries = 0;
+  const Real startY = c.position.back().y;
   for (int f = 0; f < 120; ++f) retries += solver.step(c, ClothEnvironment{}, {}, s, kH, f * kH).implicitRetries;
   EXPECT_EQ(retries, 0);
+  EXPECT_LT(c.position.back().y, startY - 0.1);  // the free corner swung down
+  EXPECT_LT(edgeStrain(c).max, 0.002);
 }
 
 }  // namespace
