@@ -154,10 +154,12 @@ ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std:
 }
 
 namespace {
-/// Largest growth of a spring's strain |l − L| / L from positions x0 to x1 (a spring that relaxes counts 0).
+/// Largest growth of a stretch or shear spring's strain |l − L| / L from positions x0 to x1 (a spring that
+/// relaxes counts 0; bend springs shorten by design when the cloth folds).
 Real largestStrainGrowth(std::span<const Link> springs, std::span<const Vec3> x0, std::span<const Vec3> x1) {
   Real largest = 0.0;
   for (const Link& l : springs) {
+    if (l.kind == LinkKind::Bend) continue;
     const Real before = std::abs(glm::length(x0[l.j] - x0[l.i]) - l.restLength);
     const Real after = std::abs(glm::length(x1[l.j] - x1[l.i]) - l.restLength);
     largest = std::max(largest, (after - before) / l.restLength);
