@@ -42,7 +42,8 @@ ClothScene::ClothScene() {
       .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
   params_
       .real("max_strain_growth", &settings_.implicit.maxStrainGrowth, 0.0, 1.0, "",
-            "Implicit: a step in which some spring's strain grows by more than this is retried as two half steps "
+            "Implicit: a step in which some stretch or shear spring's strain grows by more than this is retried as "
+            "two half steps "
             "(step control as in Baraff & Witkin's simulator; 0 = off). Typical 0.1.")
       .shownWhen([this] { return solverKind_ == ClothSolverKind::Implicit; });
   params_

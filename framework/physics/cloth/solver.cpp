@@ -99,11 +99,14 @@ void ClothSolver::reset() {
   bendLinkLambda_.clear();
 }
 
+Vec3 ClothSolver::pinOnItsPath(const Cloth& cloth, std::size_t k, Real fraction) const {
+  const Vec3& target = cloth.pins[k].target;
+  return fraction >= 1.0 ? target : pinStart_[k] + fraction * (target - pinStart_[k]);
+}
+
 void ClothSolver::movePins(Cloth& cloth, Real fraction) {
-  for (std::size_t k = 0; k < cloth.pins.size(); ++k) {
-    const Pin& p = cloth.pins[k];
-    cloth.position[p.particle] = fraction >= 1.0 ? p.target : pinStart_[k] + fraction * (p.target - pinStart_[k]);
-  }
+  for (std::size_t k = 0; k < cloth.pins.size(); ++k)
+    cloth.position[cloth.pins[k].particle] = pinOnItsPath(cloth, k, fraction);
 }
 
 namespace {
@@ -173,9 +176,7 @@ void ClothSolver::implicitSpan(Cloth& cloth, const ClothEnvironment& env, std::s
                                ClothStepStats& stats) {
   // Pins move along their path within the step: each implicit step aims at its share of it.
   std::vector<Pin> finalPins = cloth.pins;
-  for (std::size_t p = 0; p < cloth.pins.size(); ++p) {
-    cloth.pins[p].target = to >= 1.0 ? finalPins[p].target : pinStart_[p] + to * (finalPins[p].target - pinStart_[p]);
-  }
+  for (std::size_t p = 0; p < cloth.pins.size(); ++p) cloth.pins[p].target = pinOnItsPath(cloth, p, to);
   const bool control = s.implicit.maxStrainGrowth > 0.0 && halvings < s.implicit.maxHalvings;
   previous_ = cloth.position;
   if (control) {

@@ -112,6 +112,9 @@ class ClothSolver {
   void solveConstraints(Cloth& cloth, const ClothSolverSettings& s, Real h);
   void endSubstep(Cloth& cloth, std::span<const Collider> colliders, const ClothSolverSettings& s, Real h,
                   bool velocityLevel, ClothStepStats& stats);
+  /// Where pin k is due at `fraction` of the step: on the straight path from where it began the step
+  /// (pinStart_) to its target.
+  Vec3 pinOnItsPath(const Cloth& cloth, std::size_t k, Real fraction) const;
   void movePins(Cloth& cloth, Real fraction);
   /// Implicit steps over [from, to] of the step (pin fractions) from time t, of size h, halved while the
   /// step control rejects them (ImplicitSettings::maxStrainGrowth).
