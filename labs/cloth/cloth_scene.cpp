@@ -92,7 +92,9 @@ ClothScene::ClothScene() {
                "Particle–particle self-collision (Ten Minute Physics #15, dense spatial hash).");
   params_
       .integer("self_sweeps", &settings_.selfCollisionSweeps, 1, 10, "",
-               "Self-collision sweeps per substep (TMP: 1). More resolve piles of many layers.")
+               "Self-collision sweeps per substep (TMP: 1). Each further one follows the colliders and revisits the "
+               "pairs in "
+               "contact: piles of many layers stay a thickness apart.")
       .shownWhen([this] { return settings_.selfCollision; });
   params_.flag("tearing", &settings_.tearing.enabled, "Edges stretched beyond tear_threshold split the cloth.");
   params_

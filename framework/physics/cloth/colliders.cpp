@@ -86,9 +86,11 @@ SurfacePoint surfaceOf(const Prepared& p, const Vec3& x) {
   return {};
 }
 
-/// True when x is certainly farther than margin from the collider (bounding sphere test).
+/// True when x is certainly farther than margin from the collider: above a plane (exact, the test
+/// surfaceOf makes), outside the bounding sphere of the others.
 bool clearOf(const Prepared& p, const Vec3& x, Real margin) {
   const Vec3 d = x - p.c->center;
+  if (p.c->shape == ColliderShape::Plane) return glm::dot(p.axis, d) >= margin;
   const Real r = p.bound + margin;
   return glm::dot(d, d) > r * r;
 }

@@ -36,12 +36,10 @@ void DenseGrid::build(std::span<const Vec3> x, Real cell) {
   fill_.assign(start_.begin(), start_.end() - 1);
   particle.resize(n);
   position.resize(n);
-  cellOfEntry_.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t e = fill_[cellOfInput_[k]]++;
     particle[e] = static_cast<std::uint32_t>(k);
     position[e] = x[k];
-    cellOfEntry_[e] = cellOfInput_[k];
   }
 }
 

@@ -17,10 +17,11 @@ class DenseGrid {
   /// Sorts x into cubic cells of edge at least cell [m] > 0 (larger when the box would need more than
   /// 8 cells per particle).
   void build(std::span<const Vec3> x, Real cell);
-  /// Calls visit(e, f) once for every pair of entries in the same or adjacent cells (e ≠ f, in no
-  /// particular order); the caller tests their distance (position[e], particle[e]).
+  /// Calls visit(e, first, last) for runs of entries [first, last) such that every pair of entries in the
+  /// same or adjacent cells is (e, f) for exactly one f of one run (e ≠ f, in no particular order); the
+  /// caller tests their distance (position[e], particle[e]).
   template <typename Visit>
-  void forEachNearPair(Visit&& visit) const;
+  void forEachNearRun(Visit&& visit) const;
 
   std::vector<std::uint32_t> particle;  ///< entry → particle index
   std::vector<Vec3> position;           ///< entry → position [m]
@@ -32,7 +33,6 @@ class DenseGrid {
   std::size_t nx_ = 1, ny_ = 1, nz_ = 1;
   std::vector<std::uint32_t> start_;  ///< cells + 1 prefix sums
   std::vector<std::uint32_t> cellOfInput_, fill_;
-  std::vector<std::uint32_t> cellOfEntry_;
 };
 
 inline std::size_t DenseGrid::cellIndex(const Vec3& p) const {
@@ -44,26 +44,34 @@ inline std::size_t DenseGrid::cellIndex(const Vec3& p) const {
 }
 
 template <typename Visit>
-void DenseGrid::forEachNearPair(Visit&& visit) const {
-  const std::size_t rowStride = nx_, sliceStride = nx_ * ny_;
-  for (std::uint32_t e = 0; e < particle.size(); ++e) {
-    const std::size_t c = cellOfEntry_[e];
-    const std::size_t i = c % nx_, j = (c / nx_) % ny_, k = c / sliceStride;
-    const std::size_t i0 = i > 0 ? i - 1 : 0, i1 = i + 1 < nx_ ? i + 1 : i;
-    // Rows (dj, dk) after the own row in cell order: dk = 0, dj = 1; dk = 1, dj = −1, 0, 1.
-    auto row = [&](std::size_t jj, std::size_t kk) {
-      const std::size_t base = jj * rowStride + kk * sliceStride;
-      for (std::uint32_t f = start_[base + i0]; f < start_[base + i1 + 1]; ++f) visit(e, f);
-    };
-    {  // own row: the entries after e
-      const std::size_t base = j * rowStride + k * sliceStride;
-      for (std::uint32_t f = e + 1; f < start_[base + i1 + 1]; ++f) visit(e, f);
-    }
-    if (j + 1 < ny_) row(j + 1, k);
-    if (k + 1 < nz_) {
-      if (j > 0) row(j - 1, k + 1);
-      row(j, k + 1);
-      if (j + 1 < ny_) row(j + 1, k + 1);
+void DenseGrid::forEachNearRun(Visit&& visit) const {
+  // Cell by cell, so that a cell's coordinates come from the loops (no divisions per entry); locals, so
+  // that what visit writes cannot make the compiler load them again.
+  const std::size_t nx = nx_, ny = ny_, nz = nz_, rowStride = nx_, sliceStride = nx_ * ny_;
+  const std::uint32_t* start = start_.data();
+  for (std::size_t k = 0; k < nz; ++k) {
+    for (std::size_t j = 0; j < ny; ++j) {
+      const std::size_t rowBase = j * rowStride + k * sliceStride;
+      for (std::size_t i = 0; i < nx; ++i) {
+        const std::uint32_t first = start[rowBase + i], last = start[rowBase + i + 1];
+        if (first == last) continue;
+        const std::size_t i0 = i > 0 ? i - 1 : 0, i1 = i + 1 < nx ? i + 1 : i;
+        // Rows (dj, dk) after the own row in cell order: dk = 0, dj = 1; dk = 1, dj = −1, 0, 1.
+        auto row = [&](std::uint32_t e, std::size_t jj, std::size_t kk) {
+          const std::size_t base = jj * rowStride + kk * sliceStride;
+          visit(e, start[base + i0], start[base + i1 + 1]);
+        };
+        const std::uint32_t ownEnd = start[rowBase + i1 + 1];
+        for (std::uint32_t e = first; e < last; ++e) {
+          visit(e, e + 1, ownEnd);  // own row: the entries after e
+          if (j + 1 < ny) row(e, j + 1, k);
+          if (k + 1 < nz) {
+            if (j > 0) row(e, j - 1, k + 1);
+            row(e, j, k + 1);
+            if (j + 1 < ny) row(e, j + 1, k + 1);
+          }
+        }
+      }
     }
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <type_traits>
 
 namespace pba::cloth {
 namespace {
@@ -21,24 +22,25 @@ Real distance2(const Vec3& a, const Vec3& b) {
 
 void SelfCollision::buildPairs(std::span<const Vec3> x, std::span<const Vec3> rest, Real thickness, Real reach,
                                bool nearList) {
+  nearBuilds_ = 0;
   pairs_.clear();
-  near_.clear();
-  framePairsBuilt_ = false;
-  nearThickness_ = 0.0;
-  skin_ = kSelfSkinFactor * thickness;
-  untracked_.assign(x.size(), 0);
-  untrackedPairs_.clear();
-  untrackedCount_ = 0;
+  // The Verlet list outlives the frame unless what decides its pairs changed (a reset to another cloth,
+  // tearing, another thickness, the other mode).
+  if (!nearList || !nearList_ || thickness != thickness_ || rest.size() != rest_.size() ||
+      !std::equal(rest.begin(), rest.end(), rest_.begin())) {
+    nearBuilt_ = false;
+    near_.clear();
+    rest_.assign(rest.begin(), rest.end());
+  }
   nearList_ = nearList;
-  nearBuilds_ = fullSweeps_ = 0;
-  start_.assign(x.begin(), x.end());
-  rest_.assign(rest.begin(), rest.end());
   thickness_ = thickness;
-  if (x.empty() || !(thickness > 0.0)) return;
+  skin_ = kSelfSkinFactor * thickness;
+  if (x.empty() || !(thickness > 0.0) || nearList) return;
+  start_.assign(x.begin(), x.end());
   reach_ = std::max(reach, thickness);
-  // The grid of TMP's query (cells of the reach at the frame's start): it lists F, or a particle's pairs,
-  // and orders them. A query visits its 27 cells in turn but a bucket only once: where two of them share a
-  // bucket (rare), the rank of a cell is that of the first.
+  // The grid of TMP's query (cells of the reach at the frame's start): it lists F and orders it. A query
+  // visits its 27 cells in turn but a bucket only once: where two of them share a bucket (rare), the rank
+  // of a cell is that of the first.
   wide_.build(start_, {}, reach_);
   cell_.resize(x.size());
   bucket_.resize(x.size());
@@ -54,9 +56,7 @@ void SelfCollision::buildPairs(std::span<const Vec3> x, std::span<const Vec3> re
     std::sort(b.begin(), b.end());
     shared_[i] = std::adjacent_find(b.begin(), b.end()) != b.end() ? 1 : 0;
   }
-  away_.assign(x.size(), 0.0);
-  moved_.assign(x.size(), 0.0);
-  if (!nearList) buildFramePairs();
+  buildFramePairs();
 }
 
 std::uint64_t SelfCollision::key(std::uint32_t i, std::uint32_t j) const {
@@ -74,42 +74,6 @@ std::uint64_t SelfCollision::key(std::uint32_t i, std::uint32_t j) const {
         }
   }
   return std::uint64_t{i} << 37 | std::uint64_t{rank} << 32 | j;
-}
-
-[[gnu::always_inline]] inline bool SelfCollision::inFrame(std::uint32_t i, std::uint32_t j) const {
-  return distance2(start_[i], start_[j]) < reach_ * reach_ && !neighbours(rest_[i], rest_[j], thickness_);
-}
-
-void SelfCollision::framePairsOf(std::uint32_t k, std::vector<std::uint64_t>& out) const {
-  const Real reach2 = reach_ * reach_;
-  const Vec3 p = start_[k];
-  wide_.forEachNearBucket(p, [&](std::uint32_t, std::uint32_t first, std::uint32_t last) {
-    for (std::uint32_t f = first; f < last; ++f) {
-      if (distance2(p, wide_.position[f]) >= reach2) continue;
-      const std::uint32_t j = wide_.particle[f];
-      if (j != k && !neighbours(rest_[k], rest_[j], thickness_)) out.push_back(key(std::min(k, j), std::max(k, j)));
-    }
-  });
-}
-
-void SelfCollision::sortKeys(std::vector<std::uint64_t>& keys) {
-  // Counting sort by i, then each row by (rank, j), without repeats.
-  const std::size_t n = start_.size();
-  rowEnd_.assign(n + 1, 0);
-  for (const std::uint64_t q : keys) ++rowEnd_[(q >> 37) + 1];
-  for (std::size_t i = 0; i < n; ++i) rowEnd_[i + 1] += rowEnd_[i];
-  byRow_.resize(keys.size());
-  for (const std::uint64_t q : keys) byRow_[rowEnd_[q >> 37]++] = q;
-  std::size_t begin = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t end = rowEnd_[i];
-    if (end - begin > 1) {
-      std::sort(byRow_.begin() + static_cast<std::ptrdiff_t>(begin), byRow_.begin() + static_cast<std::ptrdiff_t>(end));
-    }
-    begin = end;
-  }
-  byRow_.erase(std::unique(byRow_.begin(), byRow_.end()), byRow_.end());
-  keys.swap(byRow_);
 }
 
 void SelfCollision::buildFramePairs() {
@@ -132,62 +96,72 @@ void SelfCollision::buildFramePairs() {
     });
     std::sort(pairs_.begin() + static_cast<std::ptrdiff_t>(rowBegin), pairs_.end());
   }
-  framePairsBuilt_ = true;
 }
 
 void SelfCollision::buildNearList(std::span<const Vec3> x) {
-  // The pairs of F closer than thickness + s now, found in cells of that size, with every pair of F of an
-  // untracked particle; in F's order.
   const Real near = thickness_ + skin_;
   const Real near2 = near * near;
   near_.clear();
+  const Real neighbour = kSelfNeighbourFactor * thickness_;
+  const Real neighbour2 = neighbour * neighbour;
   narrow_.build(x, near);
-  narrow_.forEachNearPair([&](std::uint32_t e, std::uint32_t f) __attribute__((always_inline)) {
-    if (distance2(narrow_.position[e], narrow_.position[f]) >= near2) return;
-    const std::uint32_t i = narrow_.particle[e], j = narrow_.particle[f];
-    if (inFrame(i, j)) near_.push_back(key(std::min(i, j), std::max(i, j)));
+  restInCellOrder_.resize(x.size());
+  for (std::size_t e = 0; e < x.size(); ++e) restInCellOrder_[e] = rest_[narrow_.particle[e]];
+  const Vec3* position = narrow_.position.data();
+  const Vec3* rest = restInCellOrder_.data();
+  const std::uint32_t* particle = narrow_.particle.data();
+  // Most candidates are neighbours in a flat stretch of cloth, or not close: whether one is kept is
+  // unpredictable, so every candidate is written and the count advances only for those kept (no branch).
+  std::size_t count = 0;
+  narrow_.forEachNearRun([&](std::uint32_t e, std::uint32_t first, std::uint32_t last) {
+    if (count + (last - first) > candidates_.size()) candidates_.resize(2 * (count + (last - first)));
+    std::array<std::uint32_t, 2>* out = candidates_.data();
+    const Vec3 p = position[e], r = rest[e];
+    const std::uint32_t i = particle[e];
+    for (std::uint32_t f = first; f < last; ++f) {
+      const bool close = distance2(p, position[f]) < near2;
+      const bool apartAtRest = distance2(r, rest[f]) >= neighbour2;
+      const std::uint32_t j = particle[f];
+      out[count] = {std::min(i, j), std::max(i, j)};
+      count += static_cast<std::size_t>(close & apartAtRest);
+    }
   });
-  sortKeys(near_);
-  if (!untrackedPairs_.empty()) {
-    merged_.clear();
-    std::set_union(near_.begin(), near_.end(), untrackedPairs_.begin(), untrackedPairs_.end(),
-                   std::back_inserter(merged_));
-    near_.swap(merged_);
-  }
+  near_.assign(candidates_.begin(), candidates_.begin() + static_cast<std::ptrdiff_t>(count));
   builtAt_.assign(x.begin(), x.end());
-  nearThickness_ = thickness_;
+  nearBuilt_ = true;
   ++nearBuilds_;
 }
 
-void SelfCollision::untrack(std::span<const std::uint32_t> particles) {
-  added_.clear();
-  for (std::uint32_t k : particles) {
-    if (untracked_[k]) continue;
-    untracked_[k] = 1;
-    ++untrackedCount_;
-    framePairsOf(k, added_);
-  }
-  sortKeys(added_);
-  for (std::vector<std::uint64_t>* list : {&untrackedPairs_, &near_}) {
-    merged_.clear();
-    std::set_union(list->begin(), list->end(), added_.begin(), added_.end(), std::back_inserter(merged_));
-    list->swap(merged_);
-  }
+bool SelfCollision::movedPastHalfTheSkin(std::span<const Vec3> x) const {
+  // Half the skin less a margin far above round-off (a pair left out was ≥ thickness + skin apart).
+  const Real budget = 0.5 * skin_ - 1e-6 * thickness_;
+  const Real budget2 = budget * budget;
+  bool moved = false;
+  for (std::size_t i = 0; i < x.size(); ++i) moved |= !(distance2(x[i], builtAt_[i]) <= budget2);  // NaN: moved
+  return moved;
 }
 
-SelfCollisionStats SelfCollision::sweep(std::span<const std::uint64_t> pairs, std::span<Vec3> x,
-                                        std::span<const Vec3> xPrev, std::span<const Real> w, Real thickness,
-                                        Real friction, bool track) {
+template <typename Pairs>
+SelfCollisionStats SelfCollision::sweep(const Pairs& pairs, std::span<Vec3> x, std::span<const Vec3> xPrev,
+                                        std::span<const Real> w, Real thickness, Real friction, bool record) {
   SelfCollisionStats stats;
+  if (record) contacts_.clear();
   const Real thickness2 = thickness * thickness;
-  for (const std::uint64_t pair : pairs) {
-    const auto i = static_cast<std::uint32_t>(pair >> 37), j = static_cast<std::uint32_t>(pair);
+  for (const auto& pair : pairs) {
+    std::uint32_t i, j;
+    if constexpr (std::is_same_v<std::decay_t<decltype(pair)>, std::uint64_t>) {
+      i = static_cast<std::uint32_t>(pair >> 37);
+      j = static_cast<std::uint32_t>(pair);
+    } else {
+      i = pair[0];
+      j = pair[1];
+    }
     const Vec3 d = x[i] - x[j];
     const Real dist2 = glm::dot(d, d);
     if (dist2 >= thickness2 || dist2 == 0.0) continue;
     const Real wSum = w[i] + w[j];
     if (wSum == 0.0) continue;
-    const Vec3 oldI = x[i], oldJ = x[j];
+    if (record) contacts_.push_back({i, j});
     const Real dist = std::sqrt(dist2);
     const Real overlap = thickness - dist;
     stats.deepest = std::max(stats.deepest, overlap);
@@ -200,61 +174,17 @@ SelfCollisionStats SelfCollision::sweep(std::span<const std::uint64_t> pairs, st
     const Vec3 mean = 0.5 * (di + dj);
     if (w[i] > 0.0) x[i] += friction * (mean - di);
     if (w[j] > 0.0) x[j] += friction * (mean - dj);
-    if (track) {
-      undo_[undone_++] = {i, oldI};
-      undo_[undone_++] = {j, oldJ};
-      moved_[i] += glm::length(x[i] - oldI);
-      moved_[j] += glm::length(x[j] - oldJ);
-    }
   }
   return stats;
 }
 
-void SelfCollision::undo(std::span<Vec3> x) {
-  for (std::size_t u = undone_; u-- > 0;) x[undo_[u].particle] = undo_[u].position;
-}
-
 SelfCollisionStats SelfCollision::solve(std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> w,
-                                        Real thickness, Real friction) {
-  if (x.size() != start_.size() || x.empty() || !(thickness_ > 0.0) || thickness != thickness_) return {};
-  if (!nearList_) {
-    if (!framePairsBuilt_) buildFramePairs();
-    ++fullSweeps_;
-    return sweep(pairs_, x, xPrev, w, thickness, friction, false);
-  }
-  // How far a tracked particle may go from where it was at the build: half the skin, less a margin far
-  // above round-off (a pair of F left out was ≥ thickness + skin apart).
-  const Real budget = 0.5 * skin_ - 1e-6 * thickness;
-  far_.clear();
-  if (nearThickness_ == thickness) {
-    for (std::uint32_t i = 0; i < x.size(); ++i) {
-      if (untracked_[i]) continue;
-      away_[i] = std::sqrt(distance2(x[i], builtAt_[i]));
-      if (away_[i] > budget) far_.push_back(i);
-    }
-  }
-  // Many particles went too far (or there is no list yet): a new list; a few: they are untracked.
-  if (nearThickness_ != thickness || static_cast<Real>(far_.size()) > kSelfRebuildShare * static_cast<Real>(x.size())) {
-    buildNearList(x);
-    std::fill(away_.begin(), away_.end(), 0.0);
-  } else if (!far_.empty()) {
-    untrack(far_);
-  }
-  for (;;) {
-    undone_ = 0;
-    if (undo_.size() < 2 * near_.size()) undo_.resize(2 * near_.size());
-    const SelfCollisionStats stats = sweep(near_, x, xPrev, w, thickness, friction, true);
-    far_.clear();
-    for (std::size_t u = 0; u < undone_; ++u) {
-      const std::uint32_t k = undo_[u].particle;  // a particle listed twice is judged at its first entry
-      if (!untracked_[k] && away_[k] + moved_[k] > budget) far_.push_back(k);
-      moved_[k] = 0.0;
-    }
-    if (far_.empty()) return stats;
-    // A tracked particle went too far during the sweep: undo it, let its pairs in, sweep again.
-    undo(x);
-    untrack(far_);
-  }
+                                        Real thickness, Real friction, bool again) {
+  if (x.size() != rest_.size() || x.empty() || !(thickness_ > 0.0) || thickness != thickness_) return {};
+  if (again) return sweep(contacts_, x, xPrev, w, thickness, friction, false);
+  if (!nearList_) return sweep(pairs_, x, xPrev, w, thickness, friction, true);
+  if (!nearBuilt_ || movedPastHalfTheSkin(x)) buildNearList(x);
+  return sweep(near_, x, xPrev, w, thickness, friction, true);
 }
 
 std::size_t countSelfIntersections(std::span<const Vec3> x, std::span<const Vec3> rest, Real thickness,

@@ -53,9 +53,12 @@ struct ClothSolverSettings {
   /// TMP #15's speed limit with self-collision: at most this many thicknesses per substep (0 = none).
   /// It bounds how far a particle travels in a frame, so the pair list of the frame stays complete.
   Real selfCollisionMaxTravel = 0.2;
-  int selfCollisionSweeps = 1;  ///< Gauss–Seidel sweeps over the self-collision pairs per substep (TMP: 1)
-  /// Sweep only the near list of the frame's pairs (self_collision.h: the same result, bit for bit); false
-  /// sweeps all of them (the reference the tests compare with).
+  /// Gauss–Seidel sweeps over the self-collision pairs per substep (TMP: 1). From the second on (ours), each
+  /// follows a frictionless collider pass and visits only the pairs the first found in contact.
+  int selfCollisionSweeps = 1;
+  /// Sweep a Verlet list of the pairs near contact, checked before every sweep (self_collision.h: every
+  /// pair touching at a sweep's start is swept; ours). false: TMP's published form, the pairs within the
+  /// frame's travel swept in TMP's order in every substep.
   bool selfCollisionNearList = true;
   TearSettings tearing;
   /// [m/s] A safety limit, not part of any published method: a particle faster than this (or not finite)
