@@ -63,12 +63,14 @@ TEST(IkFabrikOptions, HandReachesAtLeast95PercentOfGoalsWithBothOptionsAndRestar
   const SolveOptions both = fabrikWithLimits(true, true, 10);
   const testing::BatchStats s = testing::runRandomTargets(rig, both, kGoals, kSeed);
   if (stubRan()) return;
-  const testing::BatchStats published = testing::runRandomTargets(rig, fabrikWithLimits(false, false, 10), kGoals, kSeed);
+  const testing::BatchStats published =
+      testing::runRandomTargets(rig, fabrikWithLimits(false, false, 10), kGoals, kSeed);
   const testing::BatchStats once = testing::runRandomTargets(rig, fabrikWithLimits(true, true, 0), kGoals, kSeed);
-  std::printf("[ stats    ] FABRIK on the hand, seed %d: %.1f %% with both options and 10 restarts (%.1f iterations), "
-              "%.1f %% without restarts; as published %.1f %% with 10 restarts\n",
-              static_cast<int>(kSeed), 100.0 * s.successRate(), s.meanIterations, 100.0 * once.successRate(),
-              100.0 * published.successRate());
+  std::printf(
+      "[ stats    ] FABRIK on the hand, seed %d: %.1f %% with both options and 10 restarts (%.1f iterations), "
+      "%.1f %% without restarts; as published %.1f %% with 10 restarts\n",
+      static_cast<int>(kSeed), 100.0 * s.successRate(), s.meanIterations, 100.0 * once.successRate(),
+      100.0 * published.successRate());
   SCOPED_TRACE(::testing::Message() << "hand, seed " << kSeed);
   expectValidPoses(s, both);
   expectValidPoses(published, both);
@@ -90,9 +92,10 @@ TEST(IkFabrikOptions, LeaveThePublishedPassesWhereTheyCannotAct) {
     const char* label;
     bool limits, twist, limitFit;
   };
-  const Case cases[] = {{buildDoubleY().value(), "double Y (ball joints only), limits, twist", true, true, false},
-                        {buildHand().value(), "hand without limits, limit fit", false, false, true},
-                        {testing::chain(JointType::Ball, 10, 180.0), "10 unlimited ball joints, both", true, true, true}};
+  const Case cases[] = {
+      {buildDoubleY().value(), "double Y (ball joints only), limits, twist", true, true, false},
+      {buildHand().value(), "hand without limits, limit fit", false, false, true},
+      {testing::chain(JointType::Ball, 10, 180.0), "10 unlimited ball joints, both", true, true, true}};
   for (const Case& k : cases) {
     SCOPED_TRACE(k.label);
     std::mt19937_64 rng(kSeed);
@@ -135,8 +138,8 @@ TEST(IkFabrikOptions, HingeTwistLetsAStraightOneWayHingeFindTheSideItBendsTo) {
   tip.localOffset = Vec3(0.5, 0.0, 0.0);
   rig.effectors.push_back(tip);
   Pose goalPose = rig.skeleton.restPose();
-  goalPose.dofs[0] = kPi;                  // turned over about the bone (x)
-  goalPose.dofs[3] = -degToRad(60.0);      // bent: toward +y once turned over
+  goalPose.dofs[0] = kPi;              // turned over about the bone (x)
+  goalPose.dofs[3] = -degToRad(60.0);  // bent: toward +y once turned over
   setGoalsFromPose(rig.skeleton, goalPose, rig.effectors);
   ASSERT_GT(rig.effectors[0].targetPosition.y, 0.1) << "the goal must lie on the side the hinge cannot bend to";
   exercises::clearNotImplemented();
