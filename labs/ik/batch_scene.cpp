@@ -4,13 +4,16 @@
 // On an imported skeleton (the chosen effectors get the random goals; --targets after --skeleton,
 // since the last flag that selects a scene wins):
 //   pba-ik --headless --skeleton resources/models/humanoid.bvh --effectors LeftHand,RightFoot --targets 100 --metrics -
+// On the tree scene's hand or double Y (every effector gets a goal):
+//   pba-ik --headless --solver fabrik --targets 300 --seed 12 --set tree=hand --metrics -
 // The solves run in reset(), so the metrics are ready after any number of frames and are identical
 // for identical seeds, timings excepted (solve_us_median, solve_us_p95: the determinism check skips
 // keys with a "us" or "ms" component). Every goal is solved twice: once by the method as published
 // (no restarts: success_rate_no_restarts, iterations_mean_no_restarts) and once with the stall
 // recovery of SolveOptions::restarts (success_rate and the other statistics; `restarts` says how
 // many were allowed, `--set restarts=0` makes the two runs one). Batch mode refuses what it cannot measure, with exit code 2:
-// analytic IK on more than 2 links, a skeleton without effectors or without a joint that moves them.
+// analytic IK on more than 2 links or a tree, a skeleton without effectors or without a joint that
+// moves them, a tree and a skeleton together.
 #include <algorithm>
 #include <cstdio>
 #include <random>
@@ -39,6 +42,7 @@ namespace pba::labs::ik {
 namespace {
 
 enum class BatchJoint { Hinge, Ball };
+enum class BatchTree { None, Hand, DoubleY };
 
 Real percentile(std::vector<Real> v, Real q) {
   if (v.empty()) return 0.0;
@@ -67,6 +71,9 @@ class BatchScene final : public app::Scene {
         .flag("limits", &options_.enforceLimits,
               "Enforce the joint limits (IK-6's clamp). Off: the goals still come from poses inside them.")
         .needsReset();
+    params_.choiceEnum("tree", &tree_, {"none", "hand", "double-y"},
+                       "A tree of the tree scene instead of the chain: the hand (five finger tips) or Buss & Kim's "
+                       "double Y. none: the chain.");
     declareMethodOptions(params_, options_, false);
     for (app::Param& p : params_.all())  // every setting of batch mode takes effect by re-running the solves
       p.needsReset = true;
@@ -82,6 +89,10 @@ class BatchScene final : public app::Scene {
     options_.restarts = 10;  // both runs say something: as published, and with the stall recovery
   }
   Status validate() override {
+    if (tree_ != BatchTree::None && !character_.skeleton.empty())
+      return Error{"tree: " + character_.skeleton + " is given too; choose the tree or the skeleton"};
+    if (tree_ != BatchTree::None && options_.solver == SolverKind::Analytic)
+      return Error{"--solver analytic applies to 1 or 2 links, not to a tree"};
     if (character_.skeleton.empty()) {
       if (options_.solver == SolverKind::Analytic && desc_.links > 2)
         return Error{"--solver analytic applies to 1 or 2 links, got --links " + std::to_string(desc_.links)};
@@ -112,7 +123,10 @@ class BatchScene final : public app::Scene {
   void reset() override {
     desc_.joint = joint_ == BatchJoint::Hinge ? JointType::Hinge : JointType::Ball;
     Result<Rig> character = character_.skeleton.empty() ? Result<Rig>(Error{""}) : app::loadCharacterRig(character_);
-    rig_ = character ? std::move(character).value() : buildIkChain(desc_).value();
+    rig_ = character                     ? std::move(character).value()
+           : tree_ == BatchTree::Hand    ? buildHand().value()
+           : tree_ == BatchTree::DoubleY ? buildDoubleY().value()
+                                         : buildIkChain(desc_).value();
     std::mt19937_64 rng(seed());
     std::vector<Real> residuals, times;
     successes_ = 0;
@@ -164,25 +178,28 @@ class BatchScene final : public app::Scene {
     d.text(Vec3(0.0, 1.2, 0.0), label, colors::kDark);
   }
   nlohmann::json metrics() const override {
-    return {{"solver", solverName(options_.solver)},
-            {"links", character_.skeleton.empty() ? desc_.links : rig_.skeleton.jointCount()},
-            {"joints", rig_.skeleton.jointCount()},
-            {"effectors", rig_.effectors.size()},
-            {"joint", !character_.skeleton.empty()  ? "skeleton"
-                      : joint_ == BatchJoint::Hinge ? "hinge"
-                                                    : "ball"},
-            {"targets", targets_},
-            {"success_rate_no_restarts", targets_ > 0 ? Real(plainSuccesses_) / targets_ : 0.0},
-            {"iterations_mean_no_restarts", plainIterationsMean_},
-            {"restarts", options_.restarts},
-            {"success_rate", targets_ > 0 ? Real(successes_) / targets_ : 0.0},
-            {"residual_max", residualMax_},
-            {"residual_median", residualMedian_},
-            {"iterations_mean", iterationsMean_},
-            {"limit_violations", violations_},
-            {"restarts_mean", restartsMean_},
-            {"solve_us_median", timeMedian_},
-            {"solve_us_p95", timeP95_}};
+    return {
+        {"solver", solverName(options_.solver)},
+        {"links", character_.skeleton.empty() && tree_ == BatchTree::None ? desc_.links : rig_.skeleton.jointCount()},
+        {"joints", rig_.skeleton.jointCount()},
+        {"effectors", rig_.effectors.size()},
+        {"joint", !character_.skeleton.empty()  ? "skeleton"
+                  : tree_ == BatchTree::Hand    ? "hand"
+                  : tree_ == BatchTree::DoubleY ? "double-y"
+                  : joint_ == BatchJoint::Hinge ? "hinge"
+                                                : "ball"},
+        {"targets", targets_},
+        {"success_rate_no_restarts", targets_ > 0 ? Real(plainSuccesses_) / targets_ : 0.0},
+        {"iterations_mean_no_restarts", plainIterationsMean_},
+        {"restarts", options_.restarts},
+        {"success_rate", targets_ > 0 ? Real(successes_) / targets_ : 0.0},
+        {"residual_max", residualMax_},
+        {"residual_median", residualMedian_},
+        {"iterations_mean", iterationsMean_},
+        {"limit_violations", violations_},
+        {"restarts_mean", restartsMean_},
+        {"solve_us_median", timeMedian_},
+        {"solve_us_p95", timeP95_}};
   }
   std::optional<std::string> nonFiniteState() const override {
     for (Real v : pose_.dofs)
@@ -193,6 +210,7 @@ class BatchScene final : public app::Scene {
  private:
   ChainDesc desc_;
   BatchJoint joint_ = BatchJoint::Hinge;
+  BatchTree tree_ = BatchTree::None;
   int targets_ = 100;
   SolveOptions options_;
   Rig rig_;

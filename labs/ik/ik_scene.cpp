@@ -35,6 +35,18 @@ void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacob
             "Not in the papers (our safeguard): JT, pinv, DLS and SDLS halve a step until the residual decreases "
             "(JT: Armijo's sufficient decrease from Buss's step length). Off = the methods as published.")
       .shownWhen(stepMethod);
+  auto fabrik = [&options, jacobianOnly] { return !jacobianOnly || options.solver == SolverKind::Fabrik; };
+  params
+      .flag("fabrik_hinge_twist", &options.fabrikHingeTwist,
+            "Not in the paper (ours): FABRIK's backward pass may turn the part below a hinge about the line to its "
+            "goal, so that the hinge bends toward its parent's place (a straight one-way finger finds the side it "
+            "bends to). Off = the published passes.")
+      .shownWhen(fabrik);
+  params
+      .flag("fabrik_limit_fit", &options.fabrikLimitFit,
+            "Not in the paper (ours): when FABRIK's forward pass turns a ball joint beyond its limits, it takes the "
+            "best rotation inside them instead of clamping the angles of the best rotation. Off = the clamp.")
+      .shownWhen(fabrik);
   params.integer(
       "restarts", &options.restarts, 0, 100, "",
       "Stall recovery, not in the papers (IK slides, 'when stuck, randomise the pose'): a stalled or crawling "

@@ -12,6 +12,10 @@ class TreeScene final : public IkScene {
   TreeScene() {
     options_.solver = SolverKind::SelectivelyDamped;
     options_.maxIterations = 30;
+    // FABRIK on the hand's one-way fingers needs our two options (docs/performance-ik.md): on here,
+    // the panel turns them off to show the published passes.
+    options_.fabrikHingeTwist = true;
+    options_.fabrikLimitFit = true;
     declareSolverParams();
     params_
         .choiceEnum("shape", &shape_, {"hand", "double-y"},

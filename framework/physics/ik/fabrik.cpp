@@ -32,9 +32,14 @@
 //     joints by the exact one-DOF optimum), then clamps to its limits. The pose is always valid.
 // 6-DOF effectors: the backward pass puts the body on the goal frame; the forward pass aligns three
 // extra points s·(x̂, ŷ, ẑ) of the effector frame with the goal frame's, as CCD does.
+// Two departures of ours, options off by default (SolveOptions, fabrik_options.cpp): fabrikHingeTwist
+// (the placed part below a hinge turns about the line to its goal, choosing the plane the hinge bends
+// in) and fabrikLimitFit (a limited ball joint takes the best rotation inside its limits, not the
+// clamp of the best rotation).
 // Cost: O(n) per iteration (a Horn fit, a 4 × 4 eigenproblem, only at bodies with several points).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <span>
 
@@ -176,6 +181,7 @@ class Fabrik final : public Method {
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
     buildLookahead(c);
+    if (c.options.fabrikHingeTwist) turns_.build(c);
     P_.assign(static_cast<size_t>(J), Vec3(0.0));
     R_.assign(static_cast<size_t>(J), Quat(1, 0, 0, 0));
     two_.assign(2, Vec3(0.0));
@@ -291,34 +297,14 @@ class Fabrik final : public Method {
     *Pp = Pk - *Rp * jointTranslation(joint, c.pose);
   }
 
-  // IK-6's clamp on a candidate value of joint k that is not the pose's: the `count` scalar DOFs
-  // `values` (hinge angle, displacement, Euler angles), or a free joint's rotation. They are written
-  // into the pose's slots of joint k, clamped there and read back, and the slots are restored (the
-  // backward pass only proposes; the forward pass writes the pose).
-  static Vec3 clampedByLimits(Context& c, int k, const Real* values, int count) {
-    Real* slots = c.pose.dofs.data() + c.skeleton.joint(k).firstDof;
-    Vec3 saved(0.0), out(0.0);
-    for (int i = 0; i < count; ++i) saved[i] = slots[i], slots[i] = values[i];
-    clampJointToLimits(c.skeleton, c.pose, k);
-    for (int i = 0; i < count; ++i) out[i] = slots[i], slots[i] = saved[i];
-    return out;
-  }
-  static Quat clampedRotation(Context& c, int k, const Quat& q) {
-    Quat& slot = c.pose.rotations[static_cast<size_t>(k)];
-    const Quat saved = slot;
-    slot = q;
-    clampJointToLimits(c.skeleton, c.pose, k);
-    const Quat out = slot;
-    slot = saved;
-    return out;
-  }
-
   void backward(Context& c) {
     const int J = c.skeleton.jointCount();
     for (int j = 0; j < J; ++j) {
       P_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].position;
       R_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].rotation;
     }
+    const bool twist = c.options.fabrikHingeTwist;
+    if (twist) turns_.reset();
     for (int j = J - 1; j >= 0; --j) {
       if (!c.active[static_cast<size_t>(j)]) continue;
       const Vec3 oldP = P_[static_cast<size_t>(j)];
@@ -347,12 +333,15 @@ class Fabrik final : public Method {
         const Joint& kid = c.skeleton.joint(k);
         if (kid.type == JointType::Ball || kid.type == JointType::Free)
           propose(oldP, oldR, jointTranslation(kid, c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
+        else if (twist && kid.type == JointType::Hinge && turns_.effectorOf(k) >= 0)
+          twistBelow(c, k, oldP, oldR);
         constrain(c, k, oldP, oldR, &Pp, &Rp);
         add(Pp, Rp);
       }
       if (proposals == 1) {
         P_[static_cast<size_t>(j)] = Pp;
         R_[static_cast<size_t>(j)] = Rp;
+        if (twist) turns_.placed(j);
         continue;
       }
       // A sub-base: the pivot at the centroid of the proposals (Aristidou & Lasenby §4.3), the body
@@ -363,6 +352,34 @@ class Fabrik final : public Method {
       P_[static_cast<size_t>(j)] = P;
       R_[static_cast<size_t>(j)] = fitRotation(from_, to_, w_, glm::normalize(sumR));
     }
+    if (twist) turns_.apply(c, P_, R_);
+  }
+
+  // fabrikHingeTwist (ours): the part below hinge k, placed by this pass, with one position effector
+  // on its goal, turns about the line from P_k to the goal by the candidate (hingePlaneTurns) whose
+  // hinge-constrained pivot for the parent lies nearest oldP; φ = 0 is the published pass. Ties (no
+  // limit acting: both candidates reach the point rule's pivot) keep the smaller turn.
+  void twistBelow(Context& c, int k, const Vec3& oldP, const Quat& oldR) {
+    const auto e = static_cast<size_t>(turns_.effectorOf(k));
+    const Vec3 Pk = P_[static_cast<size_t>(k)];
+    const Quat Rk = R_[static_cast<size_t>(k)];
+    Vec3 d(0.0);
+    Real phi[3] = {0.0, 0.0, 0.0};
+    const int count = 1 + hingePlaneTurns(Rk * c.skeleton.joint(k).axis, Pk, target_[e], oldP, &d, phi + 1);
+    Real bestPhi = 0.0, bestScore = std::numeric_limits<Real>::infinity();
+    const Real lever = glm::length(oldP - Pk);
+    for (int i = 0; i < count; ++i) {
+      R_[static_cast<size_t>(k)] = glm::normalize(glm::angleAxis(phi[i], d) * Rk);
+      Vec3 Pp = oldP;
+      Quat Rp = oldR;
+      constrain(c, k, oldP, oldR, &Pp, &Rp);
+      // The distance, plus a tie-break far below it (10⁻⁹ of the lever per radian): the smaller turn.
+      const Real score = glm::length(Pp - oldP) + 1e-9 * lever * std::abs(phi[i]);
+      if (score < bestScore) bestScore = score, bestPhi = phi[i];
+    }
+    R_[static_cast<size_t>(k)] = Rk;
+    // Body k turns now (the caller's constrain() reads it), its descendants when the pass ends.
+    if (bestPhi != 0.0) R_[static_cast<size_t>(k)] = turns_.turn(k, bestPhi, d, Pk, Rk);
   }
 
   // Root outward: each joint's pivot from its (already updated) parent, then the joint turns its
@@ -427,7 +444,13 @@ class Fabrik final : public Method {
       for (Vec3& t : to_) t -= f.position;
       world = fitRotation(from_, to_, w_, reference);
     }
-    setJointRotation(c, j, glm::normalize(glm::conjugate(f.pre) * world), clamp);
+    const Quat wanted = glm::normalize(glm::conjugate(f.pre) * world);
+    if (clamp && c.options.fabrikLimitFit) {  // ours: the best rotation inside the limits
+      goals_.assign(to_.begin(), to_.end());
+      if (from_.size() == 1) goals_[0] -= f.position;  // the fit above left several goals relative
+      if (fitBallWithinLimits(c, j, f, wanted, from_, goals_, w_, moved_)) return;
+    }
+    setJointRotation(c, j, wanted, clamp);
   }
 
   // The look-ahead of forward(): a ball or free joint with hinges or prismatic joints within
@@ -486,7 +509,8 @@ class Fabrik final : public Method {
   std::vector<Vec3> P_;                        // per joint: body pivot after the backward pass
   std::vector<Quat> R_;                        // per joint: body rotation after the backward pass
   std::vector<Vec3> target_;                   // per effector: where the forward pass aims it
-  std::vector<Vec3> pts_, two_, from_, to_;
+  DeferredTurns turns_;                        // fabrikHingeTwist's turns, applied when the pass ends
+  std::vector<Vec3> pts_, two_, from_, to_, goals_, moved_;
   std::vector<Real> lens_, one_, w_;
   Vec3 base_{0.0};
 };

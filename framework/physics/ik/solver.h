@@ -122,6 +122,22 @@ struct SolveOptions {
   /// 0: a stall ends the solve, as the methods are published.
   int restarts = 0;
   unsigned long long restartSeed = 0x5EEDull;  ///< seed of the restart poses
+  /// Departure (ours), FABRIK on hinges: in the backward pass, before a hinge relates its parent's
+  /// body to the part of the tree already placed below it, that part may turn as one rigid piece
+  /// about the line from the hinge's pivot to the goal of the one position effector it carries (a
+  /// turn that keeps the effector on its goal and the part's shape, so the point rule allows it).
+  /// The turn sets the plane the hinge bends in: of no turn and the turns that lay the plane through
+  /// the parent's previous pivot, the one whose hinge-constrained pivot lies nearest that pivot (ties:
+  /// the smallest turn). Without it the plane is the one the shortest-arc rule inherits, and a
+  /// straight one-way hinge (a finger) whose plane faces the wrong way cannot bend toward its goal.
+  /// false: the published passes.
+  bool fabrikHingeTwist = false;
+  /// Departure (ours), FABRIK with joint limits: when the forward pass's best rotation of a ball
+  /// joint leaves its Euler limits, the joint takes the rotation inside them that best carries its
+  /// points (coordinate sweeps of the exact one-angle optimum over its three angles, each clamped by
+  /// IK-6), instead of IK-6's clamp of the best rotation's angles, which can land far from the best
+  /// allowed rotation. false: the clamp.
+  bool fabrikLimitFit = false;
 };
 
 /// Checks every field of the options at its boundary (ranges, finiteness, enum values); the message

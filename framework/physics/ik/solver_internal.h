@@ -151,6 +151,57 @@ Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits);
 /// prismatic and fixed joints: false.
 bool rotationUnlimited(const Joint& joint);
 
+/// IK-6's clamp on candidate values of joint k that are not the pose's: the `count` scalar DOFs
+/// `values` (hinge angle, displacement, Euler angles) are written into the pose's slots of joint k,
+/// clamped there and read back, and the slots are restored. fabrik_options.cpp.
+Vec3 clampedByLimits(Context& c, int k, const Real* values, int count);
+/// The same for a free joint's rotation q.
+Quat clampedRotation(Context& c, int k, const Quat& q);
+
+/// SolveOptions::fabrikLimitFit (ours): ball joint j with pivot and pre-rotation `f` takes, when its
+/// best rotation `wanted` (local) leaves its limits, the local rotation inside them that best carries
+/// the points `from` (its frame) onto `goals` (world, relative to the pivot) with weights w. Writes
+/// the pose and c.local[j]. Returns false, doing nothing, when `wanted` is within the limits or the
+/// joint is no limited ball joint. `scratch`: reused storage. fabrik_options.cpp.
+bool fitBallWithinLimits(Context& c, int j, const Frame& f, const Quat& wanted, const std::vector<Vec3>& from,
+                         const std::vector<Vec3>& goals, const std::vector<Real>& w, std::vector<Vec3>& scratch);
+
+/// SolveOptions::fabrikHingeTwist (ours): the turns φ about the unit axis *d from `pivot` toward
+/// `goal` that bring a hinge's world axis `axis` perpendicular to oldP − pivot (the hinge's plane
+/// through oldP), or nearest it. Writes 0 or 2 angles into phi[0..1] and returns their count (0 when
+/// no turn changes the plane: goal at the pivot, or the axis or oldP − pivot along *d).
+int hingePlaneTurns(const Vec3& axis, const Vec3& pivot, const Vec3& goal, const Vec3& oldP, Vec3* d, Real* phi);
+
+/// fabrikHingeTwist's turns, deferred: FABRIK's backward pass turns the part it has placed below a
+/// hinge as one piece, but moves only the hinge's own body at once; every other joint of the part
+/// gets the turns made after it was placed when the pass ends (apply), so a turn costs O(1), not the
+/// size of the part. Parts are told apart by their one effector.
+class DeferredTurns {
+ public:
+  void build(const Context& c);
+  void reset();  ///< start of a pass: no turns yet
+  /// The one position effector below joint j (the part it belongs to), or -1 (never turned).
+  int effectorOf(int j) const { return effector_[static_cast<size_t>(j)]; }
+  /// Joint j's body was just placed.
+  void placed(int j) {
+    if (const int e = effectorOf(j); e >= 0) placed_[static_cast<size_t>(j)] = turns_[static_cast<size_t>(e)];
+  }
+  /// Turns the part below hinge k by φ about the unit axis d through `pivot`; returns body k's new
+  /// rotation (from R).
+  Quat turn(int k, Real phi, const Vec3& d, const Vec3& pivot, const Quat& R);
+  /// End of the pass: each active joint below a turned hinge gets the turns made after its placing.
+  void apply(const Context& c, std::vector<Vec3>& P, std::vector<Quat>& R) const;
+
+ private:
+  struct Motion {  // x ↦ q x + t
+    Quat q{1, 0, 0, 0};
+    Vec3 t{0.0};
+  };
+  std::vector<int> effector_;   // per joint: see effectorOf
+  std::vector<Motion> turns_;   // per effector: the turns made this pass, composed
+  std::vector<Motion> placed_;  // per joint: its effector's turns when the joint was placed
+};
+
 /// The straight pose toward the goal for a single unreachable position effector: each joint on the
 /// path, from the root, turns its bone toward the goal (Aristidou & Lasenby 2011, Algorithm 1, lines
 /// 3–8). Exact for ball and free joints without limits; best effort otherwise.
