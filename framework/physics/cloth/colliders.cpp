@@ -145,28 +145,50 @@ Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, R
   return collidePrepared(prepare(c), x, xPrev, margin, h, depth, frictionScale);
 }
 
+namespace {
+/// Projects particle i out of every collider; counts its contacts into stats.
+void collideOne(std::span<const Prepared> prepared, std::size_t i, std::span<Vec3> x, std::span<const Vec3> xPrev,
+                Real margin, Real h, std::span<Vec3> velocities, Real frictionScale, CollisionPassStats& stats) {
+  for (const Prepared& p : prepared) {
+    if (clearOf(p, x[i], margin)) continue;
+    Real depth = 0.0;
+    const Vec3 projected = collidePrepared(p, x[i], xPrev[i], margin, h, &depth, frictionScale);
+    if (depth <= 0.0) continue;
+    ++stats.contacts;
+    stats.deepest = std::max(stats.deepest, depth);
+    if (!velocities.empty()) velocities[i] += (projected - x[i]) / h;
+    x[i] = projected;
+  }
+}
+
+std::vector<Prepared> prepareAll(std::span<const Collider> colliders) {
+  std::vector<Prepared> prepared;
+  prepared.reserve(colliders.size());
+  for (const Collider& c : colliders) prepared.push_back(prepare(c));
+  return prepared;
+}
+}  // namespace
+
 CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec3> x, std::span<const Vec3> xPrev,
                               std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities,
                               Real frictionScale) {
   CollisionPassStats stats;
   if (colliders.empty()) return stats;
-  std::vector<Prepared> prepared;
-  prepared.reserve(colliders.size());
-  for (const Collider& c : colliders) prepared.push_back(prepare(c));
+  const std::vector<Prepared> prepared = prepareAll(colliders);
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (inverseMass[i] == 0.0) continue;
-    for (const Prepared& p : prepared) {
-      if (clearOf(p, x[i], margin)) continue;
-      Real depth = 0.0;
-      const Vec3 projected = collidePrepared(p, x[i], xPrev[i], margin, h, &depth, frictionScale);
-      if (depth <= 0.0) continue;
-      ++stats.contacts;
-      stats.deepest = std::max(stats.deepest, depth);
-      if (!velocities.empty()) velocities[i] += (projected - x[i]) / h;
-      x[i] = projected;
-    }
+    if (inverseMass[i] != 0.0) collideOne(prepared, i, x, xPrev, margin, h, velocities, frictionScale, stats);
   }
   return stats;
+}
+
+void collideListed(std::span<const Collider> colliders, std::span<const std::uint32_t> particles, std::span<Vec3> x,
+                   std::span<const Vec3> xPrev, std::span<const Real> inverseMass, Real margin, Real h) {
+  if (colliders.empty()) return;
+  const std::vector<Prepared> prepared = prepareAll(colliders);
+  CollisionPassStats unused;
+  for (const std::uint32_t i : particles) {
+    if (inverseMass[i] != 0.0) collideOne(prepared, i, x, xPrev, margin, h, {}, 0.0, unused);
+  }
 }
 
 Real minColliderDistance(std::span<const Collider> colliders, std::span<const Vec3> x, Real margin) {

@@ -9,6 +9,7 @@
 // point of its axis (exact); a plane or a box is the sphere tangent at the particle's closest surface point
 // (centre x − (d + R) n for signed distance d and normal n, any R > 0), which projects to the same point
 // and gives friction the same normal, so the result is exact too.
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -65,6 +66,10 @@ struct CollisionPassStats {
 CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec3> x, std::span<const Vec3> xPrev,
                               std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities,
                               Real frictionScale = 1.0);
+
+/// The frictionless projection of collideAll (positions only) for the listed particles (repeats allowed).
+void collideListed(std::span<const Collider> colliders, std::span<const std::uint32_t> particles, std::span<Vec3> x,
+                   std::span<const Vec3> xPrev, std::span<const Real> inverseMass, Real margin, Real h);
 
 /// Smallest signed distance of any particle to any collider minus `margin` [m] (negative = penetration);
 /// +∞ without colliders.

@@ -64,6 +64,11 @@ class SelfCollision {
   std::size_t framePairs() const { return pairs_.size(); }  ///< F (TMP's sweep; 0 with the Verlet list)
   std::size_t nearPairs() const { return near_.size(); }    ///< the Verlet list now
   std::size_t nearBuilds() const { return nearBuilds_; }    ///< Verlet lists built since the frame began
+  /// The particles of the pairs the last full sweep found in contact (repeats possible).
+  std::span<const std::uint32_t> contactParticles() const {
+    static_assert(sizeof(std::array<std::uint32_t, 2>) == 2 * sizeof(std::uint32_t));
+    return {contacts_.empty() ? nullptr : contacts_.front().data(), 2 * contacts_.size()};
+  }
   /// The Verlet list's pairs (i, j), i < j, in sweep order.
   std::span<const std::array<std::uint32_t, 2>> nearList() const { return near_; }
 

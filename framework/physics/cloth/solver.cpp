@@ -251,11 +251,14 @@ void ClothSolver::endSubstep(Cloth& cloth, std::span<const Collider> colliders, 
   if (s.selfCollision) {
     if (velocityLevel) beforeSelf_ = cloth.position;
     for (int sweep = 0; sweep < std::max(1, s.selfCollisionSweeps); ++sweep) {
-      // Between sweeps, the colliders without friction: the next sweep starts from particles outside
-      // them and makes again the pushes they undid (two sweeps so keep a pile on the floor from pressing
-      // its lowest layers together). Friction acts once, in the last pass.
-      if (sweep > 0)
-        collideAll(colliders, cloth.position, previous_, cloth.inverseMass, 0.5 * cloth.material.thickness, h, {}, 0.0);
+      // Between sweeps, the colliders without friction for the particles in contact: the next sweep
+      // starts from them outside the colliders and makes again the pushes the colliders undid (further
+      // sweeps so keep a pile on the floor from pressing its lowest layers together). Friction acts once,
+      // in the last pass.
+      if (sweep > 0) {
+        collideListed(colliders, self_.contactParticles(), cloth.position, previous_, cloth.inverseMass,
+                      0.5 * cloth.material.thickness, h);
+      }
       const std::size_t contacts =
           self_.solve(cloth.position, previous_, cloth.inverseMass, cloth.material.thickness, s.selfFriction, sweep > 0)
               .contacts;
