@@ -86,6 +86,23 @@ Real slideOnSlope(Real theta, Real mu) {
   return glm::dot(c.position[0] - o, down);
 }
 
+TEST(CLOTH_4_Colliders, TheListedPassProjectsOnlyTheListedFreeParticlesWithoutFriction) {
+  // Four particles 2 cm under the floor, moving sideways over the step; the list names 0, 2 (twice) and
+  // 3, which is pinned. Without friction they rise straight up to the margin; 1 and 3 stay.
+  const std::vector<Collider> floor{Collider{}};
+  const Real margin = 0.005;
+  std::vector<Vec3> x{{0.0, -0.02, 0.0}, {0.1, -0.02, 0.0}, {0.2, -0.02, 0.0}, {0.3, -0.02, 0.0}};
+  std::vector<Vec3> previous = x;
+  for (Vec3& p : previous) p.x -= 0.05;
+  const std::vector<Real> w{1.0, 1.0, 1.0, 0.0};
+  const std::vector<std::uint32_t> listed{0, 2, 2, 3};
+  collideListed(floor, listed, x, previous, w, margin, 0.01);
+  EXPECT_VEC3_NEAR(x[0], Vec3(0.0, margin, 0.0), 1e-15);
+  EXPECT_EQ(x[1], Vec3(0.1, -0.02, 0.0));
+  EXPECT_VEC3_NEAR(x[2], Vec3(0.2, margin, 0.0), 1e-15);
+  EXPECT_EQ(x[3], Vec3(0.3, -0.02, 0.0));
+}
+
 TEST(CLOTH_4_Friction, ClothSticksOnASlopeWithTanThetaBelowMuAndOtherwiseSlidesAtGTimesSinMinusMuCos) {
   const Real g = kStandardGravity;
   // tan 20° = 0.36 < 0.5: it sticks.
