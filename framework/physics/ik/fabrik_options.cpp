@@ -17,25 +17,6 @@
 
 namespace pba::ik::detail {
 
-Vec3 clampedByLimits(Context& c, int k, const Real* values, int count) {
-  Real* slots = c.pose.dofs.data() + c.skeleton.joint(k).firstDof;
-  Vec3 saved(0.0), out(0.0);
-  for (int i = 0; i < count; ++i) saved[i] = slots[i], slots[i] = values[i];
-  clampJointToLimits(c.skeleton, c.pose, k);
-  for (int i = 0; i < count; ++i) out[i] = slots[i], slots[i] = saved[i];
-  return out;
-}
-
-Quat clampedRotation(Context& c, int k, const Quat& q) {
-  Quat& slot = c.pose.rotations[static_cast<size_t>(k)];
-  const Quat saved = slot;
-  slot = q;
-  clampJointToLimits(c.skeleton, c.pose, k);
-  const Quat out = slot;
-  slot = saved;
-  return out;
-}
-
 // ---- fabrikLimitFit ------------------------------------------------------------------------------
 // Minimise Σ wᵢ |R fromᵢ − goalᵢ|², R = R_pre · Rx(θ₀) Ry(θ₁) Rz(θ₂), over the box of the Euler limits,
 // by coordinate sweeps from IK-6's clamp of `wanted`. Angle θₖ turns the points about the world axis

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "physics/ik/exercises.h"
 #include "physics/ik/solver.h"
 
 namespace pba::ik::detail {
@@ -153,10 +154,25 @@ bool rotationUnlimited(const Joint& joint);
 
 /// IK-6's clamp on candidate values of joint k that are not the pose's: the `count` scalar DOFs
 /// `values` (hinge angle, displacement, Euler angles) are written into the pose's slots of joint k,
-/// clamped there and read back, and the slots are restored. fabrik_options.cpp.
-Vec3 clampedByLimits(Context& c, int k, const Real* values, int count);
+/// clamped there and read back, and the slots are restored. Inline: FABRIK's passes call it per joint.
+inline Vec3 clampedByLimits(Context& c, int k, const Real* values, int count) {
+  Real* slots = c.pose.dofs.data() + c.skeleton.joint(k).firstDof;
+  Vec3 saved(0.0), out(0.0);
+  for (int i = 0; i < count; ++i) saved[i] = slots[i], slots[i] = values[i];
+  clampJointToLimits(c.skeleton, c.pose, k);
+  for (int i = 0; i < count; ++i) out[i] = slots[i], slots[i] = saved[i];
+  return out;
+}
 /// The same for a free joint's rotation q.
-Quat clampedRotation(Context& c, int k, const Quat& q);
+inline Quat clampedRotation(Context& c, int k, const Quat& q) {
+  Quat& slot = c.pose.rotations[static_cast<size_t>(k)];
+  const Quat saved = slot;
+  slot = q;
+  clampJointToLimits(c.skeleton, c.pose, k);
+  const Quat out = slot;
+  slot = saved;
+  return out;
+}
 
 /// SolveOptions::fabrikLimitFit (ours): ball joint j with pivot and pre-rotation `f` takes, when its
 /// best rotation `wanted` (local) leaves its limits, the local rotation inside them that best carries
