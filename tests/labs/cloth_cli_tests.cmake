@@ -26,8 +26,10 @@ add_test(NAME CLOTH_5_lab.cloth.implicit-stiff-springs-stay-stable-and-dissipate
 # solver: CLOTH-4 is the only exercise that runs).
 add_test(NAME CLOTH_4_lab.cloth.drape-never-inside-a-collider-by-more-than-a-millimetre COMMAND bash -c "${cl_value}; for c in sphere box capsule; do \"$0\" --headless --scene drape --solver explicit --set layout=mesh --set stiffness=500 --set substeps=100 --set collider=$c --frames 120 --metrics '${cl_work}/drape.json' || exit 1; w=$(value worst_collider_distance_m '${cl_work}/drape.json'); echo \"$c: worst $w\"; awk -v w=$w 'BEGIN { exit !(w > -0.001) }' || exit 1; done" ${cl_exe})
 # The TMP #15 ribbon folds onto itself: no pair of non-neighbouring particles ever closer than half the
-# thickness (over 4 s, default seed).
-add_test(NAME lab.cloth.self-collision-ribbon-never-passes-through-itself COMMAND bash -c "${cl_value}; \"$0\" --headless --scene self-collision --frames 240 --metrics '${cl_work}/self.json' || exit 1; n=$(value self_intersections_max '${cl_work}/self.json'); echo \"self_intersections_max=$n\"; [[ $n -eq 0 ]]" ${cl_exe})
+# thickness (over 4 s, default seed). Self-collision is no exercise, so this holds with any exercise
+# stubbed too; with CLOTH-2 stubbed the cloth's links go unsolved, their elastic energy grows and the
+# energy guard may pause the run (exit 3), which is accepted only when a stub ran.
+add_test(NAME lab.cloth.self-collision-ribbon-never-passes-through-itself COMMAND bash -c "\"$0\" --headless --scene self-collision --frames 240 --metrics '${cl_work}/self.json'; rc=$?; python3 -c \"import json,sys; d=json.load(open(sys.argv[1])); n=d['cloth']['self_intersections_max']; rc=int(sys.argv[2]); print('self_intersections_max', n, 'exit', rc, 'stubs', d['not_implemented']); sys.exit(0 if n == 0 and (rc == 0 or (rc == 3 and d['not_implemented'])) else 1)\" '${cl_work}/self.json' $rc" ${cl_exe})
 # Tearing: the ball (its sphere projection is CLOTH-4; explicit springs of the mesh layout, so no other
 # exercise runs) tears through, and the mesh stays valid and finite. A stubbed projection lets the ball
 # pass through untorn cloth.
