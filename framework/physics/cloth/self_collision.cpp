@@ -30,6 +30,7 @@ void SelfCollision::buildPairs(std::span<const Vec3> x, std::span<const Vec3> re
       !std::equal(rest.begin(), rest.end(), rest_.begin())) {
     nearBuilt_ = false;
     near_.clear();
+    contacts_.clear();
     rest_.assign(rest.begin(), rest.end());
   }
   nearList_ = nearList;
@@ -180,7 +181,10 @@ SelfCollisionStats SelfCollision::sweep(const Pairs& pairs, std::span<Vec3> x, s
 
 SelfCollisionStats SelfCollision::solve(std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> w,
                                         Real thickness, Real friction, bool again) {
-  if (x.size() != rest_.size() || x.empty() || !(thickness_ > 0.0) || thickness != thickness_) return {};
+  if (x.size() != rest_.size() || x.empty() || !(thickness_ > 0.0) || thickness != thickness_) {
+    contacts_.clear();  // nothing for further sweeps or the collider pass between them
+    return {};
+  }
   if (again) return sweep(contacts_, x, xPrev, w, thickness, friction, false);
   if (!nearList_) return sweep(pairs_, x, xPrev, w, thickness, friction, true);
   if (!nearBuilt_ || movedPastHalfTheSkin(x)) buildNearList(x);
