@@ -81,6 +81,10 @@ void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
 
 /// Midpoint / RK2 (Lobb notes): Δs = h f(s, t); s += h f(s + Δs/2, t + h/2).
 void midpointStep(OdeSystem& system, Real h, Workspace& w);
+/// The same method on the split s = (q, v), f = (v, a), in place (second_order_methods.cpp): the same
+/// numbers as the generic form (its derivative of a SecondOrderSystem is (v, a)), without copying the
+/// state out and back or the velocities into the slopes. Integrator uses this one.
+void midpointStep(SecondOrderSystem& system, Real h, Workspace& w);
 
 // ***** PART-3: classical Runge–Kutta 4 (Lobb notes, RK4) *****
 // (1) Read s and t. Evaluate four slopes, each from the previous one:

@@ -6,6 +6,12 @@
 #include <vector>
 
 namespace pba::ode {
+namespace {
+// Copies `from` to `to` through raw pointers, so that it is one memmove: std::ranges::copy into a span's
+// iterator compiled to an element-by-element loop (GCC 12), which was half the time of an explicit Euler
+// step of 10⁵ coordinates (getState and setState).
+void copyReals(std::span<const Real> from, Real* to) { std::copy(from.data(), from.data() + from.size(), to); }
+}  // namespace
 
 void SecondOrderSystem::acceleration(Real t, std::span<const Real> q, std::span<const Real> v,
                                      std::span<Real> out) const {
@@ -18,21 +24,21 @@ void SecondOrderSystem::acceleration(Real t, std::span<const Real> q, std::span<
 void SecondOrderSystem::getState(std::span<Real> out) const {
   const std::size_t n = dofCount();
   assert(out.size() == 2 * n);
-  std::ranges::copy(positions(), out.begin());
-  std::ranges::copy(velocities(), out.begin() + static_cast<std::ptrdiff_t>(n));
+  copyReals(positions(), out.data());
+  copyReals(velocities(), out.data() + n);
 }
 
 void SecondOrderSystem::setState(std::span<const Real> state) {
   const std::size_t n = dofCount();
   assert(state.size() == 2 * n);
-  std::ranges::copy(state.first(n), positions().begin());
-  std::ranges::copy(state.subspan(n), velocities().begin());
+  copyReals(state.first(n), positions().data());
+  copyReals(state.subspan(n), velocities().data());
   stateChanged();
 }
 
 void SecondOrderSystem::derivative(Real t, std::span<const Real> state, std::span<Real> out) const {
   const std::size_t n = dofCount();
-  std::ranges::copy(state.subspan(n), out.begin());  // q̇ = v
+  copyReals(state.subspan(n), out.data());  // q̇ = v
   acceleration(t, state.first(n), state.subspan(n), out.subspan(n));
 }
 

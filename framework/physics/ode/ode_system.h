@@ -73,8 +73,10 @@ class SecondOrderSystem : public OdeSystem {
   /// Called by an integrator after it changed positions and velocities (e.g. to refresh caches).
   virtual void stateChanged() {}
 
-  /// a = M⁻¹ f(t, q, v).
-  void acceleration(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const;
+  /// a = M⁻¹ f(t, q, v). The default is force() followed by a pass that scales by M⁻¹; a system that can
+  /// compute (f_i)·M⁻¹_i in the same pass as its force overrides it (one pass instead of two over the
+  /// coordinates: the in-place methods call it once or twice per step, the Runge–Kutta stages once each).
+  virtual void acceleration(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const;
 
   // OdeSystem, in terms of the split: s = (q, v), ṡ = (v, M⁻¹ f).
   std::size_t stateSize() const final { return 2 * dofCount(); }

@@ -30,6 +30,11 @@ void HarmonicOscillator::force(Real, std::span<const Real> q, std::span<const Re
   for (std::size_t i = 0; i < q.size(); ++i) out[i] = -desc_.stiffness * q[i];
 }
 
+void HarmonicOscillator::acceleration(Real, std::span<const Real> q, std::span<const Real>, std::span<Real> out) const {
+  const Real* __restrict w = w_.data();
+  for (std::size_t i = 0; i < q.size(); ++i) out[i] = (-desc_.stiffness * q[i]) * w[i];
+}
+
 void HarmonicOscillator::forceDifferential(Real, std::span<const Real>, std::span<const Real>, std::span<const Real> dq,
                                            std::span<const Real>, std::span<Real> out) const {
   for (std::size_t i = 0; i < dq.size(); ++i) out[i] = -desc_.stiffness * dq[i];  // K = −k I, D = 0

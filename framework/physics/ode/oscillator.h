@@ -35,6 +35,8 @@ class HarmonicOscillator final : public OwnedStateSystem {
   Real energy(std::size_t i = 0) const;
 
   void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
+  /// (−k q_i) M⁻¹_i in one pass: the same numbers as force() then the scaling.
+  void acceleration(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
   void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
                          std::span<const Real> dv, std::span<Real> out) const override;
 

@@ -30,6 +30,16 @@ bool verletRecurrence([[maybe_unused]] std::span<Real> q, [[maybe_unused]] std::
   // END SOLUTION
   // STUB: return exercises::notImplemented("PART-6", false, q, v, a, previous, h);  // the state stays
 }
+
+// Whether q and v are the lastQ and lastV the method produced (sizes equal): one pass over the four
+// arrays (== on values, so −0 equals +0, as std::ranges::equal compares).
+bool sameState(const VerletHistory& history, std::span<const Real> q, std::span<const Real> v) {
+  const Real* __restrict lastQ = history.lastQ.data();
+  const Real* __restrict lastV = history.lastV.data();
+  bool same = true;
+  for (std::size_t i = 0; i < q.size() && same; ++i) same = q[i] == lastQ[i] && v[i] == lastV[i];
+  return same;
+}
 }  // namespace
 
 void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistory& history, Workspace& w) {
@@ -39,15 +49,15 @@ void verletStep(SecondOrderSystem& system, [[maybe_unused]] Real h, VerletHistor
   const std::span<const Real> a = s.a;
   // Start (or restart) the two-step recurrence when the state is not the one this method produced:
   // q(t − h) from the Taylor expansion q − h v + h²a/2, exact under constant acceleration.
-  const bool same = history.valid && history.lastH == h && history.previous.size() == n &&
-                    std::ranges::equal(history.lastQ, q) && std::ranges::equal(history.lastV, v);
+  const bool same = history.valid && history.lastH == h && history.previous.size() == n && history.lastQ.size() == n &&
+                    history.lastV.size() == n && sameState(history, q, v);
   if (!same) {
     history.previous.resize(n);
     for (std::size_t i = 0; i < n; ++i) history.previous[i] = q[i] - h * v[i] + 0.5 * h * h * a[i];
   }
   if (!verletRecurrence(q, v, a, history.previous, h)) return;  // a stub: the state and clock stay
-  history.lastQ.assign(q.begin(), q.end());
-  history.lastV.assign(v.begin(), v.end());
+  history.lastQ.assign(q.data(), q.data() + n);                 // pointers: one memmove each
+  history.lastV.assign(v.data(), v.data() + n);
   history.lastH = h;
   history.valid = true;
   finishInPlace(system, s, h);

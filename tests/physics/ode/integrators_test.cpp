@@ -32,6 +32,44 @@ TEST(Midpoint, MultipliesTheOscillatorEnergyByOnePlusZToTheFourthOverFour) {
   EXPECT_TRUE(multipliesEnergyEachStepBy(osc, integrator, h, 50, 1.0 + z * z * z * z / 4.0, 1e-13));
 }
 
+TEST(Midpoint, InPlaceOnTheSplitGivesTheGenericMethodsNumbersBitForBit) {
+  // Integrator steps a SecondOrderSystem with the in-place form; the reference is the notes' formula
+  // s ← s + h f(s + (h/2) f(s, t), t + h/2) written here on the packed state, and the generic form.
+  const Real h = 0.01;
+  KeplerOrbit inPlace, generic, reference;
+  Integrator integrator(IntegratorKind::Midpoint);
+  Workspace w;
+  std::vector<Real> s(6), k1(6), mid(6), k2(6);
+  for (int step = 0; step < 300; ++step) {
+    integrator.step(inPlace, h);
+    midpointStep(static_cast<OdeSystem&>(generic), h, w);
+    const Real t = reference.time();
+    reference.getState(s);
+    reference.derivative(t, s, k1);
+    for (std::size_t i = 0; i < 6; ++i) mid[i] = s[i] + (0.5 * h) * k1[i];
+    reference.derivative(t + 0.5 * h, mid, k2);
+    for (std::size_t i = 0; i < 6; ++i) s[i] += h * k2[i];
+    reference.setState(s);
+    reference.setTime(t + h);
+  }
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(inPlace.positions()[i], reference.positions()[i]) << i;
+    EXPECT_EQ(inPlace.velocities()[i], reference.velocities()[i]) << i;
+    EXPECT_EQ(generic.positions()[i], reference.positions()[i]) << i;
+    EXPECT_EQ(generic.velocities()[i], reference.velocities()[i]) << i;
+  }
+  EXPECT_EQ(inPlace.time(), reference.time());
+}
+
+TEST(HarmonicOscillator, OnePassAccelerationIsTheForceScaledByTheInverseMass) {
+  HarmonicOscillator osc({.mass = 3.0, .stiffness = 7.0, .x0 = 0.3, .v0 = 0.0, .copies = 5});
+  const std::vector<Real> q{0.3, -1.7, 2.5, 1e-3, -0.0}, v(5, 0.0);
+  std::vector<Real> a(5), f(5);
+  osc.acceleration(0.0, q, v, a);
+  osc.force(0.0, q, v, f);
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(a[i], f[i] * (1.0 / 3.0)) << i;
+}
+
 TEST(ImplicitEuler, IsExactBackwardEulerOnTheOscillatorAndDissipatesAsOneOverOnePlusZSquared) {
   // Backward Euler: v₁ = v₀ − hω²x₁, x₁ = x₀ + h v₁  ⇒ energy × 1/(1 + z²) per step. The oscillator is
   // linear, so the linearised step is exact. Tested at 10× the symplectic Euler / Verlet limit z = 2.
