@@ -31,7 +31,6 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "physics/cloth/dense_grid.h"
