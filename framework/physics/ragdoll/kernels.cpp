@@ -4,16 +4,6 @@
 
 namespace pba::ragdoll {
 
-bool projectAlongGradient(std::vector<Vec3>& x, const std::vector<Real>& w, std::span<const Term> terms, const Vec3& n,
-                          Real c) {
-  Real denominator = 0.0;
-  for (const Term& t : terms) denominator += w[t.particle] * t.coefficient * t.coefficient;
-  if (!(denominator > 1e-300)) return false;
-  const Real s = c / denominator;
-  for (const Term& t : terms) x[t.particle] -= (s * w[t.particle] * t.coefficient) * n;
-  return true;
-}
-
 Real hingeAngle(const HingeFrame& f, const Vec3& p) {
   const Vec3 q = p - f.origin;
   return std::atan2(glm::dot(q, glm::cross(f.axis, f.zero)), glm::dot(q, f.zero));

@@ -23,9 +23,17 @@ struct Term {
   Real coefficient = 0.0;  ///< a_k
 };
 
-/// The projection above; false when nothing can move (Σ w a² = 0).
-bool projectAlongGradient(std::vector<Vec3>& x, const std::vector<Real>& w, std::span<const Term> terms, const Vec3& n,
-                          Real c);
+/// The projection above; false when nothing can move (Σ w a² = 0). Inline: every stick, joint point and
+/// contact of every relaxation pass goes through it, and the call and the span cost more than the sums.
+inline bool projectAlongGradient(std::vector<Vec3>& x, const std::vector<Real>& w, std::span<const Term> terms,
+                                 const Vec3& n, Real c) {
+  Real denominator = 0.0;
+  for (const Term& t : terms) denominator += w[t.particle] * t.coefficient * t.coefficient;
+  if (!(denominator > 1e-300)) return false;
+  const Real s = c / denominator;
+  for (const Term& t : terms) x[t.particle] -= (s * w[t.particle] * t.coefficient) * n;
+  return true;
+}
 
 /// A hinge of the particle ragdoll seen from bone A: the axis through `origin`, and the direction of
 /// angle 0 (unit, ⟂ axis). Angles about the axis by the right-hand rule.

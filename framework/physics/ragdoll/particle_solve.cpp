@@ -11,12 +11,13 @@
 namespace pba::ragdoll {
 
 void ParticleRagdoll::relax() {
+  if (settings_.student.stick) {
+    for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
+      for (const Stick& s : sticks_) projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
+    return;
+  }
   for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
     for (const Stick& s : sticks_) {
-      if (settings_.student.stick) {
-        projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
-        continue;
-      }
       const Vec3 d = x_[s.b] - x_[s.a];
       const Real length = glm::length(d);
       if (!(length > 1e-12)) continue;
@@ -105,16 +106,24 @@ void ParticleRagdoll::solveGround(int bone, bool record) {
 
 bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
   const Bone& B = bones_[bone];
-  std::array<Vec3, 4> p = particlesOf(bone);
+  // The corners' depths below the ground, from the heights of the four particles only (embedded()'s y,
+  // summed in its order).
+  const Real y[4] = {x_[B.first].y, x_[B.first + 1].y, x_[B.first + 2].y, x_[B.first + 3].y};
+  std::array<Real, std::tuple_size_v<decltype(Bone::corners)>> depth;
   // The deepest corner; equally deep ones (within 0.1 mm) are averaged (paper §3.3).
   Real deepest = 0.0;
-  for (const Weights& c : B.corners) deepest = std::max(deepest, settings_.groundHeight - embedded(p, c).y);
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    const Weights& c = B.corners[i];
+    depth[i] = settings_.groundHeight - (c[0] * y[0] + c[1] * y[1] + c[2] * y[2] + c[3] * y[3]);
+    deepest = std::max(deepest, depth[i]);
+  }
   if (!(deepest > 1e-9)) return false;
+  std::array<Vec3, 4> p = particlesOf(bone);
   Weights weights{0.0, 0.0, 0.0, 0.0};
   int count = 0;
-  for (const Weights& c : B.corners)
-    if (settings_.groundHeight - embedded(p, c).y > deepest - 1e-4) {
-      for (int k = 0; k < 4; ++k) weights[k] += c[k];
+  for (std::size_t i = 0; i < depth.size(); ++i)
+    if (depth[i] > deepest - 1e-4) {
+      for (int k = 0; k < 4; ++k) weights[k] += B.corners[i][k];
       ++count;
     }
   for (Real& c : weights) c /= count;
@@ -134,6 +143,16 @@ bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
 }
 
 void ParticleRagdoll::solveBonePair(int a, int b, bool record) {
+  // The broad phase's pairs are fattened for the whole step; most are apart in a given pass. Each box
+  // lies inside the sphere about its particles' centroid (the fitted frame's centre) through its corners,
+  // radius |h|: spheres apart means boxes apart, and the exact test below would find nothing to do.
+  const auto centroid = [this](int bone) {
+    const int f = bones_[bone].first;
+    return 0.25 * (x_[f] + x_[f + 1] + x_[f + 2] + x_[f + 3]);
+  };
+  const Real reach = (glm::length(bones_[a].halfExtents) + glm::length(bones_[b].halfExtents)) * (1.0 + 1e-6);
+  const Vec3 apart = centroid(b) - centroid(a);
+  if (glm::dot(apart, apart) > reach * reach) return;
   const collision::Transform ta = boneFrame(a), tb = boneFrame(b);
   const collision::Manifold m = collision::collideBoxes(bones_[a].shape, ta, bones_[b].shape, tb, 0.0);
   if (m.count == 0) return;

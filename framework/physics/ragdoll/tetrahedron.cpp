@@ -1,6 +1,9 @@
 #include "physics/ragdoll/tetrahedron.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include <glm/gtx/component_wise.hpp>
 
 namespace pba::ragdoll {
 
@@ -26,8 +29,15 @@ Mat3 restEdgesInverse(const std::array<Vec3, 4>& r) {
 collision::Transform fitFrame(const std::array<Vec3, 4>& x, const Mat3& restInverse) {
   Mat3 r = Mat3(x[1] - x[0], x[2] - x[0], x[3] - x[0]) * restInverse;
   // Higham's iteration converges quadratically to the polar factor; a bone is nearly rigid, so a few
-  // passes reach rounding. A reflected (inverted) tetrahedron keeps det < 0: flip one axis then.
-  for (int k = 0; k < 6; ++k) r = 0.5 * (r + glm::transpose(glm::inverse(r)));
+  // passes reach rounding (at most 6; it stops when a pass moves no entry by more than 10⁻¹⁴, where the
+  // next would move them by ~10⁻²⁸). A reflected (inverted) tetrahedron keeps det < 0: flip one axis then.
+  for (int k = 0; k < 6; ++k) {
+    const Mat3 next = 0.5 * (r + glm::transpose(glm::inverse(r)));
+    Real change = 0.0;
+    for (int c = 0; c < 3; ++c) change = std::max(change, glm::compMax(glm::abs(next[c] - r[c])));
+    r = next;
+    if (change < 1e-14) break;
+  }
   if (glm::determinant(r) < 0.0) r[0] = -r[0];
   const Vec3 centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
   return {centre, glm::normalize(glm::quat_cast(r))};
