@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <type_traits>
 
 namespace pba::cloth {
@@ -133,11 +134,25 @@ void SelfCollision::buildNearList(std::span<const Vec3> x) {
 }
 
 bool SelfCollision::movedPastHalfTheSkin(std::span<const Vec3> x) const {
+  // A pair's distance changes by at most |d_i − d_j| = |(d_i − c) − (d_j − c)| ≤ |d_i − c| + |d_j − c| for
+  // the displacements d since the build and any common vector c: with every |d_i − c| ≤ s/2, a pair left
+  // out (≥ thickness + s apart) is still ≥ thickness apart. c is the centre of the displacements' bounding
+  // box, so a cloth that falls as one keeps its list however far it falls (Verlet 1967's criterion is
+  // c = 0; Allen & Tildesley §5.3 note that only relative motion matters).
+  if (x.empty()) return false;
+  Vec3 lo(std::numeric_limits<Real>::infinity()), hi(-std::numeric_limits<Real>::infinity());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Vec3 d = x[i] - builtAt_[i];
+    lo = glm::min(lo, d);
+    hi = glm::max(hi, d);
+  }
+  const Vec3 common = 0.5 * (lo + hi);
   // Half the skin less a margin far above round-off (a pair left out was ≥ thickness + skin apart).
   const Real budget = 0.5 * skin_ - 1e-6 * thickness_;
   const Real budget2 = budget * budget;
   bool moved = false;
-  for (std::size_t i = 0; i < x.size(); ++i) moved |= !(distance2(x[i], builtAt_[i]) <= budget2);  // NaN: moved
+  for (std::size_t i = 0; i < x.size(); ++i)
+    moved |= !(distance2(x[i] - builtAt_[i], common) <= budget2);  // NaN: moved
   return moved;
 }
 

@@ -78,7 +78,8 @@ class SelfCollision {
                            Real thickness, Real friction, bool record);
   /// The pairs closer than thickness + s at x, not neighbours at rest; remembers x.
   void buildNearList(std::span<const Vec3> x);
-  /// Some particle is farther than s/2 from where it was at the list's build.
+  /// Some particle's displacement since the list's build, less the displacement common to all (the
+  /// centre of their bounding box), is longer than s/2.
   bool movedPastHalfTheSkin(std::span<const Vec3> x) const;
   /// Lists all of F (pairs_), in TMP's order.
   void buildFramePairs();

@@ -83,6 +83,38 @@ TEST(SelfCollision, TheVerletListHoldsEveryTouchingPairAtEverySweep) {
   EXPECT_GT(kept, 5u);       // and some small ones kept them
 }
 
+TEST(SelfCollision, ACommonDisplacementDoesNotCountAgainstTheSkin) {
+  // The same cluster, jitter and contacts twice: at rest, and moving 3 cm a substep as a whole (four
+  // skins). Only motion relative to the common displacement counts against the skin, so both build the
+  // list equally often (measured once per substep on the old criterion, every substep), and every
+  // touching pair is in it at every sweep.
+  const Real thickness = 0.01;
+  std::size_t builds[2] = {0, 0};
+  for (const int moving : {0, 1}) {
+    Cluster a = randomCluster(7, 120);
+    SelfCollision self;
+    self.buildPairs(a.x, a.rest, thickness, 0.03);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<Real> kick(-0.0005, 0.0005);
+    for (int substep = 0; substep < 8; ++substep) {
+      const std::vector<Vec3> previous = a.x;
+      for (std::size_t i = 0; i < a.x.size(); ++i) {
+        const Vec3 jitter(kick(rng), kick(rng), kick(rng));
+        if (a.w[i] != 0.0) a.x[i] += jitter;
+        a.x[i] += Vec3(0.0, -0.03 * moving, 0.0);  // the pinned ones are carried too (a moving pin)
+      }
+      const auto touching = touchingPairs(a, thickness);
+      self.solve(a.x, previous, a.w, thickness, 0.0);
+      const auto list = self.nearList();
+      for (const auto& p : touching)
+        ASSERT_NE(std::find(list.begin(), list.end(), p), list.end()) << "moving " << moving << ", substep " << substep;
+    }
+    builds[moving] = self.nearBuilds();
+  }
+  EXPECT_EQ(builds[1], builds[0]);
+  EXPECT_LT(builds[1], 9u);  // 1 + 8 if the common motion counted
+}
+
 TEST(SelfCollision, ParticlesPushedTogetherByOneSweepAreSeparatedByTheNext) {
   // Free particles 2 and 3 are 2.945 cm apart when the list is built (beyond thickness + skin = 1.75 cm,
   // so their pair is left out) and each overlaps a pinned particle (0, 1) almost completely: the sweep
