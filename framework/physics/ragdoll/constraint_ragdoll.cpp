@@ -84,11 +84,12 @@ std::vector<rigid::SolverBody> poses(const rigid::World& w) {
 }
 }  // namespace
 
-Real ConstraintRagdoll::jointAngle(int joint) const {
+Real ConstraintRagdoll::angleAt(int joint, const std::vector<rigid::SolverBody>& p) const {
   const rigid::Joint& j = world_.joints()[joints_[joint]];
-  const std::vector<rigid::SolverBody> p = poses(world_);
   return desc_[joint].kind == JointKind::Hinge ? rigid::jointCoordinate(j, p) : rigid::jointSwingAngle(j, p);
 }
+
+Real ConstraintRagdoll::jointAngle(int joint) const { return angleAt(joint, poses(world_)); }
 
 ConstraintStats ConstraintRagdoll::stats() const {
   const rigid::WorldStats w = world_.stats();
@@ -109,10 +110,11 @@ ConstraintStats ConstraintRagdoll::stats() const {
       s.maxPenetration = std::max(s.maxPenetration, -(body.position + body.orientation * corner).y);
     }
   }
+  const std::vector<rigid::SolverBody> p = poses(world_);  // once: every joint reads it
   for (std::size_t k = 0; k < desc_.size(); ++k) {
     const JointDesc& j = desc_[k];
     if (!j.limited) continue;
-    const Real a = jointAngle(static_cast<int>(k));
+    const Real a = angleAt(static_cast<int>(k), p);
     const Real beyond =
         j.kind == JointKind::Hinge ? std::max({0.0, a - j.upper, j.lower - a}) : std::max(0.0, a - j.coneAngle);
     s.maxLimitViolation = std::max(s.maxLimitViolation, beyond);

@@ -57,6 +57,9 @@ class ConstraintRagdoll {
   void drawJoints(DebugDraw& d) const;
 
  private:
+  /// jointAngle with the bodies' poses given (poses of every body: built once per query of all joints).
+  Real angleAt(int joint, const std::vector<rigid::SolverBody>& poses) const;
+
   rigid::World world_;
   std::vector<int> bodies_;  // per bone
   std::vector<int> joints_;  // per desc joint, the world joint

@@ -113,6 +113,8 @@ class World {
   void solve(Real dt);
   void solveContinuous(Real dt);
   void updateSleepTimers(Real dt);
+  /// The solver's copy of body i (pose, velocities, inverse mass and world inertia when awake).
+  void loadSolverBody(std::size_t i);
   void loadSolverBodies();
   void rebuildBroadPhase();
   bool jointConnected(int a, int b) const;
