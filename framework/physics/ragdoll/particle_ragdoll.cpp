@@ -90,11 +90,6 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
   return r;
 }
 
-std::array<Vec3, 4> ParticleRagdoll::particlesOf(int bone) const {
-  const int f = bones_[bone].first;
-  return {x_[f], x_[f + 1], x_[f + 2], x_[f + 3]};
-}
-
 collision::Transform ParticleRagdoll::boneFrame(int bone) const {
   return fitFrame(particlesOf(bone), bones_[bone].restInverse);
 }
@@ -159,7 +154,7 @@ void ParticleRagdoll::findPairs(Real dt) {
   };
   const auto consider = [&](const Entry& p, const Entry& q) {
     if (bones_[p.bone].fixed && bones_[q.bone].fixed) return;
-    if (jointed(p.bone, q.bone) || !collision::overlaps(p.box, q.box)) return;
+    if (!collision::overlaps(p.box, q.box) || jointed(p.bone, q.bone)) return;
     pairs_.emplace_back(std::min(p.bone, q.bone), std::max(p.bone, q.bone));
   };
   if (!settings_.broadPhase) {
@@ -171,12 +166,23 @@ void ParticleRagdoll::findPairs(Real dt) {
       }
     return;
   }
-  // Sweep and prune on x.
-  std::sort(entries.begin(), entries.end(), [](const Entry& p, const Entry& q) { return p.box.min.x < q.box.min.x; });
+  // Sweep and prune along the axis on which the boxes' centres spread most (Ericson, Real-Time Collision
+  // Detection §7.5.2): on a fixed axis, figures lying in rows across it all overlap on it, and the sweep
+  // tests every pair of a row (1,000 humans in 17 columns: ~900 candidates per bone along x).
+  Vec3 sum(0.0), sum2(0.0);
+  for (const Entry& e : entries) {
+    const Vec3 c = 0.5 * (e.box.min + e.box.max);
+    sum += c;
+    sum2 += c * c;
+  }
+  const Vec3 spread = sum2 - sum * sum / std::max<Real>(1.0, static_cast<Real>(entries.size()));  // n × variance
+  const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+  std::sort(entries.begin(), entries.end(),
+            [axis](const Entry& p, const Entry& q) { return p.box.min[axis] < q.box.min[axis]; });
   for (std::size_t i = 0; i < entries.size(); ++i)
-    for (std::size_t k = i + 1; k < entries.size() && entries[k].box.min.x <= entries[i].box.max.x; ++k)
+    for (std::size_t k = i + 1; k < entries.size() && entries[k].box.min[axis] <= entries[i].box.max[axis]; ++k)
       consider(entries[i], entries[k]);
-  std::sort(pairs_.begin(), pairs_.end());
+  std::sort(pairs_.begin(), pairs_.end());  // the solver's order does not depend on the axis
 }
 
 void ParticleRagdoll::applyFriction() {

@@ -157,7 +157,10 @@ class ParticleRagdoll {
     Vec3 point{0.0}, normal{0.0};
   };
 
-  std::array<Vec3, 4> particlesOf(int bone) const;
+  std::array<Vec3, 4> particlesOf(int bone) const {
+    const int f = bones_[bone].first;
+    return {x_[f], x_[f + 1], x_[f + 2], x_[f + 3]};
+  }
   Vec3 pointOf(int bone, const Weights& c) const { return embedded(particlesOf(bone), c); }
   Weights weightsOf(int bone, const Vec3& worldPoint) const { return barycentric(particlesOf(bone), worldPoint); }
   void integrate(Real dt);
