@@ -17,7 +17,7 @@ namespace pba::ik::detail {
 Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits) {
   const Joint& joint = c.skeleton.joint(j);
   const bool clampNow =
-      clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
+      clampLimits && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted)) && !rotationUnlimited(joint);
   Quat applied = wanted;
   if (joint.type == JointType::Ball) {
     if (clampNow) {

@@ -164,9 +164,14 @@ class Fabrik final : public Method {
       if (c.active[static_cast<size_t>(j)] && parent >= 0)
         kidList_[static_cast<size_t>(fill[static_cast<size_t>(parent)]++)] = j;
     }
-    effectorsOn_.assign(static_cast<size_t>(J), {});
+    // Effectors per joint, the same way: effList_[effStart_[j] .. effStart_[j + 1]).
+    effStart_.assign(static_cast<size_t>(J) + 1, 0);
+    for (const Effector& e : c.effectors) ++effStart_[static_cast<size_t>(e.joint) + 1];
+    for (size_t j = 0; j < static_cast<size_t>(J); ++j) effStart_[j + 1] += effStart_[j];
+    effList_.resize(static_cast<size_t>(E));
+    fill.assign(effStart_.begin(), effStart_.end() - 1);
     for (int e = 0; e < E; ++e)
-      effectorsOn_[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)].push_back(e);
+      effList_[static_cast<size_t>(fill[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)]++)] = e;
     target_.resize(static_cast<size_t>(E));
     for (int e = 0; e < E; ++e) target_[static_cast<size_t>(e)] = c.effectors[static_cast<size_t>(e)].targetPosition;
     // Points only: one chain from the root to a single position effector through ball or free joints
@@ -181,11 +186,18 @@ class Fabrik final : public Method {
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
     buildLookahead(c);
+    limited_.assign(static_cast<size_t>(J), 0);
+    for (int j = 0; j < J; ++j) limited_[static_cast<size_t>(j)] = !rotationUnlimited(c.skeleton.joint(j));
     if (c.options.fabrikHingeTwist) turns_.build(c);
     P_.assign(static_cast<size_t>(J), Vec3(0.0));
     R_.assign(static_cast<size_t>(J), Quat(1, 0, 0, 0));
     two_.assign(2, Vec3(0.0));
     one_.assign(1, 0.0);
+  }
+
+  // jointTranslation() inline: a joint's translation is its offset unless it is prismatic.
+  static Vec3 translationOf(const Joint& joint, const Pose& pose) {
+    return joint.type == JointType::Prismatic ? jointTranslation(joint, pose) : joint.offset;
   }
 
   // The points of joint j's body: in its frame (from_), their goals (to_, world) and weights.
@@ -194,7 +206,7 @@ class Fabrik final : public Method {
     from_.clear();
     to_.clear();
     w_.clear();
-    for (int e : effectorsOn_[static_cast<size_t>(j)]) {
+    for (int e : effectorsOn(j)) {
       const Effector& eff = c.effectors[static_cast<size_t>(e)];
       from_.push_back(eff.localOffset);
       to_.push_back(target_[static_cast<size_t>(e)]);
@@ -210,7 +222,7 @@ class Fabrik final : public Method {
       }
     }
     for (int k : kids(j)) {
-      from_.push_back(jointTranslation(c.skeleton.joint(k), c.pose));
+      from_.push_back(translationOf(c.skeleton.joint(k), c.pose));
       to_.push_back(P_[static_cast<size_t>(k)]);
       w_.push_back(1.0);
     }
@@ -257,7 +269,7 @@ class Fabrik final : public Method {
         // pivot lies on the line from P_k to oldP); where that is undefined (lever along the axis,
         // or oldP on it), the twist of the rule's proposal.
         const Vec3 w = Rk * joint.axis;
-        const Vec3 t = jointTranslation(joint, c.pose);
+        const Vec3 t = translationOf(joint, c.pose);
         const Vec3 u = perpendicularPart(-(Rk * (restInverse * t)), w), v = perpendicularPart(oldP - Pk, w);
         const Real S = glm::dot(w, glm::cross(u, v)), C = glm::dot(u, v);
         Real theta;
@@ -277,7 +289,7 @@ class Fabrik final : public Method {
       }
       case JointType::Ball:
       case JointType::Free: {
-        if (!clamp || rotationUnlimited(joint)) return;
+        if (!clamp || !limited_[static_cast<size_t>(k)]) return;
         const Quat local = glm::normalize(glm::conjugate(*Rp * joint.restRotation) * Rk);
         if (joint.type == JointType::Ball && c.surelyWithinLimits(k, local)) return;
         Quat allowed = local;
@@ -294,7 +306,7 @@ class Fabrik final : public Method {
         break;
       }
     }
-    *Pp = Pk - *Rp * jointTranslation(joint, c.pose);
+    *Pp = Pk - *Rp * translationOf(joint, c.pose);
   }
 
   void backward(Context& c) {
@@ -319,7 +331,7 @@ class Fabrik final : public Method {
         Pp = p;
         Rp = r;
       };
-      for (int e : effectorsOn_[static_cast<size_t>(j)]) {
+      for (int e : effectorsOn(j)) {
         const Effector& eff = c.effectors[static_cast<size_t>(e)];
         if (eff.kind == EffectorKind::PositionOrientation) {
           // The body onto the goal frame: exact, position and orientation.
@@ -332,7 +344,7 @@ class Fabrik final : public Method {
       for (int k : kids(j)) {
         const Joint& kid = c.skeleton.joint(k);
         if (kid.type == JointType::Ball || kid.type == JointType::Free)
-          propose(oldP, oldR, jointTranslation(kid, c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
+          propose(oldP, oldR, translationOf(kid, c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
         else if (twist && kid.type == JointType::Hinge && turns_.effectorOf(k) >= 0)
           twistBelow(c, k, oldP, oldR);
         constrain(c, k, oldP, oldR, &Pp, &Rp);
@@ -390,15 +402,23 @@ class Fabrik final : public Method {
     for (int j = 0; j < J; ++j) {
       const Joint& joint = c.skeleton.joint(j);
       const Frame* parent = joint.parent >= 0 ? &c.frames[static_cast<size_t>(joint.parent)] : nullptr;
-      Frame f = c.frameFrom(j, parent);
       if (!c.active[static_cast<size_t>(j)] || joint.type == JointType::Fixed) {
-        c.frames[static_cast<size_t>(j)] = f;
+        c.frames[static_cast<size_t>(j)] = c.frameFrom(j, parent);
         continue;
       }
-      bodyPoints(c, j);
+      Frame f;
+      Vec3 from, to;
       if (joint.type == JointType::Ball || joint.type == JointType::Free) {
-        turnBall(c, j, f, clamp);
+        f = c.pivotFrom(j, parent);  // the rotation is set below
+        if (onePoint(c, j, &from, &to)) {
+          setJointRotation(c, j, pointRule(f, R_[static_cast<size_t>(j)], from, to), clamp);
+        } else {
+          bodyPoints(c, j);
+          turnBall(c, j, f, clamp);
+        }
       } else {
+        f = c.frameFrom(j, parent);
+        bodyPoints(c, j);
         for (size_t i = 0; i < from_.size(); ++i) from_[i] = f.position + f.rotation * from_[i];
         alignJoint(c, j, f, from_, to_, w_, clamp, false, nullptr);
         f = c.frameFrom(j, parent);
@@ -420,8 +440,8 @@ class Fabrik final : public Method {
   void turnBall(Context& c, int j, const Frame& f, bool clamp) {
     const int J = c.skeleton.jointCount();
     const Quat& reference = R_[static_cast<size_t>(j)];
-    const std::vector<int>& deeper = deeper_[static_cast<size_t>(j)];
-    if (!deeper.empty()) {
+    if (!deeper_.empty() && !deeper_[static_cast<size_t>(j)].empty()) {
+      const std::vector<int>& deeper = deeper_[static_cast<size_t>(j)];
       const Frame& old = c.frames[static_cast<size_t>(j)];
       const Quat oldInverse = glm::conjugate(old.rotation);
       for (int n : deeper) {
@@ -433,24 +453,53 @@ class Fabrik final : public Method {
         w_.push_back(lookaheadWeight_[static_cast<size_t>(j)]);
       }
     }
-    Quat world;
+    Quat wanted;
     if (from_.size() == 1) {
-      two_[0] = f.position;
-      two_[1] = to_[0];
-      one_[0] = glm::length(from_[0]);
-      fabrikForward(two_, one_, f.position);
-      world = shortestArc(reference * from_[0], two_[1] - f.position) * reference;
+      wanted = pointRule(f, reference, from_[0], to_[0]);
     } else {
       for (Vec3& t : to_) t -= f.position;
-      world = fitRotation(from_, to_, w_, reference);
+      wanted = glm::normalize(glm::conjugate(f.pre) * fitRotation(from_, to_, w_, reference));
     }
-    const Quat wanted = glm::normalize(glm::conjugate(f.pre) * world);
     if (clamp && c.options.fabrikLimitFit) {  // ours: the best rotation inside the limits
       goals_.assign(to_.begin(), to_.end());
       if (from_.size() == 1) goals_[0] -= f.position;  // the fit above left several goals relative
       if (fitBallWithinLimits(c, j, f, wanted, from_, goals_, w_, moved_)) return;
     }
     setJointRotation(c, j, wanted, clamp);
+  }
+
+  // The point rule of the forward pass for a body with one point (`from` in its frame, headed for
+  // `to`, world), from its backward-pass orientation `reference`: IK-5's fabrikForward puts the point
+  // on the line from the pivot toward `to`, and the body turns by the shortest arc onto it. Returns
+  // the joint's wanted local rotation (before its limits).
+  Quat pointRule(const Frame& f, const Quat& reference, const Vec3& from, const Vec3& to) {
+    two_[0] = f.position;
+    two_[1] = to;
+    one_[0] = glm::length(from);
+    fabrikForward(two_, one_, f.position);
+    const Quat world = shortestArc(reference * from, two_[1] - f.position) * reference;
+    return glm::normalize(glm::conjugate(f.pre) * world);
+  }
+
+  // True when the forward pass turns ball or free joint j's body by one point alone, the point rule
+  // (pointRule: one position effector or one child, no look-ahead, no limit fit); then its place in
+  // the body's frame (*from) and its backward-pass place (*to). What bodyPoints() would give,
+  // without its lists.
+  bool onePoint(const Context& c, int j, Vec3* from, Vec3* to) const {
+    const std::span<const int> effectors = effectorsOn(j), children = kids(j);
+    if (effectors.size() + children.size() != 1 || c.options.fabrikLimitFit ||
+        (!deeper_.empty() && !deeper_[static_cast<size_t>(j)].empty()))
+      return false;
+    if (!effectors.empty()) {
+      const Effector& eff = c.effectors[static_cast<size_t>(effectors[0])];
+      if (eff.kind != EffectorKind::Position) return false;
+      *from = eff.localOffset;
+      *to = target_[static_cast<size_t>(effectors[0])];
+    } else {
+      *from = translationOf(c.skeleton.joint(children[0]), c.pose);
+      *to = P_[static_cast<size_t>(children[0])];
+    }
+    return true;
   }
 
   // The look-ahead of forward(): a ball or free joint with hinges or prismatic joints within
@@ -461,16 +510,17 @@ class Fabrik final : public Method {
   // onto bent goals).
   void buildLookahead(const Context& c) {
     const int J = c.skeleton.jointCount();
-    deeper_.assign(static_cast<size_t>(J), {});
-    lookaheadWeight_.assign(static_cast<size_t>(J), kFarLookaheadWeight);
+    deeper_.clear();
     // No active hinge or prismatic joint (a chain of ball joints): no look-ahead anywhere, and no
-    // per-joint lists to build (they cost more than a pass on a long chain).
+    // per-joint lists to build (they cost more than a pass on a long chain); deeper_ stays empty.
     bool anyOneDof = false;
     for (int j = 0; j < J && !anyOneDof; ++j) {
       const JointType t = c.skeleton.joint(j).type;
       anyOneDof = c.active[static_cast<size_t>(j)] && (t == JointType::Hinge || t == JointType::Prismatic);
     }
     if (!anyOneDof) return;
+    deeper_.assign(static_cast<size_t>(J), {});
+    lookaheadWeight_.assign(static_cast<size_t>(J), kFarLookaheadWeight);
     for (int j = 0; j < J; ++j) {
       const JointType type = c.skeleton.joint(j).type;
       if (!c.active[static_cast<size_t>(j)] || (type != JointType::Ball && type != JointType::Free)) continue;
@@ -483,7 +533,7 @@ class Fabrik final : public Method {
           const bool oneDof = t == JointType::Hinge || t == JointType::Prismatic;
           hinged = hinged || oneDof;
           if (depth == 2 && oneDof) lookaheadWeight_[static_cast<size_t>(j)] = 1.0;  // a child
-          for (int e : effectorsOn_[static_cast<size_t>(n)]) found.push_back(J + e);
+          for (int e : effectorsOn(n)) found.push_back(J + e);
           for (int k : kids(n)) next.push_back(k);
         }
         found.insert(found.end(), next.begin(), next.end());
@@ -501,15 +551,21 @@ class Fabrik final : public Method {
     return std::span<const int>(kidList_).subspan(first,
                                                   static_cast<size_t>(kidStart_[static_cast<size_t>(j) + 1]) - first);
   }
-  std::vector<int> kidStart_, kidList_;        // active children per joint (see kids())
-  std::vector<std::vector<int>> effectorsOn_;  // per joint: effectors
-  std::vector<Real> lookaheadWeight_;          // per joint: weight of its look-ahead points
-  std::vector<std::vector<int>> deeper_;       // per joint: look-ahead nodes (see buildLookahead)
-  std::vector<int> chain_;                     // points only: the joints from the root
-  std::vector<Vec3> P_;                        // per joint: body pivot after the backward pass
-  std::vector<Quat> R_;                        // per joint: body rotation after the backward pass
-  std::vector<Vec3> target_;                   // per effector: where the forward pass aims it
-  DeferredTurns turns_;                        // fabrikHingeTwist's turns, applied when the pass ends
+  std::vector<int> kidStart_, kidList_;            // active children per joint (see kids())
+  std::span<const int> effectorsOn(int j) const {  // the effectors on joint j, in index order
+    const auto first = static_cast<size_t>(effStart_[static_cast<size_t>(j)]);
+    return std::span<const int>(effList_).subspan(first,
+                                                  static_cast<size_t>(effStart_[static_cast<size_t>(j) + 1]) - first);
+  }
+  std::vector<int> effStart_, effList_;   // effectors per joint (see effectorsOn())
+  std::vector<Real> lookaheadWeight_;     // per joint: weight of its look-ahead points
+  std::vector<std::vector<int>> deeper_;  // per joint: look-ahead nodes (see buildLookahead); or empty
+  std::vector<int> chain_;                // points only: the joints from the root
+  std::vector<char> limited_;             // per joint: !rotationUnlimited()
+  std::vector<Vec3> P_;                   // per joint: body pivot after the backward pass
+  std::vector<Quat> R_;                   // per joint: body rotation after the backward pass
+  std::vector<Vec3> target_;              // per effector: where the forward pass aims it
+  DeferredTurns turns_;                   // fabrikHingeTwist's turns, applied when the pass ends
   std::vector<Vec3> pts_, two_, from_, to_, goals_, moved_;
   std::vector<Real> lens_, one_, w_;
   Vec3 base_{0.0};

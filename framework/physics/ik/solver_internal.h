@@ -1,6 +1,7 @@
 #pragma once
 // Internals shared by the IK methods (not part of the public interface): the state of one solve and
 // the per-method iteration functions called by solve() in solver.cpp.
+#include <array>
 #include <memory>
 #include <span>
 #include <vector>
@@ -41,7 +42,26 @@ struct Context {
   /// π/2 no XYZ Euler angle exceeds the rotation angle: q is within the limits, no Euler angles
   /// needed to tell (see surelyWithinLimits).
   std::vector<Real> insideCosHalf;
-  bool surelyWithinLimits(int j, const Quat& q) const { return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)]; }
+  /// Per ball joint and XYZ Euler angle k, the range [lo_k, hi_k] as its middle m and half width h,
+  /// for the second test of surelyWithinLimits (see principalEulerInside).
+  struct EulerRange {
+    Real cosMid = 1.0, sinMid = 0.0;  ///< cos m, sin m
+    Real cosHalf = 2.0;               ///< cos h; −2: every principal value is inside; 2: no test
+  };
+  std::vector<std::array<EulerRange, 3>> eulerRanges;
+  /// True when ball joint j's local rotation q is surely within its limits, so that clamping would
+  /// change nothing and no Euler angles are needed: a small rotation (the |q.w| test above), or
+  /// principal XYZ Euler angles that lie inside their ranges by a margin (principalEulerInside).
+  /// Conservative: false says nothing.
+  bool surelyWithinLimits(int j, const Quat& q) const {
+    return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)] || principalEulerInside(j, q);
+  }
+  /// The principal XYZ Euler angles of q (eulerXYZFromQuat: x = atan2(s, c) for each angle) lie
+  /// inside joint j's ranges by a margin, told without trigonometry: x ∈ [m − h, m + h] ⊆ [−π, π] ⇔
+  /// cos(x − m) ≥ cos h ⇔ c cos m + s sin m ≥ cos h · √(s² + c²); asked with a margin of 10⁻⁹ (the
+  /// entries are those of a rotation matrix, of order 1), so that a true answer is also eulerXYZFromQuat's
+  /// and eulerWithinLimits then returns these angles unchanged. solver.cpp.
+  bool principalEulerInside(int j, const Quat& q) const;
   std::vector<Quat> local;  ///< R_dof per joint for `pose` (see above)
   /// Per joint: the half angles refresh() computed for a ball joint's `local` (EulerHalfAngles; the
   /// Jacobian's axes reuse the entries whose angles still match the pose).
@@ -69,6 +89,22 @@ struct Context {
   /// Joint j's frame from its parent's entry in `frames` and the cached local rotation. O(1).
   Frame frameFromParent(int j) const;
   Frame frameFrom(int j, const Frame* parent) const;
+  /// frameFrom() without the product by the local rotation: the pivot and R_pre, with rotation left
+  /// at R_pre, for a method that sets joint j's rotation next. The same arithmetic as linkFrame().
+  Frame pivotFrom(int j, const Frame* parent) const {
+    const Link& link = links[static_cast<size_t>(j)];
+    if (link.prismatic) return frameFrom(j, parent);
+    Frame f;
+    if (parent) {
+      f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
+      f.position = parent->position + parent->rotation * link.offset;
+    } else {
+      f.pre = link.rest;
+      f.position = link.offset;
+    }
+    f.rotation = f.pre;
+    return f;
+  }
   /// The same for any pose p and local rotation of joint j.
   Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const;
   /// What refresh() computes (the local rotations and every frame), for another pose p, into the
