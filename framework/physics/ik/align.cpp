@@ -58,14 +58,21 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
 
 }  // namespace
 
+void bestAngleTerms(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+                    const std::vector<Real>& w, Real* S, Real* C) {
+  *S = 0.0;
+  *C = 0.0;
+  for (size_t i = 0; i < from.size(); ++i) {
+    const Vec3 u = perpendicularPart(from[i] - p, a), v = perpendicularPart(to[i] - p, a);
+    *S += w[i] * glm::dot(a, glm::cross(u, v));
+    *C += w[i] * glm::dot(u, v);
+  }
+}
+
 Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
                const std::vector<Real>& w) {
   Real S = 0.0, C = 0.0;
-  for (size_t i = 0; i < from.size(); ++i) {
-    const Vec3 u = perpendicularPart(from[i] - p, a), v = perpendicularPart(to[i] - p, a);
-    S += w[i] * glm::dot(a, glm::cross(u, v));
-    C += w[i] * glm::dot(u, v);
-  }
+  bestAngleTerms(a, p, from, to, w, &S, &C);
   return std::atan2(S, C);
 }
 

@@ -103,6 +103,22 @@ PBA_EXERCISE_PROBE(probeFabrikPasses());
 namespace detail {
 namespace {
 
+// The shortest arc from u to v, the turn of a bone onto its new direction in both passes, as the
+// quaternion (|u||v| + u·v, u × v) = 2|u||v| cos(θ/2) · (cos(θ/2), sin(θ/2) n̂) (θ the angle between
+// u and v, n̂ their unit normal): the rotation shortestArc() gives, not normalised — the callers
+// normalise the product they make of it, once. One square root and no division, where the unit
+// vectors of shortestArc (Eigen's FromTwoVectors) take four roots and eight divisions; the same
+// rotation to rounding. Zero vectors and (nearly) opposite ones, 1 + cos θ < 10⁻¹² (Eigen's
+// threshold), where the axis u × v is lost: shortestArc itself.
+Quat arcBetween(const Vec3& u, const Vec3& v) {
+  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
+  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
+  const Real lengths = std::sqrt(uu * vv), w = lengths + glm::dot(u, v);
+  if (w < 1e-12 * lengths) return shortestArc(u, v);
+  const Vec3 axis = glm::cross(u, v);
+  return Quat(w, axis.x, axis.y, axis.z);
+}
+
 class Fabrik final : public Method {
  public:
   FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::Current; }
@@ -186,6 +202,20 @@ class Fabrik final : public Method {
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
     buildLookahead(c);
+    // The hinges' ranges for hingeInside(), once per distinct range (a chain repeats one).
+    hingeRange_.assign(static_cast<size_t>(J), {});
+    for (int j = 0, last = -1; j < J; ++j) {
+      const Joint& joint = c.skeleton.joint(j);
+      if (joint.type != JointType::Hinge || !(joint.lo[0] > -kPi && joint.hi[0] < kPi)) continue;
+      const Joint* previous = last >= 0 ? &c.skeleton.joint(last) : nullptr;
+      if (previous && previous->lo[0] == joint.lo[0] && previous->hi[0] == joint.hi[0]) {
+        hingeRange_[static_cast<size_t>(j)] = hingeRange_[static_cast<size_t>(last)];
+      } else {
+        const Real mid = 0.5 * (joint.lo[0] + joint.hi[0]), half = 0.5 * (joint.hi[0] - joint.lo[0]);
+        hingeRange_[static_cast<size_t>(j)] = {std::cos(mid), std::sin(mid), std::cos(half), true};
+      }
+      last = j;
+    }
     limited_.assign(static_cast<size_t>(J), 0);
     for (int j = 0; j < J; ++j) limited_[static_cast<size_t>(j)] = !rotationUnlimited(c.skeleton.joint(j));
     if (c.options.fabrikHingeTwist) turns_.build(c);
@@ -236,7 +266,7 @@ class Fabrik final : public Method {
     one_[0] = glm::length(b);
     fabrikBackward(two_, one_, goal);
     *Pp = two_[0];
-    *Rp = glm::normalize(shortestArc(P - a, two_[0] - goal) * R);
+    *Rp = glm::normalize(arcBetween(P - a, two_[0] - goal) * R);
   }
 
   // Joint k (child of body j) must relate body j's proposal (*Pp, *Rp) to body k's new pose: moves
@@ -270,10 +300,22 @@ class Fabrik final : public Method {
         // or oldP on it), the twist of the rule's proposal.
         const Vec3 w = Rk * joint.axis;
         const Vec3 t = translationOf(joint, c.pose);
-        const Vec3 u = perpendicularPart(-(Rk * (restInverse * t)), w), v = perpendicularPart(oldP - Pk, w);
+        const bool identityRest = c.links[static_cast<size_t>(k)].identityRest;  // skip products by 1
+        const Vec3 u = perpendicularPart(-(Rk * (identityRest ? t : restInverse * t)), w),
+                   v = perpendicularPart(oldP - Pk, w);
         const Real S = glm::dot(w, glm::cross(u, v)), C = glm::dot(u, v);
+        const bool defined = std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk));
+        // θ = −atan2(S, C): (cos θ, sin θ) = (C, −S)/r, r = |(C, S)|. Inside the limits, where the
+        // clamp would change nothing, no angle is needed: R(−θ about a) = (cos ½θ, −sin ½θ a) is
+        // (1 + cos θ, −sin θ a) normalised, here (r + C, S a) normalised.
+        const Real r = std::sqrt(S * S + C * C);
+        if (defined && clamp && hingeInside(k, C, -S, r)) {
+          const Quat turned = Rk * Quat(r + C, S * joint.axis.x, S * joint.axis.y, S * joint.axis.z);
+          *Rp = glm::normalize(identityRest ? turned : turned * restInverse);
+          break;
+        }
         Real theta;
-        if (std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk))) {
+        if (defined) {
           theta = -std::atan2(S, C);
         } else {
           propose(oldP, oldR, t, Pk, Pp, Rp);
@@ -290,7 +332,8 @@ class Fabrik final : public Method {
       case JointType::Ball:
       case JointType::Free: {
         if (!clamp || !limited_[static_cast<size_t>(k)]) return;
-        const Quat local = glm::normalize(glm::conjugate(*Rp * joint.restRotation) * Rk);
+        const Quat parent = c.links[static_cast<size_t>(k)].identityRest ? *Rp : *Rp * joint.restRotation;
+        const Quat local = glm::normalize(glm::conjugate(parent) * Rk);
         if (joint.type == JointType::Ball && c.surelyWithinLimits(k, local)) return;
         Quat allowed = local;
         if (joint.type == JointType::Ball) {
@@ -420,8 +463,11 @@ class Fabrik final : public Method {
         f = c.frameFrom(j, parent);
         bodyPoints(c, j);
         for (size_t i = 0; i < from_.size(); ++i) from_[i] = f.position + f.rotation * from_[i];
-        alignJoint(c, j, f, from_, to_, w_, clamp, false, nullptr);
-        f = c.frameFrom(j, parent);
+        if (!(joint.type == JointType::Hinge && clamp && turnHinge(c, j, f))) {
+          if (c.staleEuler[static_cast<size_t>(j)]) c.flushJoint(j);  // alignJoint turns from the angle
+          alignJoint(c, j, f, from_, to_, w_, clamp, false, nullptr);
+        }
+        if (joint.type == JointType::Prismatic) f = c.frameFrom(j, parent);  // a hinge's pivot stays
       }
       f.rotation = f.pre * c.local[static_cast<size_t>(j)];
       c.frames[static_cast<size_t>(j)] = f;
@@ -468,6 +514,37 @@ class Fabrik final : public Method {
     setJointRotation(c, j, wanted, clamp);
   }
 
+  // Hinge k's range [lo, hi] (when it lies inside (−π, π)) holds the angle x whose (cos x, sin x) is
+  // (cx, sx)/r, r = |(cx, sx)| > 0, by a margin: x ∈ [m − h, m + h] ⇔ cos(x − m) ≥ cos h ⇔
+  // cx cos m + sx sin m ≥ r cos h, with m and h the middle and half width of the range. Then IK-6's
+  // clamp would leave x, and the passes turn the hinge without its angle. False near a limit, where
+  // the angle and the clamp decide.
+  bool hingeInside(int k, Real cx, Real sx, Real r) const {
+    const HingeRange& range = hingeRange_[static_cast<size_t>(k)];
+    return range.valid && r > 0.0 && cx * range.cosMid + sx * range.sinMid >= (range.cosHalf + kInsideMargin) * r;
+  }
+
+  // The forward pass on hinge j with limits (its frame f, its points in from_ (world), to_ and w_):
+  // alignJoint's exact one-DOF optimum ψ = d + atan2(S, C) (Workbook §2.4; align.cpp), d the hinge's
+  // angle, computed as a direction: (cos ψ, sin ψ) ∝ (cos d C − sin d S, sin d C + cos d S), with
+  // cos d = w² − s², sin d = 2ws from its local rotation (w, s a). When ψ lies inside the limits
+  // (hingeInside) the hinge takes R(ψ) = (1 + cos ψ, sin ψ a) normalised, and its angle is written
+  // when the solve needs it (flushPose: one atan2 instead of an atan2 and two sincos per pass).
+  // Returns false, doing nothing, otherwise (alignJoint then turns it by the angle and clamps).
+  bool turnHinge(Context& c, int j, const Frame& f) {
+    const Joint& joint = c.skeleton.joint(j);
+    Real S = 0.0, C = 0.0;
+    bestAngleTerms(f.pre * joint.axis, f.position, from_, to_, w_, &S, &C);
+    const Quat& q = c.local[static_cast<size_t>(j)];
+    const Real s = glm::dot(Vec3(q.x, q.y, q.z), joint.axis), cosD = q.w * q.w - s * s, sinD = 2.0 * q.w * s;
+    const Real cx = cosD * C - sinD * S, sx = sinD * C + cosD * S, r = std::sqrt(cx * cx + sx * sx);
+    if (!hingeInside(j, cx, sx, r)) return false;
+    c.local[static_cast<size_t>(j)] =
+        glm::normalize(Quat(r + cx, sx * joint.axis.x, sx * joint.axis.y, sx * joint.axis.z));
+    c.staleEuler[static_cast<size_t>(j)] = 1;
+    return true;
+  }
+
   // The point rule of the forward pass for a body with one point (`from` in its frame, headed for
   // `to`, world), from its backward-pass orientation `reference`: IK-5's fabrikForward puts the point
   // on the line from the pivot toward `to`, and the body turns by the shortest arc onto it. Returns
@@ -477,7 +554,7 @@ class Fabrik final : public Method {
     two_[1] = to;
     one_[0] = glm::length(from);
     fabrikForward(two_, one_, f.position);
-    const Quat world = shortestArc(reference * from, two_[1] - f.position) * reference;
+    const Quat world = arcBetween(reference * from, two_[1] - f.position) * reference;
     return glm::normalize(glm::conjugate(f.pre) * world);
   }
 
@@ -562,10 +639,16 @@ class Fabrik final : public Method {
   std::vector<std::vector<int>> deeper_;  // per joint: look-ahead nodes (see buildLookahead); or empty
   std::vector<int> chain_;                // points only: the joints from the root
   std::vector<char> limited_;             // per joint: !rotationUnlimited()
-  std::vector<Vec3> P_;                   // per joint: body pivot after the backward pass
-  std::vector<Quat> R_;                   // per joint: body rotation after the backward pass
-  std::vector<Vec3> target_;              // per effector: where the forward pass aims it
-  DeferredTurns turns_;                   // fabrikHingeTwist's turns, applied when the pass ends
+  struct HingeRange {  // a hinge's range: cos, sin of its middle, cos of its half width (hingeInside)
+    Real cosMid = 1.0, sinMid = 0.0, cosHalf = 1.0;
+    bool valid = false;  // the range lies inside (−π, π)
+  };
+  std::vector<HingeRange> hingeRange_;  // per joint
+  static constexpr Real kInsideMargin = 1e-12;
+  std::vector<Vec3> P_;       // per joint: body pivot after the backward pass
+  std::vector<Quat> R_;       // per joint: body rotation after the backward pass
+  std::vector<Vec3> target_;  // per effector: where the forward pass aims it
+  DeferredTurns turns_;       // fabrikHingeTwist's turns, applied when the pass ends
   std::vector<Vec3> pts_, two_, from_, to_, goals_, moved_;
   std::vector<Real> lens_, one_, w_;
   Vec3 base_{0.0};

@@ -47,13 +47,22 @@ Quat localRotation(const Joint& joint, const Pose& p, int j, EulerHalfAngles* ha
 }  // namespace
 
 void Context::flushPose() {
-  for (size_t j = 0; j < staleEuler.size(); ++j) {
-    if (!staleEuler[j]) continue;
-    const Vec3 e = eulerXYZFromQuat(local[j]);
-    Real* dofs = pose.dofs.data() + skeleton.joint(static_cast<int>(j)).firstDof;
+  for (size_t j = 0; j < staleEuler.size(); ++j)
+    if (staleEuler[j]) flushJoint(static_cast<int>(j));
+}
+
+void Context::flushJoint(int j) {
+  const Joint& joint = skeleton.joint(j);
+  const Quat& q = local[static_cast<size_t>(j)];
+  Real* dofs = pose.dofs.data() + joint.firstDof;
+  if (joint.type == JointType::Hinge) {
+    // q = (cos ½θ, sin ½θ a) with q.w > 0 (FABRIK's hinge update keeps θ inside (−π, π)).
+    dofs[0] = 2.0 * std::atan2(glm::dot(Vec3(q.x, q.y, q.z), joint.axis), q.w);
+  } else {
+    const Vec3 e = eulerXYZFromQuat(q);
     for (int k = 0; k < 3; ++k) dofs[k] = e[k];
-    staleEuler[j] = 0;
   }
+  staleEuler[static_cast<size_t>(j)] = 0;
 }
 
 bool Context::principalEulerInside(int j, const Quat& q) const {
@@ -77,6 +86,7 @@ bool Context::principalEulerInside(int j, const Quat& q) const {
 void Context::refresh() {
   if (links.size() != static_cast<size_t>(skeleton.jointCount())) {
     links.clear();
+    links.reserve(skeleton.joints().size());
     for (const Joint& joint : skeleton.joints()) {
       const Quat& r = joint.restRotation;
       links.push_back(Link{joint.parent, r.w == 1.0 && r.x == 0.0 && r.y == 0.0 && r.z == 0.0,

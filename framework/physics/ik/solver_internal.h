@@ -66,8 +66,9 @@ struct Context {
   /// Per joint: the half angles refresh() computed for a ball joint's `local` (EulerHalfAngles; the
   /// Jacobian's axes reuse the entries whose angles still match the pose).
   std::vector<EulerHalfAngles> half;
-  /// Per joint: its Euler DOFs in `pose` lag behind `local` (alignJoint defers the quaternion → Euler
-  /// conversion, two atan2 and a hypot, while no limit needs the angles); flushPose() writes them.
+  /// Per joint: its DOFs in `pose` lag behind `local` (alignJoint defers a ball joint's quaternion →
+  /// Euler conversion, two atan2 and a hypot, while no limit needs the angles; FABRIK's forward pass a
+  /// hinge's angle, an atan2, while it stays inside its limits); flushPose() writes them.
   std::vector<char> staleEuler;
   /// What forward kinematics reads of each joint, packed (a Joint with its name and limits is ~250
   /// bytes; walking 1,000 of them per pass cost more than the arithmetic).
@@ -80,8 +81,10 @@ struct Context {
   };
   std::vector<Link> links;  ///< filled by the first refresh()
 
-  /// Writes the Euler DOFs of every joint marked stale from `local`.
+  /// Writes the DOFs of every joint marked stale from `local` (see staleEuler).
   void flushPose();
+  /// The same for joint j (marked stale).
+  void flushJoint(int j);
   /// Flushes, recomputes `local` from the pose, then every frame. O(n) with trigonometry.
   void refresh();
   /// Every frame from the cached `local` (valid when only alignJoint() changed the pose). O(n).
@@ -161,6 +164,10 @@ Quat alignJoint(Context& c, int j, const Frame& frame, const std::vector<Vec3>& 
 /// `to` (weights w): θ = atan2(Σ wᵢ a·(u⊥ᵢ × v⊥ᵢ), Σ wᵢ u⊥ᵢ·v⊥ᵢ) (align.cpp). 0 when undefined.
 Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
                const std::vector<Real>& w);
+/// The two sums of bestAngle, *S = Σ wᵢ a·(u⊥ᵢ × v⊥ᵢ) and *C = Σ wᵢ u⊥ᵢ·v⊥ᵢ: the best turn is the angle
+/// of the vector (C, S).
+void bestAngleTerms(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+                    const std::vector<Real>& w, Real* S, Real* C);
 /// The representative ψ − 2π, ψ or ψ + 2π of a hinge optimum ψ whose value clamped into [lo, hi] is
 /// closest to ψ in angle (ψ itself when clampLimits is false). The caller clamps.
 Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits);
