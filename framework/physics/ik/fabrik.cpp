@@ -167,27 +167,22 @@ class Fabrik final : public Method {
     const int J = c.skeleton.jointCount(), E = static_cast<int>(c.effectors.size());
     // Active children per joint in index order, as kidList_[kidStart_[j] .. kidStart_[j + 1]) (two
     // allocations, not one per joint).
-    kidStart_.assign(static_cast<size_t>(J) + 1, 0);
-    for (int j = 0; j < J; ++j) {
-      const int parent = c.skeleton.joint(j).parent;
-      if (c.active[static_cast<size_t>(j)] && parent >= 0) ++kidStart_[static_cast<size_t>(parent) + 1];
-    }
-    for (size_t j = 0; j < static_cast<size_t>(J); ++j) kidStart_[j + 1] += kidStart_[j];
-    kidList_.resize(static_cast<size_t>(kidStart_.back()));
-    std::vector<int> fill(kidStart_.begin(), kidStart_.end() - 1);
-    for (int j = 0; j < J; ++j) {
-      const int parent = c.skeleton.joint(j).parent;
-      if (c.active[static_cast<size_t>(j)] && parent >= 0)
-        kidList_[static_cast<size_t>(fill[static_cast<size_t>(parent)]++)] = j;
-    }
+    bucketLists(
+        static_cast<size_t>(J),
+        [&](auto visit) {
+          for (int j = 0; j < J; ++j) {
+            const int parent = c.skeleton.joint(j).parent;
+            if (c.active[static_cast<size_t>(j)] && parent >= 0) visit(static_cast<size_t>(parent), j);
+          }
+        },
+        kidStart_, kidList_);
     // Effectors per joint, the same way: effList_[effStart_[j] .. effStart_[j + 1]).
-    effStart_.assign(static_cast<size_t>(J) + 1, 0);
-    for (const Effector& e : c.effectors) ++effStart_[static_cast<size_t>(e.joint) + 1];
-    for (size_t j = 0; j < static_cast<size_t>(J); ++j) effStart_[j + 1] += effStart_[j];
-    effList_.resize(static_cast<size_t>(E));
-    fill.assign(effStart_.begin(), effStart_.end() - 1);
-    for (int e = 0; e < E; ++e)
-      effList_[static_cast<size_t>(fill[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)]++)] = e;
+    bucketLists(
+        static_cast<size_t>(J),
+        [&](auto visit) {
+          for (int e = 0; e < E; ++e) visit(static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint), e);
+        },
+        effStart_, effList_);
     target_.resize(static_cast<size_t>(E));
     for (int e = 0; e < E; ++e) target_[static_cast<size_t>(e)] = c.effectors[static_cast<size_t>(e)].targetPosition;
     // Points only: one chain from the root to a single position effector through ball or free joints
@@ -216,6 +211,10 @@ class Fabrik final : public Method {
       }
       last = j;
     }
+    lever_.assign(static_cast<size_t>(J), -1.0);
+    for (int j = 0; j < J; ++j)
+      if (c.skeleton.joint(j).type != JointType::Prismatic)
+        lever_[static_cast<size_t>(j)] = glm::length(c.skeleton.joint(j).offset);
     limited_.assign(static_cast<size_t>(J), 0);
     for (int j = 0; j < J; ++j) limited_[static_cast<size_t>(j)] = !rotationUnlimited(c.skeleton.joint(j));
     if (c.options.fabrikHingeTwist) turns_.build(c);
@@ -223,6 +222,13 @@ class Fabrik final : public Method {
     R_.assign(static_cast<size_t>(J), Quat(1, 0, 0, 0));
     two_.assign(2, Vec3(0.0));
     one_.assign(1, 0.0);
+  }
+
+  // |translation| of joint k (its bone, as a lever of its parent's body), kept for the joints that are
+  // not prismatic.
+  Real lever(const Context& c, int k) const {
+    const Real l = lever_[static_cast<size_t>(k)];
+    return l >= 0.0 ? l : glm::length(translationOf(c.skeleton.joint(k), c.pose));
   }
 
   // jointTranslation() inline: a joint's translation is its offset unless it is prismatic.
@@ -260,10 +266,14 @@ class Fabrik final : public Method {
 
   // The point rule on one lever b of body (P, R): the point onto `goal`, the pivot back toward P.
   void propose(const Vec3& P, const Quat& R, const Vec3& b, const Vec3& goal, Vec3* Pp, Quat* Rp) {
-    const Vec3 a = P + R * b;
+    propose(P, R, P + R * b, glm::length(b), goal, Pp, Rp);
+  }
+  // The same with the lever's point a = P + R b and its length |b| given (a child's pivot before the
+  // pass, c.frames: the same sum, the same bits).
+  void propose(const Vec3& P, const Quat& R, const Vec3& a, Real length, const Vec3& goal, Vec3* Pp, Quat* Rp) {
     two_[0] = P;
     two_[1] = a;
-    one_[0] = glm::length(b);
+    one_[0] = length;
     fabrikBackward(two_, one_, goal);
     *Pp = two_[0];
     *Rp = glm::normalize(arcBetween(P - a, two_[0] - goal) * R);
@@ -333,8 +343,11 @@ class Fabrik final : public Method {
       case JointType::Free: {
         if (!clamp || !limited_[static_cast<size_t>(k)]) return;
         const Quat parent = c.links[static_cast<size_t>(k)].identityRest ? *Rp : *Rp * joint.restRotation;
-        const Quat local = glm::normalize(glm::conjugate(parent) * Rk);
-        if (joint.type == JointType::Ball && c.surelyWithinLimits(k, local)) return;
+        // A product of unit quaternions, unit to rounding: good enough for the test, whose margins
+        // (10⁻¹², 10⁻⁹) are far above it; normalised only when the limits need a closer look.
+        const Quat product = glm::conjugate(parent) * Rk;
+        if (joint.type == JointType::Ball && c.surelyWithinLimits(k, product)) return;
+        const Quat local = glm::normalize(product);
         Quat allowed = local;
         if (joint.type == JointType::Ball) {
           const Vec3 e = eulerWithinLimits(joint, local);
@@ -354,16 +367,12 @@ class Fabrik final : public Method {
 
   void backward(Context& c) {
     const int J = c.skeleton.jointCount();
-    for (int j = 0; j < J; ++j) {
-      P_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].position;
-      R_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].rotation;
-    }
     const bool twist = c.options.fabrikHingeTwist;
     if (twist) turns_.reset();
     for (int j = J - 1; j >= 0; --j) {
       if (!c.active[static_cast<size_t>(j)]) continue;
-      const Vec3 oldP = P_[static_cast<size_t>(j)];
-      const Quat oldR = R_[static_cast<size_t>(j)];
+      const Vec3 oldP = c.frames[static_cast<size_t>(j)].position;  // body j before the pass
+      const Quat oldR = c.frames[static_cast<size_t>(j)].rotation;
       int proposals = 0;
       Vec3 sumP(0.0), Pp(0.0);
       Quat sumR(0, 0, 0, 0), Rp(1, 0, 0, 0);
@@ -387,7 +396,8 @@ class Fabrik final : public Method {
       for (int k : kids(j)) {
         const Joint& kid = c.skeleton.joint(k);
         if (kid.type == JointType::Ball || kid.type == JointType::Free)
-          propose(oldP, oldR, translationOf(kid, c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
+          propose(oldP, oldR, c.frames[static_cast<size_t>(k)].position, lever(c, k), P_[static_cast<size_t>(k)], &Pp,
+                  &Rp);
         else if (twist && kid.type == JointType::Hinge && turns_.effectorOf(k) >= 0)
           twistBelow(c, k, oldP, oldR);
         constrain(c, k, oldP, oldR, &Pp, &Rp);
@@ -451,10 +461,11 @@ class Fabrik final : public Method {
       }
       Frame f;
       Vec3 from, to;
+      Real length = 0.0;
       if (joint.type == JointType::Ball || joint.type == JointType::Free) {
         f = c.pivotFrom(j, parent);  // the rotation is set below
-        if (onePoint(c, j, &from, &to)) {
-          setJointRotation(c, j, pointRule(f, R_[static_cast<size_t>(j)], from, to), clamp);
+        if (onePoint(c, j, &from, &to, &length)) {
+          setJointRotation(c, j, pointRule(f, R_[static_cast<size_t>(j)], from, to, length), clamp);
         } else {
           bodyPoints(c, j);
           turnBall(c, j, f, clamp);
@@ -501,7 +512,7 @@ class Fabrik final : public Method {
     }
     Quat wanted;
     if (from_.size() == 1) {
-      wanted = pointRule(f, reference, from_[0], to_[0]);
+      wanted = pointRule(f, reference, from_[0], to_[0], glm::length(from_[0]));
     } else {
       for (Vec3& t : to_) t -= f.position;
       wanted = glm::normalize(glm::conjugate(f.pre) * fitRotation(from_, to_, w_, reference));
@@ -549,10 +560,10 @@ class Fabrik final : public Method {
   // `to`, world), from its backward-pass orientation `reference`: IK-5's fabrikForward puts the point
   // on the line from the pivot toward `to`, and the body turns by the shortest arc onto it. Returns
   // the joint's wanted local rotation (before its limits).
-  Quat pointRule(const Frame& f, const Quat& reference, const Vec3& from, const Vec3& to) {
+  Quat pointRule(const Frame& f, const Quat& reference, const Vec3& from, const Vec3& to, Real length) {
     two_[0] = f.position;
     two_[1] = to;
-    one_[0] = glm::length(from);
+    one_[0] = length;
     fabrikForward(two_, one_, f.position);
     const Quat world = arcBetween(reference * from, two_[1] - f.position) * reference;
     return glm::normalize(glm::conjugate(f.pre) * world);
@@ -560,9 +571,9 @@ class Fabrik final : public Method {
 
   // True when the forward pass turns ball or free joint j's body by one point alone, the point rule
   // (pointRule: one position effector or one child, no look-ahead, no limit fit); then its place in
-  // the body's frame (*from) and its backward-pass place (*to). What bodyPoints() would give,
+  // the body's frame (*from), its backward-pass place (*to) and |from|. What bodyPoints() would give,
   // without its lists.
-  bool onePoint(const Context& c, int j, Vec3* from, Vec3* to) const {
+  bool onePoint(const Context& c, int j, Vec3* from, Vec3* to, Real* length) const {
     const std::span<const int> effectors = effectorsOn(j), children = kids(j);
     if (effectors.size() + children.size() != 1 || c.options.fabrikLimitFit ||
         (!deeper_.empty() && !deeper_[static_cast<size_t>(j)].empty()))
@@ -572,9 +583,11 @@ class Fabrik final : public Method {
       if (eff.kind != EffectorKind::Position) return false;
       *from = eff.localOffset;
       *to = target_[static_cast<size_t>(effectors[0])];
+      *length = glm::length(*from);
     } else {
       *from = translationOf(c.skeleton.joint(children[0]), c.pose);
       *to = P_[static_cast<size_t>(children[0])];
+      *length = lever(c, children[0]);
     }
     return true;
   }
@@ -639,6 +652,7 @@ class Fabrik final : public Method {
   std::vector<std::vector<int>> deeper_;  // per joint: look-ahead nodes (see buildLookahead); or empty
   std::vector<int> chain_;                // points only: the joints from the root
   std::vector<char> limited_;             // per joint: !rotationUnlimited()
+  std::vector<Real> lever_;               // per joint: |offset|, −1 for prismatic joints (see lever())
   struct HingeRange {  // a hinge's range: cos, sin of its middle, cos of its half width (hingeInside)
     Real cosMid = 1.0, sinMid = 0.0, cosHalf = 1.0;
     bool valid = false;  // the range lies inside (−π, π)

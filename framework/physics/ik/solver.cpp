@@ -102,26 +102,6 @@ void Context::refresh() {
   refreshFrames();
 }
 
-// Joint j's frame from its parent's frame (nullptr: root) and its cached local rotation.
-Frame Context::frameFrom(int j, const Frame* parent) const {
-  return linkFrame(j, parent, pose, local[static_cast<size_t>(j)]);
-}
-
-Frame Context::linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const {
-  const Link& link = links[static_cast<size_t>(j)];
-  const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), p) : link.offset;
-  Frame f;
-  if (parent) {
-    f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
-    f.position = parent->position + parent->rotation * t;
-  } else {
-    f.pre = link.rest;
-    f.position = t;
-  }
-  f.rotation = f.pre * localRotation;
-  return f;
-}
-
 void Context::evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<EulerHalfAngles>& halfOut,
                        std::vector<Frame>& framesOut) const {
   const int n = skeleton.jointCount();
@@ -284,15 +264,14 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
   c.maxErrorStep = o.maxErrorStep > 0.0 ? o.maxErrorStep : c.meanBone;
   const auto J = static_cast<size_t>(skeleton.jointCount());
-  c.belowStart.assign(J + 1, 0);
-  for (const Effector& e : effectors)
-    for (int j = e.joint; j >= 0; j = skeleton.joint(j).parent) ++c.belowStart[static_cast<size_t>(j) + 1];
-  for (size_t j = 0; j < J; ++j) c.belowStart[j + 1] += c.belowStart[j];
-  c.belowList.resize(static_cast<size_t>(c.belowStart[J]));
-  std::vector<int> fill(c.belowStart.begin(), c.belowStart.end() - 1);
-  for (size_t k = 0; k < effectors.size(); ++k)
-    for (int j = effectors[k].joint; j >= 0; j = skeleton.joint(j).parent)
-      c.belowList[static_cast<size_t>(fill[static_cast<size_t>(j)]++)] = static_cast<int>(k);
+  detail::bucketLists(
+      J,
+      [&](auto visit) {
+        for (size_t k = 0; k < effectors.size(); ++k)
+          for (int j = effectors[k].joint; j >= 0; j = skeleton.joint(j).parent)
+            visit(static_cast<size_t>(j), static_cast<int>(k));
+      },
+      c.belowStart, c.belowList);
   c.active.assign(J, 0);
   for (size_t j = 0; j < J; ++j) c.active[j] = c.belowStart[j + 1] > c.belowStart[j];
   c.insideCosHalf.assign(J, 2.0);
@@ -369,6 +348,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   }
 
   std::vector<Real> progress;  // combined residual per iteration for stall detection
+  progress.reserve(16);
   auto measure = [&]() {
     Residual r;
     if (method->posesDeferred()) {  // position effectors only (FABRIK's condition for deferring)

@@ -91,31 +91,59 @@ struct Context {
   void refreshFrames();
   /// Joint j's frame from its parent's entry in `frames` and the cached local rotation. O(1).
   Frame frameFromParent(int j) const;
-  Frame frameFrom(int j, const Frame* parent) const;
+  Frame frameFrom(int j, const Frame* parent) const {
+    return linkFrame(j, parent, pose, local[static_cast<size_t>(j)]);
+  }
   /// frameFrom() without the product by the local rotation: the pivot and R_pre, with rotation left
-  /// at R_pre, for a method that sets joint j's rotation next. The same arithmetic as linkFrame().
+  /// at R_pre, for a method that sets joint j's rotation next.
   Frame pivotFrom(int j, const Frame* parent) const {
     const Link& link = links[static_cast<size_t>(j)];
-    if (link.prismatic) return frameFrom(j, parent);
+    const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), pose) : link.offset;
     Frame f;
     if (parent) {
       f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
-      f.position = parent->position + parent->rotation * link.offset;
+      f.position = parent->position + parent->rotation * t;
     } else {
       f.pre = link.rest;
-      f.position = link.offset;
+      f.position = t;
     }
     f.rotation = f.pre;
     return f;
   }
   /// The same for any pose p and local rotation of joint j.
-  Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const;
+  Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const {
+    const Link& link = links[static_cast<size_t>(j)];
+    const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), p) : link.offset;
+    Frame f;
+    if (parent) {
+      f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
+      f.position = parent->position + parent->rotation * t;
+    } else {
+      f.pre = link.rest;
+      f.position = t;
+    }
+    f.rotation = f.pre * localRotation;
+    return f;
+  }
   /// What refresh() computes (the local rotations and every frame), for another pose p, into the
   /// given buffers: a trial pose of a line search, whose buffers the method swaps with `local` and
   /// `frames` when it accepts the pose (no second forward kinematics). O(n) with trigonometry.
   void evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<EulerHalfAngles>& halfOut,
                 std::vector<Frame>& framesOut) const;
 };
+
+/// Lists of items per bucket, list[start[b] .. start[b + 1]) for b < buckets, each in the order
+/// `each` visits them (a counting sort, with no buffer besides the two outputs): each(visit) must
+/// call visit(bucket, item) for every pair, the same way both times it is called.
+template <class Each>
+void bucketLists(size_t buckets, Each each, std::vector<int>& start, std::vector<int>& list) {
+  start.assign(buckets + 2, 0);
+  each([&](size_t b, int) { ++start[b + 2]; });
+  for (size_t i = 2; i < start.size(); ++i) start[i] += start[i - 1];  // start[b + 1] = where b begins
+  list.resize(static_cast<size_t>(start.back()));
+  each([&](size_t b, int item) { list[static_cast<size_t>(start[b + 1]++)] = item; });  // now where b ends
+  start.pop_back();
+}
 
 /// One IK method: iterate() does one pass (CCD, FABRIK) or one step (Jacobian methods).
 class Method {
