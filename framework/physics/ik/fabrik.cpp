@@ -37,6 +37,11 @@
 // in) and fabrikLimitFit (a limited ball joint takes the best rotation inside its limits, not the
 // clamp of the best rotation).
 // Cost: O(n) per iteration (a Horn fit, a 4 × 4 eigenproblem, only at bodies with several points).
+// Limits without trigonometry where they do not act: a ball joint's are skipped when its rotation is
+// surely inside them (Context::surelyWithinLimits), a hinge's when its angle's direction lies inside
+// its range (HingeRange; the hinge then turns by half-angle quaternions, its angle written once at
+// the end); only at or past a limit do the Euler angles or the hinge angle and IK-6's clamp decide.
+// Bones turn by arcBetween (one square root; the same rotation as shortestArc to rounding).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -102,22 +107,6 @@ PBA_EXERCISE_PROBE(probeFabrikPasses());
 
 namespace detail {
 namespace {
-
-// The shortest arc from u to v, the turn of a bone onto its new direction in both passes, as the
-// quaternion (|u||v| + u·v, u × v) = 2|u||v| cos(θ/2) · (cos(θ/2), sin(θ/2) n̂) (θ the angle between
-// u and v, n̂ their unit normal): the rotation shortestArc() gives, not normalised — the callers
-// normalise the product they make of it, once. One square root and no division, where the unit
-// vectors of shortestArc (Eigen's FromTwoVectors) take four roots and eight divisions; the same
-// rotation to rounding. Zero vectors and (nearly) opposite ones, 1 + cos θ < 10⁻¹² (Eigen's
-// threshold), where the axis u × v is lost: shortestArc itself.
-Quat arcBetween(const Vec3& u, const Vec3& v) {
-  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
-  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
-  const Real lengths = std::sqrt(uu * vv), w = lengths + glm::dot(u, v);
-  if (w < 1e-12 * lengths) return shortestArc(u, v);
-  const Vec3 axis = glm::cross(u, v);
-  return Quat(w, axis.x, axis.y, axis.z);
-}
 
 class Fabrik final : public Method {
  public:
@@ -197,20 +186,7 @@ class Fabrik final : public Method {
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
     buildLookahead(c);
-    // The hinges' ranges for hingeInside(), once per distinct range (a chain repeats one).
-    hingeRange_.assign(static_cast<size_t>(J), {});
-    for (int j = 0, last = -1; j < J; ++j) {
-      const Joint& joint = c.skeleton.joint(j);
-      if (joint.type != JointType::Hinge || !(joint.lo[0] > -kPi && joint.hi[0] < kPi)) continue;
-      const Joint* previous = last >= 0 ? &c.skeleton.joint(last) : nullptr;
-      if (previous && previous->lo[0] == joint.lo[0] && previous->hi[0] == joint.hi[0]) {
-        hingeRange_[static_cast<size_t>(j)] = hingeRange_[static_cast<size_t>(last)];
-      } else {
-        const Real mid = 0.5 * (joint.lo[0] + joint.hi[0]), half = 0.5 * (joint.hi[0] - joint.lo[0]);
-        hingeRange_[static_cast<size_t>(j)] = {std::cos(mid), std::sin(mid), std::cos(half), true};
-      }
-      last = j;
-    }
+    hingeRanges(c.skeleton, hingeRange_);
     lever_.assign(static_cast<size_t>(J), -1.0);
     for (int j = 0; j < J; ++j)
       if (c.skeleton.joint(j).type != JointType::Prismatic)
@@ -315,11 +291,13 @@ class Fabrik final : public Method {
                    v = perpendicularPart(oldP - Pk, w);
         const Real S = glm::dot(w, glm::cross(u, v)), C = glm::dot(u, v);
         const bool defined = std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk));
-        // θ = −atan2(S, C): (cos θ, sin θ) = (C, −S)/r, r = |(C, S)|. Inside the limits, where the
-        // clamp would change nothing, no angle is needed: R(−θ about a) = (cos ½θ, −sin ½θ a) is
-        // (1 + cos θ, −sin θ a) normalised, here (r + C, S a) normalised.
+        // θ = −atan2(S, C): (cos θ, sin θ) = (C, −S)/r, r = |(C, S)|. The limit is the clamp of
+        // Workbook §2.7 (IK-6) applied inside the pass, as Aristidou & Lasenby 2011 §4.2 apply
+        // their rotational constraints. Inside the limits, where the clamp would change nothing,
+        // no angle is needed (HingeRange): R(−θ about a) = (cos ½θ, −sin ½θ a) is (1 + cos θ,
+        // −sin θ a) normalised, here (r + C, S a) normalised. At or past a limit, the angle.
         const Real r = std::sqrt(S * S + C * C);
-        if (defined && clamp && hingeInside(k, C, -S, r)) {
+        if (defined && clamp && hingeRange_[static_cast<size_t>(k)].holds(C, -S, r)) {
           const Quat turned = Rk * Quat(r + C, S * joint.axis.x, S * joint.axis.y, S * joint.axis.z);
           *Rp = glm::normalize(identityRest ? turned : turned * restInverse);
           break;
@@ -474,7 +452,8 @@ class Fabrik final : public Method {
         f = c.frameFrom(j, parent);
         bodyPoints(c, j);
         for (size_t i = 0; i < from_.size(); ++i) from_[i] = f.position + f.rotation * from_[i];
-        if (!(joint.type == JointType::Hinge && clamp && turnHinge(c, j, f))) {
+        if (!(joint.type == JointType::Hinge && clamp &&
+              turnHingeWithinLimits(c, j, f, hingeRange_[static_cast<size_t>(j)], from_, to_, w_))) {
           if (c.staleEuler[static_cast<size_t>(j)]) c.flushJoint(j);  // alignJoint turns from the angle
           alignJoint(c, j, f, from_, to_, w_, clamp, false, nullptr);
         }
@@ -523,37 +502,6 @@ class Fabrik final : public Method {
       if (fitBallWithinLimits(c, j, f, wanted, from_, goals_, w_, moved_)) return;
     }
     setJointRotation(c, j, wanted, clamp);
-  }
-
-  // Hinge k's range [lo, hi] (when it lies inside (−π, π)) holds the angle x whose (cos x, sin x) is
-  // (cx, sx)/r, r = |(cx, sx)| > 0, by a margin: x ∈ [m − h, m + h] ⇔ cos(x − m) ≥ cos h ⇔
-  // cx cos m + sx sin m ≥ r cos h, with m and h the middle and half width of the range. Then IK-6's
-  // clamp would leave x, and the passes turn the hinge without its angle. False near a limit, where
-  // the angle and the clamp decide.
-  bool hingeInside(int k, Real cx, Real sx, Real r) const {
-    const HingeRange& range = hingeRange_[static_cast<size_t>(k)];
-    return range.valid && r > 0.0 && cx * range.cosMid + sx * range.sinMid >= (range.cosHalf + kInsideMargin) * r;
-  }
-
-  // The forward pass on hinge j with limits (its frame f, its points in from_ (world), to_ and w_):
-  // alignJoint's exact one-DOF optimum ψ = d + atan2(S, C) (Workbook §2.4; align.cpp), d the hinge's
-  // angle, computed as a direction: (cos ψ, sin ψ) ∝ (cos d C − sin d S, sin d C + cos d S), with
-  // cos d = w² − s², sin d = 2ws from its local rotation (w, s a). When ψ lies inside the limits
-  // (hingeInside) the hinge takes R(ψ) = (1 + cos ψ, sin ψ a) normalised, and its angle is written
-  // when the solve needs it (flushPose: one atan2 instead of an atan2 and two sincos per pass).
-  // Returns false, doing nothing, otherwise (alignJoint then turns it by the angle and clamps).
-  bool turnHinge(Context& c, int j, const Frame& f) {
-    const Joint& joint = c.skeleton.joint(j);
-    Real S = 0.0, C = 0.0;
-    bestAngleTerms(f.pre * joint.axis, f.position, from_, to_, w_, &S, &C);
-    const Quat& q = c.local[static_cast<size_t>(j)];
-    const Real s = glm::dot(Vec3(q.x, q.y, q.z), joint.axis), cosD = q.w * q.w - s * s, sinD = 2.0 * q.w * s;
-    const Real cx = cosD * C - sinD * S, sx = sinD * C + cosD * S, r = std::sqrt(cx * cx + sx * sx);
-    if (!hingeInside(j, cx, sx, r)) return false;
-    c.local[static_cast<size_t>(j)] =
-        glm::normalize(Quat(r + cx, sx * joint.axis.x, sx * joint.axis.y, sx * joint.axis.z));
-    c.staleEuler[static_cast<size_t>(j)] = 1;
-    return true;
   }
 
   // The point rule of the forward pass for a body with one point (`from` in its frame, headed for
@@ -653,16 +601,11 @@ class Fabrik final : public Method {
   std::vector<int> chain_;                // points only: the joints from the root
   std::vector<char> limited_;             // per joint: !rotationUnlimited()
   std::vector<Real> lever_;               // per joint: |offset|, −1 for prismatic joints (see lever())
-  struct HingeRange {  // a hinge's range: cos, sin of its middle, cos of its half width (hingeInside)
-    Real cosMid = 1.0, sinMid = 0.0, cosHalf = 1.0;
-    bool valid = false;  // the range lies inside (−π, π)
-  };
-  std::vector<HingeRange> hingeRange_;  // per joint
-  static constexpr Real kInsideMargin = 1e-12;
-  std::vector<Vec3> P_;       // per joint: body pivot after the backward pass
-  std::vector<Quat> R_;       // per joint: body rotation after the backward pass
-  std::vector<Vec3> target_;  // per effector: where the forward pass aims it
-  DeferredTurns turns_;       // fabrikHingeTwist's turns, applied when the pass ends
+  std::vector<HingeRange> hingeRange_;    // per joint (hingeRanges)
+  std::vector<Vec3> P_;                   // per joint: body pivot after the backward pass
+  std::vector<Quat> R_;                   // per joint: body rotation after the backward pass
+  std::vector<Vec3> target_;              // per effector: where the forward pass aims it
+  DeferredTurns turns_;                   // fabrikHingeTwist's turns, applied when the pass ends
   std::vector<Vec3> pts_, two_, from_, to_, goals_, moved_;
   std::vector<Real> lens_, one_, w_;
   Vec3 base_{0.0};

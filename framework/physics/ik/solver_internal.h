@@ -177,6 +177,49 @@ std::unique_ptr<Method> makeAnalytic(const Context& c, std::string* why);
 /// normal to a, e.g. a hinge's plane of motion).
 inline Vec3 perpendicularPart(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
 
+/// The shortest arc from u to v (the turn of a bone onto its new direction in FABRIK's passes) as the
+/// quaternion (|u||v| + u·v, u × v) = 2|u||v| cos(θ/2) · (cos(θ/2), sin(θ/2) n̂) (θ the angle between
+/// u and v, n̂ their unit normal): the rotation shortestArc() gives, not normalised — the callers
+/// normalise the product they make of it, once. One square root and no division, where the unit
+/// vectors of shortestArc (Eigen's FromTwoVectors) take four roots and eight divisions; the same
+/// rotation to rounding. Zero vectors and (nearly) opposite ones, 1 + cos θ < 10⁻¹² (Eigen's
+/// threshold), where the axis u × v is lost: shortestArc itself.
+inline Quat arcBetween(const Vec3& u, const Vec3& v) {
+  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
+  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
+  const Real lengths = std::sqrt(uu * vv), w = lengths + glm::dot(u, v);
+  if (w < 1e-12 * lengths) return shortestArc(u, v);
+  const Vec3 axis = glm::cross(u, v);
+  return Quat(w, axis.x, axis.y, axis.z);
+}
+
+/// A hinge's range [lo, hi], for telling without its angle whether an angle lies inside it (FABRIK's
+/// passes): x ∈ [m − h, m + h] ⇔ cos(x − m) ≥ cos h, with m and h the middle and half width of the
+/// range, so for (cos x, sin x) = (cx, sx)/r: cx cos m + sx sin m ≥ r cos h. Valid only for a range
+/// inside (−π, π), where every angle of it has one direction and the reverse is true as well.
+struct HingeRange {
+  Real cosMid = 1.0, sinMid = 0.0, cosHalf = 1.0;
+  bool valid = false;  ///< the range lies inside (−π, π)
+  /// x inside the range by a margin (10⁻¹² of r): IK-6's clamp would leave it. False near a limit,
+  /// where the angle and the clamp decide, and for r = 0.
+  bool holds(Real cx, Real sx, Real r) const {
+    return valid && r > 0.0 && cx * cosMid + sx * sinMid >= (cosHalf + 1e-12) * r;
+  }
+};
+/// Per joint, its HingeRange (valid for hinges whose range lies inside (−π, π)); the cosines are
+/// computed once per distinct range (a chain repeats one). align.cpp.
+void hingeRanges(const Skeleton& s, std::vector<HingeRange>& out);
+/// alignJoint's hinge update (the exact one-DOF optimum, Workbook §2.4) without angles while it stays
+/// inside the limits (Workbook §2.7's clamp, which would then change nothing; FABRIK's forward pass,
+/// Aristidou & Lasenby 2011 §4.2): ψ = d + atan2(S, C) (bestAngleTerms; d the hinge's angle) as a direction,
+/// (cos ψ, sin ψ) ∝ (cos d C − sin d S, sin d C + cos d S), with cos d = w² − s², sin d = 2ws from its
+/// local rotation (w, s a). When `range` holds ψ, the hinge takes R(ψ) = (1 + cos ψ, sin ψ a)
+/// normalised and is marked stale (its angle is written by flushPose, one atan2, instead of an
+/// atan2 and two sincos here). Returns false, doing nothing, otherwise: alignJoint then turns it by
+/// the angle and clamps. `from` in world coordinates, as for alignJoint.
+bool turnHingeWithinLimits(Context& c, int j, const Frame& f, const HingeRange& range, const std::vector<Vec3>& from,
+                           const std::vector<Vec3>& to, const std::vector<Real>& w);
+
 /// Rotates/translates joint j (whose world pre-rotation and pivot are `frame`) to best carry the
 /// points `from[i]` (world, currently attached below j) onto `to[i]` with weights w[i]:
 /// minimises Σ wᵢ |T(fromᵢ) − toᵢ|² over the joint's DOFs, exactly for a hinge, prismatic or a single
