@@ -17,7 +17,7 @@ namespace pba::ik::detail {
 Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits) {
   const Joint& joint = c.skeleton.joint(j);
   const bool clampNow =
-      clampLimits && !rotationUnlimited(joint) && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted));
+      clampLimits && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted)) && !rotationUnlimited(joint);
   Quat applied = wanted;
   if (joint.type == JointType::Ball) {
     if (clampNow) {
@@ -58,15 +58,52 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
 
 }  // namespace
 
+void bestAngleTerms(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+                    const std::vector<Real>& w, Real* S, Real* C) {
+  *S = 0.0;
+  *C = 0.0;
+  for (size_t i = 0; i < from.size(); ++i) {
+    const Vec3 u = perpendicularPart(from[i] - p, a), v = perpendicularPart(to[i] - p, a);
+    *S += w[i] * glm::dot(a, glm::cross(u, v));
+    *C += w[i] * glm::dot(u, v);
+  }
+}
+
 Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
                const std::vector<Real>& w) {
   Real S = 0.0, C = 0.0;
-  for (size_t i = 0; i < from.size(); ++i) {
-    const Vec3 u = perpendicularPart(from[i] - p, a), v = perpendicularPart(to[i] - p, a);
-    S += w[i] * glm::dot(a, glm::cross(u, v));
-    C += w[i] * glm::dot(u, v);
-  }
+  bestAngleTerms(a, p, from, to, w, &S, &C);
   return std::atan2(S, C);
+}
+
+void hingeRanges(const Skeleton& s, std::vector<HingeRange>& out) {
+  out.assign(static_cast<size_t>(s.jointCount()), {});
+  for (int j = 0, last = -1; j < s.jointCount(); ++j) {
+    const Joint& joint = s.joint(j);
+    if (joint.type != JointType::Hinge || !(joint.lo[0] > -kPi && joint.hi[0] < kPi)) continue;
+    if (last >= 0 && s.joint(last).lo[0] == joint.lo[0] && s.joint(last).hi[0] == joint.hi[0]) {
+      out[static_cast<size_t>(j)] = out[static_cast<size_t>(last)];
+    } else {
+      const Real mid = 0.5 * (joint.lo[0] + joint.hi[0]), half = 0.5 * (joint.hi[0] - joint.lo[0]);
+      out[static_cast<size_t>(j)] = {std::cos(mid), std::sin(mid), std::cos(half), true};
+    }
+    last = j;
+  }
+}
+
+bool turnHingeWithinLimits(Context& c, int j, const Frame& f, const HingeRange& range, const std::vector<Vec3>& from,
+                           const std::vector<Vec3>& to, const std::vector<Real>& w) {
+  const Joint& joint = c.skeleton.joint(j);
+  Real S = 0.0, C = 0.0;
+  bestAngleTerms(f.pre * joint.axis, f.position, from, to, w, &S, &C);
+  const Quat& q = c.local[static_cast<size_t>(j)];
+  const Real s = glm::dot(Vec3(q.x, q.y, q.z), joint.axis), cosD = q.w * q.w - s * s, sinD = 2.0 * q.w * s;
+  const Real cx = cosD * C - sinD * S, sx = sinD * C + cosD * S, r = std::sqrt(cx * cx + sx * sx);
+  if (!range.holds(cx, sx, r)) return false;
+  c.local[static_cast<size_t>(j)] =
+      glm::normalize(Quat(r + cx, sx * joint.axis.x, sx * joint.axis.y, sx * joint.axis.z));
+  c.staleEuler[static_cast<size_t>(j)] = 1;
+  return true;
 }
 
 // The hinge optimum is an angle modulo 2π. Of the representatives ψ − 2π, ψ, ψ + 2π, pick the one

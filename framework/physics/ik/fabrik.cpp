@@ -37,6 +37,11 @@
 // in) and fabrikLimitFit (a limited ball joint takes the best rotation inside its limits, not the
 // clamp of the best rotation).
 // Cost: O(n) per iteration (a Horn fit, a 4 × 4 eigenproblem, only at bodies with several points).
+// Limits without trigonometry where they do not act: a ball joint's are skipped when its rotation is
+// surely inside them (Context::surelyWithinLimits), a hinge's when its angle's direction lies inside
+// its range (HingeRange; the hinge then turns by half-angle quaternions, its angle written once at
+// the end); only at or past a limit do the Euler angles or the hinge angle and IK-6's clamp decide.
+// Bones turn by arcBetween (one square root; the same rotation as shortestArc to rounding).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -151,22 +156,22 @@ class Fabrik final : public Method {
     const int J = c.skeleton.jointCount(), E = static_cast<int>(c.effectors.size());
     // Active children per joint in index order, as kidList_[kidStart_[j] .. kidStart_[j + 1]) (two
     // allocations, not one per joint).
-    kidStart_.assign(static_cast<size_t>(J) + 1, 0);
-    for (int j = 0; j < J; ++j) {
-      const int parent = c.skeleton.joint(j).parent;
-      if (c.active[static_cast<size_t>(j)] && parent >= 0) ++kidStart_[static_cast<size_t>(parent) + 1];
-    }
-    for (size_t j = 0; j < static_cast<size_t>(J); ++j) kidStart_[j + 1] += kidStart_[j];
-    kidList_.resize(static_cast<size_t>(kidStart_.back()));
-    std::vector<int> fill(kidStart_.begin(), kidStart_.end() - 1);
-    for (int j = 0; j < J; ++j) {
-      const int parent = c.skeleton.joint(j).parent;
-      if (c.active[static_cast<size_t>(j)] && parent >= 0)
-        kidList_[static_cast<size_t>(fill[static_cast<size_t>(parent)]++)] = j;
-    }
-    effectorsOn_.assign(static_cast<size_t>(J), {});
-    for (int e = 0; e < E; ++e)
-      effectorsOn_[static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint)].push_back(e);
+    bucketLists(
+        static_cast<size_t>(J),
+        [&](auto visit) {
+          for (int j = 0; j < J; ++j) {
+            const int parent = c.skeleton.joint(j).parent;
+            if (c.active[static_cast<size_t>(j)] && parent >= 0) visit(static_cast<size_t>(parent), j);
+          }
+        },
+        kidStart_, kidList_);
+    // Effectors per joint, the same way: effList_[effStart_[j] .. effStart_[j + 1]).
+    bucketLists(
+        static_cast<size_t>(J),
+        [&](auto visit) {
+          for (int e = 0; e < E; ++e) visit(static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint), e);
+        },
+        effStart_, effList_);
     target_.resize(static_cast<size_t>(E));
     for (int e = 0; e < E; ++e) target_[static_cast<size_t>(e)] = c.effectors[static_cast<size_t>(e)].targetPosition;
     // Points only: one chain from the root to a single position effector through ball or free joints
@@ -181,11 +186,30 @@ class Fabrik final : public Method {
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
     buildLookahead(c);
+    hingeRanges(c.skeleton, hingeRange_);
+    lever_.assign(static_cast<size_t>(J), -1.0);
+    for (int j = 0; j < J; ++j)
+      if (c.skeleton.joint(j).type != JointType::Prismatic)
+        lever_[static_cast<size_t>(j)] = glm::length(c.skeleton.joint(j).offset);
+    limited_.assign(static_cast<size_t>(J), 0);
+    for (int j = 0; j < J; ++j) limited_[static_cast<size_t>(j)] = !rotationUnlimited(c.skeleton.joint(j));
     if (c.options.fabrikHingeTwist) turns_.build(c);
     P_.assign(static_cast<size_t>(J), Vec3(0.0));
     R_.assign(static_cast<size_t>(J), Quat(1, 0, 0, 0));
     two_.assign(2, Vec3(0.0));
     one_.assign(1, 0.0);
+  }
+
+  // |translation| of joint k (its bone, as a lever of its parent's body), kept for the joints that are
+  // not prismatic.
+  Real lever(const Context& c, int k) const {
+    const Real l = lever_[static_cast<size_t>(k)];
+    return l >= 0.0 ? l : glm::length(translationOf(c.skeleton.joint(k), c.pose));
+  }
+
+  // jointTranslation() inline: a joint's translation is its offset unless it is prismatic.
+  static Vec3 translationOf(const Joint& joint, const Pose& pose) {
+    return joint.type == JointType::Prismatic ? jointTranslation(joint, pose) : joint.offset;
   }
 
   // The points of joint j's body: in its frame (from_), their goals (to_, world) and weights.
@@ -194,7 +218,7 @@ class Fabrik final : public Method {
     from_.clear();
     to_.clear();
     w_.clear();
-    for (int e : effectorsOn_[static_cast<size_t>(j)]) {
+    for (int e : effectorsOn(j)) {
       const Effector& eff = c.effectors[static_cast<size_t>(e)];
       from_.push_back(eff.localOffset);
       to_.push_back(target_[static_cast<size_t>(e)]);
@@ -210,7 +234,7 @@ class Fabrik final : public Method {
       }
     }
     for (int k : kids(j)) {
-      from_.push_back(jointTranslation(c.skeleton.joint(k), c.pose));
+      from_.push_back(translationOf(c.skeleton.joint(k), c.pose));
       to_.push_back(P_[static_cast<size_t>(k)]);
       w_.push_back(1.0);
     }
@@ -218,13 +242,17 @@ class Fabrik final : public Method {
 
   // The point rule on one lever b of body (P, R): the point onto `goal`, the pivot back toward P.
   void propose(const Vec3& P, const Quat& R, const Vec3& b, const Vec3& goal, Vec3* Pp, Quat* Rp) {
-    const Vec3 a = P + R * b;
+    propose(P, R, P + R * b, glm::length(b), goal, Pp, Rp);
+  }
+  // The same with the lever's point a = P + R b and its length |b| given (a child's pivot before the
+  // pass, c.frames: the same sum, the same bits).
+  void propose(const Vec3& P, const Quat& R, const Vec3& a, Real length, const Vec3& goal, Vec3* Pp, Quat* Rp) {
     two_[0] = P;
     two_[1] = a;
-    one_[0] = glm::length(b);
+    one_[0] = length;
     fabrikBackward(two_, one_, goal);
     *Pp = two_[0];
-    *Rp = glm::normalize(shortestArc(P - a, two_[0] - goal) * R);
+    *Rp = glm::normalize(arcBetween(P - a, two_[0] - goal) * R);
   }
 
   // Joint k (child of body j) must relate body j's proposal (*Pp, *Rp) to body k's new pose: moves
@@ -257,11 +285,25 @@ class Fabrik final : public Method {
         // pivot lies on the line from P_k to oldP); where that is undefined (lever along the axis,
         // or oldP on it), the twist of the rule's proposal.
         const Vec3 w = Rk * joint.axis;
-        const Vec3 t = jointTranslation(joint, c.pose);
-        const Vec3 u = perpendicularPart(-(Rk * (restInverse * t)), w), v = perpendicularPart(oldP - Pk, w);
+        const Vec3 t = translationOf(joint, c.pose);
+        const bool identityRest = c.links[static_cast<size_t>(k)].identityRest;  // skip products by 1
+        const Vec3 u = perpendicularPart(-(Rk * (identityRest ? t : restInverse * t)), w),
+                   v = perpendicularPart(oldP - Pk, w);
         const Real S = glm::dot(w, glm::cross(u, v)), C = glm::dot(u, v);
+        const bool defined = std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk));
+        // θ = −atan2(S, C): (cos θ, sin θ) = (C, −S)/r, r = |(C, S)|. The limit is the clamp of
+        // Workbook §2.7 (IK-6) applied inside the pass, as Aristidou & Lasenby 2011 §4.2 apply
+        // their rotational constraints. Inside the limits, where the clamp would change nothing,
+        // no angle is needed (HingeRange): R(−θ about a) = (cos ½θ, −sin ½θ a) is (1 + cos θ,
+        // −sin θ a) normalised, here (r + C, S a) normalised. At or past a limit, the angle.
+        const Real r = std::sqrt(S * S + C * C);
+        if (defined && clamp && hingeRange_[static_cast<size_t>(k)].holds(C, -S, r)) {
+          const Quat turned = Rk * Quat(r + C, S * joint.axis.x, S * joint.axis.y, S * joint.axis.z);
+          *Rp = glm::normalize(identityRest ? turned : turned * restInverse);
+          break;
+        }
         Real theta;
-        if (std::abs(S) + std::abs(C) > 1e-12 * (glm::dot(t, t) + glm::dot(oldP - Pk, oldP - Pk))) {
+        if (defined) {
           theta = -std::atan2(S, C);
         } else {
           propose(oldP, oldR, t, Pk, Pp, Rp);
@@ -277,9 +319,13 @@ class Fabrik final : public Method {
       }
       case JointType::Ball:
       case JointType::Free: {
-        if (!clamp || rotationUnlimited(joint)) return;
-        const Quat local = glm::normalize(glm::conjugate(*Rp * joint.restRotation) * Rk);
-        if (joint.type == JointType::Ball && c.surelyWithinLimits(k, local)) return;
+        if (!clamp || !limited_[static_cast<size_t>(k)]) return;
+        const Quat parent = c.links[static_cast<size_t>(k)].identityRest ? *Rp : *Rp * joint.restRotation;
+        // A product of unit quaternions, unit to rounding: good enough for the test, whose margins
+        // (10⁻¹², 10⁻⁹) are far above it; normalised only when the limits need a closer look.
+        const Quat product = glm::conjugate(parent) * Rk;
+        if (joint.type == JointType::Ball && c.surelyWithinLimits(k, product)) return;
+        const Quat local = glm::normalize(product);
         Quat allowed = local;
         if (joint.type == JointType::Ball) {
           const Vec3 e = eulerWithinLimits(joint, local);
@@ -294,21 +340,17 @@ class Fabrik final : public Method {
         break;
       }
     }
-    *Pp = Pk - *Rp * jointTranslation(joint, c.pose);
+    *Pp = Pk - *Rp * translationOf(joint, c.pose);
   }
 
   void backward(Context& c) {
     const int J = c.skeleton.jointCount();
-    for (int j = 0; j < J; ++j) {
-      P_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].position;
-      R_[static_cast<size_t>(j)] = c.frames[static_cast<size_t>(j)].rotation;
-    }
     const bool twist = c.options.fabrikHingeTwist;
     if (twist) turns_.reset();
     for (int j = J - 1; j >= 0; --j) {
       if (!c.active[static_cast<size_t>(j)]) continue;
-      const Vec3 oldP = P_[static_cast<size_t>(j)];
-      const Quat oldR = R_[static_cast<size_t>(j)];
+      const Vec3 oldP = c.frames[static_cast<size_t>(j)].position;  // body j before the pass
+      const Quat oldR = c.frames[static_cast<size_t>(j)].rotation;
       int proposals = 0;
       Vec3 sumP(0.0), Pp(0.0);
       Quat sumR(0, 0, 0, 0), Rp(1, 0, 0, 0);
@@ -319,7 +361,7 @@ class Fabrik final : public Method {
         Pp = p;
         Rp = r;
       };
-      for (int e : effectorsOn_[static_cast<size_t>(j)]) {
+      for (int e : effectorsOn(j)) {
         const Effector& eff = c.effectors[static_cast<size_t>(e)];
         if (eff.kind == EffectorKind::PositionOrientation) {
           // The body onto the goal frame: exact, position and orientation.
@@ -332,7 +374,8 @@ class Fabrik final : public Method {
       for (int k : kids(j)) {
         const Joint& kid = c.skeleton.joint(k);
         if (kid.type == JointType::Ball || kid.type == JointType::Free)
-          propose(oldP, oldR, jointTranslation(kid, c.pose), P_[static_cast<size_t>(k)], &Pp, &Rp);
+          propose(oldP, oldR, c.frames[static_cast<size_t>(k)].position, lever(c, k), P_[static_cast<size_t>(k)], &Pp,
+                  &Rp);
         else if (twist && kid.type == JointType::Hinge && turns_.effectorOf(k) >= 0)
           twistBelow(c, k, oldP, oldR);
         constrain(c, k, oldP, oldR, &Pp, &Rp);
@@ -390,18 +433,31 @@ class Fabrik final : public Method {
     for (int j = 0; j < J; ++j) {
       const Joint& joint = c.skeleton.joint(j);
       const Frame* parent = joint.parent >= 0 ? &c.frames[static_cast<size_t>(joint.parent)] : nullptr;
-      Frame f = c.frameFrom(j, parent);
       if (!c.active[static_cast<size_t>(j)] || joint.type == JointType::Fixed) {
-        c.frames[static_cast<size_t>(j)] = f;
+        c.frames[static_cast<size_t>(j)] = c.frameFrom(j, parent);
         continue;
       }
-      bodyPoints(c, j);
+      Frame f;
+      Vec3 from, to;
+      Real length = 0.0;
       if (joint.type == JointType::Ball || joint.type == JointType::Free) {
-        turnBall(c, j, f, clamp);
+        f = c.pivotFrom(j, parent);  // the rotation is set below
+        if (onePoint(c, j, &from, &to, &length)) {
+          setJointRotation(c, j, pointRule(f, R_[static_cast<size_t>(j)], from, to, length), clamp);
+        } else {
+          bodyPoints(c, j);
+          turnBall(c, j, f, clamp);
+        }
       } else {
-        for (size_t i = 0; i < from_.size(); ++i) from_[i] = f.position + f.rotation * from_[i];
-        alignJoint(c, j, f, from_, to_, w_, clamp, false, nullptr);
         f = c.frameFrom(j, parent);
+        bodyPoints(c, j);
+        for (size_t i = 0; i < from_.size(); ++i) from_[i] = f.position + f.rotation * from_[i];
+        if (!(joint.type == JointType::Hinge && clamp &&
+              turnHingeWithinLimits(c, j, f, hingeRange_[static_cast<size_t>(j)], from_, to_, w_))) {
+          if (c.staleEuler[static_cast<size_t>(j)]) c.flushJoint(j);  // alignJoint turns from the angle
+          alignJoint(c, j, f, from_, to_, w_, clamp, false, nullptr);
+        }
+        if (joint.type == JointType::Prismatic) f = c.frameFrom(j, parent);  // a hinge's pivot stays
       }
       f.rotation = f.pre * c.local[static_cast<size_t>(j)];
       c.frames[static_cast<size_t>(j)] = f;
@@ -420,8 +476,8 @@ class Fabrik final : public Method {
   void turnBall(Context& c, int j, const Frame& f, bool clamp) {
     const int J = c.skeleton.jointCount();
     const Quat& reference = R_[static_cast<size_t>(j)];
-    const std::vector<int>& deeper = deeper_[static_cast<size_t>(j)];
-    if (!deeper.empty()) {
+    if (!deeper_.empty() && !deeper_[static_cast<size_t>(j)].empty()) {
+      const std::vector<int>& deeper = deeper_[static_cast<size_t>(j)];
       const Frame& old = c.frames[static_cast<size_t>(j)];
       const Quat oldInverse = glm::conjugate(old.rotation);
       for (int n : deeper) {
@@ -433,24 +489,55 @@ class Fabrik final : public Method {
         w_.push_back(lookaheadWeight_[static_cast<size_t>(j)]);
       }
     }
-    Quat world;
+    Quat wanted;
     if (from_.size() == 1) {
-      two_[0] = f.position;
-      two_[1] = to_[0];
-      one_[0] = glm::length(from_[0]);
-      fabrikForward(two_, one_, f.position);
-      world = shortestArc(reference * from_[0], two_[1] - f.position) * reference;
+      wanted = pointRule(f, reference, from_[0], to_[0], glm::length(from_[0]));
     } else {
       for (Vec3& t : to_) t -= f.position;
-      world = fitRotation(from_, to_, w_, reference);
+      wanted = glm::normalize(glm::conjugate(f.pre) * fitRotation(from_, to_, w_, reference));
     }
-    const Quat wanted = glm::normalize(glm::conjugate(f.pre) * world);
     if (clamp && c.options.fabrikLimitFit) {  // ours: the best rotation inside the limits
       goals_.assign(to_.begin(), to_.end());
       if (from_.size() == 1) goals_[0] -= f.position;  // the fit above left several goals relative
       if (fitBallWithinLimits(c, j, f, wanted, from_, goals_, w_, moved_)) return;
     }
     setJointRotation(c, j, wanted, clamp);
+  }
+
+  // The point rule of the forward pass for a body with one point (`from` in its frame, headed for
+  // `to`, world), from its backward-pass orientation `reference`: IK-5's fabrikForward puts the point
+  // on the line from the pivot toward `to`, and the body turns by the shortest arc onto it. Returns
+  // the joint's wanted local rotation (before its limits).
+  Quat pointRule(const Frame& f, const Quat& reference, const Vec3& from, const Vec3& to, Real length) {
+    two_[0] = f.position;
+    two_[1] = to;
+    one_[0] = length;
+    fabrikForward(two_, one_, f.position);
+    const Quat world = arcBetween(reference * from, two_[1] - f.position) * reference;
+    return glm::normalize(glm::conjugate(f.pre) * world);
+  }
+
+  // True when the forward pass turns ball or free joint j's body by one point alone, the point rule
+  // (pointRule: one position effector or one child, no look-ahead, no limit fit); then its place in
+  // the body's frame (*from), its backward-pass place (*to) and |from|. What bodyPoints() would give,
+  // without its lists.
+  bool onePoint(const Context& c, int j, Vec3* from, Vec3* to, Real* length) const {
+    const std::span<const int> effectors = effectorsOn(j), children = kids(j);
+    if (effectors.size() + children.size() != 1 || c.options.fabrikLimitFit ||
+        (!deeper_.empty() && !deeper_[static_cast<size_t>(j)].empty()))
+      return false;
+    if (!effectors.empty()) {
+      const Effector& eff = c.effectors[static_cast<size_t>(effectors[0])];
+      if (eff.kind != EffectorKind::Position) return false;
+      *from = eff.localOffset;
+      *to = target_[static_cast<size_t>(effectors[0])];
+      *length = glm::length(*from);
+    } else {
+      *from = translationOf(c.skeleton.joint(children[0]), c.pose);
+      *to = P_[static_cast<size_t>(children[0])];
+      *length = lever(c, children[0]);
+    }
+    return true;
   }
 
   // The look-ahead of forward(): a ball or free joint with hinges or prismatic joints within
@@ -461,16 +548,17 @@ class Fabrik final : public Method {
   // onto bent goals).
   void buildLookahead(const Context& c) {
     const int J = c.skeleton.jointCount();
-    deeper_.assign(static_cast<size_t>(J), {});
-    lookaheadWeight_.assign(static_cast<size_t>(J), kFarLookaheadWeight);
+    deeper_.clear();
     // No active hinge or prismatic joint (a chain of ball joints): no look-ahead anywhere, and no
-    // per-joint lists to build (they cost more than a pass on a long chain).
+    // per-joint lists to build (they cost more than a pass on a long chain); deeper_ stays empty.
     bool anyOneDof = false;
     for (int j = 0; j < J && !anyOneDof; ++j) {
       const JointType t = c.skeleton.joint(j).type;
       anyOneDof = c.active[static_cast<size_t>(j)] && (t == JointType::Hinge || t == JointType::Prismatic);
     }
     if (!anyOneDof) return;
+    deeper_.assign(static_cast<size_t>(J), {});
+    lookaheadWeight_.assign(static_cast<size_t>(J), kFarLookaheadWeight);
     for (int j = 0; j < J; ++j) {
       const JointType type = c.skeleton.joint(j).type;
       if (!c.active[static_cast<size_t>(j)] || (type != JointType::Ball && type != JointType::Free)) continue;
@@ -483,7 +571,7 @@ class Fabrik final : public Method {
           const bool oneDof = t == JointType::Hinge || t == JointType::Prismatic;
           hinged = hinged || oneDof;
           if (depth == 2 && oneDof) lookaheadWeight_[static_cast<size_t>(j)] = 1.0;  // a child
-          for (int e : effectorsOn_[static_cast<size_t>(n)]) found.push_back(J + e);
+          for (int e : effectorsOn(n)) found.push_back(J + e);
           for (int k : kids(n)) next.push_back(k);
         }
         found.insert(found.end(), next.begin(), next.end());
@@ -501,15 +589,23 @@ class Fabrik final : public Method {
     return std::span<const int>(kidList_).subspan(first,
                                                   static_cast<size_t>(kidStart_[static_cast<size_t>(j) + 1]) - first);
   }
-  std::vector<int> kidStart_, kidList_;        // active children per joint (see kids())
-  std::vector<std::vector<int>> effectorsOn_;  // per joint: effectors
-  std::vector<Real> lookaheadWeight_;          // per joint: weight of its look-ahead points
-  std::vector<std::vector<int>> deeper_;       // per joint: look-ahead nodes (see buildLookahead)
-  std::vector<int> chain_;                     // points only: the joints from the root
-  std::vector<Vec3> P_;                        // per joint: body pivot after the backward pass
-  std::vector<Quat> R_;                        // per joint: body rotation after the backward pass
-  std::vector<Vec3> target_;                   // per effector: where the forward pass aims it
-  DeferredTurns turns_;                        // fabrikHingeTwist's turns, applied when the pass ends
+  std::vector<int> kidStart_, kidList_;            // active children per joint (see kids())
+  std::span<const int> effectorsOn(int j) const {  // the effectors on joint j, in index order
+    const auto first = static_cast<size_t>(effStart_[static_cast<size_t>(j)]);
+    return std::span<const int>(effList_).subspan(first,
+                                                  static_cast<size_t>(effStart_[static_cast<size_t>(j) + 1]) - first);
+  }
+  std::vector<int> effStart_, effList_;   // effectors per joint (see effectorsOn())
+  std::vector<Real> lookaheadWeight_;     // per joint: weight of its look-ahead points
+  std::vector<std::vector<int>> deeper_;  // per joint: look-ahead nodes (see buildLookahead); or empty
+  std::vector<int> chain_;                // points only: the joints from the root
+  std::vector<char> limited_;             // per joint: !rotationUnlimited()
+  std::vector<Real> lever_;               // per joint: |offset|, −1 for prismatic joints (see lever())
+  std::vector<HingeRange> hingeRange_;    // per joint (hingeRanges)
+  std::vector<Vec3> P_;                   // per joint: body pivot after the backward pass
+  std::vector<Quat> R_;                   // per joint: body rotation after the backward pass
+  std::vector<Vec3> target_;              // per effector: where the forward pass aims it
+  DeferredTurns turns_;                   // fabrikHingeTwist's turns, applied when the pass ends
   std::vector<Vec3> pts_, two_, from_, to_, goals_, moved_;
   std::vector<Real> lens_, one_, w_;
   Vec3 base_{0.0};

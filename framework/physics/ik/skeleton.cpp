@@ -108,10 +108,11 @@ Status validate(const Skeleton& s, const Pose& p) {
     return Error{"pose.rotations: expected " + std::to_string(s.jointCount()) + " values, got " +
                  std::to_string(p.rotations.size())};
   for (size_t i = 0; i < p.dofs.size(); ++i)
-    if (!isFinite(p.dofs[i])) return Error{"pose.dofs[" + std::to_string(i) + "]: must be finite"};
+    if (!std::isfinite(p.dofs[i])) return Error{"pose.dofs[" + std::to_string(i) + "]: must be finite"};
   for (size_t j = 0; j < p.rotations.size(); ++j) {
     const Quat& q = p.rotations[j];
-    if (!isFinite(Vec3(q.x, q.y, q.z)) || !isFinite(q.w) || std::abs(glm::dot(q, q) - 1.0) > 1e-6)
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || !std::isfinite(q.w) ||
+        std::abs(glm::dot(q, q) - 1.0) > 1e-6)
       return Error{"pose.rotations[" + std::to_string(j) + "]: must be a unit quaternion"};
   }
   return Status::success();
@@ -219,12 +220,23 @@ Quat quatFromRotationVector(const Vec3& v) {
 }
 
 Quat shortestArc(const Vec3& u, const Vec3& v) {
-  if (glm::dot(u, u) < 1e-24 || glm::dot(v, v) < 1e-24) return Quat(1, 0, 0, 0);
-  // Eigen handles the opposite case (a half turn about a perpendicular axis found by its SVD);
-  // renormalised, since near-opposite vectors leave Eigen's half-angle form a little off unit length.
-  const Eigen::Quaterniond q =
-      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(u.x, u.y, u.z), Eigen::Vector3d(v.x, v.y, v.z));
-  return glm::normalize(Quat(q.w(), q.x(), q.y(), q.z()));
+  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
+  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
+  // Eigen's Quaternion::FromTwoVectors step by step (the same operations in the same order, so the
+  // same bits, without its set-up): unit vectors v0, v1, c = v1·v0, axis v0 × v1, s = √(2(1 + c)),
+  // q = (s/2, axis/s); renormalised, since near-opposite vectors leave the half-angle form a little
+  // off unit length. Opposite vectors (c < −1 + 10⁻¹², Eigen's dummy_precision) go to Eigen itself:
+  // a half turn about a perpendicular axis found by its SVD.
+  const Vec3 v0 = u / std::sqrt(uu), v1 = v / std::sqrt(vv);
+  const Real c = glm::dot(v1, v0);
+  if (c < -1.0 + 1e-12) {
+    const Eigen::Quaterniond q =
+        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(u.x, u.y, u.z), Eigen::Vector3d(v.x, v.y, v.z));
+    return glm::normalize(Quat(q.w(), q.x(), q.y(), q.z()));
+  }
+  const Vec3 axis = glm::cross(v0, v1);
+  const Real s = std::sqrt((1.0 + c) * 2.0), invs = 1.0 / s;
+  return glm::normalize(Quat(s * 0.5, axis.x * invs, axis.y * invs, axis.z * invs));
 }
 
 Vec3 anyPerpendicular(const Vec3& v) {

@@ -87,34 +87,28 @@ const std::vector<std::string>& jacobianSourceNames() {
 }
 
 Status validate(const SolveOptions& o) {
-  const Status checks[] = {
-      static_cast<size_t>(o.solver) < kSolvers.size() ? Status::success()
-                                                      : Status(Error{"options.solver: no such method"}),
-      checkPositive("options.tolerance", o.tolerance),
-      checkPositive("options.angleTolerance", o.angleTolerance),
-      checkAtLeast("options.maxIterations", o.maxIterations, 1),
-      checkNonNegative("options.maxSeconds", o.maxSeconds),
-      checkAtLeast("options.stallIterations", o.stallIterations, 0),
-      checkBelowOne("options.stallRatio", o.stallRatio),
-      inTable(o.limitMode, jacobianLimitModeNames()) ? Status::success()
-                                                     : Status(Error{"options.limitMode: no such mode"}),
-      inTable(o.jacobian, jacobianSourceNames()) ? Status::success()
-                                                 : Status(Error{"options.jacobian: no such source"}),
-      checkNonNegative("options.damping", o.damping),
-      checkBelowOne("options.singularCutoff", o.singularCutoff),
-      checkNonNegative("options.maxErrorStep", o.maxErrorStep),
-      checkNonNegative("options.maxJointStep", o.maxJointStep),
-      checkNonNegative("options.orientationScale", o.orientationScale),
-      checkFinite("options.polePoint", o.polePoint),
-      inTable(o.lineSearch, lineSearchNames()) ? Status::success()
-                                               : Status(Error{"options.lineSearch: no such line search"}),
-      checkPositive("options.gradientStep", o.gradientStep),
-      checkPositive("options.lineSearchMaxStep", o.lineSearchMaxStep),
-      checkAtLeast("options.lbfgsMemory", o.lbfgsMemory, 1),
-      checkAtLeast("options.restarts", o.restarts, 0),
-  };
-  for (const Status& s : checks)
-    if (!s) return s;
+  // One check after the other, the first failure returned (every solve starts here: a valid set
+  // builds no message and no table of results).
+  if (static_cast<size_t>(o.solver) >= kSolvers.size()) return Error{"options.solver: no such method"};
+  if (Status s = checkPositive("options.tolerance", o.tolerance); !s) return s;
+  if (Status s = checkPositive("options.angleTolerance", o.angleTolerance); !s) return s;
+  if (Status s = checkAtLeast("options.maxIterations", o.maxIterations, 1); !s) return s;
+  if (Status s = checkNonNegative("options.maxSeconds", o.maxSeconds); !s) return s;
+  if (Status s = checkAtLeast("options.stallIterations", o.stallIterations, 0); !s) return s;
+  if (Status s = checkBelowOne("options.stallRatio", o.stallRatio); !s) return s;
+  if (!inTable(o.limitMode, jacobianLimitModeNames())) return Error{"options.limitMode: no such mode"};
+  if (!inTable(o.jacobian, jacobianSourceNames())) return Error{"options.jacobian: no such source"};
+  if (Status s = checkNonNegative("options.damping", o.damping); !s) return s;
+  if (Status s = checkBelowOne("options.singularCutoff", o.singularCutoff); !s) return s;
+  if (Status s = checkNonNegative("options.maxErrorStep", o.maxErrorStep); !s) return s;
+  if (Status s = checkNonNegative("options.maxJointStep", o.maxJointStep); !s) return s;
+  if (Status s = checkNonNegative("options.orientationScale", o.orientationScale); !s) return s;
+  if (Status s = checkFinite("options.polePoint", o.polePoint); !s) return s;
+  if (!inTable(o.lineSearch, lineSearchNames())) return Error{"options.lineSearch: no such line search"};
+  if (Status s = checkPositive("options.gradientStep", o.gradientStep); !s) return s;
+  if (Status s = checkPositive("options.lineSearchMaxStep", o.lineSearchMaxStep); !s) return s;
+  if (Status s = checkAtLeast("options.lbfgsMemory", o.lbfgsMemory, 1); !s) return s;
+  if (Status s = checkAtLeast("options.restarts", o.restarts, 0); !s) return s;
   return Status::success();
 }
 

@@ -47,18 +47,46 @@ Quat localRotation(const Joint& joint, const Pose& p, int j, EulerHalfAngles* ha
 }  // namespace
 
 void Context::flushPose() {
-  for (size_t j = 0; j < staleEuler.size(); ++j) {
-    if (!staleEuler[j]) continue;
-    const Vec3 e = eulerXYZFromQuat(local[j]);
-    Real* dofs = pose.dofs.data() + skeleton.joint(static_cast<int>(j)).firstDof;
+  for (size_t j = 0; j < staleEuler.size(); ++j)
+    if (staleEuler[j]) flushJoint(static_cast<int>(j));
+}
+
+void Context::flushJoint(int j) {
+  const Joint& joint = skeleton.joint(j);
+  const Quat& q = local[static_cast<size_t>(j)];
+  Real* dofs = pose.dofs.data() + joint.firstDof;
+  if (joint.type == JointType::Hinge) {
+    // q = (cos ½θ, sin ½θ a) with q.w > 0 (FABRIK's hinge update keeps θ inside (−π, π)).
+    dofs[0] = 2.0 * std::atan2(glm::dot(Vec3(q.x, q.y, q.z), joint.axis), q.w);
+  } else {
+    const Vec3 e = eulerXYZFromQuat(q);
     for (int k = 0; k < 3; ++k) dofs[k] = e[k];
-    staleEuler[j] = 0;
   }
+  staleEuler[static_cast<size_t>(j)] = 0;
+}
+
+bool Context::principalEulerInside(int j, const Quat& q) const {
+  const std::array<EulerRange, 3>& ranges = eulerRanges[static_cast<size_t>(j)];
+  if (ranges[0].cosHalf > 1.0 || ranges[1].cosHalf > 1.0 || ranges[2].cosHalf > 1.0) return false;
+  // The entries eulerXYZFromQuat reads: a = atan2(−R12, R22), b = atan2(R02, hypot(R00, R01)),
+  // c = atan2(−R01, R00).
+  const Mat3 m = glm::mat3_cast(q);
+  const Real r02 = std::clamp(m[2][0], -1.0, 1.0), r12 = m[2][1], r22 = m[2][2], r00 = m[0][0], r01 = m[1][0];
+  const Real cosB = std::sqrt(r00 * r00 + r01 * r01);
+  const Real s[3] = {-r12, r02, -r01}, cs[3] = {r22, cosB, r00};
+  for (size_t k = 0; k < 3; ++k) {
+    const EulerRange& r = ranges[k];
+    if (r.cosHalf < -1.0) continue;
+    if (!(cs[k] * r.cosMid + s[k] * r.sinMid >= r.cosHalf * std::sqrt(s[k] * s[k] + cs[k] * cs[k]) + 1e-9))
+      return false;
+  }
+  return true;
 }
 
 void Context::refresh() {
   if (links.size() != static_cast<size_t>(skeleton.jointCount())) {
     links.clear();
+    links.reserve(skeleton.joints().size());
     for (const Joint& joint : skeleton.joints()) {
       const Quat& r = joint.restRotation;
       links.push_back(Link{joint.parent, r.w == 1.0 && r.x == 0.0 && r.y == 0.0 && r.z == 0.0,
@@ -72,26 +100,6 @@ void Context::refresh() {
   for (int j = 0; j < skeleton.jointCount(); ++j)
     local[static_cast<size_t>(j)] = localRotation(skeleton.joint(j), pose, j, &half[static_cast<size_t>(j)]);
   refreshFrames();
-}
-
-// Joint j's frame from its parent's frame (nullptr: root) and its cached local rotation.
-Frame Context::frameFrom(int j, const Frame* parent) const {
-  return linkFrame(j, parent, pose, local[static_cast<size_t>(j)]);
-}
-
-Frame Context::linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const {
-  const Link& link = links[static_cast<size_t>(j)];
-  const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), p) : link.offset;
-  Frame f;
-  if (parent) {
-    f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
-    f.position = parent->position + parent->rotation * t;
-  } else {
-    f.pre = link.rest;
-    f.position = t;
-  }
-  f.rotation = f.pre * localRotation;
-  return f;
 }
 
 void Context::evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<EulerHalfAngles>& halfOut,
@@ -160,16 +168,17 @@ Status validateInputs(const Skeleton& s, const Pose& pose, const std::vector<Eff
   if (Status st = validate(s, pose); !st) return st;
   for (size_t k = 0; k < effectors.size(); ++k) {
     const Effector& e = effectors[k];
-    const std::string f = "effectors[" + std::to_string(k) + "]";
-    if (e.joint < 0 || e.joint >= s.jointCount()) return Error{f + ".joint: no joint " + std::to_string(e.joint)};
-    if (Status st = checkFinite(f + ".localOffset", e.localOffset); !st) return st;
-    if (Status st = checkFinite(f + ".targetPosition", e.targetPosition); !st) return st;
-    if (Status st = checkPositive(f + ".weight", e.weight); !st) return st;
+    // The field's name is built only for a message (a solve of 10 links is a few microseconds).
+    auto f = [k] { return "effectors[" + std::to_string(k) + "]"; };
+    if (e.joint < 0 || e.joint >= s.jointCount()) return Error{f() + ".joint: no joint " + std::to_string(e.joint)};
+    if (!isFinite(e.localOffset)) return checkFinite(f() + ".localOffset", e.localOffset);
+    if (!isFinite(e.targetPosition)) return checkFinite(f() + ".targetPosition", e.targetPosition);
+    if (!(isFinite(e.weight) && e.weight > 0.0)) return checkPositive(f() + ".weight", e.weight);
     const Quat& q = e.targetOrientation;
     // isFinite first: an ordered comparison with NaN would raise the invalid-operation trap.
     const bool unit = isFinite(q.w) && isFinite(Vec3(q.x, q.y, q.z)) && std::abs(glm::dot(q, q) - 1.0) < 1e-6;
     if (e.kind == EffectorKind::PositionOrientation && !unit)
-      return Error{f + ".targetOrientation: must be a unit quaternion"};
+      return Error{f() + ".targetOrientation: must be a unit quaternion"};
   }
   return validate(o);
 }
@@ -255,24 +264,44 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
   c.maxErrorStep = o.maxErrorStep > 0.0 ? o.maxErrorStep : c.meanBone;
   const auto J = static_cast<size_t>(skeleton.jointCount());
-  c.belowStart.assign(J + 1, 0);
-  for (const Effector& e : effectors)
-    for (int j = e.joint; j >= 0; j = skeleton.joint(j).parent) ++c.belowStart[static_cast<size_t>(j) + 1];
-  for (size_t j = 0; j < J; ++j) c.belowStart[j + 1] += c.belowStart[j];
-  c.belowList.resize(static_cast<size_t>(c.belowStart[J]));
-  std::vector<int> fill(c.belowStart.begin(), c.belowStart.end() - 1);
-  for (size_t k = 0; k < effectors.size(); ++k)
-    for (int j = effectors[k].joint; j >= 0; j = skeleton.joint(j).parent)
-      c.belowList[static_cast<size_t>(fill[static_cast<size_t>(j)]++)] = static_cast<int>(k);
+  detail::bucketLists(
+      J,
+      [&](auto visit) {
+        for (size_t k = 0; k < effectors.size(); ++k)
+          for (int j = effectors[k].joint; j >= 0; j = skeleton.joint(j).parent)
+            visit(static_cast<size_t>(j), static_cast<int>(k));
+      },
+      c.belowStart, c.belowList);
   c.active.assign(J, 0);
   for (size_t j = 0; j < J; ++j) c.active[j] = c.belowStart[j + 1] > c.belowStart[j];
   c.insideCosHalf.assign(J, 2.0);
+  c.eulerRanges.assign(J, {});
+  const Joint* previous = nullptr;  // the last ball joint: chains repeat the same limits
   for (size_t j = 0; j < J; ++j) {
     const Joint& joint = skeleton.joint(static_cast<int>(j));
     if (joint.type != JointType::Ball) continue;
+    if (previous && std::equal(joint.lo, joint.lo + 3, previous->lo) &&
+        std::equal(joint.hi, joint.hi + 3, previous->hi)) {
+      const auto p = static_cast<size_t>(previous - &skeleton.joint(0));
+      c.insideCosHalf[j] = c.insideCosHalf[p];
+      c.eulerRanges[j] = c.eulerRanges[p];
+      previous = &joint;
+      continue;
+    }
+    previous = &joint;
     Real L = 0.5 * kPi;
     for (int k = 0; k < 3; ++k) L = std::min({L, -joint.lo[k], joint.hi[k]});
     if (L > 0.0) c.insideCosHalf[j] = std::cos(0.5 * L) + 1e-12;
+    for (int k = 0; k < 3; ++k) {
+      const Real bound = k == 1 ? 0.5 * kPi : kPi;  // principal angles: b in [−π/2, π/2], a and c in (−π, π]
+      detail::Context::EulerRange& r = c.eulerRanges[j][static_cast<size_t>(k)];
+      if (joint.lo[k] <= -bound && joint.hi[k] >= bound) {
+        r.cosHalf = -2.0;
+      } else if (joint.lo[k] >= -kPi && joint.hi[k] <= kPi) {
+        const Real mid = 0.5 * (joint.lo[k] + joint.hi[k]), half = 0.5 * (joint.hi[k] - joint.lo[k]);
+        r = {std::cos(mid), std::sin(mid), std::cos(half)};
+      }  // else a range across ±π: no test (cosHalf 2)
+    }
   }
 
   std::string why;
@@ -319,6 +348,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   }
 
   std::vector<Real> progress;  // combined residual per iteration for stall detection
+  progress.reserve(16);
   auto measure = [&]() {
     Residual r;
     if (method->posesDeferred()) {  // position effectors only (FABRIK's condition for deferring)

@@ -1,6 +1,7 @@
 #pragma once
 // Internals shared by the IK methods (not part of the public interface): the state of one solve and
 // the per-method iteration functions called by solve() in solver.cpp.
+#include <array>
 #include <memory>
 #include <span>
 #include <vector>
@@ -41,13 +42,33 @@ struct Context {
   /// π/2 no XYZ Euler angle exceeds the rotation angle: q is within the limits, no Euler angles
   /// needed to tell (see surelyWithinLimits).
   std::vector<Real> insideCosHalf;
-  bool surelyWithinLimits(int j, const Quat& q) const { return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)]; }
+  /// Per ball joint and XYZ Euler angle k, the range [lo_k, hi_k] as its middle m and half width h,
+  /// for the second test of surelyWithinLimits (see principalEulerInside).
+  struct EulerRange {
+    Real cosMid = 1.0, sinMid = 0.0;  ///< cos m, sin m
+    Real cosHalf = 2.0;               ///< cos h; −2: every principal value is inside; 2: no test
+  };
+  std::vector<std::array<EulerRange, 3>> eulerRanges;
+  /// True when ball joint j's local rotation q is surely within its limits, so that clamping would
+  /// change nothing and no Euler angles are needed: a small rotation (the |q.w| test above), or
+  /// principal XYZ Euler angles that lie inside their ranges by a margin (principalEulerInside).
+  /// Conservative: false says nothing.
+  bool surelyWithinLimits(int j, const Quat& q) const {
+    return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)] || principalEulerInside(j, q);
+  }
+  /// The principal XYZ Euler angles of q (eulerXYZFromQuat: x = atan2(s, c) for each angle) lie
+  /// inside joint j's ranges by a margin, told without trigonometry: x ∈ [m − h, m + h] ⊆ [−π, π] ⇔
+  /// cos(x − m) ≥ cos h ⇔ c cos m + s sin m ≥ cos h · √(s² + c²); asked with a margin of 10⁻⁹ (the
+  /// entries are those of a rotation matrix, of order 1), so that a true answer is also eulerXYZFromQuat's
+  /// and eulerWithinLimits then returns these angles unchanged. solver.cpp.
+  bool principalEulerInside(int j, const Quat& q) const;
   std::vector<Quat> local;  ///< R_dof per joint for `pose` (see above)
   /// Per joint: the half angles refresh() computed for a ball joint's `local` (EulerHalfAngles; the
   /// Jacobian's axes reuse the entries whose angles still match the pose).
   std::vector<EulerHalfAngles> half;
-  /// Per joint: its Euler DOFs in `pose` lag behind `local` (alignJoint defers the quaternion → Euler
-  /// conversion, two atan2 and a hypot, while no limit needs the angles); flushPose() writes them.
+  /// Per joint: its DOFs in `pose` lag behind `local` (alignJoint defers a ball joint's quaternion →
+  /// Euler conversion, two atan2 and a hypot, while no limit needs the angles; FABRIK's forward pass a
+  /// hinge's angle, an atan2, while it stays inside its limits); flushPose() writes them.
   std::vector<char> staleEuler;
   /// What forward kinematics reads of each joint, packed (a Joint with its name and limits is ~250
   /// bytes; walking 1,000 of them per pass cost more than the arithmetic).
@@ -60,23 +81,69 @@ struct Context {
   };
   std::vector<Link> links;  ///< filled by the first refresh()
 
-  /// Writes the Euler DOFs of every joint marked stale from `local`.
+  /// Writes the DOFs of every joint marked stale from `local` (see staleEuler).
   void flushPose();
+  /// The same for joint j (marked stale).
+  void flushJoint(int j);
   /// Flushes, recomputes `local` from the pose, then every frame. O(n) with trigonometry.
   void refresh();
   /// Every frame from the cached `local` (valid when only alignJoint() changed the pose). O(n).
   void refreshFrames();
   /// Joint j's frame from its parent's entry in `frames` and the cached local rotation. O(1).
   Frame frameFromParent(int j) const;
-  Frame frameFrom(int j, const Frame* parent) const;
+  Frame frameFrom(int j, const Frame* parent) const {
+    return linkFrame(j, parent, pose, local[static_cast<size_t>(j)]);
+  }
+  /// frameFrom() without the product by the local rotation: the pivot and R_pre, with rotation left
+  /// at R_pre, for a method that sets joint j's rotation next.
+  Frame pivotFrom(int j, const Frame* parent) const {
+    const Link& link = links[static_cast<size_t>(j)];
+    const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), pose) : link.offset;
+    Frame f;
+    if (parent) {
+      f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
+      f.position = parent->position + parent->rotation * t;
+    } else {
+      f.pre = link.rest;
+      f.position = t;
+    }
+    f.rotation = f.pre;
+    return f;
+  }
   /// The same for any pose p and local rotation of joint j.
-  Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const;
+  Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const {
+    const Link& link = links[static_cast<size_t>(j)];
+    const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), p) : link.offset;
+    Frame f;
+    if (parent) {
+      f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
+      f.position = parent->position + parent->rotation * t;
+    } else {
+      f.pre = link.rest;
+      f.position = t;
+    }
+    f.rotation = f.pre * localRotation;
+    return f;
+  }
   /// What refresh() computes (the local rotations and every frame), for another pose p, into the
   /// given buffers: a trial pose of a line search, whose buffers the method swaps with `local` and
   /// `frames` when it accepts the pose (no second forward kinematics). O(n) with trigonometry.
   void evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<EulerHalfAngles>& halfOut,
                 std::vector<Frame>& framesOut) const;
 };
+
+/// Lists of items per bucket, list[start[b] .. start[b + 1]) for b < buckets, each in the order
+/// `each` visits them (a counting sort, with no buffer besides the two outputs): each(visit) must
+/// call visit(bucket, item) for every pair, the same way both times it is called.
+template <class Each>
+void bucketLists(size_t buckets, Each each, std::vector<int>& start, std::vector<int>& list) {
+  start.assign(buckets + 2, 0);
+  each([&](size_t b, int) { ++start[b + 2]; });
+  for (size_t i = 2; i < start.size(); ++i) start[i] += start[i - 1];  // start[b + 1] = where b begins
+  list.resize(static_cast<size_t>(start.back()));
+  each([&](size_t b, int item) { list[static_cast<size_t>(start[b + 1]++)] = item; });  // now where b ends
+  start.pop_back();
+}
 
 /// One IK method: iterate() does one pass (CCD, FABRIK) or one step (Jacobian methods).
 class Method {
@@ -110,6 +177,49 @@ std::unique_ptr<Method> makeAnalytic(const Context& c, std::string* why);
 /// normal to a, e.g. a hinge's plane of motion).
 inline Vec3 perpendicularPart(const Vec3& x, const Vec3& a) { return x - glm::dot(x, a) * a; }
 
+/// The shortest arc from u to v (the turn of a bone onto its new direction in FABRIK's passes) as the
+/// quaternion (|u||v| + u·v, u × v) = 2|u||v| cos(θ/2) · (cos(θ/2), sin(θ/2) n̂) (θ the angle between
+/// u and v, n̂ their unit normal): the rotation shortestArc() gives, not normalised — the callers
+/// normalise the product they make of it, once. One square root and no division, where the unit
+/// vectors of shortestArc (Eigen's FromTwoVectors) take four roots and eight divisions; the same
+/// rotation to rounding. Zero vectors and (nearly) opposite ones, 1 + cos θ < 10⁻¹² (Eigen's
+/// threshold), where the axis u × v is lost: shortestArc itself.
+inline Quat arcBetween(const Vec3& u, const Vec3& v) {
+  const Real uu = glm::dot(u, u), vv = glm::dot(v, v);
+  if (uu < 1e-24 || vv < 1e-24) return Quat(1, 0, 0, 0);
+  const Real lengths = std::sqrt(uu * vv), w = lengths + glm::dot(u, v);
+  if (w < 1e-12 * lengths) return shortestArc(u, v);
+  const Vec3 axis = glm::cross(u, v);
+  return Quat(w, axis.x, axis.y, axis.z);
+}
+
+/// A hinge's range [lo, hi], for telling without its angle whether an angle lies inside it (FABRIK's
+/// passes): x ∈ [m − h, m + h] ⇔ cos(x − m) ≥ cos h, with m and h the middle and half width of the
+/// range, so for (cos x, sin x) = (cx, sx)/r: cx cos m + sx sin m ≥ r cos h. Valid only for a range
+/// inside (−π, π), where every angle of it has one direction and the reverse is true as well.
+struct HingeRange {
+  Real cosMid = 1.0, sinMid = 0.0, cosHalf = 1.0;
+  bool valid = false;  ///< the range lies inside (−π, π)
+  /// x inside the range by a margin (10⁻¹² of r): IK-6's clamp would leave it. False near a limit,
+  /// where the angle and the clamp decide, and for r = 0.
+  bool holds(Real cx, Real sx, Real r) const {
+    return valid && r > 0.0 && cx * cosMid + sx * sinMid >= (cosHalf + 1e-12) * r;
+  }
+};
+/// Per joint, its HingeRange (valid for hinges whose range lies inside (−π, π)); the cosines are
+/// computed once per distinct range (a chain repeats one). align.cpp.
+void hingeRanges(const Skeleton& s, std::vector<HingeRange>& out);
+/// alignJoint's hinge update (the exact one-DOF optimum, Workbook §2.4) without angles while it stays
+/// inside the limits (Workbook §2.7's clamp, which would then change nothing; FABRIK's forward pass,
+/// Aristidou & Lasenby 2011 §4.2): ψ = d + atan2(S, C) (bestAngleTerms; d the hinge's angle) as a direction,
+/// (cos ψ, sin ψ) ∝ (cos d C − sin d S, sin d C + cos d S), with cos d = w² − s², sin d = 2ws from its
+/// local rotation (w, s a). When `range` holds ψ, the hinge takes R(ψ) = (1 + cos ψ, sin ψ a)
+/// normalised and is marked stale (its angle is written by flushPose, one atan2, instead of an
+/// atan2 and two sincos here). Returns false, doing nothing, otherwise: alignJoint then turns it by
+/// the angle and clamps. `from` in world coordinates, as for alignJoint.
+bool turnHingeWithinLimits(Context& c, int j, const Frame& f, const HingeRange& range, const std::vector<Vec3>& from,
+                           const std::vector<Vec3>& to, const std::vector<Real>& w);
+
 /// Rotates/translates joint j (whose world pre-rotation and pivot are `frame`) to best carry the
 /// points `from[i]` (world, currently attached below j) onto `to[i]` with weights w[i]:
 /// minimises Σ wᵢ |T(fromᵢ) − toᵢ|² over the joint's DOFs, exactly for a hinge, prismatic or a single
@@ -125,6 +235,10 @@ Quat alignJoint(Context& c, int j, const Frame& frame, const std::vector<Vec3>& 
 /// `to` (weights w): θ = atan2(Σ wᵢ a·(u⊥ᵢ × v⊥ᵢ), Σ wᵢ u⊥ᵢ·v⊥ᵢ) (align.cpp). 0 when undefined.
 Real bestAngle(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
                const std::vector<Real>& w);
+/// The two sums of bestAngle, *S = Σ wᵢ a·(u⊥ᵢ × v⊥ᵢ) and *C = Σ wᵢ u⊥ᵢ·v⊥ᵢ: the best turn is the angle
+/// of the vector (C, S).
+void bestAngleTerms(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
+                    const std::vector<Real>& w, Real* S, Real* C);
 /// The representative ψ − 2π, ψ or ψ + 2π of a hinge optimum ψ whose value clamped into [lo, hi] is
 /// closest to ψ in angle (ψ itself when clampLimits is false). The caller clamps.
 Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits);
