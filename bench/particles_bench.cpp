@@ -157,8 +157,9 @@ BENCHMARK(BM_FountainPoolStep)->Arg(1000000)->Unit(benchmark::kMillisecond);
 //   adaptive (DOPRI5, FSAL)    6 a; the six stage sums Σ_{i=2..7} (i − 1) multiply-adds for q
 //                              and v (84); the error estimate, 6 terms for q and v (24); its
 //                              scaled norm (12)                                            126
-// The generic implementations pay for what the fused loop does not: the state copied out and back,
-// every stage stored to memory, one pass per vector operation, and CG for implicit Euler.
+// The generic implementations pay for what the fused loop does not: every stage stored to memory, one
+// pass per vector operation, the derivative's copy of v, the state copied out and back for a system
+// that does not lend its storage (the oscillator does), and CG for implicit Euler.
 constexpr int kOscillators = 100000;
 struct FusedCost {
   double bytes, flops;

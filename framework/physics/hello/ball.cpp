@@ -126,12 +126,15 @@ void SpringBallSystem::setDesc(const SpringDesc& desc) {
   std::fill(w_.begin(), w_.end(), 1.0 / desc_.mass);
 }
 
-BallState SpringBallSystem::ball() const { return {Vec3(q_[0], q_[1], q_[2]), Vec3(v_[0], v_[1], v_[2])}; }
+BallState SpringBallSystem::ball() const {
+  return {Vec3(positions()[0], positions()[1], positions()[2]),
+          Vec3(velocities()[0], velocities()[1], velocities()[2])};
+}
 
 void SpringBallSystem::setBall(const BallState& state) {
   for (int k = 0; k < 3; ++k) {
-    q_[static_cast<std::size_t>(k)] = state.position[k];
-    v_[static_cast<std::size_t>(k)] = state.velocity[k];
+    positions()[static_cast<std::size_t>(k)] = state.position[k];
+    velocities()[static_cast<std::size_t>(k)] = state.velocity[k];
   }
   stateChanged();
 }

@@ -45,8 +45,8 @@ Status validate(const AdaptiveSettings& s) {
 void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, AdaptiveState& st, Workspace& w) {
   assert(validate(settings).ok());
   const std::size_t n = system.stateSize();
-  Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2});
-  std::vector<Real>& s = w.s;
+  Workspace::fit(n, {&w.state, &w.k1, &w.k2, &w.k3, &w.k4, &w.k5, &w.k6, &w.k7, &w.tmp, &w.tmp2});
+  std::vector<Real>& s = w.state;   // a copy (swapped with the candidate y when a substep is accepted)
   std::vector<Real>& y = w.tmp;     // stage argument, then the candidate solution
   std::vector<Real>& err = w.tmp2;  // error estimate
   Real t = system.time();

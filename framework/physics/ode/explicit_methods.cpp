@@ -14,7 +14,7 @@ using detail::endGenericStep;
 
 void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   const std::size_t n = system.stateSize();
-  Workspace::fit(n, {&w.s, &w.k1});
+  Workspace::fit(n, {&w.k1});
   // BEGIN SOLUTION
   const Real t = beginGenericStep(system, w);  // s in w.s, f(s, t) in w.k1
   for (std::size_t i = 0; i < n; ++i) w.s[i] += h * w.k1[i];
@@ -31,7 +31,7 @@ void addScaled(std::span<Real> out, std::span<const Real> s, Real c, std::span<c
 }  // namespace
 
 void midpointStep(OdeSystem& system, Real h, Workspace& w) {
-  Workspace::fit(system.stateSize(), {&w.s, &w.k1, &w.k2, &w.tmp});
+  Workspace::fit(system.stateSize(), {&w.k1, &w.k2, &w.tmp});
   const Real start = beginGenericStep(system, w);
   addScaled(w.tmp, w.s, 0.5 * h, w.k1);             // s + Δs/2
   system.derivative(start + 0.5 * h, w.tmp, w.k2);  // g_mid
@@ -41,7 +41,7 @@ void midpointStep(OdeSystem& system, Real h, Workspace& w) {
 
 void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
   const std::size_t n = system.stateSize();
-  Workspace::fit(n, {&w.s, &w.k1, &w.k2, &w.k3, &w.k4, &w.tmp});
+  Workspace::fit(n, {&w.k1, &w.k2, &w.k3, &w.k4, &w.tmp});
   // BEGIN SOLUTION
   const Real t = beginGenericStep(system, w);  // s in w.s, k1 = f(s, t) in w.k1
   for (std::size_t i = 0; i < n; ++i) w.tmp[i] = w.s[i] + 0.5 * h * w.k1[i];

@@ -29,41 +29,54 @@
 
 namespace pba::ode {
 namespace {
-Real dot(std::span<const Real> a, std::span<const Real> b) {
-  Real s = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
-  return s;
-}
-
 /// A y = M y − (h D y + h² K y) = M y − forceDifferential(dq = h² y, dv = h y), filtered by S (pinned
-/// coordinates get 0). Scratch dq, dv from the workspace: no allocation.
+/// coordinates get 0). Scratch dq, dv from the workspace: no allocation. A product is three passes: the
+/// direction (dq, dv) from y, which the caller may fuse with the pass that makes y (direction()); the
+/// differential; and M y − out, which also accumulates a dot product with the result (finish()).
 struct SystemMatrix {
   SecondOrderSystem& system;
   Real t, h;
   std::span<const Real> q, v, invMass;
   std::span<Real> dq, dv;
-  void apply(std::span<const Real> y, std::span<Real> out) const {
-    for (std::size_t i = 0; i < y.size(); ++i) {
-      dq[i] = h * h * y[i];
-      dv[i] = h * y[i];
-    }
+  void direction(std::size_t i, Real yi) const {
+    dq[i] = h * h * yi;
+    dv[i] = h * yi;
+  }
+  /// out = A y given direction() of every y_i; calls visit(i, (A y)_i) in order of i after writing it.
+  template <typename Visit>
+  void finish(std::span<const Real> y, std::span<Real> out, Visit&& visit) const {
     system.forceDifferential(t, q, v, dq, dv, out);
-    for (std::size_t i = 0; i < y.size(); ++i) out[i] = invMass[i] > 0.0 ? y[i] / invMass[i] - out[i] : 0.0;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+      out[i] = invMass[i] > 0.0 ? y[i] / invMass[i] - out[i] : 0.0;
+      visit(i, out[i]);
+    }
   }
 };
 
-/// The preconditioner z = P⁻¹ r: inverse diagonal blocks when the system gave them, else M⁻¹.
+/// The preconditioner z = P⁻¹ r: inverse diagonal blocks when the system gave them, else M⁻¹. Applied
+/// inside a pass over the coordinates (apply()): `update(i)` brings r_i up to date, then z is made for
+/// the coordinates whose r is complete (one at a time, or a block of three), and `visit(i)` sees each
+/// r_i and z_i in order of i, so that sums over i keep the order of separate passes.
 struct Preconditioner {
   std::span<const Mat3> inverseBlocks;  // empty: mass Jacobi
   std::span<const Real> invMass;
-  void apply(std::span<const Real> r, std::span<Real> z) const {
+  template <typename Update, typename Visit>
+  void apply(std::span<const Real> r, std::span<Real> z, Update&& update, Visit&& visit) const {
     if (inverseBlocks.empty()) {
-      for (std::size_t i = 0; i < r.size(); ++i) z[i] = invMass[i] * r[i];
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        update(i);
+        z[i] = invMass[i] * r[i];
+        visit(i);
+      }
       return;
     }
     for (std::size_t b = 0; b < inverseBlocks.size(); ++b) {
+      for (std::size_t c = 0; c < 3; ++c) update(3 * b + c);
       const Vec3 zb = inverseBlocks[b] * Vec3(r[3 * b], r[3 * b + 1], r[3 * b + 2]);
-      for (std::size_t c = 0; c < 3; ++c) z[3 * b + c] = zb[static_cast<int>(c)];
+      for (std::size_t c = 0; c < 3; ++c) {
+        z[3 * b + c] = zb[static_cast<int>(c)];
+        visit(3 * b + c);
+      }
     }
   }
 };
@@ -120,14 +133,20 @@ ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const Im
   const std::span<const Real> invMass = system.inverseMasses();
   const SystemMatrix A{system, t, h, q, v, invMass, w.k6, w.k7};
 
-  // b = h f₀ + h² K v₀ = h f₀ + forceDifferential(dq = h² v₀, dv = 0), filtered.
+  // b = h f₀ + h² K v₀ = h f₀ + forceDifferential(dq = h² v₀, dv = 0), filtered; x₀ = 0, r₀ = b.
   system.force(t, q, v, b);
   for (std::size_t i = 0; i < n; ++i) {
     A.dq[i] = h * h * v[i];
     A.dv[i] = 0.0;
   }
   system.forceDifferential(t, q, v, A.dq, A.dv, Ap);
-  for (std::size_t i = 0; i < n; ++i) b[i] = invMass[i] > 0.0 ? h * b[i] + Ap[i] : 0.0;
+  Real bb = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    b[i] = invMass[i] > 0.0 ? h * b[i] + Ap[i] : 0.0;
+    x[i] = 0.0;
+    r[i] = b[i];
+    bb += b[i] * b[i];
+  }
 
   ImplicitEulerStats stats;
   Preconditioner P{{}, invMass};
@@ -144,33 +163,57 @@ ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const Im
   // Preconditioned conjugate gradients (Shewchuk 1994, "CG without the agonizing pain", §B3), x₀ = 0.
   // CG's recursive residual drifts from b − A x in floating point: when it says "converged" and the true
   // residual disagrees, CG restarts once from the current x with the true residual.
-  std::ranges::fill(x, 0.0);
-  r = b;
-  const Real bNorm = std::sqrt(dot(b, b));
+  // Every vector update shares its pass with the dot products of what it wrote (r·z and r·r with the
+  // step of x and r; p·Ap with the product; p with the direction of the next product): the same sums, in
+  // the same order, as one pass per operation, so the same numbers, with four passes per iteration
+  // instead of nine.
+  const Real bNorm = std::sqrt(bb);
   const Real target = settings.relativeTolerance * bNorm;
+  Real rr = 0.0;  // r·r of the current residual, from the pass that last wrote r
+  const auto noUpdate = [](std::size_t) {};
   for (int pass = 0; pass < 2 && bNorm > 0.0; ++pass) {
-    P.apply(r, z);
-    p = z;
-    Real rz = dot(r, z);
-    while (stats.iterations < settings.maxIterations && std::sqrt(dot(r, r)) > target) {
-      A.apply(p, Ap);
-      const Real pAp = dot(p, Ap);
+    Real rz = 0.0;
+    rr = 0.0;
+    P.apply(r, z, noUpdate, [&](std::size_t i) {
+      rz += r[i] * z[i];
+      rr += r[i] * r[i];
+    });
+    bool first = true;  // p = z, else p = z + β p
+    Real beta = 0.0;
+    while (stats.iterations < settings.maxIterations && std::sqrt(rr) > target) {
+      if (first) {
+        for (std::size_t i = 0; i < n; ++i) A.direction(i, p[i] = z[i]);
+      } else {
+        for (std::size_t i = 0; i < n; ++i) A.direction(i, p[i] = z[i] + beta * p[i]);
+      }
+      first = false;
+      Real pAp = 0.0;
+      A.finish(p, Ap, [&](std::size_t i, Real api) { pAp += p[i] * api; });
       if (!(pAp > 0.0)) break;  // not positive definite along p (should not happen): keep what we have
       const Real alpha = rz / pAp;
-      for (std::size_t i = 0; i < n; ++i) {
-        x[i] += alpha * p[i];
-        r[i] -= alpha * Ap[i];
-      }
-      P.apply(r, z);
-      const Real rzNew = dot(r, z);
-      const Real beta = rzNew / rz;
+      Real rzNew = 0.0;
+      rr = 0.0;
+      P.apply(
+          r, z,
+          [&](std::size_t i) {
+            x[i] += alpha * p[i];
+            r[i] -= alpha * Ap[i];
+          },
+          [&](std::size_t i) {
+            rzNew += r[i] * z[i];
+            rr += r[i] * r[i];
+          });
+      beta = rzNew / rz;
       rz = rzNew;
-      for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
       ++stats.iterations;
     }
-    A.apply(x, Ap);  // the true residual of the Δv we return
-    for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - Ap[i];
-    stats.relativeResidual = std::sqrt(dot(r, r)) / bNorm;
+    for (std::size_t i = 0; i < n; ++i) A.direction(i, x[i]);  // the true residual of the Δv we return
+    rr = 0.0;
+    A.finish(x, Ap, [&](std::size_t i, Real api) {
+      r[i] = b[i] - api;
+      rr += r[i] * r[i];
+    });
+    stats.relativeResidual = std::sqrt(rr) / bNorm;
     stats.converged = stats.relativeResidual <= settings.relativeTolerance;
     if (stats.converged || stats.iterations >= settings.maxIterations) break;
   }

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,7 +56,11 @@ int integratorOrder(IntegratorKind kind);
 
 /// Scratch buffers of the integrators, reused between steps so that stepping never allocates.
 struct Workspace {
-  std::vector<Real> s, k1, k2, k3, k4, k5, k6, k7, tmp, tmp2;
+  /// The state a generic method advances, set by its first helper (ode/step_helpers.h): the system's own
+  /// storage when it lends it (OdeSystem::stateStorage()), else `state` holding a copy. Valid during a step.
+  std::span<Real> s;
+  std::vector<Real> state;  ///< the copy of s for a system that does not lend its storage; adaptive's s
+  std::vector<Real> k1, k2, k3, k4, k5, k6, k7, tmp, tmp2;
   std::vector<Mat3> blocks, blocks2;  ///< implicit Euler: Jacobian diagonal blocks, then the preconditioner
 
   /// Makes each of `buffers` (members of a Workspace) n long; a buffer that changes size is zeroed,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace pba::ode {
@@ -24,6 +25,7 @@ void SecondOrderSystem::acceleration(Real t, std::span<const Real> q, std::span<
 void SecondOrderSystem::getState(std::span<Real> out) const {
   const std::size_t n = dofCount();
   assert(out.size() == 2 * n);
+  if (out.data() == positions().data()) return;  // the system's own storage (stateStorage()): nothing to copy
   copyReals(positions(), out.data());
   copyReals(velocities(), out.data() + n);
 }
@@ -31,8 +33,10 @@ void SecondOrderSystem::getState(std::span<Real> out) const {
 void SecondOrderSystem::setState(std::span<const Real> state) {
   const std::size_t n = dofCount();
   assert(state.size() == 2 * n);
-  copyReals(state.first(n), positions().data());
-  copyReals(state.subspan(n), velocities().data());
+  if (state.data() != positions().data()) {  // else the system's own storage, already in place
+    copyReals(state.first(n), positions().data());
+    copyReals(state.subspan(n), velocities().data());
+  }
   stateChanged();
 }
 
@@ -71,6 +75,14 @@ void SecondOrderSystem::forceDifferential(Real t, std::span<const Real> q, std::
   force(t, qp, vp, out);
   force(t, qm, vm, fm);
   for (std::size_t i = 0; i < n; ++i) out[i] = (out[i] - fm[i]) / (2.0 * eps);
+}
+
+OwnedStateSystem::OwnedStateSystem(const std::vector<Real>& q, const std::vector<Real>& v, std::vector<Real> w)
+    : w_(std::move(w)) {
+  assert(q.size() == w_.size() && v.size() == w_.size());
+  s_.reserve(2 * w_.size());
+  s_.insert(s_.end(), q.begin(), q.end());
+  s_.insert(s_.end(), v.begin(), v.end());
 }
 
 }  // namespace pba::ode

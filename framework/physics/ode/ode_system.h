@@ -11,7 +11,6 @@
 //   M    diagonal mass matrix; M⁻¹ = 0 on a pinned coordinate
 #include <cstddef>
 #include <span>
-#include <utility>
 #include <vector>
 
 #include "physics/core/types.h"
@@ -32,6 +31,12 @@ class OdeSystem {
   /// ṡ = f(s, t) at an arbitrary state s. The notes evaluate the derivative of the *current* state;
   /// taking s as an argument lets the Runge–Kutta stages run without set/get round trips.
   virtual void derivative(Real t, std::span<const Real> state, std::span<Real> out) const = 0;
+  /// The system's own storage of s, when it keeps the whole state as one array of stateSize() values
+  /// (OwnedStateSystem does); empty when it does not (the default). The generic methods then advance
+  /// the state where it lives instead of a copy of it (ode/step_helpers.h): getState() into this span
+  /// and setState() from it must leave the state as it is (a system that lends its storage makes them
+  /// copy nothing then).
+  virtual std::span<Real> stateStorage() { return {}; }
 
   /// Simulated time [s]; integrators advance it by the step they take (the notes' "advance time").
   Real time() const { return time_; }
@@ -90,22 +95,27 @@ class SecondOrderSystem : public OdeSystem {
   mutable std::vector<Real> differenceScratch_;
 };
 
-/// A SecondOrderSystem that owns its coordinates, velocities and inverse masses as three vectors of
-/// equal length: the storage and the views every small closed-form system (oscillator, orbit,
-/// pendulum) needs; a subclass adds its force.
+/// A SecondOrderSystem that owns its state s = (q, v) as one array (the coordinates, then the
+/// velocities) and its inverse masses as another: the storage and the views every small closed-form
+/// system (oscillator, orbit, pendulum) needs; a subclass adds its force. It lends the state array to
+/// the generic methods (stateStorage()), so that they advance it in place.
 class OwnedStateSystem : public SecondOrderSystem {
  public:
-  std::size_t dofCount() const override { return q_.size(); }
-  std::span<Real> positions() override { return q_; }
-  std::span<const Real> positions() const override { return q_; }
-  std::span<Real> velocities() override { return v_; }
-  std::span<const Real> velocities() const override { return v_; }
+  std::size_t dofCount() const override { return w_.size(); }
+  std::span<Real> positions() override { return std::span<Real>(s_).first(w_.size()); }
+  std::span<const Real> positions() const override { return std::span<const Real>(s_).first(w_.size()); }
+  std::span<Real> velocities() override { return std::span<Real>(s_).subspan(w_.size()); }
+  std::span<const Real> velocities() const override { return std::span<const Real>(s_).subspan(w_.size()); }
   std::span<const Real> inverseMasses() const override { return w_; }
+  std::span<Real> stateStorage() override { return s_; }
 
  protected:
-  OwnedStateSystem(std::vector<Real> q, std::vector<Real> v, std::vector<Real> w)
-      : q_(std::move(q)), v_(std::move(v)), w_(std::move(w)) {}
-  std::vector<Real> q_, v_, w_;  ///< coordinates, velocities, M⁻¹ (0 = pinned)
+  /// q, v and w of equal length.
+  OwnedStateSystem(const std::vector<Real>& q, const std::vector<Real>& v, std::vector<Real> w);
+  std::vector<Real> w_;  ///< M⁻¹ per coordinate (0 = pinned)
+
+ private:
+  std::vector<Real> s_;  ///< (q, v): coordinates, then velocities (2 dofCount() values)
 };
 
 }  // namespace pba::ode

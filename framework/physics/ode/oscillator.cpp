@@ -23,7 +23,8 @@ Real HarmonicOscillator::exactVelocity(Real t) const {
 }
 
 Real HarmonicOscillator::energy(std::size_t i) const {
-  return 0.5 * desc_.mass * v_[i] * v_[i] + 0.5 * desc_.stiffness * q_[i] * q_[i];
+  const Real q = positions()[i], v = velocities()[i];
+  return 0.5 * desc_.mass * v * v + 0.5 * desc_.stiffness * q * q;
 }
 
 void HarmonicOscillator::force(Real, std::span<const Real> q, std::span<const Real>, std::span<Real> out) const {
@@ -31,8 +32,10 @@ void HarmonicOscillator::force(Real, std::span<const Real> q, std::span<const Re
 }
 
 void HarmonicOscillator::acceleration(Real, std::span<const Real> q, std::span<const Real>, std::span<Real> out) const {
+  // k in a local: stores through out could otherwise alias desc_ and reload it every iteration.
+  const Real k = desc_.stiffness;
   const Real* __restrict w = w_.data();
-  for (std::size_t i = 0; i < q.size(); ++i) out[i] = (-desc_.stiffness * q[i]) * w[i];
+  for (std::size_t i = 0; i < q.size(); ++i) out[i] = (-k * q[i]) * w[i];
 }
 
 void HarmonicOscillator::forceDifferential(Real, std::span<const Real>, std::span<const Real>, std::span<const Real> dq,

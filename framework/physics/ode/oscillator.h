@@ -55,8 +55,8 @@ class KeplerOrbit final : public OwnedStateSystem {
  public:
   explicit KeplerOrbit(const OrbitDesc& desc = {});
   const OrbitDesc& desc() const { return desc_; }
-  Vec3 position() const { return {q_[0], q_[1], q_[2]}; }
-  Vec3 velocity() const { return {v_[0], v_[1], v_[2]}; }
+  Vec3 position() const { return {positions()[0], positions()[1], positions()[2]}; }
+  Vec3 velocity() const { return {velocities()[0], velocities()[1], velocities()[2]}; }
   Real energy() const;           ///< [J]
   Vec3 angularMomentum() const;  ///< [kg·m²/s]
   /// Period from Kepler's third law, T = 2π √(a³/GM), a from the energy [s].

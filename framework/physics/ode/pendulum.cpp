@@ -67,8 +67,8 @@ void PendulumSystem::setDesc(const PendulumDesc& desc) {
 }
 
 void PendulumSystem::setPendulumState(const PendulumState& s) {
-  q_[0] = s.angle;
-  v_[0] = s.angularVelocity;
+  positions()[0] = s.angle;
+  velocities()[0] = s.angularVelocity;
   stateChanged();
 }
 

@@ -75,7 +75,7 @@ class PendulumSystem final : public OwnedStateSystem {
   /// Changes the body (mass, length, damping, … may change between steps).
   void setDesc(const PendulumDesc& desc);
   void setPivotAcceleration(PivotAcceleration a) { pivotAcceleration_ = std::move(a); }
-  PendulumState pendulumState() const { return {q_[0], v_[0]}; }
+  PendulumState pendulumState() const { return {positions()[0], velocities()[0]}; }
   void setPendulumState(const PendulumState& s);
 
   void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;

@@ -10,9 +10,20 @@
 namespace pba::ode::detail {
 
 // The start of every generic method: the state s(t) in w.s (n = stateSize() values), its derivative
-// f(s, t) in w.k1; returns t.
+// f(s, t) in w.k1 (which the method has sized); returns t. A system that keeps its state in one array
+// lends it (stateStorage()): w.s is then that array, getState() and endGenericStep's setState() have
+// nothing to copy, and the method advances the state where it lives. The numbers are the same either
+// way: every method reads s only to evaluate stages and writes it only after its last evaluation.
 inline Real beginGenericStep(OdeSystem& system, Workspace& w) {
   const Real time = system.time();
+  const std::size_t n = system.stateSize();
+  const std::span<Real> storage = system.stateStorage();
+  if (storage.size() == n) {
+    w.s = storage;
+  } else {
+    Workspace::fit(n, {&w.state});
+    w.s = w.state;
+  }
   system.getState(w.s);
   system.derivative(time, w.s, w.k1);
   return time;
