@@ -96,22 +96,15 @@ struct Context {
   }
   /// frameFrom() without the product by the local rotation: the pivot and R_pre, with rotation left
   /// at R_pre, for a method that sets joint j's rotation next.
-  Frame pivotFrom(int j, const Frame* parent) const {
-    const Link& link = links[static_cast<size_t>(j)];
-    const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), pose) : link.offset;
-    Frame f;
-    if (parent) {
-      f.pre = link.identityRest ? parent->rotation : parent->rotation * link.rest;
-      f.position = parent->position + parent->rotation * t;
-    } else {
-      f.pre = link.rest;
-      f.position = t;
-    }
-    f.rotation = f.pre;
-    return f;
-  }
+  Frame pivotFrom(int j, const Frame* parent) const { return pivotOf(j, parent, pose); }
   /// The same for any pose p and local rotation of joint j.
   Frame linkFrame(int j, const Frame* parent, const Pose& p, const Quat& localRotation) const {
+    Frame f = pivotOf(j, parent, p);
+    f.rotation = f.pre * localRotation;
+    return f;
+  }
+  /// Joint j's pivot and R_pre for pose p (rotation = R_pre), from its parent's frame.
+  Frame pivotOf(int j, const Frame* parent, const Pose& p) const {
     const Link& link = links[static_cast<size_t>(j)];
     const Vec3 t = link.prismatic ? jointTranslation(skeleton.joint(j), p) : link.offset;
     Frame f;
@@ -122,7 +115,7 @@ struct Context {
       f.pre = link.rest;
       f.position = t;
     }
-    f.rotation = f.pre * localRotation;
+    f.rotation = f.pre;
     return f;
   }
   /// What refresh() computes (the local rotations and every frame), for another pose p, into the
