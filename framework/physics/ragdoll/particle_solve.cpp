@@ -146,12 +146,8 @@ void ParticleRagdoll::solveBonePair(int a, int b, bool record) {
   // The broad phase's pairs are fattened for the whole step; most are apart in a given pass. Each box
   // lies inside the sphere about its particles' centroid (the fitted frame's centre) through its corners,
   // radius |h|: spheres apart means boxes apart, and the exact test below would find nothing to do.
-  const auto centroid = [this](int bone) {
-    const int f = bones_[bone].first;
-    return 0.25 * (x_[f] + x_[f + 1] + x_[f + 2] + x_[f + 3]);
-  };
   const Real reach = (glm::length(bones_[a].halfExtents) + glm::length(bones_[b].halfExtents)) * (1.0 + 1e-6);
-  const Vec3 apart = centroid(b) - centroid(a);
+  const Vec3 apart = centroid(particlesOf(b)) - centroid(particlesOf(a));
   if (glm::dot(apart, apart) > reach * reach) return;
   const collision::Transform ta = boneFrame(a), tb = boneFrame(b);
   const collision::Manifold m = collision::collideBoxes(bones_[a].shape, ta, bones_[b].shape, tb, 0.0);

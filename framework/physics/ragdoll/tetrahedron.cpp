@@ -39,8 +39,7 @@ collision::Transform fitFrame(const std::array<Vec3, 4>& x, const Mat3& restInve
     if (change < 1e-14) break;
   }
   if (glm::determinant(r) < 0.0) r[0] = -r[0];
-  const Vec3 centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
-  return {centre, glm::normalize(glm::quat_cast(r))};
+  return {centroid(x), glm::normalize(glm::quat_cast(r))};
 }
 
 Mat3 pointMassInertia(const std::array<Vec3, 4>& x, const Weights& m) {

@@ -30,6 +30,8 @@ std::array<Vec3, 4> tetrahedronOffsets(const Vec3& halfExtents);
 Weights barycentric(const std::array<Vec3, 4>& x, const Vec3& point);
 /// Σ c_i x_i.
 Vec3 embedded(const std::array<Vec3, 4>& x, const Weights& c);
+/// The mean of the four particles: the centre of the box fitted to them (fitFrame).
+inline Vec3 centroid(const std::array<Vec3, 4>& x) { return 0.25 * (x[0] + x[1] + x[2] + x[3]); }
 
 /// The rigid frame that best fits the tetrahedron: centre = mean of the particles, rotation = the polar
 /// factor of the deformation F = [x_k − x_0] [r_k − r_0]⁻¹ against the rest offsets r (Higham's iteration

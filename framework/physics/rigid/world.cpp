@@ -33,12 +33,9 @@ Result<int> World::addJoint(const JointDesc& desc, const std::string& field) {
   // initJoint reads the joint's two bodies (and checks the indices against the count): loading only them
   // keeps building a world of n jointed bodies O(n), where loading every body for each joint made 136
   // ragdolls' 2,040 joints cost 4.4 million inertia rotations.
-  const std::size_t n = bodies_.size();
-  solverBodies_.resize(n + 1);
-  solverBodies_[n] = SolverBody{};  // the world
-  awake_.resize(n);
+  fitSolverBodies();
   for (const int side : {desc.bodyA, desc.bodyB})
-    if (side >= 0 && static_cast<std::size_t>(side) < n) loadSolverBody(static_cast<std::size_t>(side));
+    if (side >= 0 && side < bodyCount()) loadSolverBody(static_cast<std::size_t>(side));
   Joint j;
   j.desc = desc;
   if (Status s = initJoint(j, solverBodies_, field); !s) return Error{s.error()};
@@ -89,6 +86,13 @@ void World::placeDragged() {
   broadPhase_.move(b.proxy, bodyAabb(b, settings_.speculativeDistance));
 }
 
+void World::fitSolverBodies() {
+  const std::size_t n = bodies_.size();
+  solverBodies_.resize(n + 1);
+  solverBodies_[n] = SolverBody{};  // the world
+  awake_.resize(n);
+}
+
 void World::loadSolverBody(std::size_t i) {
   const Body& b = bodies_[i];
   SolverBody& s = solverBodies_[i];
@@ -109,10 +113,8 @@ void World::loadSolverBody(std::size_t i) {
 }
 
 void World::loadSolverBodies() {
-  const std::size_t n = bodies_.size();
-  solverBodies_.assign(n + 1, SolverBody{});
-  awake_.assign(n, 0);
-  for (std::size_t i = 0; i < n; ++i) loadSolverBody(i);
+  fitSolverBodies();
+  for (std::size_t i = 0; i < bodies_.size(); ++i) loadSolverBody(i);
 }
 
 void World::step(Real dt) {

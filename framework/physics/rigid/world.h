@@ -113,6 +113,8 @@ class World {
   void solve(Real dt);
   void solveContinuous(Real dt);
   void updateSleepTimers(Real dt);
+  /// Sizes the solver's copies to the bodies plus the world (last, static); keeps what they hold.
+  void fitSolverBodies();
   /// The solver's copy of body i (pose, velocities, inverse mass and world inertia when awake).
   void loadSolverBody(std::size_t i);
   void loadSolverBodies();
