@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace pba::rigid {
 
@@ -24,6 +25,8 @@ void prepareContact(const ContactConstraint& c, const std::vector<SolverBody>& b
   out.bodyA = c.bodyA;
   out.bodyB = c.bodyB;
   out.againstStatic = a.invMass == 0.0 || b.invMass == 0.0;
+  auto atRest = [](const SolverBody& x) { return x.invMass == 0.0 && x.v == Vec3(0.0) && x.w == Vec3(0.0); };
+  out.sides = atRest(b) ? ContactSides::OnlyA : atRest(a) ? ContactSides::OnlyB : ContactSides::Both;
   out.normal = c.manifold.normal;
   out.tangent[0] = c.tangent[0];  // the basis the carried friction impulses are expressed in
   out.tangent[1] = c.tangent[1];
@@ -67,46 +70,81 @@ void storeImpulses(const SolverContact& s, ContactConstraint& c) {
 }
 
 namespace {
-// The velocities of both sides, worked on in registers through a constraint's rows.
+// The velocities of the sides the solver works on (ContactSides), kept in registers through a
+// constraint's rows. A side at rest has zero velocity, displacement and rotation for the whole step:
+// its terms are left out of the sums (they would add zeros) and it takes no impulse.
+template <ContactSides S>
 struct PairVelocity {
+  static constexpr bool kMovesA = S != ContactSides::OnlyB, kMovesB = S != ContactSides::OnlyA;
   Vec3 vA, wA, vB, wB;
+  PairVelocity(const SolverBody& a, const SolverBody& b) : vA(a.v), wA(a.w), vB(b.v), wB(b.w) {}
   // Relative velocity of the points along d: J v = d·(v_B + ω_B × r_B − v_A − ω_A × r_A).
   [[gnu::always_inline]] Real along(const SolverContactPoint& p, const Vec3& d) const {
+    if constexpr (S == ContactSides::OnlyA) return glm::dot(d, -vA) - glm::dot(wA, glm::cross(p.rA, d));
+    if constexpr (S == ContactSides::OnlyB) return glm::dot(d, vB) + glm::dot(wB, glm::cross(p.rB, d));
     return glm::dot(d, vB - vA) + glm::dot(wB, glm::cross(p.rB, d)) - glm::dot(wA, glm::cross(p.rA, d));
   }
   // Applies the impulse P (world vector) at the point: B gets +P, A gets −P.
   [[gnu::always_inline]] void apply(const SolverContact& c, const SolverContactPoint& p, const Vec3& P) {
-    vA -= c.invMassA * P;
-    wA -= c.invIA * glm::cross(p.rA, P);
-    vB += c.invMassB * P;
-    wB += c.invIB * glm::cross(p.rB, P);
+    if constexpr (kMovesA) {
+      vA -= c.invMassA * P;
+      wA -= c.invIA * glm::cross(p.rA, P);
+    }
+    if constexpr (kMovesB) {
+      vB += c.invMassB * P;
+      wB += c.invIB * glm::cross(p.rB, P);
+    }
+  }
+  // n·(Δc_B − Δc_A) and n·(Δθ_B × r_B − Δθ_A × r_A): the separation's change since the step began.
+  static Real shift(const SolverBody& a, const SolverBody& b, const Vec3& n) {
+    if constexpr (S == ContactSides::OnlyA) return glm::dot(n, -a.dp);
+    if constexpr (S == ContactSides::OnlyB) return glm::dot(n, b.dp);
+    return glm::dot(n, b.dp - a.dp);
+  }
+  static Real turn(const SolverBody& a, const SolverBody& b, const SolverContactPoint& p, const Vec3& n) {
+    if constexpr (S == ContactSides::OnlyA) return glm::dot(n, -glm::cross(a.dtheta, p.rA));
+    if constexpr (S == ContactSides::OnlyB) return glm::dot(n, glm::cross(b.dtheta, p.rB));
+    return glm::dot(n, glm::cross(b.dtheta, p.rB) - glm::cross(a.dtheta, p.rA));
+  }
+  void store(SolverBody& a, SolverBody& b) const {
+    if (kMovesA && a.invMass > 0.0) a.v = vA, a.w = wA;
+    if (kMovesB && b.invMass > 0.0) b.v = vB, b.w = wB;
   }
 };
-}  // namespace
 
-void warmStartContact(const SolverContact& c, std::vector<SolverBody>& bodies) {
-  SolverBody& a = bodies[c.bodyA];
-  SolverBody& b = bodies[c.bodyB];
-  PairVelocity u{a.v, a.w, b.v, b.w};
+// Calls f with the contact's ContactSides as a compile-time constant.
+template <typename F>
+void onSides(ContactSides sides, F&& f) {
+  switch (sides) {
+    case ContactSides::Both:
+      return f(std::integral_constant<ContactSides, ContactSides::Both>{});
+    case ContactSides::OnlyA:
+      return f(std::integral_constant<ContactSides, ContactSides::OnlyA>{});
+    case ContactSides::OnlyB:
+      return f(std::integral_constant<ContactSides, ContactSides::OnlyB>{});
+  }
+}
+
+template <ContactSides S>
+void warmStart(const SolverContact& c, SolverBody& a, SolverBody& b) {
+  PairVelocity<S> u(a, b);
   for (int i = 0; i < c.count; ++i) {
     const SolverContactPoint& p = c.points[i];
     u.apply(c, p, p.normalImpulse * c.normal + p.tangentImpulse[0] * c.tangent[0] + p.tangentImpulse[1] * c.tangent[1]);
   }
-  if (a.invMass > 0.0) a.v = u.vA, a.w = u.wA;
-  if (b.invMass > 0.0) b.v = u.vB, b.w = u.wB;
+  u.store(a, b);
 }
 
-void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias) {
-  SolverBody& a = bodies[c.bodyA];
-  SolverBody& b = bodies[c.bodyB];
+template <ContactSides S>
+void solve(SolverContact& c, SolverBody& a, SolverBody& b, const ContactSolverStep& step, bool useBias) {
   const WorldSettings& s = *step.settings;
   const Real inv_h = 1.0 / step.h;
   const Softness& soft = c.againstStatic ? step.staticSoft : step.soft;
-  PairVelocity u{a.v, a.w, b.v, b.w};
-  const Real dc = glm::dot(c.normal, b.dp - a.dp);
+  PairVelocity<S> u(a, b);
+  const Real dc = PairVelocity<S>::shift(a, b, c.normal);
   for (int i = 0; i < c.count; ++i) {
     SolverContactPoint& p = c.points[i];
-    const Real sep = p.separation + dc + glm::dot(c.normal, glm::cross(b.dtheta, p.rB) - glm::cross(a.dtheta, p.rA));
+    const Real sep = p.separation + dc + PairVelocity<S>::turn(a, b, p, c.normal);
     Real bias = 0.0, massScale = 1.0, impulseScale = 0.0;
     if (sep > 0.0) {
       bias = sep * inv_h;  // speculative: close the gap exactly, no more
@@ -153,15 +191,12 @@ void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const Conta
     p.tangentImpulse[0] = next[0];
     p.tangentImpulse[1] = next[1];
   }
-  if (a.invMass > 0.0) a.v = u.vA, a.w = u.wA;
-  if (b.invMass > 0.0) b.v = u.vB, b.w = u.wB;
+  u.store(a, b);
 }
 
-void applyRestitution(SolverContact& c, std::vector<SolverBody>& bodies, const WorldSettings& settings) {
-  if (c.restitution == 0.0) return;
-  SolverBody& a = bodies[c.bodyA];
-  SolverBody& b = bodies[c.bodyB];
-  PairVelocity u{a.v, a.w, b.v, b.w};
+template <ContactSides S>
+void restitute(SolverContact& c, SolverBody& a, SolverBody& b, const WorldSettings& settings) {
+  PairVelocity<S> u(a, b);
   for (int i = 0; i < c.count; ++i) {
     SolverContactPoint& p = c.points[i];
     if (p.relativeVelocity > -settings.restitutionThreshold || p.maxNormalImpulse == 0.0) continue;
@@ -173,8 +208,21 @@ void applyRestitution(SolverContact& c, std::vector<SolverBody>& bodies, const W
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
     u.apply(c, p, applied * c.normal);
   }
-  if (a.invMass > 0.0) a.v = u.vA, a.w = u.wA;
-  if (b.invMass > 0.0) b.v = u.vB, b.w = u.wB;
+  u.store(a, b);
+}
+}  // namespace
+
+void warmStartContact(const SolverContact& c, std::vector<SolverBody>& bodies) {
+  onSides(c.sides, [&](auto S) { warmStart<decltype(S)::value>(c, bodies[c.bodyA], bodies[c.bodyB]); });
+}
+
+void solveContact(SolverContact& c, std::vector<SolverBody>& bodies, const ContactSolverStep& step, bool useBias) {
+  onSides(c.sides, [&](auto S) { solve<decltype(S)::value>(c, bodies[c.bodyA], bodies[c.bodyB], step, useBias); });
+}
+
+void applyRestitution(SolverContact& c, std::vector<SolverBody>& bodies, const WorldSettings& settings) {
+  if (c.restitution == 0.0) return;
+  onSides(c.sides, [&](auto S) { restitute<decltype(S)::value>(c, bodies[c.bodyA], bodies[c.bodyB], settings); });
 }
 
 }  // namespace pba::rigid
