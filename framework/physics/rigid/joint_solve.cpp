@@ -140,20 +140,16 @@ void prepareJoint(Joint& j, const std::vector<SolverBody>& bodies, const JointSt
         j.angularMass[1][0] = -k[0][1] / det, j.angularMass[0][1] = -k[1][0] / det;
       }
       j.axialMass = axial(j.axisWorld);
-      j.pointMass = detail::pointMass(A, B, j.rA, j.rB);
       break;
     }
     case JointKind::ConeTwist:
       j.axisWorld = glm::normalize(A.q * j.axisA + B.q * j.axisB);
       j.axialMass = axial(j.axisWorld);
-      j.pointMass = detail::pointMass(A, B, j.rA, j.rB);
       break;
     case JointKind::Fixed:
     case JointKind::Slider:
       j.angularMass = std::abs(glm::determinant(isum)) > 1e-300 ? glm::inverse(isum) : Mat3(0.0);
-      if (j.desc.kind == JointKind::Fixed) {
-        j.pointMass = detail::pointMass(A, B, j.rA, j.rB);
-      } else {
+      if (j.desc.kind == JointKind::Slider) {
         j.axisWorld = A.q * j.axisA;
         tangentBasis(j.axisWorld, j.hingeBasis[0], j.hingeBasis[1]);
         j.axialMass = rowMass(A, B, anchorB(j, B) - A.c, j.rB, j.axisWorld);
@@ -168,8 +164,7 @@ void prepareJoint(Joint& j, const std::vector<SolverBody>& bodies, const JointSt
     }
     case JointKind::Ball:
     case JointKind::Mouse:
-      j.pointMass = detail::pointMass(A, B, j.rA, j.rB);
-      break;
+      break;  // the point rows' mass is formed where they are solved, from the current arms (solveJoint)
   }
   if (!step.warmStarting) {
     j.pointImpulse = j.angularImpulse = Vec3(0.0);
