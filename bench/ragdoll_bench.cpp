@@ -226,62 +226,102 @@ btTransform jointFrame(const btRigidBody& body, const Vec3& anchor, const Vec3& 
 // Bullet's defaults (btDbvtBroadphase, sequential impulses, 10 iterations), the same boxes, masses and
 // joints: btConeTwistConstraint for limited balls (swing spans = the cone, twist ±170°),
 // btPoint2PointConstraint for free balls, btHingeConstraint with the limits; jointed pairs do not collide.
-void BM_BulletHumans(benchmark::State& state) {
-  const RagdollDesc d = humans(static_cast<int>(state.range(0)));
-  const Real dt = 1.0 / 60.0;
-  const int steps = 600;
-  for (auto _ : state) {
-    btDefaultCollisionConfiguration configuration;
-    btCollisionDispatcher dispatcher(&configuration);
-    btDbvtBroadphase broadphase;
-    btSequentialImpulseConstraintSolver solver;
-    btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-    world.setGravity(btVector3(0, -kStandardGravity, 0));
-    btStaticPlaneShape ground(btVector3(0, 1, 0), 0);
-    btRigidBody groundBody(btRigidBody::btRigidBodyConstructionInfo(0.0, nullptr, &ground));
-    groundBody.setFriction(d.friction);
-    world.addRigidBody(&groundBody);
-    std::vector<std::unique_ptr<btBoxShape>> shapes;
-    std::vector<std::unique_ptr<btRigidBody>> bodies;
-    std::vector<std::unique_ptr<btTypedConstraint>> joints;
+class BulletRagdolls {
+ public:
+  explicit BulletRagdolls(const RagdollDesc& d)
+      : dispatcher_(&configuration_), world_(&dispatcher_, &broadphase_, &solver_, &configuration_),
+        groundBody_(btRigidBody::btRigidBodyConstructionInfo(0.0, nullptr, &ground_)) {
+    world_.setGravity(btVector3(0, -kStandardGravity, 0));
+    groundBody_.setFriction(d.friction);
+    world_.addRigidBody(&groundBody_);
     for (const BoneDesc& b : d.bones) {
-      shapes.push_back(std::make_unique<btBoxShape>(bt(b.halfExtents)));
+      shapes_.push_back(std::make_unique<btBoxShape>(bt(b.halfExtents)));
       btVector3 inertia;
-      shapes.back()->calculateLocalInertia(b.mass, inertia);
-      btRigidBody::btRigidBodyConstructionInfo info(b.mass, nullptr, shapes.back().get(), inertia);
+      shapes_.back()->calculateLocalInertia(b.mass, inertia);
+      btRigidBody::btRigidBodyConstructionInfo info(b.mass, nullptr, shapes_.back().get(), inertia);
       info.m_startWorldTransform = btTransform(bt(b.orientation), bt(b.center));
       info.m_friction = d.friction;
-      bodies.push_back(std::make_unique<btRigidBody>(info));
-      bodies.back()->setActivationState(DISABLE_DEACTIVATION);
-      world.addRigidBody(bodies.back().get());
+      bodies_.push_back(std::make_unique<btRigidBody>(info));
+      bodies_.back()->setActivationState(DISABLE_DEACTIVATION);
+      world_.addRigidBody(bodies_.back().get());
     }
     for (const JointDesc& j : d.joints) {
-      btRigidBody& a = *bodies[j.boneA];
-      btRigidBody& b = *bodies[j.boneB];
+      btRigidBody& a = *bodies_[j.boneA];
+      btRigidBody& b = *bodies_[j.boneB];
       const btTransform fa = jointFrame(a, j.anchor, j.axis), fb = jointFrame(b, j.anchor, j.axis);
       if (j.kind == JointKind::Hinge) {
         auto h = std::make_unique<btHingeConstraint>(a, b, fa.getOrigin(), fb.getOrigin(), fa.getBasis().getColumn(0),
                                                      fb.getBasis().getColumn(0));
         if (j.limited) h->setLimit(j.lower, j.upper);
-        joints.push_back(std::move(h));
+        joints_.push_back(std::move(h));
       } else if (j.limited) {
         auto c = std::make_unique<btConeTwistConstraint>(a, b, fa, fb);
         c->setLimit(j.coneAngle, j.coneAngle, degToRad(170.0));
-        joints.push_back(std::move(c));
+        joints_.push_back(std::move(c));
       } else {
-        joints.push_back(std::make_unique<btPoint2PointConstraint>(a, b, fa.getOrigin(), fb.getOrigin()));
+        joints_.push_back(std::make_unique<btPoint2PointConstraint>(a, b, fa.getOrigin(), fb.getOrigin()));
       }
-      world.addConstraint(joints.back().get(), true);
+      world_.addConstraint(joints_.back().get(), true);
     }
-    const double t = timeSteps(steps, [&] { world.stepSimulation(dt, 0); });
+  }
+  BulletRagdolls(const BulletRagdolls&) = delete;
+  BulletRagdolls& operator=(const BulletRagdolls&) = delete;
+  ~BulletRagdolls() {
+    for (auto& j : joints_) world_.removeConstraint(j.get());
+    for (auto& b : bodies_) world_.removeRigidBody(b.get());
+    world_.removeRigidBody(&groundBody_);
+  }
+  void step(Real dt) { world_.stepSimulation(dt, 0); }
+
+ private:
+  btDefaultCollisionConfiguration configuration_;
+  btCollisionDispatcher dispatcher_;
+  btDbvtBroadphase broadphase_;
+  btSequentialImpulseConstraintSolver solver_;
+  btDiscreteDynamicsWorld world_;
+  btStaticPlaneShape ground_{btVector3(0, 1, 0), 0};
+  btRigidBody groundBody_;
+  std::vector<std::unique_ptr<btBoxShape>> shapes_;
+  std::vector<std::unique_ptr<btRigidBody>> bodies_;
+  std::vector<std::unique_ptr<btTypedConstraint>> joints_;
+};
+
+void BM_BulletHumans(benchmark::State& state) {
+  const RagdollDesc d = humans(static_cast<int>(state.range(0)));
+  const Real dt = 1.0 / 60.0;
+  const int steps = 600;
+  for (auto _ : state) {
+    BulletRagdolls bullet(d);
+    const double t = timeSteps(steps, [&] { bullet.step(dt); });
     report(state, t, steps, dt);
     state.counters["bones"] = static_cast<double>(d.bones.size());
-    for (auto& j : joints) world.removeConstraint(j.get());
-    for (auto& b : bodies) world.removeRigidBody(b.get());
-    world.removeRigidBody(&groundBody);
   }
 }
 BENCHMARK(BM_BulletHumans)->Arg(1)->Arg(136)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// The same two simulations stepped in alternation, 20 steps of one then 20 of the other, 600 steps each,
+// so that a change of the machine's load during the run falls on both alike (on this shared machine,
+// back-to-back runs of the two moved by ±15 %). Time: ours; counters: both and their ratio.
+void BM_HumansAgainstBullet(benchmark::State& state) {
+  const RagdollDesc d = humans(static_cast<int>(state.range(0)));
+  const Real dt = 1.0 / 60.0;
+  constexpr int kSteps = 600, kBlock = 20;
+  for (auto _ : state) {
+    ConstraintSettings s;
+    s.world.sleeping = false;
+    ConstraintRagdoll ours = ConstraintRagdoll::build(d, s).value();
+    BulletRagdolls bullet(d);
+    double oursSeconds = 0.0, bulletSeconds = 0.0;
+    for (int done = 0; done < kSteps; done += kBlock) {
+      oursSeconds += timeSteps(kBlock, [&] { ours.step(dt); });
+      bulletSeconds += timeSteps(kBlock, [&] { bullet.step(dt); });
+    }
+    report(state, oursSeconds, kSteps, dt);
+    state.counters["bullet_ms_per_step"] = 1e3 * bulletSeconds / kSteps;
+    state.counters["ours_over_bullet"] = oursSeconds / bulletSeconds;
+  }
+}
+BENCHMARK(BM_HumansAgainstBullet)->Arg(136)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
 #endif
 
 }  // namespace

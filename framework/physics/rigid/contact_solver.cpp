@@ -46,9 +46,16 @@ void prepareContact(const ContactConstraint& c, const std::vector<SolverBody>& b
     p.separation = mp.separation;
     Real k[3];
     for (int d = 0; d < 3; ++d) {
-      // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d).
-      const Vec3 ra = glm::cross(p.rA, directions[d]), rb = glm::cross(p.rB, directions[d]);
-      k[d] = a.invMass + b.invMass + glm::dot(ra, a.invI * ra) + glm::dot(rb, b.invI * rb);
+      // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d); a side at rest adds zeros.
+      k[d] = a.invMass + b.invMass;
+      if (out.sides != ContactSides::OnlyB) {
+        const Vec3 ra = glm::cross(p.rA, directions[d]);
+        k[d] += glm::dot(ra, a.invI * ra);
+      }
+      if (out.sides != ContactSides::OnlyA) {
+        const Vec3 rb = glm::cross(p.rB, directions[d]);
+        k[d] += glm::dot(rb, b.invI * rb);
+      }
     }
     p.normalMass = k[0] > 0.0 ? 1.0 / k[0] : 0.0;
     p.tangentMass[0] = k[1] > 0.0 ? 1.0 / k[1] : 0.0;

@@ -30,8 +30,9 @@ namespace {
 using detail::anchorA;
 using detail::anchorB;
 
+// j.rA and j.rB are the current arms (solveJoint sets them before any row): the anchors are c + r.
 void solvePoint(Joint& j, SolverBody& A, SolverBody& B, const Softness& soft, bool useBias) {
-  const Vec3 C = anchorB(j, B) - anchorA(j, A);
+  const Vec3 C = (B.c + j.rB) - (A.c + j.rA);
   Vec3 bias(0.0);
   Real massScale = 1.0, impulseScale = 0.0;
   if (useBias) bias = soft.biasRate * C, massScale = soft.massScale, impulseScale = soft.impulseScale;
