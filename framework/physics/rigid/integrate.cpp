@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "physics/rigid/skew.h"
+
 namespace pba::rigid {
 
 Quat rotateByAngularVelocity(const Quat& q, const Vec3& omega, Real h) {
@@ -14,18 +16,11 @@ Quat rotateByAngularVelocity(const Quat& q, const Vec3& omega, Real h) {
   return glm::normalize(dq * q);
 }
 
-namespace {
-Mat3 skew(const Vec3& v) {
-  // [v]× with [v]× u = v × u (glm is column-major).
-  return Mat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0);
-}
-}  // namespace
-
 Vec3 gyroscopicImplicitStep(const Quat& q, const Mat3& inertia, const Vec3& omega, Real h) {
   const Vec3 wb = glm::conjugate(q) * omega;
   const Vec3 iw = inertia * wb;
   const Vec3 f = h * glm::cross(wb, iw);
-  const Mat3 jacobian = inertia + h * (skew(wb) * inertia - skew(iw));
+  const Mat3 jacobian = inertia + h * (skewTimes(wb, inertia) - skew(iw));
   const Vec3 wb2 = wb - glm::inverse(jacobian) * f;
   return q * wb2;
 }

@@ -4,32 +4,12 @@
 #include <cmath>
 
 #include "physics/rigid/joint.h"
+#include "physics/rigid/skew.h"
 
 namespace pba::rigid::detail {
 
 inline Vec3 anchorA(const Joint& j, const SolverBody& A) { return A.c + A.q * j.localA; }
 inline Vec3 anchorB(const Joint& j, const SolverBody& B) { return B.c + B.q * j.localB; }
-
-/// [v]× with [v]× u = v × u.
-inline Mat3 skew(const Vec3& v) { return Mat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0); }
-
-/// [r]× M [r]×, as (skew(r) · M) · skew(r) with glm's products but without their terms that multiply by
-/// the zero diagonal of [r]×: each entry is the same sum of the same nonzero products in the same order,
-/// so the result has the same bits (an exact zero may differ in sign); 54 flops instead of 90.
-inline Mat3 skewSandwich(const Vec3& r, const Mat3& m) {
-  Mat3 t, u;  // t = [r]× m: column c of t is r × (column c of m)
-  for (int c = 0; c < 3; ++c) {
-    t[c][0] = -r.z * m[c][1] + r.y * m[c][2];
-    t[c][1] = r.z * m[c][0] + -r.x * m[c][2];
-    t[c][2] = -r.y * m[c][0] + r.x * m[c][1];
-  }
-  for (int i = 0; i < 3; ++i) {  // u = t [r]×, row i at a time
-    u[0][i] = t[1][i] * r.z + t[2][i] * -r.y;
-    u[1][i] = t[0][i] * -r.z + t[2][i] * r.x;
-    u[2][i] = t[0][i] * r.y + t[1][i] * -r.x;
-  }
-  return u;
-}
 
 /// Effective mass of the point rows C = p_B − p_A (3 × 3):
 ///   K = (m_A⁻¹ + m_B⁻¹) 1 − [r_A]× I_A⁻¹ [r_A]× − [r_B]× I_B⁻¹ [r_B]×,   returns K⁻¹.
