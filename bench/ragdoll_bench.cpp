@@ -229,7 +229,8 @@ btTransform jointFrame(const btRigidBody& body, const Vec3& anchor, const Vec3& 
 class BulletRagdolls {
  public:
   explicit BulletRagdolls(const RagdollDesc& d)
-      : dispatcher_(&configuration_), world_(&dispatcher_, &broadphase_, &solver_, &configuration_),
+      : dispatcher_(&configuration_),
+        world_(&dispatcher_, &broadphase_, &solver_, &configuration_),
         groundBody_(btRigidBody::btRigidBodyConstructionInfo(0.0, nullptr, &ground_)) {
     world_.setGravity(btVector3(0, -kStandardGravity, 0));
     groundBody_.setFriction(d.friction);
