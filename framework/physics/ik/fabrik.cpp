@@ -136,6 +136,11 @@ class Fabrik final : public Method {
     forward(c);
   }
 
+  bool resetForReuse() override {  // build() fills every member anew at the next iteration
+    built_ = pointsOnly_ = pointsLoaded_ = false;
+    return true;
+  }
+
   void finish(Context& c) override {
     if (!posesDeferred()) return;
     // The forward pass onto the points: each joint's child (or the effector) onto its point.

@@ -46,6 +46,19 @@ Quat localRotation(const Joint& joint, const Pose& p, int j, EulerHalfAngles* ha
 }
 }  // namespace
 
+void ContextStorage::clear() {
+  frames.clear();
+  belowStart.clear();
+  belowList.clear();
+  active.clear();
+  insideCosHalf.clear();
+  eulerRanges.clear();
+  local.clear();
+  half.clear();
+  staleEuler.clear();
+  links.clear();
+}
+
 void Context::flushPose() {
   for (size_t j = 0; j < staleEuler.size(); ++j)
     if (staleEuler[j]) flushJoint(static_cast<int>(j));
@@ -218,6 +231,19 @@ void randomizeActiveJoints(detail::Context& c, RestartRng& rng) {
   }
 }
 
+// What solve() keeps between the solves of a thread, so that a warm solve allocates nothing: the
+// Context's storage, the last method (reused for the same kind, Method::resetForReuse) and the
+// driver's lists. thread_local: solve() may run on several threads at once. A solve takes it out and
+// puts it back at the end, so that a solve inside a solve would find it empty and use its own.
+struct Workspace {
+  detail::ContextStorage storage;
+  std::unique_ptr<detail::Method> method;
+  SolverKind methodKind = SolverKind::Analytic;  // of `method`
+  std::vector<Vec3> points;                      // effector points of a method that defers the pose
+  std::vector<Real> progress;                    // combined residual per iteration (stall detection)
+};
+thread_local Workspace threadWorkspace;
+
 std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string* why) {
   switch (c.options.solver) {
     case SolverKind::Analytic:
@@ -233,6 +259,18 @@ std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string
       return detail::makeJacobianMethod(c.options.solver);
   }
 }
+
+// Sets w.method to a method for c's options: the last one, returned to a fresh one's state, when it
+// is of that kind and can be (Method::resetForReuse); else a new one (null, with *why, when the
+// method does not apply).
+void prepareMethod(Workspace& w, const detail::Context& c, std::string* why) {
+  if (w.method && w.methodKind == c.options.solver && w.method->resetForReuse()) return;
+  w.method = makeMethod(c, why);
+  w.methodKind = c.options.solver;
+}
+
+using Clock = std::chrono::steady_clock;
+SolveResult solveIn(detail::Context& c, Workspace& w, Clock::time_point start);
 
 }  // namespace
 
@@ -250,15 +288,31 @@ Real resolvedOrientationScale(const Skeleton& skeleton, const std::vector<Effect
 }
 
 SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o) {
-  using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  SolveResult result;
   if (Status st = validateInputs(skeleton, pose, effectors, o); !st) {
+    SolveResult result;
     result.message = st.error();
     return result;
   }
   if (o.fromRest) pose = skeleton.restPose();
-  detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}, {}, {}, {}, {}};
+  Workspace w = std::move(threadWorkspace);  // taken out, put back below (see Workspace)
+  w.storage.clear();
+  detail::Context c{std::move(w.storage), skeleton, pose, effectors, o};
+  SolveResult result = solveIn(c, w, start);
+  w.storage = std::move(static_cast<detail::ContextStorage&>(c));
+  threadWorkspace = std::move(w);
+  return result;
+}
+
+namespace {
+
+// solve() on its Context, with the storage of the workspace w.
+SolveResult solveIn(detail::Context& c, Workspace& w, Clock::time_point start) {
+  const Skeleton& skeleton = c.skeleton;
+  Pose& pose = c.pose;
+  const std::vector<Effector>& effectors = c.effectors;
+  const SolveOptions& o = c.options;
+  SolveResult result;
   c.refresh();
   c.meanBone = meanBoneLength(skeleton, effectors);
   c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
@@ -305,7 +359,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   }
 
   std::string why;
-  std::unique_ptr<detail::Method> method = makeMethod(c, &why);
+  prepareMethod(w, c, &why);
+  const std::unique_ptr<detail::Method>& method = w.method;
   auto finish = [&](SolveStatus status) {
     if (method) method->finish(c);
     c.flushPose();
@@ -321,7 +376,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     return finish(SolveStatus::NotApplicable);
   }
   if (o.recordHistory) result.effectorPath.assign(effectors.size(), {});
-  std::vector<Vec3> points;  // effector points of a method that defers the pose
+  std::vector<Vec3>& points = w.points;
+  points.clear();
   auto effectorPoint = [&](size_t k) {
     return method->posesDeferred() ? points[k] : effectorPosition(effectors[k], c.frames);
   };
@@ -347,7 +403,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     c.flushPose();
   }
 
-  std::vector<Real> progress;  // combined residual per iteration for stall detection
+  std::vector<Real>& progress = w.progress;
+  progress.clear();
   progress.reserve(16);
   auto measure = [&]() {
     Residual r;
@@ -416,7 +473,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
       keepBest();
       randomizeActiveJoints(c, rng);
       c.refresh();
-      method = makeMethod(c, &why);
+      prepareMethod(w, c, &why);
       ++result.restarts;
       progress.clear();
       std::tie(r, score) = measure();
@@ -445,5 +502,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     progress.push_back(score);
   }
 }
+
+}  // namespace
 
 }  // namespace pba::ik
