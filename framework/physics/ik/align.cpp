@@ -134,6 +134,9 @@ Real shiftInto(Real x, Real lo, Real hi, Real* violation) {
   *violation += bestViolation;
   return best;
 }
+// std::remainder(x, 2π), without the call when |x| ≤ π: the remainder is exact and its quotient then 0,
+// so it is x itself.
+Real remainderTwoPi(Real x) { return std::abs(x) <= kPi ? x : std::remainder(x, 2.0 * kPi); }
 }  // namespace
 
 Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
@@ -147,7 +150,7 @@ Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
   Real violation[2] = {0.0, 0.0};
   for (int r = 0; r < 2; ++r)
     for (int k = 0; k < 3; ++k)
-      out[r][k] = shiftInto(std::remainder(out[r][k], 2.0 * kPi), joint.lo[k], joint.hi[k], &violation[r]);
+      out[r][k] = shiftInto(remainderTwoPi(out[r][k]), joint.lo[k], joint.hi[k], &violation[r]);
   const int pick = violation[1] < violation[0] ? 1 : 0;
   if (inside) *inside = violation[pick] == 0.0;
   return out[pick];

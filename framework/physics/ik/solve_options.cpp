@@ -2,6 +2,7 @@
 #include <array>
 #include <limits>
 #include <string>
+#include <string_view>
 
 #include "physics/core/format.h"
 #include "physics/core/validate.h"
@@ -37,16 +38,25 @@ bool inTable(Enum e, const std::vector<std::string>& names) {
 
 constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
-Status checkNonNegative(const char* field, Real value) { return checkRange(field, value, 0.0, kInfinity); }
+Status checkNonNegative(std::string_view field, Real value) { return checkRange(field, value, 0.0, kInfinity); }
+
+// The messages of the two checks below, built only when a check fails (as validate.h's checks; out of
+// line, so that the checks stay small enough to inline).
+[[gnu::noinline]] Status belowOneError(const char* field, Real value) {
+  return Error{std::string(field) + ": must be in [0, 1), got " + formatExact(value)};
+}
+[[gnu::noinline]] Status atLeastError(const char* field, long long value, long long lowest) {
+  return Error{std::string(field) + ": must be >= " + std::to_string(lowest) + ", got " + std::to_string(value)};
+}
 
 Status checkBelowOne(const char* field, Real value) {
   if (isFinite(value) && value >= 0.0 && value < 1.0) return Status::success();
-  return Error{std::string(field) + ": must be in [0, 1), got " + formatExact(value)};
+  return belowOneError(field, value);
 }
 
 Status checkAtLeast(const char* field, long long value, long long lowest) {
   if (value >= lowest) return Status::success();
-  return Error{std::string(field) + ": must be >= " + std::to_string(lowest) + ", got " + std::to_string(value)};
+  return atLeastError(field, value, lowest);
 }
 
 }  // namespace

@@ -243,6 +243,9 @@ struct Workspace {
   std::vector<Real> progress;                    // combined residual per iteration (stall detection)
 };
 thread_local Workspace threadWorkspace;
+// Solves of larger skeletons keep nothing: their allocations are a small part of their cost, and a
+// thread would otherwise hold the storage of the largest skeleton it ever solved.
+constexpr int kKeptJoints = 64;
 
 std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string* why) {
   switch (c.options.solver) {
@@ -300,7 +303,10 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   detail::Context c{std::move(w.storage), skeleton, pose, effectors, o};
   SolveResult result = solveIn(c, w, start);
   w.storage = std::move(static_cast<detail::ContextStorage&>(c));
-  threadWorkspace = std::move(w);
+  // A method that cannot serve the next solve is not kept: its storage (a Jacobian's matrices) would
+  // stay allocated for nothing.
+  if (w.method && !w.method->resetForReuse()) w.method.reset();
+  if (skeleton.jointCount() <= kKeptJoints) threadWorkspace = std::move(w);
   return result;
 }
 
