@@ -464,8 +464,12 @@ class Fabrik final : public Method {
         }
         if (joint.type == JointType::Prismatic) f = c.frameFrom(j, parent);  // a hinge's pivot stays
       }
-      f.rotation = f.pre * c.local[static_cast<size_t>(j)];
-      c.frames[static_cast<size_t>(j)] = f;
+      // Field by field: a copy of f would reload the rotation just stored as scalars in 16-byte pieces
+      // (a store-forwarding stall per joint).
+      Frame& out = c.frames[static_cast<size_t>(j)];
+      out.position = f.position;
+      out.pre = f.pre;
+      out.rotation = f.pre * c.local[static_cast<size_t>(j)];
     }
   }
 

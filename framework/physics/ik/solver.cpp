@@ -98,12 +98,18 @@ bool Context::principalEulerInside(int j, const Quat& q) const {
 
 void Context::refresh() {
   if (links.size() != static_cast<size_t>(skeleton.jointCount())) {
-    links.clear();
-    links.reserve(skeleton.joints().size());
-    for (const Joint& joint : skeleton.joints()) {
+    // Field by field into place: a Link built aside and copied would be read back in 16-byte pieces
+    // just after being stored in smaller ones (a store-forwarding stall per joint).
+    links.resize(skeleton.joints().size());
+    for (size_t j = 0; j < links.size(); ++j) {
+      const Joint& joint = skeleton.joints()[j];
       const Quat& r = joint.restRotation;
-      links.push_back(Link{joint.parent, r.w == 1.0 && r.x == 0.0 && r.y == 0.0 && r.z == 0.0,
-                           joint.type == JointType::Prismatic, joint.offset, r});
+      Link& link = links[j];
+      link.parent = joint.parent;
+      link.identityRest = r.w == 1.0 && r.x == 0.0 && r.y == 0.0 && r.z == 0.0;
+      link.prismatic = joint.type == JointType::Prismatic;
+      link.offset = joint.offset;
+      link.rest = r;
     }
   }
   flushPose();
@@ -132,11 +138,9 @@ void Context::evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<E
 void Context::refreshFrames() {
   const int n = skeleton.jointCount();
   frames.resize(static_cast<size_t>(n));
-  Frame previous;  // chains (parent = j − 1) take the parent from this copy, not back from `frames`
   for (int j = 0; j < n; ++j) {
     const int parent = links[static_cast<size_t>(j)].parent;
-    previous = frameFrom(j, parent < 0 ? nullptr : parent == j - 1 ? &previous : &frames[static_cast<size_t>(parent)]);
-    frames[static_cast<size_t>(j)] = previous;
+    frames[static_cast<size_t>(j)] = frameFrom(j, parent < 0 ? nullptr : &frames[static_cast<size_t>(parent)]);
   }
 }
 

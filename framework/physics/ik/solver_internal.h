@@ -264,8 +264,8 @@ Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside = nullptr
 
 /// Sets ball or free joint j's local rotation to `wanted`, clamped to its limits (IK-6) when
 /// clampLimits and a limit can act; keeps c.local[j] current (a ball joint's Euler angles are left
-/// to flushPose() when no clamp was needed). Returns the local rotation actually applied.
-Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits);
+/// to flushPose() when no clamp was needed). Returns the local rotation actually applied (c.local[j]).
+const Quat& setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits);
 
 /// True when joint j's rotation limits admit every rotation (ball: Euler ranges cover [−π, π] ×
 /// [−π/2, π/2] × [−π, π]; free: maxRotation ≥ π), so clamping can never change it. Hinges,
