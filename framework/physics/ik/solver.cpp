@@ -47,14 +47,13 @@ Quat localRotation(const Joint& joint, const Pose& p, int j, EulerHalfAngles* ha
 }  // namespace
 
 void ContextStorage::clear() {
-  frames.clear();
+  // frames, local and half keep their entries: refresh() rewrites every one of them first, and
+  // resizing from empty would initialise them only to be overwritten.
   belowStart.clear();
   belowList.clear();
   active.clear();
   insideCosHalf.clear();
   eulerRanges.clear();
-  local.clear();
-  half.clear();
   staleEuler.clear();
   links.clear();
 }

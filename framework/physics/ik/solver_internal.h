@@ -52,7 +52,8 @@ struct ContextStorage {
   };
   std::vector<Link> links;  ///< filled by the first refresh()
 
-  /// Empties every member, keeping its capacity: the state of a new solve.
+  /// The state of a new solve, keeping every member's capacity: empties them, but for frames, local
+  /// and half, which the solve's first refresh() rewrites entry by entry.
   void clear();
 };
 
