@@ -127,8 +127,7 @@ Status validate(const SolveOptions& o) {
   if (!nonNegative("options.damping", o.damping, &e) || !belowOne("options.singularCutoff", o.singularCutoff, &e) ||
       !nonNegative("options.maxErrorStep", o.maxErrorStep, &e) ||
       !nonNegative("options.maxJointStep", o.maxJointStep, &e) ||
-      !nonNegative("options.orientationScale", o.orientationScale, &e) ||
-      !finite("options.polePoint", o.polePoint, &e))
+      !nonNegative("options.orientationScale", o.orientationScale, &e) || !finite("options.polePoint", o.polePoint, &e))
     return e;
   if (!inTable(o.lineSearch, lineSearchNames())) return Error{"options.lineSearch: no such line search"};
   if (!positive("options.gradientStep", o.gradientStep, &e) ||
