@@ -14,29 +14,31 @@
 
 namespace pba::ik::detail {
 
-Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits) {
+const Quat& setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits) {
   const Joint& joint = c.skeleton.joint(j);
   const bool clampNow =
       clampLimits && !(joint.type == JointType::Ball && c.surelyWithinLimits(j, wanted)) && !rotationUnlimited(joint);
-  Quat applied = wanted;
+  // Written in place and returned from there: a local copy or a returned one would be stored and read
+  // back at once in pieces of other sizes (a store-forwarding stall on every call).
+  Quat& local = c.local[static_cast<size_t>(j)];
   if (joint.type == JointType::Ball) {
     if (clampNow) {
       Real* dofs = c.pose.dofs.data() + joint.firstDof;
       const Vec3 e = eulerWithinLimits(joint, wanted);
       for (int k = 0; k < 3; ++k) dofs[k] = e[k];
       clampJointToLimits(c.skeleton, c.pose, j);
-      if (dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2]) applied = jointRotation(joint, c.pose, j);
+      const bool clamped = dofs[0] != e[0] || dofs[1] != e[1] || dofs[2] != e[2];
+      local = clamped ? jointRotation(joint, c.pose, j) : wanted;
+    } else {
+      local = wanted;
     }
     c.staleEuler[static_cast<size_t>(j)] = !clampNow;  // unclamped: flushPose() writes the Euler angles
   } else {
     c.pose.rotations[static_cast<size_t>(j)] = wanted;
-    if (clampNow) {
-      clampJointToLimits(c.skeleton, c.pose, j);
-      applied = c.pose.rotations[static_cast<size_t>(j)];
-    }
+    if (clampNow) clampJointToLimits(c.skeleton, c.pose, j);
+    local = c.pose.rotations[static_cast<size_t>(j)];
   }
-  c.local[static_cast<size_t>(j)] = applied;
-  return applied;
+  return local;
 }
 
 namespace {
@@ -134,6 +136,9 @@ Real shiftInto(Real x, Real lo, Real hi, Real* violation) {
   *violation += bestViolation;
   return best;
 }
+// std::remainder(x, 2π), without the call when |x| ≤ π: the remainder is exact and its quotient then 0,
+// so it is x itself.
+Real remainderTwoPi(Real x) { return std::abs(x) <= kPi ? x : std::remainder(x, 2.0 * kPi); }
 }  // namespace
 
 Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
@@ -147,7 +152,7 @@ Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside) {
   Real violation[2] = {0.0, 0.0};
   for (int r = 0; r < 2; ++r)
     for (int k = 0; k < 3; ++k)
-      out[r][k] = shiftInto(std::remainder(out[r][k], 2.0 * kPi), joint.lo[k], joint.hi[k], &violation[r]);
+      out[r][k] = shiftInto(remainderTwoPi(out[r][k]), joint.lo[k], joint.hi[k], &violation[r]);
   const int pick = violation[1] < violation[0] ? 1 : 0;
   if (inside) *inside = violation[pick] == 0.0;
   return out[pick];

@@ -136,6 +136,11 @@ class Fabrik final : public Method {
     forward(c);
   }
 
+  bool resetForReuse() override {  // build() fills every member anew at the next iteration
+    built_ = pointsOnly_ = pointsLoaded_ = false;
+    return true;
+  }
+
   void finish(Context& c) override {
     if (!posesDeferred()) return;
     // The forward pass onto the points: each joint's child (or the effector) onto its point.
@@ -437,11 +442,11 @@ class Fabrik final : public Method {
         c.frames[static_cast<size_t>(j)] = c.frameFrom(j, parent);
         continue;
       }
-      Frame f;
+      const bool rotates = joint.type == JointType::Ball || joint.type == JointType::Free;
+      Frame f = rotates ? c.pivotFrom(j, parent) : c.frameFrom(j, parent);  // a ball's rotation is set below
       Vec3 from, to;
       Real length = 0.0;
-      if (joint.type == JointType::Ball || joint.type == JointType::Free) {
-        f = c.pivotFrom(j, parent);  // the rotation is set below
+      if (rotates) {
         if (onePoint(c, j, &from, &to, &length)) {
           setJointRotation(c, j, pointRule(f, R_[static_cast<size_t>(j)], from, to, length), clamp);
         } else {
@@ -449,7 +454,6 @@ class Fabrik final : public Method {
           turnBall(c, j, f, clamp);
         }
       } else {
-        f = c.frameFrom(j, parent);
         bodyPoints(c, j);
         for (size_t i = 0; i < from_.size(); ++i) from_[i] = f.position + f.rotation * from_[i];
         if (!(joint.type == JointType::Hinge && clamp &&
@@ -459,8 +463,12 @@ class Fabrik final : public Method {
         }
         if (joint.type == JointType::Prismatic) f = c.frameFrom(j, parent);  // a hinge's pivot stays
       }
-      f.rotation = f.pre * c.local[static_cast<size_t>(j)];
-      c.frames[static_cast<size_t>(j)] = f;
+      // Field by field: a copy of f would reload the rotation just stored as scalars in 16-byte pieces
+      // (a store-forwarding stall per joint).
+      Frame& out = c.frames[static_cast<size_t>(j)];
+      out.position = f.position;
+      out.pre = f.pre;
+      out.rotation = f.pre * c.local[static_cast<size_t>(j)];
     }
   }
 

@@ -1,7 +1,9 @@
 // The IK methods' name tables and the validation of SolveOptions (solver.h).
 #include <array>
+#include <cmath>
 #include <limits>
 #include <string>
+#include <string_view>
 
 #include "physics/core/format.h"
 #include "physics/core/validate.h"
@@ -37,16 +39,39 @@ bool inTable(Enum e, const std::vector<std::string>& names) {
 
 constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
-Status checkNonNegative(const char* field, Real value) { return checkRange(field, value, 0.0, kInfinity); }
-
-Status checkBelowOne(const char* field, Real value) {
-  if (isFinite(value) && value >= 0.0 && value < 1.0) return Status::success();
+// The checks of validate(): each is true when its value passes, else it sets *error to the message
+// (validate.h's, or the two below), built only then: every solve validates its options.
+[[gnu::noinline]] Status belowOneError(std::string_view field, Real value) {
   return Error{std::string(field) + ": must be in [0, 1), got " + formatExact(value)};
 }
-
-Status checkAtLeast(const char* field, long long value, long long lowest) {
-  if (value >= lowest) return Status::success();
+[[gnu::noinline]] Status atLeastError(std::string_view field, long long value, long long lowest) {
   return Error{std::string(field) + ": must be >= " + std::to_string(lowest) + ", got " + std::to_string(value)};
+}
+
+bool positive(std::string_view field, Real value, Status* error) {
+  if (std::isfinite(value) && value > 0.0) return true;
+  *error = positiveError(field, value);
+  return false;
+}
+bool nonNegative(std::string_view field, Real value, Status* error) {
+  if (std::isfinite(value) && value >= 0.0) return true;
+  *error = rangeError(field, value, 0.0, kInfinity);
+  return false;
+}
+bool belowOne(std::string_view field, Real value, Status* error) {
+  if (std::isfinite(value) && value >= 0.0 && value < 1.0) return true;
+  *error = belowOneError(field, value);
+  return false;
+}
+bool atLeast(std::string_view field, long long value, long long lowest, Status* error) {
+  if (value >= lowest) return true;
+  *error = atLeastError(field, value, lowest);
+  return false;
+}
+bool finite(std::string_view field, const Vec3& value, Status* error) {
+  if (isFinite(value)) return true;
+  *error = finiteError(field, value);
+  return false;
 }
 
 }  // namespace
@@ -87,28 +112,28 @@ const std::vector<std::string>& jacobianSourceNames() {
 }
 
 Status validate(const SolveOptions& o) {
-  // One check after the other, the first failure returned (every solve starts here: a valid set
-  // builds no message and no table of results).
+  // One check after the other, the first failure returned (every solve starts here: a passing check
+  // costs its comparisons and builds no message).
+  Status e;
   if (static_cast<size_t>(o.solver) >= kSolvers.size()) return Error{"options.solver: no such method"};
-  if (Status s = checkPositive("options.tolerance", o.tolerance); !s) return s;
-  if (Status s = checkPositive("options.angleTolerance", o.angleTolerance); !s) return s;
-  if (Status s = checkAtLeast("options.maxIterations", o.maxIterations, 1); !s) return s;
-  if (Status s = checkNonNegative("options.maxSeconds", o.maxSeconds); !s) return s;
-  if (Status s = checkAtLeast("options.stallIterations", o.stallIterations, 0); !s) return s;
-  if (Status s = checkBelowOne("options.stallRatio", o.stallRatio); !s) return s;
+  if (!positive("options.tolerance", o.tolerance, &e) || !positive("options.angleTolerance", o.angleTolerance, &e) ||
+      !atLeast("options.maxIterations", o.maxIterations, 1, &e) ||
+      !nonNegative("options.maxSeconds", o.maxSeconds, &e) ||
+      !atLeast("options.stallIterations", o.stallIterations, 0, &e) ||
+      !belowOne("options.stallRatio", o.stallRatio, &e))
+    return e;
   if (!inTable(o.limitMode, jacobianLimitModeNames())) return Error{"options.limitMode: no such mode"};
   if (!inTable(o.jacobian, jacobianSourceNames())) return Error{"options.jacobian: no such source"};
-  if (Status s = checkNonNegative("options.damping", o.damping); !s) return s;
-  if (Status s = checkBelowOne("options.singularCutoff", o.singularCutoff); !s) return s;
-  if (Status s = checkNonNegative("options.maxErrorStep", o.maxErrorStep); !s) return s;
-  if (Status s = checkNonNegative("options.maxJointStep", o.maxJointStep); !s) return s;
-  if (Status s = checkNonNegative("options.orientationScale", o.orientationScale); !s) return s;
-  if (Status s = checkFinite("options.polePoint", o.polePoint); !s) return s;
+  if (!nonNegative("options.damping", o.damping, &e) || !belowOne("options.singularCutoff", o.singularCutoff, &e) ||
+      !nonNegative("options.maxErrorStep", o.maxErrorStep, &e) ||
+      !nonNegative("options.maxJointStep", o.maxJointStep, &e) ||
+      !nonNegative("options.orientationScale", o.orientationScale, &e) || !finite("options.polePoint", o.polePoint, &e))
+    return e;
   if (!inTable(o.lineSearch, lineSearchNames())) return Error{"options.lineSearch: no such line search"};
-  if (Status s = checkPositive("options.gradientStep", o.gradientStep); !s) return s;
-  if (Status s = checkPositive("options.lineSearchMaxStep", o.lineSearchMaxStep); !s) return s;
-  if (Status s = checkAtLeast("options.lbfgsMemory", o.lbfgsMemory, 1); !s) return s;
-  if (Status s = checkAtLeast("options.restarts", o.restarts, 0); !s) return s;
+  if (!positive("options.gradientStep", o.gradientStep, &e) ||
+      !positive("options.lineSearchMaxStep", o.lineSearchMaxStep, &e) ||
+      !atLeast("options.lbfgsMemory", o.lbfgsMemory, 1, &e) || !atLeast("options.restarts", o.restarts, 0, &e))
+    return e;
   return Status::success();
 }
 

@@ -46,6 +46,18 @@ Quat localRotation(const Joint& joint, const Pose& p, int j, EulerHalfAngles* ha
 }
 }  // namespace
 
+void ContextStorage::clear() {
+  // frames, local and half keep their entries: refresh() rewrites every one of them first, and
+  // resizing from empty would initialise them only to be overwritten.
+  belowStart.clear();
+  belowList.clear();
+  active.clear();
+  insideCosHalf.clear();
+  eulerRanges.clear();
+  staleEuler.clear();
+  links.clear();
+}
+
 void Context::flushPose() {
   for (size_t j = 0; j < staleEuler.size(); ++j)
     if (staleEuler[j]) flushJoint(static_cast<int>(j));
@@ -85,12 +97,18 @@ bool Context::principalEulerInside(int j, const Quat& q) const {
 
 void Context::refresh() {
   if (links.size() != static_cast<size_t>(skeleton.jointCount())) {
-    links.clear();
-    links.reserve(skeleton.joints().size());
-    for (const Joint& joint : skeleton.joints()) {
+    // Field by field into place: a Link built aside and copied would be read back in 16-byte pieces
+    // just after being stored in smaller ones (a store-forwarding stall per joint).
+    links.resize(skeleton.joints().size());
+    for (size_t j = 0; j < links.size(); ++j) {
+      const Joint& joint = skeleton.joints()[j];
       const Quat& r = joint.restRotation;
-      links.push_back(Link{joint.parent, r.w == 1.0 && r.x == 0.0 && r.y == 0.0 && r.z == 0.0,
-                           joint.type == JointType::Prismatic, joint.offset, r});
+      Link& link = links[j];
+      link.parent = joint.parent;
+      link.identityRest = r.w == 1.0 && r.x == 0.0 && r.y == 0.0 && r.z == 0.0;
+      link.prismatic = joint.type == JointType::Prismatic;
+      link.offset = joint.offset;
+      link.rest = r;
     }
   }
   flushPose();
@@ -119,11 +137,9 @@ void Context::evaluate(const Pose& p, std::vector<Quat>& localOut, std::vector<E
 void Context::refreshFrames() {
   const int n = skeleton.jointCount();
   frames.resize(static_cast<size_t>(n));
-  Frame previous;  // chains (parent = j − 1) take the parent from this copy, not back from `frames`
   for (int j = 0; j < n; ++j) {
     const int parent = links[static_cast<size_t>(j)].parent;
-    previous = frameFrom(j, parent < 0 ? nullptr : parent == j - 1 ? &previous : &frames[static_cast<size_t>(parent)]);
-    frames[static_cast<size_t>(j)] = previous;
+    frames[static_cast<size_t>(j)] = frameFrom(j, parent < 0 ? nullptr : &frames[static_cast<size_t>(parent)]);
   }
 }
 
@@ -218,6 +234,22 @@ void randomizeActiveJoints(detail::Context& c, RestartRng& rng) {
   }
 }
 
+// What solve() keeps between the solves of a thread, so that a warm solve allocates nothing: the
+// Context's storage, the last method (reused for the same kind, Method::resetForReuse) and the
+// driver's lists. thread_local: solve() may run on several threads at once. A solve takes it out and
+// puts it back at the end, so that a solve inside a solve would find it empty and use its own.
+struct Workspace {
+  detail::ContextStorage storage;
+  std::unique_ptr<detail::Method> method;
+  SolverKind methodKind = SolverKind::Analytic;  // of `method`
+  std::vector<Vec3> points;                      // effector points of a method that defers the pose
+  std::vector<Real> progress;                    // combined residual per iteration (stall detection)
+};
+thread_local Workspace threadWorkspace;
+// Solves of larger skeletons keep nothing: their allocations are a small part of their cost, and a
+// thread would otherwise hold the storage of the largest skeleton it ever solved.
+constexpr int kKeptJoints = 64;
+
 std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string* why) {
   switch (c.options.solver) {
     case SolverKind::Analytic:
@@ -233,6 +265,18 @@ std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string
       return detail::makeJacobianMethod(c.options.solver);
   }
 }
+
+// Sets w.method to a method for c's options: the last one, returned to a fresh one's state, when it
+// is of that kind and can be (Method::resetForReuse); else a new one (null, with *why, when the
+// method does not apply).
+void prepareMethod(Workspace& w, const detail::Context& c, std::string* why) {
+  if (w.method && w.methodKind == c.options.solver && w.method->resetForReuse()) return;
+  w.method = makeMethod(c, why);
+  w.methodKind = c.options.solver;
+}
+
+using Clock = std::chrono::steady_clock;
+SolveResult solveIn(detail::Context& c, Workspace& w, Clock::time_point start);
 
 }  // namespace
 
@@ -250,15 +294,34 @@ Real resolvedOrientationScale(const Skeleton& skeleton, const std::vector<Effect
 }
 
 SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o) {
-  using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
-  SolveResult result;
   if (Status st = validateInputs(skeleton, pose, effectors, o); !st) {
+    SolveResult result;
     result.message = st.error();
     return result;
   }
   if (o.fromRest) pose = skeleton.restPose();
-  detail::Context c{skeleton, pose, effectors, o, {}, 1.0, 1.0, 1.0, {}, {}, {}, {}, {}, {}};
+  Workspace w = std::move(threadWorkspace);  // taken out, put back below (see Workspace)
+  w.storage.clear();
+  detail::Context c{std::move(w.storage), skeleton, pose, effectors, o};
+  SolveResult result = solveIn(c, w, start);
+  w.storage = std::move(static_cast<detail::ContextStorage&>(c));
+  // A method that cannot serve the next solve is not kept: its storage (a Jacobian's matrices) would
+  // stay allocated for nothing.
+  if (w.method && !w.method->resetForReuse()) w.method.reset();
+  if (skeleton.jointCount() <= kKeptJoints) threadWorkspace = std::move(w);
+  return result;
+}
+
+namespace {
+
+// solve() on its Context, with the storage of the workspace w.
+SolveResult solveIn(detail::Context& c, Workspace& w, Clock::time_point start) {
+  const Skeleton& skeleton = c.skeleton;
+  Pose& pose = c.pose;
+  const std::vector<Effector>& effectors = c.effectors;
+  const SolveOptions& o = c.options;
+  SolveResult result;
   c.refresh();
   c.meanBone = meanBoneLength(skeleton, effectors);
   c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
@@ -305,7 +368,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
   }
 
   std::string why;
-  std::unique_ptr<detail::Method> method = makeMethod(c, &why);
+  prepareMethod(w, c, &why);
+  const std::unique_ptr<detail::Method>& method = w.method;
   auto finish = [&](SolveStatus status) {
     if (method) method->finish(c);
     c.flushPose();
@@ -321,7 +385,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     return finish(SolveStatus::NotApplicable);
   }
   if (o.recordHistory) result.effectorPath.assign(effectors.size(), {});
-  std::vector<Vec3> points;  // effector points of a method that defers the pose
+  std::vector<Vec3>& points = w.points;
+  points.clear();
   auto effectorPoint = [&](size_t k) {
     return method->posesDeferred() ? points[k] : effectorPosition(effectors[k], c.frames);
   };
@@ -347,7 +412,8 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     c.flushPose();
   }
 
-  std::vector<Real> progress;  // combined residual per iteration for stall detection
+  std::vector<Real>& progress = w.progress;
+  progress.clear();
   progress.reserve(16);
   auto measure = [&]() {
     Residual r;
@@ -416,7 +482,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
       keepBest();
       randomizeActiveJoints(c, rng);
       c.refresh();
-      method = makeMethod(c, &why);
+      prepareMethod(w, c, &why);
       ++result.restarts;
       progress.clear();
       std::tie(r, score) = measure();
@@ -445,5 +511,7 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     progress.push_back(score);
   }
 }
+
+}  // namespace
 
 }  // namespace pba::ik

@@ -11,30 +11,14 @@
 
 namespace pba::ik::detail {
 
-/// Everything one solve works on. `frames` is kept up to date with `pose` by the driver after every
-/// iteration (methods that change the pose call refresh() before reading frames again).
-///
-/// `local` caches every joint's own rotation R_dof for `pose`, so that forward kinematics needs no
-/// trigonometry: a ball joint's R_dof from its Euler DOFs costs three sincos, the dominant cost of
-/// CCD and FABRIK on long chains before this cache. alignJoint() keeps `local` current for the
-/// joints it turns; methods that write pose.dofs directly (Jacobian, analytic) call refresh().
-struct Context {
-  const Skeleton& skeleton;
-  Pose& pose;
-  const std::vector<Effector>& effectors;
-  const SolveOptions& options;
+/// The per-joint storage of a Context (its base), kept between solves: solve() lends it out of a
+/// per-thread workspace and takes it back, so that a solve reuses the capacity of the last one and
+/// allocates nothing once warm. Each solve fills every member anew (from clear()).
+struct ContextStorage {
   std::vector<Frame> frames;
-  Real meanBone = 1.0;          ///< [m] mean distance between a joint and its parent (≥ 1e-6)
-  Real orientationScale = 1.0;  ///< [m/rad] resolved options.orientationScale
-  Real maxErrorStep = 1.0;      ///< [m] resolved options.maxErrorStep
   /// Per joint j: indices of the effectors in its subtree (j is an ancestor of the effector's joint),
   /// as belowList[belowStart[j] .. belowStart[j + 1]) — one allocation, not one per joint.
   std::vector<int> belowStart, belowList;
-  std::span<const int> effectorsBelow(int j) const {
-    const auto first = static_cast<size_t>(belowStart[static_cast<size_t>(j)]);
-    return std::span<const int>(belowList).subspan(first,
-                                                   static_cast<size_t>(belowStart[static_cast<size_t>(j) + 1]) - first);
-  }
   /// Per joint: true when it lies on the path from the root to some effector.
   std::vector<char> active;
   /// Per ball joint: cos(L/2) with L = min(π/2, the smallest |limit| of its three DOFs); 2 (never)
@@ -49,20 +33,7 @@ struct Context {
     Real cosHalf = 2.0;               ///< cos h; −2: every principal value is inside; 2: no test
   };
   std::vector<std::array<EulerRange, 3>> eulerRanges;
-  /// True when ball joint j's local rotation q is surely within its limits, so that clamping would
-  /// change nothing and no Euler angles are needed: a small rotation (the |q.w| test above), or
-  /// principal XYZ Euler angles that lie inside their ranges by a margin (principalEulerInside).
-  /// Conservative: false says nothing.
-  bool surelyWithinLimits(int j, const Quat& q) const {
-    return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)] || principalEulerInside(j, q);
-  }
-  /// The principal XYZ Euler angles of q (eulerXYZFromQuat: x = atan2(s, c) for each angle) lie
-  /// inside joint j's ranges by a margin, told without trigonometry: x ∈ [m − h, m + h] ⊆ [−π, π] ⇔
-  /// cos(x − m) ≥ cos h ⇔ c cos m + s sin m ≥ cos h · √(s² + c²); asked with a margin of 10⁻⁹ (the
-  /// entries are those of a rotation matrix, of order 1), so that a true answer is also eulerXYZFromQuat's
-  /// and eulerWithinLimits then returns these angles unchanged. solver.cpp.
-  bool principalEulerInside(int j, const Quat& q) const;
-  std::vector<Quat> local;  ///< R_dof per joint for `pose` (see above)
+  std::vector<Quat> local;  ///< R_dof per joint for `pose` (see Context)
   /// Per joint: the half angles refresh() computed for a ball joint's `local` (EulerHalfAngles; the
   /// Jacobian's axes reuse the entries whose angles still match the pose).
   std::vector<EulerHalfAngles> half;
@@ -80,6 +51,45 @@ struct Context {
     Quat rest;
   };
   std::vector<Link> links;  ///< filled by the first refresh()
+
+  /// The state of a new solve, keeping every member's capacity: empties them, but for frames, local
+  /// and half, which the solve's first refresh() rewrites entry by entry.
+  void clear();
+};
+
+/// Everything one solve works on. `frames` is kept up to date with `pose` by the driver after every
+/// iteration (methods that change the pose call refresh() before reading frames again).
+///
+/// `local` caches every joint's own rotation R_dof for `pose`, so that forward kinematics needs no
+/// trigonometry: a ball joint's R_dof from its Euler DOFs costs three sincos, the dominant cost of
+/// CCD and FABRIK on long chains before this cache. alignJoint() keeps `local` current for the
+/// joints it turns; methods that write pose.dofs directly (Jacobian, analytic) call refresh().
+struct Context : ContextStorage {
+  const Skeleton& skeleton;
+  Pose& pose;
+  const std::vector<Effector>& effectors;
+  const SolveOptions& options;
+  Real meanBone = 1.0;          ///< [m] mean distance between a joint and its parent (≥ 1e-6)
+  Real orientationScale = 1.0;  ///< [m/rad] resolved options.orientationScale
+  Real maxErrorStep = 1.0;      ///< [m] resolved options.maxErrorStep
+  std::span<const int> effectorsBelow(int j) const {
+    const auto first = static_cast<size_t>(belowStart[static_cast<size_t>(j)]);
+    return std::span<const int>(belowList).subspan(first,
+                                                   static_cast<size_t>(belowStart[static_cast<size_t>(j) + 1]) - first);
+  }
+  /// True when ball joint j's local rotation q is surely within its limits, so that clamping would
+  /// change nothing and no Euler angles are needed: a small rotation (|q.w| ≥ insideCosHalf), or
+  /// principal XYZ Euler angles that lie inside their ranges by a margin (principalEulerInside).
+  /// Conservative: false says nothing.
+  bool surelyWithinLimits(int j, const Quat& q) const {
+    return std::abs(q.w) >= insideCosHalf[static_cast<size_t>(j)] || principalEulerInside(j, q);
+  }
+  /// The principal XYZ Euler angles of q (eulerXYZFromQuat: x = atan2(s, c) for each angle) lie
+  /// inside joint j's ranges by a margin, told without trigonometry: x ∈ [m − h, m + h] ⊆ [−π, π] ⇔
+  /// cos(x − m) ≥ cos h ⇔ c cos m + s sin m ≥ cos h · √(s² + c²); asked with a margin of 10⁻⁹ (the
+  /// entries are those of a rotation matrix, of order 1), so that a true answer is also eulerXYZFromQuat's
+  /// and eulerWithinLimits then returns these angles unchanged. solver.cpp.
+  bool principalEulerInside(int j, const Quat& q) const;
 
   /// Writes the DOFs of every joint marked stale from `local` (see staleEuler).
   void flushPose();
@@ -156,6 +166,10 @@ class Method {
   virtual bool posesDeferred() const { return false; }
   virtual void effectorPoints(const Context& /*c*/, std::vector<Vec3>& /*points*/) const {}
   virtual void finish(Context& /*c*/) {}
+  /// For a new solve with the same kind of method: returns the method to the state of a freshly made
+  /// one (keeping the capacity of its storage) and true; false, the default, when it cannot, and the
+  /// driver makes a new one.
+  virtual bool resetForReuse() { return false; }
 };
 
 std::unique_ptr<Method> makeCcd();
@@ -251,8 +265,8 @@ Vec3 eulerWithinLimits(const Joint& joint, const Quat& q, bool* inside = nullptr
 
 /// Sets ball or free joint j's local rotation to `wanted`, clamped to its limits (IK-6) when
 /// clampLimits and a limit can act; keeps c.local[j] current (a ball joint's Euler angles are left
-/// to flushPose() when no clamp was needed). Returns the local rotation actually applied.
-Quat setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits);
+/// to flushPose() when no clamp was needed). Returns the local rotation actually applied (c.local[j]).
+const Quat& setJointRotation(Context& c, int j, const Quat& wanted, bool clampLimits);
 
 /// True when joint j's rotation limits admit every rotation (ball: Euler ranges cover [−π, π] ×
 /// [−π/2, π/2] × [−π, π]; free: maxRotation ≥ π), so clamping can never change it. Hinges,

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstdint>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -79,6 +80,41 @@ TEST(IkDeterminism, EverySolverGivesBitwiseIdenticalResultsForIdenticalInputs) {
         const SolveResult rs = solve(sk, randomStart, goals, o);
         expectIdentical(rr, restStart, rs, randomStart);
       }
+    }
+  }
+}
+
+// solve() keeps storage and the last FABRIK method between the solves of a thread (solver.cpp,
+// Workspace): a solve after solves of other skeletons, sizes and methods gives the bits of the same
+// solve on a fresh thread, which starts with nothing kept.
+TEST(IkDeterminism, ASolveAfterOtherSolvesEqualsOneOnAFreshThread) {
+  const Rig balls = chain(JointType::Ball), hinges = chain(JointType::Hinge, 30), hand = buildHand().value();
+  for (SolverKind kind : {SolverKind::Fabrik, SolverKind::Ccd, SolverKind::DampedLeastSquares}) {
+    SCOPED_TRACE(solverName(kind));
+    std::mt19937_64 rng(11);
+    for (const Rig* rig : {&balls, &hinges, &hand}) {
+      const Skeleton& sk = rig->skeleton;
+      std::vector<Effector> goals = rig->effectors;
+      setGoalsFromPose(sk, randomPose(sk, rng), goals);
+      const Pose start = randomPose(sk, rng);
+      SolveOptions o;
+      o.solver = kind;
+      Pose fresh = start;
+      SolveResult onFresh;
+      std::thread([&] { onFresh = solve(sk, fresh, goals, o); }).join();
+      // This thread has solved other problems (every rig, FABRIK and CCD) before this one.
+      for (const Rig* other : {&hand, &hinges, &balls})
+        for (SolverKind otherKind : {SolverKind::Fabrik, SolverKind::Ccd}) {
+          std::vector<Effector> otherGoals = other->effectors;
+          setGoalsFromPose(other->skeleton, randomPose(other->skeleton, rng), otherGoals);
+          Pose p = other->skeleton.restPose();
+          SolveOptions otherOptions;
+          otherOptions.solver = otherKind;
+          solve(other->skeleton, p, otherGoals, otherOptions);
+        }
+      Pose warm = start;
+      const SolveResult onWarm = solve(sk, warm, goals, o);
+      expectIdentical(onFresh, fresh, onWarm, warm);
     }
   }
 }
