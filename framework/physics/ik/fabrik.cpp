@@ -50,6 +50,7 @@
 
 #include "physics/exercises/not_implemented.h"
 #include "physics/ik/exercises.h"
+#include "physics/ik/fabrik_tree.h"
 #include "physics/ik/solver_internal.h"
 
 namespace pba::ik {
@@ -159,24 +160,7 @@ class Fabrik final : public Method {
   void build(const Context& c) {
     built_ = true;
     const int J = c.skeleton.jointCount(), E = static_cast<int>(c.effectors.size());
-    // Active children per joint in index order, as kidList_[kidStart_[j] .. kidStart_[j + 1]) (two
-    // allocations, not one per joint).
-    bucketLists(
-        static_cast<size_t>(J),
-        [&](auto visit) {
-          for (int j = 0; j < J; ++j) {
-            const int parent = c.skeleton.joint(j).parent;
-            if (c.active[static_cast<size_t>(j)] && parent >= 0) visit(static_cast<size_t>(parent), j);
-          }
-        },
-        kidStart_, kidList_);
-    // Effectors per joint, the same way: effList_[effStart_[j] .. effStart_[j + 1]).
-    bucketLists(
-        static_cast<size_t>(J),
-        [&](auto visit) {
-          for (int e = 0; e < E; ++e) visit(static_cast<size_t>(c.effectors[static_cast<size_t>(e)].joint), e);
-        },
-        effStart_, effList_);
+    tree_.build(c);
     target_.resize(static_cast<size_t>(E));
     for (int e = 0; e < E; ++e) target_[static_cast<size_t>(e)] = c.effectors[static_cast<size_t>(e)].targetPosition;
     // Points only: one chain from the root to a single position effector through ball or free joints
@@ -190,7 +174,6 @@ class Fabrik final : public Method {
       const bool rotates = joint.type == JointType::Ball || joint.type == JointType::Free;
       pointsOnly_ = rotates && (!c.options.enforceLimits || rotationUnlimited(joint));
     }
-    buildLookahead(c);
     hingeRanges(c.skeleton, hingeRange_);
     lever_.assign(static_cast<size_t>(J), -1.0);
     for (int j = 0; j < J; ++j)
@@ -223,7 +206,7 @@ class Fabrik final : public Method {
     from_.clear();
     to_.clear();
     w_.clear();
-    for (int e : effectorsOn(j)) {
+    for (int e : tree_.effectorsOn(j)) {
       const Effector& eff = c.effectors[static_cast<size_t>(e)];
       from_.push_back(eff.localOffset);
       to_.push_back(target_[static_cast<size_t>(e)]);
@@ -238,7 +221,7 @@ class Fabrik final : public Method {
         }
       }
     }
-    for (int k : kids(j)) {
+    for (int k : tree_.kids(j)) {
       from_.push_back(translationOf(c.skeleton.joint(k), c.pose));
       to_.push_back(P_[static_cast<size_t>(k)]);
       w_.push_back(1.0);
@@ -366,7 +349,7 @@ class Fabrik final : public Method {
         Pp = p;
         Rp = r;
       };
-      for (int e : effectorsOn(j)) {
+      for (int e : tree_.effectorsOn(j)) {
         const Effector& eff = c.effectors[static_cast<size_t>(e)];
         if (eff.kind == EffectorKind::PositionOrientation) {
           // The body onto the goal frame: exact, position and orientation.
@@ -376,7 +359,7 @@ class Fabrik final : public Method {
         propose(oldP, oldR, eff.localOffset, eff.targetPosition, &Pp, &Rp);
         add(Pp, Rp);
       }
-      for (int k : kids(j)) {
+      for (int k : tree_.kids(j)) {
         const Joint& kid = c.skeleton.joint(k);
         if (kid.type == JointType::Ball || kid.type == JointType::Free)
           propose(oldP, oldR, c.frames[static_cast<size_t>(k)].position, lever(c, k), P_[static_cast<size_t>(k)], &Pp,
@@ -478,14 +461,13 @@ class Fabrik final : public Method {
   // Look-ahead: a ball joint followed by hinges (a finger: ball knuckle, hinged phalanges) cannot be
   // turned by its child alone: one point leaves the twist about the bone free, and the hinges below
   // can then only bend in the wrong plane. Such joints also aim their deeper descendants (joints and
-  // effectors, buildLookahead) at their backward-pass places, in the fit; the descendants keep the
+  // effectors, FabrikTree) at their backward-pass places, in the fit; the descendants keep the
   // shape they have at the start of the pass (their places in c.frames, which forward() has not
   // reached yet).
   void turnBall(Context& c, int j, const Frame& f, bool clamp) {
     const int J = c.skeleton.jointCount();
     const Quat& reference = R_[static_cast<size_t>(j)];
-    if (!deeper_.empty() && !deeper_[static_cast<size_t>(j)].empty()) {
-      const std::vector<int>& deeper = deeper_[static_cast<size_t>(j)];
+    if (const std::span<const int> deeper = tree_.deeper(j); !deeper.empty()) {
       const Frame& old = c.frames[static_cast<size_t>(j)];
       const Quat oldInverse = glm::conjugate(old.rotation);
       for (int n : deeper) {
@@ -494,7 +476,7 @@ class Fabrik final : public Method {
                                   : c.frames[static_cast<size_t>(n)].position;
         from_.push_back(oldInverse * (now - old.position));
         to_.push_back(effector ? target_[static_cast<size_t>(n - J)] : P_[static_cast<size_t>(n)]);
-        w_.push_back(lookaheadWeight_[static_cast<size_t>(j)]);
+        w_.push_back(tree_.lookaheadWeight(j));
       }
     }
     Quat wanted;
@@ -530,10 +512,8 @@ class Fabrik final : public Method {
   // the body's frame (*from), its backward-pass place (*to) and |from|. What bodyPoints() would give,
   // without its lists.
   bool onePoint(const Context& c, int j, Vec3* from, Vec3* to, Real* length) const {
-    const std::span<const int> effectors = effectorsOn(j), children = kids(j);
-    if (effectors.size() + children.size() != 1 || c.options.fabrikLimitFit ||
-        (!deeper_.empty() && !deeper_[static_cast<size_t>(j)].empty()))
-      return false;
+    const std::span<const int> effectors = tree_.effectorsOn(j), children = tree_.kids(j);
+    if (effectors.size() + children.size() != 1 || c.options.fabrikLimitFit || !tree_.deeper(j).empty()) return false;
     if (!effectors.empty()) {
       const Effector& eff = c.effectors[static_cast<size_t>(effectors[0])];
       if (eff.kind != EffectorKind::Position) return false;
@@ -548,72 +528,16 @@ class Fabrik final : public Method {
     return true;
   }
 
-  // The look-ahead of forward(): a ball or free joint with hinges or prismatic joints within
-  // kLookahead levels below it also aims its deeper descendants (joints and effectors; node J + e is
-  // effector e). With weight 1 when such a joint is its child (a finger's ball knuckle: it alone
-  // sets the plane the hinges bend in), else kFarLookaheadWeight (a wrist: the points only break
-  // the tie of its twist; at full weight the fit would turn the whole hand to lay straight fingers
-  // onto bent goals).
-  void buildLookahead(const Context& c) {
-    const int J = c.skeleton.jointCount();
-    deeper_.clear();
-    // No active hinge or prismatic joint (a chain of ball joints): no look-ahead anywhere, and no
-    // per-joint lists to build (they cost more than a pass on a long chain); deeper_ stays empty.
-    bool anyOneDof = false;
-    for (int j = 0; j < J && !anyOneDof; ++j) {
-      const JointType t = c.skeleton.joint(j).type;
-      anyOneDof = c.active[static_cast<size_t>(j)] && (t == JointType::Hinge || t == JointType::Prismatic);
-    }
-    if (!anyOneDof) return;
-    deeper_.assign(static_cast<size_t>(J), {});
-    lookaheadWeight_.assign(static_cast<size_t>(J), kFarLookaheadWeight);
-    for (int j = 0; j < J; ++j) {
-      const JointType type = c.skeleton.joint(j).type;
-      if (!c.active[static_cast<size_t>(j)] || (type != JointType::Ball && type != JointType::Free)) continue;
-      std::vector<int> level(kids(j).begin(), kids(j).end()), found;
-      bool hinged = false;
-      for (int depth = 2; depth <= kLookahead; ++depth) {
-        std::vector<int> next;
-        for (int n : level) {
-          const JointType t = c.skeleton.joint(n).type;
-          const bool oneDof = t == JointType::Hinge || t == JointType::Prismatic;
-          hinged = hinged || oneDof;
-          if (depth == 2 && oneDof) lookaheadWeight_[static_cast<size_t>(j)] = 1.0;  // a child
-          for (int e : effectorsOn(n)) found.push_back(J + e);
-          for (int k : kids(n)) next.push_back(k);
-        }
-        found.insert(found.end(), next.begin(), next.end());
-        level = std::move(next);
-      }
-      if (hinged) deeper_[static_cast<size_t>(j)] = std::move(found);
-    }
-  }
-  static constexpr int kLookahead = 3;
-  static constexpr Real kFarLookaheadWeight = 0.1;
-
   bool built_ = false, pointsOnly_ = false, pointsLoaded_ = false;
-  std::span<const int> kids(int j) const {  // joint j's active children
-    const auto first = static_cast<size_t>(kidStart_[static_cast<size_t>(j)]);
-    return std::span<const int>(kidList_).subspan(first,
-                                                  static_cast<size_t>(kidStart_[static_cast<size_t>(j) + 1]) - first);
-  }
-  std::vector<int> kidStart_, kidList_;            // active children per joint (see kids())
-  std::span<const int> effectorsOn(int j) const {  // the effectors on joint j, in index order
-    const auto first = static_cast<size_t>(effStart_[static_cast<size_t>(j)]);
-    return std::span<const int>(effList_).subspan(first,
-                                                  static_cast<size_t>(effStart_[static_cast<size_t>(j) + 1]) - first);
-  }
-  std::vector<int> effStart_, effList_;   // effectors per joint (see effectorsOn())
-  std::vector<Real> lookaheadWeight_;     // per joint: weight of its look-ahead points
-  std::vector<std::vector<int>> deeper_;  // per joint: look-ahead nodes (see buildLookahead); or empty
-  std::vector<int> chain_;                // points only: the joints from the root
-  std::vector<char> limited_;             // per joint: !rotationUnlimited()
-  std::vector<Real> lever_;               // per joint: |offset|, −1 for prismatic joints (see lever())
-  std::vector<HingeRange> hingeRange_;    // per joint (hingeRanges)
-  std::vector<Vec3> P_;                   // per joint: body pivot after the backward pass
-  std::vector<Quat> R_;                   // per joint: body rotation after the backward pass
-  std::vector<Vec3> target_;              // per effector: where the forward pass aims it
-  DeferredTurns turns_;                   // fabrikHingeTwist's turns, applied when the pass ends
+  FabrikTree tree_;                     // active children, effectors and look-ahead per joint
+  std::vector<int> chain_;              // points only: the joints from the root
+  std::vector<char> limited_;           // per joint: !rotationUnlimited()
+  std::vector<Real> lever_;             // per joint: |offset|, −1 for prismatic joints (see lever())
+  std::vector<HingeRange> hingeRange_;  // per joint (hingeRanges)
+  std::vector<Vec3> P_;                 // per joint: body pivot after the backward pass
+  std::vector<Quat> R_;                 // per joint: body rotation after the backward pass
+  std::vector<Vec3> target_;            // per effector: where the forward pass aims it
+  DeferredTurns turns_;                 // fabrikHingeTwist's turns, applied when the pass ends
   std::vector<Vec3> pts_, two_, from_, to_, goals_, moved_;
   std::vector<Real> lens_, one_, w_;
   Vec3 base_{0.0};
