@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "physics/core/format.h"
 #include "physics/core/validate.h"
@@ -39,8 +40,9 @@ bool inTable(Enum e, const std::vector<std::string>& names) {
 
 constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
-// The checks of validate(): each is true when its value passes, else it sets *error to the message
-// (validate.h's, or the two below), built only then: every solve validates its options.
+// The checks of validate(): each is true when its value passes, else it sets *error to the message,
+// which is built only then (every solve validates its options). validate.h's checks where they exist;
+// the two messages of its own below.
 [[gnu::noinline]] Status belowOneError(std::string_view field, Real value) {
   return Error{std::string(field) + ": must be in [0, 1), got " + formatExact(value)};
 }
@@ -48,15 +50,17 @@ constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
   return Error{std::string(field) + ": must be >= " + std::to_string(lowest) + ", got " + std::to_string(value)};
 }
 
-bool positive(std::string_view field, Real value, Status* error) {
-  if (std::isfinite(value) && value > 0.0) return true;
-  *error = positiveError(field, value);
+bool passes(Status status, Status* error) {
+  if (status) return true;
+  *error = std::move(status);
   return false;
 }
+bool positive(std::string_view field, Real value, Status* error) { return passes(checkPositive(field, value), error); }
 bool nonNegative(std::string_view field, Real value, Status* error) {
-  if (std::isfinite(value) && value >= 0.0) return true;
-  *error = rangeError(field, value, 0.0, kInfinity);
-  return false;
+  return passes(checkRange(field, value, 0.0, kInfinity), error);
+}
+bool finite(std::string_view field, const Vec3& value, Status* error) {
+  return passes(checkFinite(field, value), error);
 }
 bool belowOne(std::string_view field, Real value, Status* error) {
   if (std::isfinite(value) && value >= 0.0 && value < 1.0) return true;
@@ -66,11 +70,6 @@ bool belowOne(std::string_view field, Real value, Status* error) {
 bool atLeast(std::string_view field, long long value, long long lowest, Status* error) {
   if (value >= lowest) return true;
   *error = atLeastError(field, value, lowest);
-  return false;
-}
-bool finite(std::string_view field, const Vec3& value, Status* error) {
-  if (isFinite(value)) return true;
-  *error = finiteError(field, value);
   return false;
 }
 
