@@ -128,7 +128,8 @@ class JacobianMethod final : public Method {
     const Svd& d = svd_;
     const int n = J.cols;
     // ρⱼ = Σₖ |J_kj| (3-row blocks: each effector's position, and orientation, rows).
-    std::vector<Real> rho(static_cast<size_t>(n), 0.0);
+    std::vector<Real>& rho = rho_;
+    rho.assign(static_cast<size_t>(n), 0.0);
     for (int r = 0; r + 2 < J.rows; r += 3)
       for (int col = 0; col < n; ++col)
         rho[static_cast<size_t>(col)] += glm::length(Vec3(J(r, col), J(r + 1, col), J(r + 2, col)));
@@ -142,8 +143,10 @@ class JacobianMethod final : public Method {
       for (int col = 0; col < n; ++col) M += std::abs(d.v[i][static_cast<size_t>(col)]) * rho[static_cast<size_t>(col)];
       M /= d.sigma[i];
       const Real gamma = (M > N ? N / M : 1.0) * kSdlsGammaMax;
-      std::vector<Real> phi(d.v[i]);
-      for (Real& x : phi) x *= alpha / d.sigma[i];
+      std::vector<Real>& phi = phi_;
+      phi = d.v[i];
+      const Real scale = alpha / d.sigma[i];  // once, not per entry (phi's stores could alias sigma)
+      for (Real& x : phi) x *= scale;
       clampMaxAbs(phi, gamma);
       for (int col = 0; col < n; ++col) total[static_cast<size_t>(col)] += phi[static_cast<size_t>(col)];
     }
@@ -197,6 +200,8 @@ class JacobianMethod final : public Method {
   SolverKind kind_;
   LeastSquaresSystem sys_;  // J, r and the layout of the current step, storage kept across steps
   TrialFrames scratch_;
+  mutable std::vector<Real> rho_;      // SDLS: ρⱼ, the motion of the effectors per unit of DOF j
+  mutable std::vector<Real> phi_;      // SDLS: one singular direction's clamped step
   mutable Svd svd_;                    // pinv and SDLS: the decomposition of the step, storage kept
   mutable SvdWorkspace svdWorkspace_;  // across steps
 };

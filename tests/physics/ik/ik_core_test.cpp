@@ -7,6 +7,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <Eigen/SVD>
 
 #include "physics/ik/analytic.h"
 #include "physics/ik/builders.h"
@@ -126,6 +127,62 @@ TEST(IkLinalg, SvdReconstructsAWideMatrixWithOrthonormalFactors) {
   for (size_t i = 0; i < 6; ++i)
     for (size_t k = 0; k < 6; ++k) EXPECT_NEAR(dot(d.v[i], d.v[k]), i == k ? 1.0 : 0.0, 1e-12);
   for (size_t i = 1; i < 6; ++i) EXPECT_GE(d.sigma[i - 1], d.sigma[i]);
+}
+
+// The one-sided Jacobi SVD of wide matrices against Eigen's two-sided JacobiSVD (the reference): the
+// same singular values to 1e-13 relative to σ_max, at IK's shapes (3 or 6 rows, up to 3,000 columns),
+// at scales 1e-6 to 1e6, with a dependent, a zero or a negligible row (σ exactly 0, no floating-point trap);
+// orthonormal u and v; and J rebuilt from the factors.
+TEST(IkLinalg, WideSvdMatchesEigensSingularValuesWithOrthonormalFactors) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  const int shapes[][2] = {{3, 3}, {3, 4}, {3, 30}, {6, 30}, {3, 300}, {6, 3000}, {9, 12}};
+  for (const auto& shape : shapes) {
+    for (const Real scale : {1e-6, 1.0, 1e6}) {
+      // Full rank; row 1 = 2 × row 0; the last row zero; the last row 1e-160 of the others (its σ under
+      // the rank threshold, and a rotation against it would square a ratio of 1e160).
+      for (const int mode : {0, 1, 2, 3}) {
+        const bool deficient = mode != 0;
+        Matrix J(shape[0], shape[1]);
+        for (Real& x : J.data) x = scale * u(rng);
+        for (int c = 0; c < J.cols; ++c) {
+          if (mode == 1) J(1, c) = 2.0 * J(0, c);
+          if (mode == 2) J(J.rows - 1, c) = 0.0;
+          if (mode == 3) J(J.rows - 1, c) *= 1e-160;
+        }
+        const std::string what = std::to_string(J.rows) + "x" + std::to_string(J.cols) + " scale " +
+                                 std::to_string(scale) + " mode " + std::to_string(mode);
+        Eigen::MatrixXd E(J.rows, J.cols);
+        for (int r = 0; r < J.rows; ++r)
+          for (int c = 0; c < J.cols; ++c) E(r, c) = J(r, c);
+        const Eigen::VectorXd reference = Eigen::JacobiSVD<Eigen::MatrixXd>(E).singularValues();
+        const Svd d = svd(J);
+        ASSERT_EQ(d.sigma.size(), static_cast<size_t>(J.rows)) << what;
+        const Real sigmaMax = reference(0);
+        for (size_t i = 0; i < d.sigma.size(); ++i) {
+          EXPECT_NEAR(d.sigma[i], reference(static_cast<Eigen::Index>(i)), 1e-13 * sigmaMax) << what << " σ" << i;
+          EXPECT_NEAR(dot(d.u[i], d.u[i]), 1.0, 1e-13) << what;
+          for (size_t k = 0; k < i; ++k) {
+            EXPECT_NEAR(dot(d.u[i], d.u[k]), 0.0, 1e-13) << what;
+            if (!d.v[i].empty() && !d.v[k].empty()) {
+              EXPECT_NEAR(dot(d.v[i], d.v[k]), 0.0, 1e-12) << what;
+            }
+          }
+          if (!d.v[i].empty()) {
+            EXPECT_NEAR(dot(d.v[i], d.v[i]), 1.0, 1e-12) << what;
+          }
+        }
+        EXPECT_EQ(d.sigma.back() == 0.0, deficient) << what;
+        for (int r = 0; r < J.rows; ++r)
+          for (int c = 0; c < J.cols; c += 7) {
+            Real sum = 0.0;
+            for (size_t i = 0; i < d.sigma.size(); ++i)
+              if (!d.v[i].empty()) sum += d.sigma[i] * d.u[i][static_cast<size_t>(r)] * d.v[i][static_cast<size_t>(c)];
+            EXPECT_NEAR(sum, J(r, c), 1e-12 * sigmaMax) << what;
+          }
+      }
+    }
+  }
 }
 
 TEST(IkLinalg, SvdOfARankDeficientMatrixReportsZeroSingularValues) {
