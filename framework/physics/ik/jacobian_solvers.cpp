@@ -81,7 +81,8 @@ class JacobianMethod final : public Method {
       return;
     }
     // As published: take the step.
-    for (Real& x : delta) x *= alpha;
+    if (alpha != 1.0)  // (a product by 1 is exact: skipping it changes nothing)
+      for (Real& x : delta) x *= alpha;
     applyStep(c.skeleton, c.pose, c.frames, sys.layout, delta);
     projectOntoLimits(c);
   }

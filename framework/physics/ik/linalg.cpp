@@ -161,7 +161,7 @@ void rotateRows(std::vector<Real>& w, const std::vector<Real>& rotation, int k, 
 
 /// B ← B R for the plane rotation R of (p, r): column p ← c·p − s·r, column r ← s·p + c·r.
 template <int K>
-void rotateColumns(std::vector<Real>& b, int k, int p, int r, Real c, Real s) {
+[[gnu::always_inline]] inline void rotateColumns(std::vector<Real>& b, int k, int p, int r, Real c, Real s) {
   if constexpr (K > 0) k = K;
 #pragma GCC unroll 8
   for (int i = 0; i < k; ++i) {
