@@ -147,13 +147,18 @@ struct ImplicitEulerStats {
   Real relativeResidual = 0.0;  ///< |b − A Δv| / |b| of the returned Δv (recomputed, not CG's recursive estimate)
   bool converged = true;        ///< relativeResidual ≤ tolerance; false when the cap stopped CG first
   bool blockPreconditioner = false;  ///< the system gave its Jacobian's diagonal blocks (else mass Jacobi)
+  /// An uncoupled system (SecondOrderSystem::uncoupledGroupSize()): each block solved directly, no CG
+  /// (iterations 0; relativeResidual 0: a direct solve's residual is rounding, not computed).
+  bool direct = false;
 };
 /// Linearised backward Euler (Baraff & Witkin 1998, eq. 16–18): solve
 ///   (M − h ∂f/∂v − h² ∂f/∂q) Δv = h (f₀ + h (∂f/∂q) v₀),   v ← v₀ + Δv,  q ← q₀ + h v,
 /// by preconditioned conjugate gradients, matrix-free through forceDifferential(). The preconditioner is
 /// block Jacobi: the inverse of A's 3×3 diagonal blocks M_i − h D_ii − h² K_ii, from the system's
 /// forceJacobianDiagonalBlocks() (the mass alone, M⁻¹, when it has none). Pinned coordinates (M⁻¹ = 0)
-/// are filtered out of the solve (Baraff & Witkin §5.3, the S projection): their Δv is 0.
+/// are filtered out of the solve (Baraff & Witkin §5.3, the S projection): their Δv is 0. An uncoupled
+/// system (SecondOrderSystem::uncoupledGroupSize() 1 or 3) has a block-diagonal A: each block is solved
+/// directly instead, in one pass (stats.direct).
 /// The settings must be valid (validate()); Integrator checks them when they are set.
 ImplicitEulerStats implicitEulerStep(SecondOrderSystem& system, Real h, const ImplicitEulerSettings& settings,
                                      Workspace& w);

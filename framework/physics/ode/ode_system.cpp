@@ -46,6 +46,14 @@ void SecondOrderSystem::derivative(Real t, std::span<const Real> state, std::spa
   acceleration(t, state.first(n), state.subspan(n), out.subspan(n));
 }
 
+void SecondOrderSystem::uncoupledForce(Real, std::span<const Real>, std::span<const Real>, std::size_t,
+                                       std::span<Real> f, std::span<Real> dfdq, std::span<Real> dfdv) const {
+  assert(uncoupledGroupSize() == 0 && "an uncoupled system overrides uncoupledForce()");
+  std::fill(f.begin(), f.end(), 0.0);
+  std::fill(dfdq.begin(), dfdq.end(), 0.0);
+  std::fill(dfdv.begin(), dfdv.end(), 0.0);
+}
+
 void SecondOrderSystem::forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v,
                                           std::span<const Real> dq, std::span<const Real> dv,
                                           std::span<Real> out) const {

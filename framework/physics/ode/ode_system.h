@@ -75,6 +75,21 @@ class SecondOrderSystem : public OdeSystem {
                                            std::span<Mat3> /*dfdq*/, std::span<Mat3> /*dfdv*/) const {
     return false;
   }
+  /// The size g of the groups of coordinates the force keeps apart, when it couples no coordinate with one
+  /// outside its group (f of a group depends on t and that group's q and v alone): 1 for independent
+  /// coordinates (the oscillators), 3 for particles under fields and drag without springs; 0 (the
+  /// default) for a coupled system. Only 1 and 3 are supported. Then ∂f/∂q and ∂f/∂v are block diagonal
+  /// and so is implicit Euler's matrix: it solves each g × g block directly (uncoupledForce) instead of
+  /// running conjugate gradients.
+  virtual int uncoupledGroupSize() const { return 0; }
+  /// For an uncoupled system (uncoupledGroupSize() = g > 0): the force and the diagonal blocks of its
+  /// Jacobians for the coordinates first … first + f.size() − 1 (first and f.size() multiples of g),
+  /// read from the whole q and v: f (one value per coordinate), dfdq and dfdv (g × g per group,
+  /// row-major: entry (r, c) of group b at b·g² + r·g + c). They must be the force() and the blocks that
+  /// forceDifferential() applies, so that the direct solve and conjugate gradients solve one system.
+  /// The default (never called for a coupled system) writes zeros.
+  virtual void uncoupledForce(Real t, std::span<const Real> q, std::span<const Real> v, std::size_t first,
+                              std::span<Real> f, std::span<Real> dfdq, std::span<Real> dfdv) const;
   /// Called by an integrator after it changed positions and velocities (e.g. to refresh caches).
   virtual void stateChanged() {}
 

@@ -43,6 +43,16 @@ void HarmonicOscillator::forceDifferential(Real, std::span<const Real>, std::spa
   for (std::size_t i = 0; i < dq.size(); ++i) out[i] = -desc_.stiffness * dq[i];  // K = −k I, D = 0
 }
 
+void HarmonicOscillator::uncoupledForce(Real, std::span<const Real> q, std::span<const Real>, std::size_t first,
+                                        std::span<Real> f, std::span<Real> dfdq, std::span<Real> dfdv) const {
+  const Real k = desc_.stiffness;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    f[i] = -k * q[first + i];
+    dfdq[i] = -k;
+    dfdv[i] = 0.0;
+  }
+}
+
 KeplerOrbit::KeplerOrbit(const OrbitDesc& d)
     : OwnedStateSystem({d.position.x, d.position.y, d.position.z}, {d.velocity.x, d.velocity.y, d.velocity.z},
                        std::vector<Real>(3, 1.0 / d.planetMass)),

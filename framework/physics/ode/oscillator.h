@@ -39,6 +39,10 @@ class HarmonicOscillator final : public OwnedStateSystem {
   void acceleration(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
   void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
                          std::span<const Real> dv, std::span<Real> out) const override;
+  /// The copies are independent: f_i = −k q_i, ∂f_i/∂q_i = −k, ∂f_i/∂v_i = 0.
+  int uncoupledGroupSize() const override { return 1; }
+  void uncoupledForce(Real t, std::span<const Real> q, std::span<const Real> v, std::size_t first, std::span<Real> f,
+                      std::span<Real> dfdq, std::span<Real> dfdv) const override;
 
  private:
   OscillatorDesc desc_;

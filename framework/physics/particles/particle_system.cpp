@@ -1,6 +1,7 @@
 #include "physics/particles/particle_system.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 
 namespace pba::particles {
@@ -45,6 +46,35 @@ bool ParticleSystem::forceJacobianDiagonalBlocks(Real t, std::span<const Real> q
   springs::accumulateSpringJacobianDiagonal(springs, asVec3(q), dfdq, dfdv);
   accumulateDragJacobianDiagonal(forces, t, asVec3(q), asVec3(v), particles.inverseMass, dfdv);
   return true;
+}
+
+void ParticleSystem::uncoupledForce(Real t, std::span<const Real> q, std::span<const Real> v, std::size_t first,
+                                    std::span<Real> f, std::span<Real> dfdq, std::span<Real> dfdv) const {
+  assert(springs.empty() && first % 3 == 0 && f.size() % 3 == 0);
+  const std::size_t p0 = first / 3, count = f.size() / 3;
+  const std::span<const Vec3> x = asVec3(q).subspan(p0, count), vel = asVec3(v).subspan(p0, count);
+  const std::span<const Real> w = std::span<const Real>(particles.inverseMass).subspan(p0, count);
+  const std::span<Vec3> force = asVec3(f);
+  std::fill(f.begin(), f.end(), 0.0);
+  accumulateFieldForces(forces, t, x, vel, w, force);
+  std::fill(dfdq.begin(), dfdq.end(), 0.0);
+  std::fill(dfdv.begin(), dfdv.end(), 0.0);
+  constexpr std::size_t kBatch = 64;  // drag blocks made a batch at a time on the stack
+  std::array<Mat3, kBatch> blocks;
+  for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
+    const std::size_t n = std::min(kBatch, count - b0);
+    const std::span<Mat3> part = std::span<Mat3>(blocks).first(n);
+    std::fill(part.begin(), part.end(), Mat3(0.0));
+    accumulateDragJacobianDiagonal(forces, t, x.subspan(b0, n), vel.subspan(b0, n), w.subspan(b0, n), part);
+    for (std::size_t i = 0; i < n; ++i) {
+      Real* out = dfdv.data() + 9 * (b0 + i);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) out[3 * r + c] = part[i][c][r];  // glm: [column][row]
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    if (w[i] <= 0.0) force[i] = Vec3(0.0);
+  }
 }
 
 }  // namespace pba::particles

@@ -39,6 +39,12 @@ class ParticleSystem final : public ode::SecondOrderSystem {
   /// ∂f/∂x is left out of the differential too).
   bool forceJacobianDiagonalBlocks(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Mat3> dfdq,
                                    std::span<Mat3> dfdv) const override;
+  /// Without springs the particles are uncoupled (groups of 3: fields and drag act on each particle alone),
+  /// and implicit Euler solves each particle's 3 × 3 system directly.
+  int uncoupledGroupSize() const override { return springs.empty() ? 3 : 0; }
+  /// f, and the blocks of forceJacobianDiagonalBlocks() (∂f/∂q = 0: the position fields are left explicit).
+  void uncoupledForce(Real t, std::span<const Real> q, std::span<const Real> v, std::size_t first, std::span<Real> f,
+                      std::span<Real> dfdq, std::span<Real> dfdv) const override;
 
  private:
   std::vector<Real> dofInverseMass_;

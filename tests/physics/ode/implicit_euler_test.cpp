@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "physics/ode/integrators.h"
+#include "physics/ode/oscillator.h"
 #include "physics/particles/particle_system.h"
 #include "physics/springs/builders.h"
 #include "support/expect_helpers.h"
@@ -96,6 +97,7 @@ TEST(ImplicitEuler, TheConjugateGradientSolutionMatchesADenseDirectSolveOnThirty
   integrator.step(sys, h);
   const ImplicitEulerStats& stats = integrator.lastImplicitStats();
   EXPECT_TRUE(stats.converged);
+  EXPECT_FALSE(stats.direct);  // springs couple the particles
   EXPECT_TRUE(stats.blockPreconditioner);
   EXPECT_LE(stats.relativeResidual, 1e-12);
   EXPECT_LE(stats.iterations, 30);  // CG is exact in n steps (in exact arithmetic)
@@ -112,6 +114,74 @@ TEST(ImplicitEuler, TheConjugateGradientSolutionMatchesADenseDirectSolveOnThirty
     EXPECT_NEAR(sys.positions()[i], q0[i] + h * v0[i], 1e-15);
   }
   EXPECT_EQ(sys.time(), h);
+}
+
+// Without springs the particles are uncoupled: implicit Euler solves each particle's 3 × 3 block directly.
+// Its step against Eigen's dense solve of the whole system, assembled from force() and forceDifferential()
+// (not from the blocks the direct path reads): 200 particles, so the pass runs over several blocks and a
+// partial last one, with every field and quadratic drag (whose blocks are full 3 × 3) and a pinned particle.
+TEST(ImplicitEuler, AnUncoupledParticleSystemIsSolvedDirectlyAndMatchesADenseSolve) {
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  particles::ParticleSystem sys;
+  for (int i = 0; i < 200; ++i) {
+    sys.particles.add(Vec3(u(rng), 1.0 + u(rng), u(rng)), Vec3(3.0 * u(rng), 3.0 * u(rng), 3.0 * u(rng)),
+                      i == 7 ? 0.0 : 0.05 * (1.5 + u(rng)));
+  }
+  sys.forces.drag.linear = 0.05;
+  sys.forces.drag.quadratic = 0.03;
+  sys.forces.wind.base = Vec3(2.0, 0.0, 1.0);
+  sys.forces.wind.gust = 0.5;
+  sys.forces.attractors.push_back({Vec3(0.0, 1.0, 0.0), 0.3, 0.2});
+  sys.forces.vortices.push_back({Vec3(0.0), Vec3(0.0, 1.0, 0.0), 0.5, 0.3});
+  sys.syncMasses();
+  ASSERT_EQ(sys.uncoupledGroupSize(), 3);
+  const Real h = 1.0 / 30.0;
+  const DenseStep dense = assemble(sys, h);
+  const Eigen::VectorXd expected = dense.A.partialPivLu().solve(dense.b);
+  const std::vector<Real> q0(sys.positions().begin(), sys.positions().end());
+  const std::vector<Real> v0(sys.velocities().begin(), sys.velocities().end());
+  Integrator integrator(IntegratorKind::ImplicitEuler);
+  integrator.step(sys, h);
+  const ImplicitEulerStats& stats = integrator.lastImplicitStats();
+  EXPECT_TRUE(stats.direct);
+  EXPECT_EQ(stats.iterations, 0);
+  for (std::size_t r = 0; r < dense.free.size(); ++r) {
+    const std::size_t i = dense.free[r];
+    const Real want = expected(static_cast<Eigen::Index>(r));
+    EXPECT_NEAR(sys.velocities()[i] - v0[i], want, 1e-13 * (1.0 + std::abs(want))) << "coordinate " << i;
+    EXPECT_NEAR(sys.positions()[i], q0[i] + h * sys.velocities()[i], 1e-14) << "coordinate " << i;
+  }
+  for (std::size_t i = 21; i < 24; ++i) {  // particle 7, pinned: Δv = 0
+    EXPECT_EQ(sys.velocities()[i], v0[i]);
+    EXPECT_NEAR(sys.positions()[i], q0[i] + h * v0[i], 1e-15);
+  }
+  EXPECT_EQ(sys.time(), h);
+}
+
+// The oscillators are independent coordinates: one step is backward Euler's closed form for ẍ = −ω² x,
+// v₁ = (v₀ − h ω² x₀)/(1 + h² ω²), x₁ = x₀ + h v₁.
+TEST(ImplicitEuler, TheIndependentOscillatorsStepIsTheClosedFormOfBackwardEuler) {
+  OscillatorDesc d;
+  d.mass = 0.5;
+  d.stiffness = 8.0;
+  d.x0 = 0.7;
+  d.v0 = -1.3;
+  d.copies = 401;  // a partial last block
+  HarmonicOscillator osc(d);
+  const Real h = 0.05, w2 = d.stiffness / d.mass;
+  Integrator integrator(IntegratorKind::ImplicitEuler);
+  Real x = d.x0, v = d.v0;
+  for (int step = 0; step < 20; ++step) {
+    integrator.step(osc, h);
+    v = (v - h * w2 * x) / (1.0 + h * h * w2);
+    x += h * v;
+  }
+  EXPECT_TRUE(integrator.lastImplicitStats().direct);
+  for (std::size_t i = 0; i < osc.dofCount(); i += 100) {
+    EXPECT_NEAR(osc.positions()[i], x, 1e-14) << i;
+    EXPECT_NEAR(osc.velocities()[i], v, 1e-14) << i;
+  }
 }
 
 TEST(ImplicitEuler, OneSpringStepEqualsTheClosedFormSolutionOfItsLinearSystem) {
