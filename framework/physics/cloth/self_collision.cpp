@@ -99,7 +99,10 @@ void SelfCollision::buildFramePairs() {
   }
 }
 
-void SelfCollision::buildNearList(std::span<const Vec3> x) {
+// flatten: the grid's walk and the candidate test below are inlined into one loop nest (the walk called
+// the test once per run of entries, 5 runs a particle: a seventh of the build's instructions were those
+// calls).
+[[gnu::flatten]] void SelfCollision::buildNearList(std::span<const Vec3> x) {
   const Real near = thickness_ + skin_;
   const Real near2 = near * near;
   near_.clear();
@@ -113,21 +116,27 @@ void SelfCollision::buildNearList(std::span<const Vec3> x) {
   const std::uint32_t* particle = narrow_.particle.data();
   // Most candidates are neighbours in a flat stretch of cloth, or not close: whether one is kept is
   // unpredictable, so every candidate is written and the count advances only for those kept (no branch).
+  // A candidate is written as it comes, (i, j); the pairs kept are put in order (i < j) afterwards.
   std::size_t count = 0;
   narrow_.forEachNearRun([&](std::uint32_t e, std::uint32_t first, std::uint32_t last) {
     if (count + (last - first) > candidates_.size()) candidates_.resize(2 * (count + (last - first)));
     std::array<std::uint32_t, 2>* out = candidates_.data();
     const Vec3 p = position[e], r = rest[e];
     const std::uint32_t i = particle[e];
+    std::size_t kept = count;
     for (std::uint32_t f = first; f < last; ++f) {
       const bool close = distance2(p, position[f]) < near2;
       const bool apartAtRest = distance2(r, rest[f]) >= neighbour2;
-      const std::uint32_t j = particle[f];
-      out[count] = {std::min(i, j), std::max(i, j)};
-      count += static_cast<std::size_t>(close & apartAtRest);
+      out[kept] = {i, particle[f]};
+      kept += static_cast<std::size_t>(close & apartAtRest);
     }
+    count = kept;
   });
-  near_.assign(candidates_.begin(), candidates_.begin() + static_cast<std::ptrdiff_t>(count));
+  near_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto [i, j] = candidates_[k];
+    near_[k] = {std::min(i, j), std::max(i, j)};
+  }
   builtAt_.assign(x.begin(), x.end());
   nearBuilt_ = true;
   ++nearBuilds_;
