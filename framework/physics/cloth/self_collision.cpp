@@ -110,9 +110,11 @@ Pair loadPair(const Real* from) {
   return v;
 }
 Pair splat(Real a) { return Pair{a, a}; }
-/// |a − b|² for two candidates b, the order of distance2 (glm::dot: (x² + y²) + z²).
+/// |a − b|² for two candidates b, as distance2 computes it (glm::dot: (x² + y²) + z²). b − a is −(a − b)
+/// exactly (rounding to nearest is symmetric), so its square is the same; subtracting from the loaded
+/// value saves SSE2 a copy of a per coordinate.
 Pair distance2(const std::array<Pair, 3>& a, const Real* bx, const Real* by, const Real* bz, std::uint32_t f) {
-  const Pair dx = a[0] - loadPair(bx + f), dy = a[1] - loadPair(by + f), dz = a[2] - loadPair(bz + f);
+  const Pair dx = loadPair(bx + f) - a[0], dy = loadPair(by + f) - a[1], dz = loadPair(bz + f) - a[2];
   return dx * dx + dy * dy + dz * dz;
 }
 }  // namespace
@@ -159,9 +161,11 @@ Pair distance2(const std::array<Pair, 3>& a, const Real* bx, const Real* by, con
     // the padding) and is dropped. Lanes of a comparison are −1 (true) or 0.
     for (std::uint32_t f = first; f < last; f += 2) {
       const auto keep = (distance2(p, px, py, pz, f) < near2s) & (distance2(r, rx, ry, rz, f) >= neighbour2s);
-      out[kept] = {i, particle[f]};
+      out[kept][0] = i;  // two 4-byte stores: cheaper than building the pair in a register
+      out[kept][1] = particle[f];
       kept += static_cast<std::size_t>(-keep[0]);
-      out[kept] = {i, particle[f + 1]};
+      out[kept][0] = i;
+      out[kept][1] = particle[f + 1];
       kept += static_cast<std::size_t>(-keep[1]) & static_cast<std::size_t>(f + 1 < last);
     }
     count = kept;
