@@ -146,18 +146,28 @@ Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, R
 }
 
 namespace {
+/// Projects particle i out of collider p, which it may touch; counts the contact into stats. Kept out of
+/// line: most queries end at clearOf (on TMP #15's ribbon 43 of 47 million a run: a pile's upper layers,
+/// the falling part), and with the projection inlined into the pass every query paid a call that saved
+/// and restored a dozen registers (the passes' instructions: 4.8 G → 3.0 G).
+[[gnu::noinline]] void collideTouching(const Prepared& p, std::size_t i, std::span<Vec3> x, std::span<const Vec3> xPrev,
+                                       Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
+                                       CollisionPassStats& stats) {
+  Real depth = 0.0;
+  const Vec3 projected = collidePrepared(p, x[i], xPrev[i], margin, h, &depth, frictionScale);
+  if (depth <= 0.0) return;
+  ++stats.contacts;
+  stats.deepest = std::max(stats.deepest, depth);
+  if (!velocities.empty()) velocities[i] += (projected - x[i]) / h;
+  x[i] = projected;
+}
+
 /// Projects particle i out of every collider; counts its contacts into stats.
-void collideOne(std::span<const Prepared> prepared, std::size_t i, std::span<Vec3> x, std::span<const Vec3> xPrev,
-                Real margin, Real h, std::span<Vec3> velocities, Real frictionScale, CollisionPassStats& stats) {
+inline void collideOne(std::span<const Prepared> prepared, std::size_t i, std::span<Vec3> x,
+                       std::span<const Vec3> xPrev, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
+                       CollisionPassStats& stats) {
   for (const Prepared& p : prepared) {
-    if (clearOf(p, x[i], margin)) continue;
-    Real depth = 0.0;
-    const Vec3 projected = collidePrepared(p, x[i], xPrev[i], margin, h, &depth, frictionScale);
-    if (depth <= 0.0) continue;
-    ++stats.contacts;
-    stats.deepest = std::max(stats.deepest, depth);
-    if (!velocities.empty()) velocities[i] += (projected - x[i]) / h;
-    x[i] = projected;
+    if (!clearOf(p, x[i], margin)) collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
   }
 }
 

@@ -97,7 +97,8 @@ class SelfCollision {
   std::vector<std::array<std::uint32_t, 2>> near_;        ///< the Verlet list
   std::vector<Vec3> rest_;                                ///< [m] rest positions
   std::vector<Vec3> builtAt_;                             ///< [m] positions at the Verlet list's build
-  std::vector<Vec3> restInCellOrder_;                     ///< [m] rest positions in narrow_'s order
+  std::array<std::vector<Real>, 6> byCoordinate_;         ///< [m] x, y, z, rest x, y, z in narrow_'s order (+ padding)
+  std::vector<std::uint32_t> particleOf_;                 ///< narrow_'s entry → particle (+ padding)
   std::vector<std::array<std::uint32_t, 2>> candidates_;  ///< scratch of the Verlet list's build
   std::vector<std::array<std::uint32_t, 2>> contacts_;    ///< pairs in contact in the last full sweep
   Real thickness_ = 0.0, reach_ = 0.0;                    ///< [m] of the frame

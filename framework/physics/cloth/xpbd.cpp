@@ -42,25 +42,42 @@ void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::sp
   for (int k = 0; k < 4; ++k) x[s.vertex[k]] += w[s.vertex[k]] * s.weight[k] * deltaLambda;
 }
 
+namespace {
 // flatten: CLOTH-2's correction is inlined into the sweep (half the cost of a sweep was the call).
 // The sweep hands CLOTH-2 the scaled compliance α̃ = α/h² of each kind, computed once, with h = 1: then
 // α̃/h² is α̃ exactly and the compiler drops the division, one of the four a constraint costs.
-[[gnu::flatten]] void sweepDistanceConstraints(std::span<const Link> links,
-                                               const std::array<Real, kLinkKinds>& compliance, const SweepMode& mode,
-                                               Real h, std::span<Vec3> x, std::span<const Real> w,
-                                               std::span<Real> lambda) {
-  std::array<Real, kLinkKinds> alphaTilde{};
-  for (std::size_t k = 0; k < kLinkKinds; ++k) alphaTilde[k] = mode.xpbd ? compliance[k] / (h * h) : 0.0;
-  const bool xpbd = mode.xpbd;
-  const Real scale = xpbd ? 1.0 : mode.pbdStiffness;
+// One loop per mode: XPBD adds the corrections as they are (PBD's stiffness would be 1, and 1·Δx is Δx to
+// the bit) and passes λ; PBD scales them and passes λ = 0.
+template <bool kXpbd>
+[[gnu::flatten]] void sweepLinks(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde,
+                                 Real pbdStiffness, std::span<Vec3> x, std::span<const Real> w,
+                                 std::span<Real> lambda) {
   for (std::size_t k = 0; k < links.size(); ++k) {
     const Link& l = links[k];
     const DistanceCorrection c =
         xpbdDistanceCorrection(x[l.i], x[l.j], w[l.i], w[l.j], l.restLength,
-                               alphaTilde[static_cast<std::size_t>(l.kind)], 1.0, xpbd ? lambda[k] : 0.0);
-    x[l.i] += scale * c.deltaI;
-    x[l.j] += scale * c.deltaJ;
+                               alphaTilde[static_cast<std::size_t>(l.kind)], 1.0, kXpbd ? lambda[k] : 0.0);
+    if constexpr (kXpbd) {
+      x[l.i] += c.deltaI;
+      x[l.j] += c.deltaJ;
+    } else {
+      x[l.i] += pbdStiffness * c.deltaI;
+      x[l.j] += pbdStiffness * c.deltaJ;
+    }
     lambda[k] += c.deltaLambda;
+  }
+}
+}  // namespace
+
+void sweepDistanceConstraints(std::span<const Link> links, const std::array<Real, kLinkKinds>& compliance,
+                              const SweepMode& mode, Real h, std::span<Vec3> x, std::span<const Real> w,
+                              std::span<Real> lambda) {
+  std::array<Real, kLinkKinds> alphaTilde{};
+  for (std::size_t k = 0; k < kLinkKinds; ++k) alphaTilde[k] = mode.xpbd ? compliance[k] / (h * h) : 0.0;
+  if (mode.xpbd) {
+    sweepLinks<true>(links, alphaTilde, 1.0, x, w, lambda);
+  } else {
+    sweepLinks<false>(links, alphaTilde, mode.pbdStiffness, x, w, lambda);
   }
 }
 
