@@ -145,9 +145,9 @@ class JacobianMethod final : public Method {
       M /= d.sigma[i];
       const Real gamma = (M > N ? N / M : 1.0) * kSdlsGammaMax;
       std::vector<Real>& phi = phi_;
-      phi = d.v[i];
       const Real scale = alpha / d.sigma[i];  // once, not per entry (phi's stores could alias sigma)
-      for (Real& x : phi) x *= scale;
+      phi.resize(d.v[i].size());
+      for (size_t k = 0; k < phi.size(); ++k) phi[k] = d.v[i][k] * scale;
       clampMaxAbs(phi, gamma);
       for (int col = 0; col < n; ++col) total[static_cast<size_t>(col)] += phi[static_cast<size_t>(col)];
     }

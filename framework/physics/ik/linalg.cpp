@@ -77,11 +77,10 @@ bool solveSpd(const Matrix& A, const std::vector<Real>& b, std::vector<Real>& x)
 struct SvdWorkspace::Impl {
   Eigen::JacobiSVD<Eigen::MatrixXd> eigen;  // tall matrices and more than 64 rows
   std::vector<Real> w;                      // the rows being orthogonalised, column-major: W(p, i) at w[i·k + p]
-  std::vector<Real> u;                      // the accumulated rotation U (k × k), U(i, p) at u[p·k + i]
-  std::vector<Real> gram;                   // G = W Wᵀ (k × k, symmetric, both triangles)
-  std::vector<Real> sweep;                  // the product of one round's rotations (k × k, like u)
-  std::vector<Real> column;                 // one row of U while it is rotated
-  std::vector<int> order;                   // rows by decreasing |wₚ|
+  std::vector<Real> u;      // the accumulated rotation U (k × k), stored like W: U(i, p) at u[i·k + p]
+  std::vector<Real> gram;   // G = W Wᵀ (k × k, symmetric, both triangles)
+  std::vector<Real> sweep;  // the product of one round's rotations (k × k, like u)
+  std::vector<int> order;   // rows by decreasing |wₚ|
 };
 SvdWorkspace::SvdWorkspace() : impl_(std::make_unique<Impl>()) {}
 SvdWorkspace::~SvdWorkspace() = default;
@@ -224,14 +223,7 @@ void orthogonaliseRows(SvdWorkspace::Impl& m, int k, int n) {
     if (!sweepGram<K>(m.gram, m.sweep, k, n)) return;
     while (++sweep < kMaxJacobiSweeps && sweepGram<K>(m.gram, m.sweep, k, n)) {}
     rotateRows<K>(m.w, m.sweep, k, n);
-    for (int i = 0; i < k; ++i) {  // U ← U R, one row of U at a time
-      for (int p = 0; p < k; ++p) {
-        Real sum = 0.0;
-        for (int j = 0; j < k; ++j) sum += m.u[at(i, j, k)] * m.sweep[at(j, p, k)];
-        m.column[static_cast<size_t>(p)] = sum;
-      }
-      for (int p = 0; p < k; ++p) m.u[at(i, p, k)] = m.column[static_cast<size_t>(p)];
-    }
+    rotateRows<K>(m.u, m.sweep, k, k);  // U ← U R: each row of U is rotated as a column of W is
   }
   gramOfRows<K>(m.w, m.gram, k, n);  // not converged in kMaxJacobiSweeps (not seen): report what we have
 }
@@ -257,7 +249,6 @@ void wideSvd(const Matrix& J, Svd& out, SvdWorkspace::Impl& m) {
       w[at(p, i, k)] = j[static_cast<size_t>(p) * static_cast<size_t>(n) + static_cast<size_t>(i)];
   m.u.assign(static_cast<size_t>(k) * static_cast<size_t>(k), 0.0);
   for (int p = 0; p < k; ++p) m.u[at(p, p, k)] = 1.0;
-  m.column.resize(static_cast<size_t>(k));
   if (k == 3) {
     orthogonaliseRows<3>(m, k, n);
   } else if (k == 6) {
@@ -283,8 +274,8 @@ void wideSvd(const Matrix& J, Svd& out, SvdWorkspace::Impl& m) {
     const Real sigma = norm(p);
     const bool nonzero = sigma > zero && sigma > 0.0;
     out.sigma.push_back(nonzero ? sigma : 0.0);
-    out.u[i].assign(m.u.begin() + static_cast<std::ptrdiff_t>(at(0, p, k)),
-                    m.u.begin() + static_cast<std::ptrdiff_t>(at(0, p + 1, k)));
+    out.u[i].resize(static_cast<size_t>(k));
+    for (int r = 0; r < k; ++r) out.u[i][static_cast<size_t>(r)] = m.u[at(p, r, k)];  // U(r, p)
     out.v[i].clear();
     if (!nonzero) continue;
     out.v[i].resize(static_cast<size_t>(n));

@@ -146,9 +146,9 @@ ImplicitEulerStats uncoupledStep(SecondOrderSystem& system, Real h, int g) {
       for (int r = 0; r < 3; ++r) {
         const Real wr = w[j + static_cast<std::size_t>(r)];
         Real kv = 0.0;
-        for (int c = 0; c < 3; ++c) {
-          kv += k[3 * r + c] * v[j + static_cast<std::size_t>(c)];
-          a[c][r] -= h * wr * (d[3 * r + c] + h * k[3 * r + c]);
+        for (int c = 0; c < 3; ++c) {  // the blocks are column-major: (r, c) at 3c + r
+          kv += k[3 * c + r] * v[j + static_cast<std::size_t>(c)];
+          a[c][r] -= h * wr * (d[3 * c + r] + h * k[3 * c + r]);
         }
         rhs[r] = h * wr * (f[3 * b + static_cast<std::size_t>(r)] + h * kv);
       }

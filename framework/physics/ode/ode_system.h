@@ -85,7 +85,7 @@ class SecondOrderSystem : public OdeSystem {
   /// For an uncoupled system (uncoupledGroupSize() = g > 0): the force and the diagonal blocks of its
   /// Jacobians for the coordinates first … first + f.size() − 1 (first and f.size() multiples of g),
   /// read from the whole q and v: f (one value per coordinate), dfdq and dfdv (g × g per group,
-  /// row-major: entry (r, c) of group b at b·g² + r·g + c). They must be the force() and the blocks that
+  /// column-major like glm's Mat3: entry (r, c) of group b at b·g² + c·g + r). They must be the force() and the blocks that
   /// forceDifferential() applies, so that the direct solve and conjugate gradients solve one system.
   /// The default (never called for a coupled system) writes zeros.
   virtual void uncoupledForce(Real t, std::span<const Real> q, std::span<const Real> v, std::size_t first,

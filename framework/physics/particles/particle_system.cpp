@@ -1,7 +1,6 @@
 #include "physics/particles/particle_system.h"
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 
 namespace pba::particles {
@@ -18,6 +17,15 @@ Real ParticleSystem::energy() const {
          springs::springPotentialEnergy(springs, particles.position);
 }
 
+namespace {
+// Pinned particles feel nothing (their inverse mass is 0 anyway; zeroing keeps the reported force clean).
+void zeroPinned(std::span<const Real> inverseMass, std::span<Vec3> f) {
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    if (inverseMass[i] <= 0.0) f[i] = Vec3(0.0);
+  }
+}
+}  // namespace
+
 void ParticleSystem::force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const {
   assert(dofInverseMass_.size() == q.size() && "call syncMasses() after changing the particles");
   std::fill(out.begin(), out.end(), 0.0);
@@ -25,10 +33,7 @@ void ParticleSystem::force(Real t, std::span<const Real> q, std::span<const Real
   const std::span<Vec3> f = asVec3(out);
   accumulateFieldForces(forces, t, x, vel, particles.inverseMass, f);
   springs::accumulateSpringForces(springs, x, vel, f);
-  // Pinned particles feel nothing (their inverse mass is 0 anyway; zeroing keeps the reported force clean).
-  for (std::size_t i = 0; i < particles.size(); ++i) {
-    if (particles.inverseMass[i] <= 0.0) f[i] = Vec3(0.0);
-  }
+  zeroPinned(particles.inverseMass, f);
 }
 
 void ParticleSystem::forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v,
@@ -54,27 +59,13 @@ void ParticleSystem::uncoupledForce(Real t, std::span<const Real> q, std::span<c
   const std::size_t p0 = first / 3, count = f.size() / 3;
   const std::span<const Vec3> x = asVec3(q).subspan(p0, count), vel = asVec3(v).subspan(p0, count);
   const std::span<const Real> w = std::span<const Real>(particles.inverseMass).subspan(p0, count);
-  const std::span<Vec3> force = asVec3(f);
   std::fill(f.begin(), f.end(), 0.0);
-  accumulateFieldForces(forces, t, x, vel, w, force);
+  accumulateFieldForces(forces, t, x, vel, w, asVec3(f));
+  zeroPinned(w, asVec3(f));
+  // The blocks are column-major like glm's Mat3: the drag's blocks are written in place.
   std::fill(dfdq.begin(), dfdq.end(), 0.0);
   std::fill(dfdv.begin(), dfdv.end(), 0.0);
-  constexpr std::size_t kBatch = 64;  // drag blocks made a batch at a time on the stack
-  std::array<Mat3, kBatch> blocks;
-  for (std::size_t b0 = 0; b0 < count; b0 += kBatch) {
-    const std::size_t n = std::min(kBatch, count - b0);
-    const std::span<Mat3> part = std::span<Mat3>(blocks).first(n);
-    std::fill(part.begin(), part.end(), Mat3(0.0));
-    accumulateDragJacobianDiagonal(forces, t, x.subspan(b0, n), vel.subspan(b0, n), w.subspan(b0, n), part);
-    for (std::size_t i = 0; i < n; ++i) {
-      Real* out = dfdv.data() + 9 * (b0 + i);
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) out[3 * r + c] = part[i][c][r];  // glm: [column][row]
-    }
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    if (w[i] <= 0.0) force[i] = Vec3(0.0);
-  }
+  accumulateDragJacobianDiagonal(forces, t, x, vel, w, {reinterpret_cast<Mat3*>(dfdv.data()), count});
 }
 
 }  // namespace pba::particles
