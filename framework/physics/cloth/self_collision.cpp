@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <type_traits>
+
+#include "physics/core/lanes.h"
 
 namespace pba::cloth {
 namespace {
@@ -101,15 +102,6 @@ void SelfCollision::buildFramePairs() {
 }
 
 namespace {
-/// Two doubles in one SSE2 register (GCC's vector extension, which Clang shares): the Verlet list's search
-/// tests two candidates at a time with the scalar test's operations in its order, so to the bit.
-using Pair [[gnu::vector_size(2 * sizeof(Real))]] = Real;
-Pair loadPair(const Real* from) {
-  Pair v;
-  std::memcpy(&v, from, sizeof v);
-  return v;
-}
-Pair splat(Real a) { return Pair{a, a}; }
 /// |a − b|² for two candidates b, as distance2 computes it (glm::dot: (x² + y²) + z²). b − a is −(a − b)
 /// exactly (rounding to nearest is symmetric), so its square is the same; subtracting from the loaded
 /// value saves SSE2 a copy of a per coordinate.

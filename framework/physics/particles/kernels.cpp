@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "physics/core/lanes.h"
+
 namespace pba::particles {
 
 void stepGravityDragPlane(std::span<Vec3> x, std::span<Vec3> v, const FusedStepDesc& d, Real h) {
@@ -63,11 +65,18 @@ class ObstacleTable {
 };
 
 // The swirl's velocity change over half a step, (h/2) S (ŷ × r⊥)/(|r⊥|² + r_c²) with ŷ × (rx, 0, rz) =
-// (rz, 0, −rx); halfSwirl = (h/2) S.
-inline Vec3 swirlKick(const Vec3& x, Real cx, Real cz, Real halfSwirl, Real core2) {
-  const Real rx = x.x - cx, rz = x.z - cz;
-  const Real s = halfSwirl / (rx * rx + rz * rz + core2);
-  return Vec3(s * rz, 0.0, -s * rx);
+// (rz, 0, −rx); halfSwirl = (h/2) S. For two particles at once (core/lanes.h): one divpd for both.
+struct SwirlKick {
+  Pair x, z;  // the y part is zero
+};
+inline SwirlKick swirlKick(const PairVec3& x, Real cx, Real cz, Real halfSwirl, Real core2) {
+  const Pair rx = x.x - cx, rz = x.z - cz;
+  const Pair s = halfSwirl / (rx * rx + rz * rz + core2);
+  return {s * rz, -s * rx};
+}
+/// keep·v + halfKick + swirl, the half kick of kernels.h, component by component as glm computes it.
+inline PairVec3 halfKickPair(const PairVec3& v, Real keep, const Vec3& halfKick, const SwirlKick& swirl) {
+  return {keep * v.x + halfKick.x + swirl.x, keep * v.y + halfKick.y + 0.0, keep * v.z + halfKick.z + swirl.z};
 }
 }  // namespace
 
@@ -123,34 +132,46 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
   for (std::size_t begin = 0; begin < count; begin += kBlock) {
     const std::size_t end = std::min(count, begin + kBlock), first = kept;
     std::size_t nTouching = 0;
-    // Pass 1, free of data-dependent branches: ageing and removal, motion, and a flag for the particles
-    // within reach of an obstacle. Exact: a particle that reaches none is left alone by every contact
-    // test, so only the flagged ones need pass 2.
-    for (std::size_t i = begin; i < end; ++i) {
-      const Real age = ages[i] + h;
-      if (age >= lifetimes[i]) [[unlikely]]
-        continue;  // expired: not kept
-      const Vec3 half = keep * vs[i] + halfKick + swirlKick(xs[i], cx, cz, halfSwirl, core2);
-      const Vec3 xi = xs[i] + h * half;
-      const Vec3 vi = keep * half + halfKick + swirlKick(xi, cx, cz, halfSwirl, core2);
-      bool touches = false;
-      for (const PlaneTest& plane : planes) touches |= glm::dot(plane.normal, xi) - plane.offset < kContactSlop;
+    // Pass 1: ageing and removal, motion, and a flag for the particles within reach of an obstacle, with
+    // no branch on the particles' data but the (almost always taken) survival tests. Exact: a particle
+    // that reaches none is left alone by every contact test, so only the flagged ones need pass 2.
+    // Two particles per iteration (core/lanes.h: the swirl's two divisions are one divpd each), each lane
+    // with the scalar expressions' operations in their order, so the results are those of one particle
+    // at a time, bit for bit; an odd block's last particle fills both lanes and only lane 0 is kept.
+    for (std::size_t i = begin; i < end; i += 2) {
+      const std::size_t j = std::min(i + 1, end - 1);
+      const Pair age = Pair{ages[i], ages[j]} + h;
+      const PairVec3 x0 = gatherPair(xs, i, j), v0 = gatherPair(vs, i, j);
+      const PairVec3 half = halfKickPair(v0, keep, halfKick, swirlKick(x0, cx, cz, halfSwirl, core2));
+      const PairVec3 x{x0.x + h * half.x, x0.y + h * half.y, x0.z + h * half.z};
+      const PairVec3 v = halfKickPair(half, keep, halfKick, swirlKick(x, cx, cz, halfSwirl, core2));
+      PairMask reach{0, 0};
+      for (const PlaneTest& plane : planes) {
+        const Pair phi = plane.normal.x * x.x + plane.normal.y * x.y + plane.normal.z * x.z - plane.offset;
+        reach |= phi < kContactSlop;
+      }
       for (const SphereTest& sphere : spheres) {
-        const Vec3 r = xi - sphere.center;
-        touches |= glm::dot(r, r) < sphere.reach2;
+        const Pair rx = x.x - sphere.center.x, ry = x.y - sphere.center.y, rz = x.z - sphere.center.z;
+        reach |= rx * rx + ry * ry + rz * rz < sphere.reach2;
       }
-      touching[nTouching] = static_cast<std::uint32_t>(kept - first);
-      nTouching += touches;
       // Stable compaction: after the first removal every survivor slides down by the removals so far.
-      xs[kept] = xi;
-      vs[kept] = vi;
-      ages[kept] = age;
-      if (kept != i) {
-        lifetimes[kept] = lifetimes[i];
-        inverseMasses[kept] = inverseMasses[i];
-        colors[kept] = colors[i];
-      }
-      ++kept;
+      auto keepLane = [&](int l, std::size_t from) {
+        touching[nTouching] = static_cast<std::uint32_t>(kept - first);
+        nTouching += reach[l] != 0;
+        xs[kept] = lane(x, l);
+        vs[kept] = lane(v, l);
+        ages[kept] = age[l];
+        if (kept != from) {
+          lifetimes[kept] = lifetimes[from];
+          inverseMasses[kept] = inverseMasses[from];
+          colors[kept] = colors[from];
+        }
+        ++kept;
+      };
+      if (!(age[0] >= lifetimes[i])) [[likely]]
+        keepLane(0, i);
+      if (j != i && !(age[1] >= lifetimes[j])) [[likely]]
+        keepLane(1, j);
     }
     // Pass 2: the contact model for the flagged particles, while the block is in cache.
     for (std::size_t n = 0; n < nTouching; ++n) resolveContacts(xs[first + touching[n]], vs[first + touching[n]]);
