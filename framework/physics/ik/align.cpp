@@ -58,6 +58,17 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
   return f.pre * newLocal * glm::conjugate(oldLocal) * preInverse;
 }
 
+// `q` turned by at most `maxTurn` [rad] about its own axis (SolveOptions::ccdMaxTurn, ours); q itself
+// when maxTurn is 0 or q turns less. q = ±(cos ½θ, sin ½θ n̂): the turn exceeds the cap when |w| < cos ½cap.
+Quat capTurn(const Quat& q, Real maxTurn) {
+  if (!(maxTurn > 0.0) || std::abs(q.w) >= std::cos(0.5 * maxTurn)) return q;
+  const Vec3 v(q.x, q.y, q.z);
+  const Real length = glm::length(v);
+  if (!(length > 0.0)) return q;
+  const Vec3 n = (q.w < 0.0 ? -1.0 : 1.0) * v / length;
+  return glm::angleAxis(std::min(maxTurn, kPi), n);
+}
+
 }  // namespace
 
 void bestAngleTerms(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
@@ -166,7 +177,7 @@ bool rotationUnlimited(const Joint& joint) {
 }
 
 Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
-                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation) {
+                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation, Real maxTurn) {
   const Skeleton& s = c.skeleton;
   Pose& pose = c.pose;
   const Joint& joint = s.joint(j);
@@ -200,6 +211,7 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
       } else {
         theta = bestAngle(a, p, from, to, w);
       }
+      if (maxTurn > 0.0) theta = std::clamp(theta, -maxTurn, maxTurn);  // SolveOptions::ccdMaxTurn (ours)
       Real& d = pose.dofs[static_cast<size_t>(joint.firstDof)];
       const Real old = d;
       d = bestHingeValue(old + theta, joint.lo[0], joint.hi[0], clampLimits);
@@ -212,7 +224,7 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
       const Quat oldLocal = c.local[static_cast<size_t>(j)];
       if (from.size() == 1) {
         const Quat world = useExercise ? ccdJointUpdate(p, from[0], to[0]) : shortestArc(from[0] - p, to[0] - p);
-        return turnJoint(c, j, f, oldLocal, f.rotation, world, clampLimits);
+        return turnJoint(c, j, f, oldLocal, f.rotation, capTurn(world, maxTurn), clampLimits);
       }
       // Several points: a few sweeps of exact single-axis updates about the axis Σ wᵢ uᵢ × vᵢ (the
       // direction of steepest descent of the rotation), each the closed form above.
@@ -224,7 +236,8 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
         const Real length = glm::length(axis);
         if (length < 1e-15) break;
         axis /= length;
-        const Real theta = bestAngle(axis, p, moved, to, w);
+        Real theta = bestAngle(axis, p, moved, to, w);
+        if (maxTurn > 0.0) theta = std::clamp(theta, -maxTurn, maxTurn);
         const Quat current = c.local[static_cast<size_t>(j)];
         const Quat applied = turnJoint(c, j, f, current, f.pre * current, glm::angleAxis(theta, axis), clampLimits);
         for (Vec3& m : moved) m = p + applied * (m - p);
