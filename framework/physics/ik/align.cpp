@@ -122,8 +122,27 @@ bool turnHingeWithinLimits(Context& c, int j, const Frame& f, const HingeRange& 
 // The hinge optimum is an angle modulo 2π. Of the representatives ψ − 2π, ψ, ψ + 2π, pick the one
 // whose clamped value is closest to the optimum in angle (the objective is proportional to
 // cos(value − ψ)): a joint at 100° with limits ±120° that should turn +170° goes to −90°, not to 120°.
+// The common case at a limit is told without cosines: ψ beyond one limit by x₀ ≤ π/2, and the clamped
+// values of ψ ± 2π either that limit (the same score less the tie-break) or at least 0.01 rad farther
+// from ψ in angle (e ≤ π). Then ψ's score exceeds the latter's by
+// cos x₀ − cos e = 2 sin ½(x₀ + e) sin ½(e − x₀) ≥ 2 sin² 0.005 ≈ 5·10⁻⁵, which neither rounding nor the
+// 10⁻⁹ tie-break can overturn: the loop would return ψ itself, and so does the shortcut (same bits; a
+// CCD pass on a chain bent to its limits made three cosines per joint here).
 Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
   if (!clampLimits || (psi >= lo && psi <= hi)) return psi;
+  const Real x0 = psi > hi ? psi - hi : lo - psi;
+  if (x0 <= 0.5 * kPi) {
+    bool clear = true;
+    const Real limit = psi > hi ? hi : lo;
+    for (Real candidate : {psi - 2.0 * kPi, psi + 2.0 * kPi}) {
+      const Real clamped = std::clamp(candidate, lo, hi);
+      if (clamped == limit) continue;  // the same score as ψ's less the tie-break: ψ wins
+      Real e = std::abs(clamped - psi);
+      if (e > kPi) e = std::abs(e - 2.0 * kPi);
+      clear = clear && e <= kPi && e >= x0 + 0.01;
+    }
+    if (clear) return psi;
+  }
   Real best = psi, bestScore = -2.0;
   for (Real candidate : {psi - 2.0 * kPi, psi, psi + 2.0 * kPi}) {
     const Real clamped = std::clamp(candidate, lo, hi);
@@ -216,6 +235,11 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
       const Real old = d;
       d = bestHingeValue(old + theta, joint.lo[0], joint.hi[0], clampLimits);
       if (clampLimits) clampJointToLimits(s, pose, j);
+      // CCD's hinge held at a limit it is pushed against keeps its angle: its cached rotation is already
+      // jointRotation's of that angle (CCD sets a hinge's `local` only here and in refresh(); with ccdMaxTurn
+      // also turnHingeCapped, the same rotation to rounding), and
+      // angleAxis(0, a) is exactly (1, 0 a). Two sincos fewer per such joint and pass, same bits.
+      if (useExercise && d == old) return Quat(1.0, a * 0.0);
       c.local[static_cast<size_t>(j)] = jointRotation(joint, pose, j);
       return glm::angleAxis(d - old, a);
     }

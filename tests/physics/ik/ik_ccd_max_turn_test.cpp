@@ -69,7 +69,8 @@ TEST(IkCcdMaxTurn, ThousandLimitedHingesReachAtLeast95PercentOfGoals) {
 // hinges ±120° reach every goal.
 TEST(IkCcdMaxTurn, ShorterLimitedChainsReachTheirGoals) {
   exercises::clearNotImplemented();
-  const testing::BatchStats ten = testing::runRandomTargets(testing::chain(JointType::Hinge, 10), cappedCcd(1000), 200, 7);
+  const testing::BatchStats ten =
+      testing::runRandomTargets(testing::chain(JointType::Hinge, 10), cappedCcd(1000), 200, 7);
   const testing::BatchStats hundred =
       testing::runRandomTargets(testing::chain(JointType::Hinge, 100, 30.0), cappedCcd(200), 40, 7);
   if (stubRan()) return;
