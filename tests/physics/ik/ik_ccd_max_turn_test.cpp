@@ -8,7 +8,6 @@
 // pose against the goal (runRandomTargets), the limits by the joints' own bounds (limitViolation).
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -22,13 +21,7 @@ namespace {
 // The setting of docs/performance-ik.md, "CCD on 1,000 limited hinges (issue 13)": the bench's cap.
 constexpr Real kMaxTurn = 0.02;  // [rad]
 
-bool stubRan() {
-  const std::vector<std::string> stubs = exercises::notImplementedTags();
-  if (stubs.empty()) return false;
-  std::printf("[ stats    ] the stub of %s ran: CCD with limits needs IK-2 and IK-6, nothing checked\n",
-              stubs.front().c_str());
-  return true;
-}
+bool stubRan() { return testing::stubRan("CCD with limits needs IK-2 and IK-6, nothing checked"); }
 
 SolveOptions cappedCcd(int maxIterations) {
   SolveOptions o;
