@@ -60,19 +60,22 @@ PBA_EXERCISE_PROBE(ccdJointUpdate(Vec3(0.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0,
 namespace detail {
 namespace {
 
-// ccdMaxTurn's update of hinge j (pivot and pre-rotation `f`) carrying the one point `from` toward `to`,
-// without angles: IK-2's rotation of the projections onto the hinge's plane is q = (cos ½θ, sin ½θ a)
-// (a the world axis; its vector part lies along ±a), cut to the cap: (cos ½δ, ±sin ½δ a) when
-// cos ½θ < cos ½δ. The hinge's rotation (W, S u) about its local axis u (a = R_pre u) turns about the
-// same axis, so the new one is the product (W w − S s, (W s + S w) u), the angle ψ of
+// ccdMaxTurn's update of hinge j (pivot and pre-rotation `f`) carrying the one point `point` toward
+// `goal`, without angles. IK-2's rotation of the projections onto the hinge's plane is
+// q = (cos ½θ, sin ½θ a) (a the world axis; its vector part lies along ±a), cut to the cap:
+// (cos ½δ, ±sin ½δ a) when cos ½θ < cos ½δ (a half turn, whose axis IK-2 may pick off a, is always
+// cut). The hinge's rotation (W, S u) about its local axis u (a = R_pre u) turns about the same axis,
+// so the new one is the product (W w − S s, (W s + S w) u), of angle ψ with
 // (cos ψ, sin ψ) = (W'² − S'², 2 W' S'). When `range` holds ψ (HingeRange: inside the limits by a
-// margin, with W' > 0 so that ψ is the angle itself, not ψ ± 2π) the hinge takes it and returns the
-// world rotation (w, s a) in *applied; else false, nothing changed.
+// margin, with W' > 0 so that ψ is the angle itself, not ψ ± 2π) the hinge takes it and the point
+// turns by θ about the axis, p + u∥ + cos θ u⊥ + sin θ a × u⊥, and the function returns true; else
+// false, nothing changed.
 bool turnHingeCapped(Context& c, int j, const Frame& f, const HingeRange& range, Real cosHalfCap, Real sinHalfCap,
-                     const Vec3& from, const Vec3& to, Quat* applied) {
+                     Vec3& point, const Vec3& goal) {
   const Joint& joint = c.skeleton.joint(j);
   const Vec3 a = f.pre * joint.axis, p = f.position;
-  const Quat q = ccdJointUpdate(p, p + perpendicularPart(from - p, a), p + perpendicularPart(to - p, a));
+  const Vec3 u = point - p, uPerp = perpendicularPart(u, a);
+  const Quat q = ccdJointUpdate(Vec3(0.0), uPerp, perpendicularPart(goal - p, a));
   Real w = q.w, s = glm::dot(Vec3(q.x, q.y, q.z), a);
   if (w < cosHalfCap) w = cosHalfCap, s = s < 0.0 ? -sinHalfCap : sinHalfCap;
   const Quat& local = c.local[static_cast<size_t>(j)];
@@ -81,7 +84,7 @@ bool turnHingeCapped(Context& c, int j, const Frame& f, const HingeRange& range,
   if (!(W1 > 0.0) || !range.holds(W1 * W1 - S1 * S1, 2.0 * W1 * S1, W1 * W1 + S1 * S1)) return false;
   c.local[static_cast<size_t>(j)] = glm::normalize(Quat(W1, S1 * joint.axis.x, S1 * joint.axis.y, S1 * joint.axis.z));
   c.staleEuler[static_cast<size_t>(j)] = 1;
-  *applied = Quat(w, s * a.x, s * a.y, s * a.z);
+  point = p + (u - uPerp) + (w * w - s * s) * uPerp + (2.0 * w * s) * glm::cross(a, uPerp);
   return true;
 }
 
@@ -98,15 +101,13 @@ class Ccd final : public Method {
       const std::span<const int> below = c.effectorsBelow(j);
       if (below.empty() || c.skeleton.joint(j).type == JointType::Fixed) continue;
       const Frame& f = c.frames[static_cast<size_t>(j)];
-      Vec3 t(0.0);
-      Quat q(1, 0, 0, 0);
       // ccdMaxTurn on a limited hinge below which lies one point: the update without angles.
       const auto e0 = below.size() == 1 ? static_cast<size_t>(below[0]) : 0;
       const bool capped =
           maxTurn > 0.0 && clamp && below.size() == 1 && first_[e0 + 1] - first_[e0] == 1 &&
           c.skeleton.joint(j).type == JointType::Hinge && range_[static_cast<size_t>(j)].valid &&
           turnHingeCapped(c, j, f, range_[static_cast<size_t>(j)], cosHalfCap, sinHalfCap,
-                          points_[static_cast<size_t>(first_[e0])], goals_[static_cast<size_t>(first_[e0])], &q);
+                          points_[static_cast<size_t>(first_[e0])], goals_[static_cast<size_t>(first_[e0])]);
       if (!capped) {
         from_.clear();
         to_.clear();
@@ -118,13 +119,14 @@ class Ccd final : public Method {
             w_.push_back(weights_[static_cast<size_t>(k)]);
           }
         if (maxTurn > 0.0 && c.staleEuler[static_cast<size_t>(j)]) c.flushJoint(j);  // alignJoint reads the angle
-        q = alignJoint(c, j, f, from_, to_, w_, clamp, true, &t, maxTurn);
+        Vec3 t(0.0);
+        const Quat q = alignJoint(c, j, f, from_, to_, w_, clamp, true, &t, maxTurn);
+        for (int e : below)
+          for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
+            Vec3& pt = points_[static_cast<size_t>(k)];
+            pt = f.position + q * (pt - f.position) + t;
+          }
       }
-      for (int e : below)
-        for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
-          Vec3& pt = points_[static_cast<size_t>(k)];
-          pt = f.position + q * (pt - f.position) + t;
-        }
       // Stop the pass once every goal is met: the joints nearer the root would only make rotations
       // that the tolerance cannot see (position effectors; 6-DOF ones always finish the pass).
       if (positionsOnly_ && goalsMet(c.options.tolerance)) return;
