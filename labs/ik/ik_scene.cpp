@@ -47,6 +47,13 @@ void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacob
             "Not in the paper (ours): when FABRIK's forward pass turns a ball joint beyond its limits, it takes the "
             "best rotation inside them instead of clamping the angles of the best rotation. Off = the clamp.")
       .shownWhen(fabrik);
+  auto ccd = [&options, jacobianOnly] { return !jacobianOnly || options.solver == SolverKind::Ccd; };
+  params
+      .angle("ccd_max_turn", &options.ccdMaxTurn, 0.0, 180.0,
+             "Not in the Workbook (ours): CCD turns each joint by at most this much per pass, so that on long "
+             "chains with tight limits the joints near the tip do not all bend to their limits at once. 0 = off, "
+             "CCD as published.")
+      .shownWhen(ccd);
   params.integer(
       "restarts", &options.restarts, 0, 100, "",
       "Stall recovery, not in the papers (IK slides, 'when stuck, randomise the pose'): a stalled or crawling "

@@ -58,6 +58,17 @@ Quat turnJoint(Context& c, int j, const Frame& f, const Quat oldLocal, const Qua
   return f.pre * newLocal * glm::conjugate(oldLocal) * preInverse;
 }
 
+// `q` turned by at most `maxTurn` [rad] about its own axis (SolveOptions::ccdMaxTurn, ours); q itself
+// when maxTurn is 0 or q turns less. q = ±(cos ½θ, sin ½θ n̂): the turn exceeds the cap when |w| < cos ½cap.
+Quat capTurn(const Quat& q, Real maxTurn) {
+  if (!(maxTurn > 0.0) || std::abs(q.w) >= std::cos(0.5 * maxTurn)) return q;
+  const Vec3 v(q.x, q.y, q.z);
+  const Real length = glm::length(v);
+  if (!(length > 0.0)) return q;
+  const Vec3 n = (q.w < 0.0 ? -1.0 : 1.0) * v / length;
+  return glm::angleAxis(std::min(maxTurn, kPi), n);
+}
+
 }  // namespace
 
 void bestAngleTerms(const Vec3& a, const Vec3& p, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
@@ -111,8 +122,27 @@ bool turnHingeWithinLimits(Context& c, int j, const Frame& f, const HingeRange& 
 // The hinge optimum is an angle modulo 2π. Of the representatives ψ − 2π, ψ, ψ + 2π, pick the one
 // whose clamped value is closest to the optimum in angle (the objective is proportional to
 // cos(value − ψ)): a joint at 100° with limits ±120° that should turn +170° goes to −90°, not to 120°.
+// The common case at a limit is told without cosines: ψ beyond one limit by x₀ ≤ π/2, and the clamped
+// values of ψ ± 2π either that limit (the same score less the tie-break) or at least 0.01 rad farther
+// from ψ in angle (e ≤ π). Then ψ's score exceeds the latter's by
+// cos x₀ − cos e = 2 sin ½(x₀ + e) sin ½(e − x₀) ≥ 2 sin² 0.005 ≈ 5·10⁻⁵, which neither rounding nor the
+// 10⁻⁹ tie-break can overturn: the loop would return ψ itself, and so does the shortcut (same bits; a
+// CCD pass on a chain bent to its limits made three cosines per joint here).
 Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits) {
   if (!clampLimits || (psi >= lo && psi <= hi)) return psi;
+  const Real x0 = psi > hi ? psi - hi : lo - psi;
+  if (x0 <= 0.5 * kPi) {
+    bool clear = true;
+    const Real limit = psi > hi ? hi : lo;
+    for (Real candidate : {psi - 2.0 * kPi, psi + 2.0 * kPi}) {
+      const Real clamped = std::clamp(candidate, lo, hi);
+      if (clamped == limit) continue;  // the same score as ψ's less the tie-break: ψ wins
+      Real e = std::abs(clamped - psi);
+      if (e > kPi) e = std::abs(e - 2.0 * kPi);
+      clear = clear && e <= kPi && e >= x0 + 0.01;
+    }
+    if (clear) return psi;
+  }
   Real best = psi, bestScore = -2.0;
   for (Real candidate : {psi - 2.0 * kPi, psi, psi + 2.0 * kPi}) {
     const Real clamped = std::clamp(candidate, lo, hi);
@@ -166,7 +196,7 @@ bool rotationUnlimited(const Joint& joint) {
 }
 
 Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
-                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation) {
+                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation, Real maxTurn) {
   const Skeleton& s = c.skeleton;
   Pose& pose = c.pose;
   const Joint& joint = s.joint(j);
@@ -200,10 +230,16 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
       } else {
         theta = bestAngle(a, p, from, to, w);
       }
+      if (maxTurn > 0.0) theta = std::clamp(theta, -maxTurn, maxTurn);  // SolveOptions::ccdMaxTurn (ours)
       Real& d = pose.dofs[static_cast<size_t>(joint.firstDof)];
       const Real old = d;
       d = bestHingeValue(old + theta, joint.lo[0], joint.hi[0], clampLimits);
       if (clampLimits) clampJointToLimits(s, pose, j);
+      // CCD's hinge held at a limit it is pushed against keeps its angle: its cached rotation is already
+      // jointRotation's of that angle (CCD sets a hinge's `local` only here and in refresh(); with ccdMaxTurn
+      // also turnHingeCapped, the same rotation to rounding), and
+      // angleAxis(0, a) is exactly (1, 0 a). Two sincos fewer per such joint and pass, same bits.
+      if (useExercise && d == old) return Quat(1.0, a * 0.0);
       c.local[static_cast<size_t>(j)] = jointRotation(joint, pose, j);
       return glm::angleAxis(d - old, a);
     }
@@ -212,7 +248,7 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
       const Quat oldLocal = c.local[static_cast<size_t>(j)];
       if (from.size() == 1) {
         const Quat world = useExercise ? ccdJointUpdate(p, from[0], to[0]) : shortestArc(from[0] - p, to[0] - p);
-        return turnJoint(c, j, f, oldLocal, f.rotation, world, clampLimits);
+        return turnJoint(c, j, f, oldLocal, f.rotation, capTurn(world, maxTurn), clampLimits);
       }
       // Several points: a few sweeps of exact single-axis updates about the axis Σ wᵢ uᵢ × vᵢ (the
       // direction of steepest descent of the rotation), each the closed form above.
@@ -224,7 +260,8 @@ Quat alignJoint(Context& c, int j, const Frame& f, const std::vector<Vec3>& from
         const Real length = glm::length(axis);
         if (length < 1e-15) break;
         axis /= length;
-        const Real theta = bestAngle(axis, p, moved, to, w);
+        Real theta = bestAngle(axis, p, moved, to, w);
+        if (maxTurn > 0.0) theta = std::clamp(theta, -maxTurn, maxTurn);
         const Quat current = c.local[static_cast<size_t>(j)];
         const Quat applied = turnJoint(c, j, f, current, f.pre * current, glm::angleAxis(theta, axis), clampLimits);
         for (Vec3& m : moved) m = p + applied * (m - p);

@@ -9,6 +9,13 @@
 // and pre-rotation depend only on its ancestors, which this pass has not moved yet, so the frames from
 // the forward kinematics at the start of the pass stay valid; only the effector points move, and they
 // are updated incrementally by each joint's rotation (no full FK per joint, unlike the naive loop).
+//
+// SolveOptions::ccdMaxTurn (ours, off by default): each joint turns by at most that angle per pass
+// (docs/performance-ik.md, "CCD on 1,000 limited hinges"). A hinge carrying one point then turns by
+// half-angle quaternions while it stays inside its limits (turnHingeCapped): IK-2's rotation, cut to
+// the cap, composed with the hinge's own rotation about the same axis, its angle written once at the
+// end (flushPose), as FABRIK's forward pass does; at a limit it takes alignJoint's angle and clamp.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -53,32 +60,73 @@ PBA_EXERCISE_PROBE(ccdJointUpdate(Vec3(0.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0,
 namespace detail {
 namespace {
 
+// ccdMaxTurn's update of hinge j (pivot and pre-rotation `f`) carrying the one point `point` toward
+// `goal`, without angles. IK-2's rotation of the projections onto the hinge's plane is
+// q = (cos ½θ, sin ½θ a) (a the world axis; its vector part lies along ±a), cut to the cap:
+// (cos ½δ, ±sin ½δ a) when cos ½θ < cos ½δ (a half turn, whose axis IK-2 may pick off a, is always
+// cut). The hinge's rotation (W, S u) about its local axis u (a = R_pre u) turns about the same axis,
+// so the new one is the product (W w − S s, (W s + S w) u), of angle ψ with
+// (cos ψ, sin ψ) = (W'² − S'², 2 W' S'). When `range` holds ψ (HingeRange: inside the limits by a
+// margin, with W' > 0 so that ψ is the angle itself, not ψ ± 2π) the hinge takes it and the point
+// turns by θ about the axis, p + u∥ + cos θ u⊥ + sin θ a × u⊥, and the function returns true; else
+// false, nothing changed.
+bool turnHingeCapped(Context& c, int j, const Frame& f, const HingeRange& range, Real cosHalfCap, Real sinHalfCap,
+                     Vec3& point, const Vec3& goal) {
+  const Joint& joint = c.skeleton.joint(j);
+  const Vec3 a = f.pre * joint.axis, p = f.position;
+  const Vec3 u = point - p, uPerp = perpendicularPart(u, a);
+  const Quat q = ccdJointUpdate(Vec3(0.0), uPerp, perpendicularPart(goal - p, a));
+  Real w = q.w, s = glm::dot(Vec3(q.x, q.y, q.z), a);
+  if (w < cosHalfCap) w = cosHalfCap, s = s < 0.0 ? -sinHalfCap : sinHalfCap;
+  const Quat& local = c.local[static_cast<size_t>(j)];
+  const Real W = local.w, S = glm::dot(Vec3(local.x, local.y, local.z), joint.axis);
+  const Real W1 = W * w - S * s, S1 = W * s + S * w;
+  if (!(W1 > 0.0) || !range.holds(W1 * W1 - S1 * S1, 2.0 * W1 * S1, W1 * W1 + S1 * S1)) return false;
+  c.local[static_cast<size_t>(j)] = glm::normalize(Quat(W1, S1 * joint.axis.x, S1 * joint.axis.y, S1 * joint.axis.z));
+  c.staleEuler[static_cast<size_t>(j)] = 1;
+  point = p + (u - uPerp) + (w * w - s * s) * uPerp + (2.0 * w * s) * glm::cross(a, uPerp);
+  return true;
+}
+
 class Ccd final : public Method {
  public:
   FramesAfterIterate framesAfterIterate() const override { return FramesAfterIterate::FromCache; }
   void iterate(Context& c) override {
     buildPoints(c);
     const bool clamp = c.options.enforceLimits;
+    const Real maxTurn = c.options.ccdMaxTurn;
+    if (maxTurn > 0.0 && clamp && range_.empty()) hingeRanges(c.skeleton, range_);
+    const Real cosHalfCap = std::cos(0.5 * std::min(maxTurn, kPi)), sinHalfCap = std::sin(0.5 * std::min(maxTurn, kPi));
     for (int j = c.skeleton.jointCount() - 1; j >= 0; --j) {
       const std::span<const int> below = c.effectorsBelow(j);
       if (below.empty() || c.skeleton.joint(j).type == JointType::Fixed) continue;
-      from_.clear();
-      to_.clear();
-      w_.clear();
-      for (int e : below)
-        for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
-          from_.push_back(points_[static_cast<size_t>(k)]);
-          to_.push_back(goals_[static_cast<size_t>(k)]);
-          w_.push_back(weights_[static_cast<size_t>(k)]);
-        }
       const Frame& f = c.frames[static_cast<size_t>(j)];
-      Vec3 t(0.0);
-      const Quat q = alignJoint(c, j, f, from_, to_, w_, clamp, true, &t);
-      for (int e : below)
-        for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
-          Vec3& pt = points_[static_cast<size_t>(k)];
-          pt = f.position + q * (pt - f.position) + t;
-        }
+      // ccdMaxTurn on a limited hinge below which lies one point: the update without angles.
+      const auto e0 = below.size() == 1 ? static_cast<size_t>(below[0]) : 0;
+      const bool capped =
+          maxTurn > 0.0 && clamp && below.size() == 1 && first_[e0 + 1] - first_[e0] == 1 &&
+          c.skeleton.joint(j).type == JointType::Hinge && range_[static_cast<size_t>(j)].valid &&
+          turnHingeCapped(c, j, f, range_[static_cast<size_t>(j)], cosHalfCap, sinHalfCap,
+                          points_[static_cast<size_t>(first_[e0])], goals_[static_cast<size_t>(first_[e0])]);
+      if (!capped) {
+        from_.clear();
+        to_.clear();
+        w_.clear();
+        for (int e : below)
+          for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
+            from_.push_back(points_[static_cast<size_t>(k)]);
+            to_.push_back(goals_[static_cast<size_t>(k)]);
+            w_.push_back(weights_[static_cast<size_t>(k)]);
+          }
+        if (maxTurn > 0.0 && c.staleEuler[static_cast<size_t>(j)]) c.flushJoint(j);  // alignJoint reads the angle
+        Vec3 t(0.0);
+        const Quat q = alignJoint(c, j, f, from_, to_, w_, clamp, true, &t, maxTurn);
+        for (int e : below)
+          for (int k = first_[static_cast<size_t>(e)]; k < first_[static_cast<size_t>(e) + 1]; ++k) {
+            Vec3& pt = points_[static_cast<size_t>(k)];
+            pt = f.position + q * (pt - f.position) + t;
+          }
+      }
       // Stop the pass once every goal is met: the joints nearer the root would only make rotations
       // that the tolerance cannot see (position effectors; 6-DOF ones always finish the pass).
       if (positionsOnly_ && goalsMet(c.options.tolerance)) return;
@@ -120,7 +168,8 @@ class Ccd final : public Method {
 
   std::vector<Vec3> points_, goals_, from_, to_;
   std::vector<Real> weights_, w_;
-  std::vector<int> first_;  // effector e owns points [first_[e], first_[e + 1])
+  std::vector<int> first_;         // effector e owns points [first_[e], first_[e + 1])
+  std::vector<HingeRange> range_;  // per joint (hingeRanges), for ccdMaxTurn with limits
   bool positionsOnly_ = true;
 };
 

@@ -131,7 +131,8 @@ Status validate(const SolveOptions& o) {
   if (!inTable(o.lineSearch, lineSearchNames())) return Error{"options.lineSearch: no such line search"};
   if (!positive("options.gradientStep", o.gradientStep, &e) ||
       !positive("options.lineSearchMaxStep", o.lineSearchMaxStep, &e) ||
-      !atLeast("options.lbfgsMemory", o.lbfgsMemory, 1, &e) || !atLeast("options.restarts", o.restarts, 0, &e))
+      !atLeast("options.lbfgsMemory", o.lbfgsMemory, 1, &e) || !atLeast("options.restarts", o.restarts, 0, &e) ||
+      !nonNegative("options.ccdMaxTurn", o.ccdMaxTurn, &e))
     return e;
   return Status::success();
 }

@@ -138,6 +138,12 @@ struct SolveOptions {
   /// IK-6), instead of IK-6's clamp of the best rotation's angles, which can land far from the best
   /// allowed rotation. false: the clamp.
   bool fabrikLimitFit = false;
+  /// Departure (ours), CCD: [rad] ≥ 0, the largest turn of one joint in one pass; each joint's update
+  /// (Workbook §2.4's rotation, IK-2) is cut to this angle about its own axis before the limits clamp
+  /// it. On long chains with tight limits plain CCD bends the joints near the tip to their limits in
+  /// the first pass (the tip curls up) and then crawls or stalls; with the cap every joint bends a
+  /// little each pass and the chain curves as a whole. 0: each joint takes its full update, as published.
+  Real ccdMaxTurn = 0.0;
 };
 
 /// Checks every field of the options at its boundary (ranges, finiteness, enum values); the message

@@ -234,9 +234,10 @@ bool turnHingeWithinLimits(Context& c, int j, const Frame& f, const HingeRange& 
 /// Returns the world rotation actually applied about the pivot (identity for prismatic) and, through
 /// *translation, the world translation applied (prismatic).
 /// `useExercise` routes single-point ball/free updates through IK-2 (ccdJointUpdate), as CCD does.
-/// Updates c.local[j] (not c.frames).
+/// `maxTurn` > 0 [rad] (SolveOptions::ccdMaxTurn, ours): a rotational joint turns by at most this
+/// before the limits clamp it; 0, the published update. Updates c.local[j] (not c.frames).
 Quat alignJoint(Context& c, int j, const Frame& frame, const std::vector<Vec3>& from, const std::vector<Vec3>& to,
-                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation);
+                const std::vector<Real>& w, bool clampLimits, bool useExercise, Vec3* translation, Real maxTurn = 0.0);
 
 /// The rotation angle about the unit axis `a` through `p` that best carries the points `from` onto
 /// `to` (weights w): θ = atan2(Σ wᵢ a·(u⊥ᵢ × v⊥ᵢ), Σ wᵢ u⊥ᵢ·v⊥ᵢ) (align.cpp). 0 when undefined.

@@ -366,6 +366,9 @@ TEST(IkSolveOptions, EveryFieldIsValidatedAtItsBoundaryNamingTheField) {
       {"options.lineSearchMaxStep", [](SolveOptions& o) { o.lineSearchMaxStep = 0.0; }, nullptr},
       {"options.lbfgsMemory", [](SolveOptions& o) { o.lbfgsMemory = 0; }, [](SolveOptions& o) { o.lbfgsMemory = 1; }},
       {"options.restarts", [](SolveOptions& o) { o.restarts = -1; }, [](SolveOptions& o) { o.restarts = 0; }},
+      {"options.ccdMaxTurn", [](SolveOptions& o) { o.ccdMaxTurn = -0.01; },
+       [](SolveOptions& o) { o.ccdMaxTurn = 0.0; }},
+      {"options.ccdMaxTurn", [nan](SolveOptions& o) { o.ccdMaxTurn = nan; }, nullptr},
   };
   ChainDesc d;
   d.links = 2;

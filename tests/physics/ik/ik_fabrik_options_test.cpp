@@ -8,7 +8,6 @@
 // Every solve starts from rest; success is judged by independent forward kinematics of the returned
 // pose against the goal (runRandomTargets), never by the solver's own status alone.
 #include <cstdio>
-#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -37,15 +36,8 @@ SolveOptions fabrikWithLimits(bool twist, bool limitFit, int restarts) {
   return o;
 }
 
-// True (and says so) when an exercise stub ran since the last clearNotImplemented(): the solver then
-// lacks IK-5's passes or IK-6's clamp, and nothing about its success can be checked.
-bool stubRan() {
-  const std::vector<std::string> stubs = exercises::notImplementedTags();
-  if (stubs.empty()) return false;
-  std::printf("[ stats    ] the stub of %s ran: FABRIK with limits needs IK-5 and IK-6, rates not checked\n",
-              stubs.front().c_str());
-  return true;
-}
+// The solver then lacks IK-5's passes or IK-6's clamp: nothing about its success can be checked.
+bool stubRan() { return testing::stubRan("FABRIK with limits needs IK-5 and IK-6, rates not checked"); }
 
 void expectValidPoses(const testing::BatchStats& s, const SolveOptions& o) {
   EXPECT_EQ(s.nonFinite, 0);
