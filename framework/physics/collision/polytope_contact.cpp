@@ -52,9 +52,12 @@ Manifold clipAgainstFace(const ConvexHull& ref, const Transform& refPose, int re
 
 Manifold clipAgainstPolygon(const ClipPolygon& ref, const Vec3& n, const ClipPolygon& incident, Real incidentRadius,
                             bool flip, Real margin, int refFaceForIds, int incFaceForIds) {
-  ClipPolygon a = incident, b;
+  // Sutherland–Hodgman alternates between two buffers (the polygons hold 64 points: copying or
+  // swapping them cost more than the clipping).
+  ClipPolygon buffers[2];
+  const ClipPolygon* in = &incident;
   // Side planes: through each edge of the reference face, normal cross(edge, n) pointing outward.
-  for (int k = 0; k < ref.n && a.n > 0; ++k) {
+  for (int k = 0; k < ref.n && in->n > 0; ++k) {
     const Vec3& v0 = ref.p[k];
     const Vec3& v1 = ref.p[(k + 1) % ref.n];
     const Vec3 side = glm::cross(v1 - v0, n);
@@ -63,9 +66,11 @@ Manifold clipAgainstPolygon(const ClipPolygon& ref, const Vec3& n, const ClipPol
     // The side planes are moved out by kClipTolerance, so that an incident vertex lying on the reference
     // face's edge (equal boxes stacked exactly) stays a vertex instead of flickering between a vertex and
     // a clipped point from step to step, which would defeat warm starting.
-    clipPolygon(a, side / len, glm::dot(side / len, v0) + kClipTolerance, static_cast<std::uint32_t>(k), b);
-    std::swap(a, b);
+    ClipPolygon& out = in == &buffers[0] ? buffers[1] : buffers[0];
+    clipPolygon(*in, side / len, glm::dot(side / len, v0) + kClipTolerance, static_cast<std::uint32_t>(k), out);
+    in = &out;
   }
+  const ClipPolygon& a = *in;
   const Real offset = glm::dot(n, ref.p[0]);
   ManifoldPoint candidates[ClipPolygon::kCapacity];
   int count = 0;

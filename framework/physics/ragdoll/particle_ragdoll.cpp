@@ -86,7 +86,6 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
   }
   r.touched_.assign(r.bones_.size(), 0);
   r.touchNormal_.assign(r.bones_.size(), Vec3(0.0));
-  r.measure(1.0 / 60.0);
   return r;
 }
 
@@ -123,7 +122,6 @@ void ParticleRagdoll::step(Real dt) {
     solveContacts(it + 1 == settings_.iterations);
   }
   applyFriction();
-  measure(dt);
 }
 
 void ParticleRagdoll::findPairs(Real dt) {
@@ -218,7 +216,7 @@ std::pair<HingeFrame, Vec3> ParticleRagdoll::hingeMeasure(const Joint& j) const 
   return {f, pointOf(j.b, j.reference)};
 }
 
-void ParticleRagdoll::measure(Real dt) {
+ParticleStats ParticleRagdoll::measure(Real dt) const {
   ParticleStats s;
   s.bones = boneCount();
   s.particles = particleCount();
@@ -251,10 +249,10 @@ void ParticleRagdoll::measure(Real dt) {
       for (const Weights& c : bones_[b].corners)
         s.maxPenetration = std::max(s.maxPenetration, settings_.groundHeight - embedded(p, c).y);
     }
-  stats_ = s;
+  return s;
 }
 
-ParticleStats ParticleRagdoll::stats() const { return stats_; }
+ParticleStats ParticleRagdoll::stats() const { return measure(lastDt_); }
 
 std::size_t ParticleRagdoll::memoryBytes() const {
   const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
@@ -306,7 +304,6 @@ void ParticleRagdoll::placeDragged() {
     x_[i] += shift;
     xOld_[i] = x_[i];
   }
-  measure(lastDt_);
 }
 
 }  // namespace pba::ragdoll

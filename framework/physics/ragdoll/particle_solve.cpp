@@ -16,13 +16,22 @@ void ParticleRagdoll::relax() {
       for (const Stick& s : sticks_) projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
     return;
   }
+  // kernels.h's projection with the coefficients (−1, +1) written out: Σ w a² = w_a + w_b, and the
+  // same products and sums in the same order (bit for bit the general route).
   for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
     for (const Stick& s : sticks_) {
-      const Vec3 d = x_[s.b] - x_[s.a];
+      Vec3& xa = x_[s.a];
+      Vec3& xb = x_[s.b];
+      const Vec3 d = xb - xa;
       const Real length = glm::length(d);
       if (!(length > 1e-12)) continue;
-      const Term terms[2] = {{s.a, -1.0}, {s.b, 1.0}};
-      projectAlongGradient(x_, w_, terms, d / length, length - s.rest);
+      const Real wa = w_[s.a], wb = w_[s.b];
+      const Real denominator = wa + wb;
+      if (!(denominator > 1e-300)) continue;
+      const Vec3 n = d / length;
+      const Real scale = (length - s.rest) / denominator;
+      xa += (scale * wa) * n;
+      xb -= (scale * wb) * n;
     }
 }
 

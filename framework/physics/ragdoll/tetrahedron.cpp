@@ -18,10 +18,6 @@ Weights barycentric(const std::array<Vec3, 4>& x, const Vec3& point) {
   return {1.0 - c.x - c.y - c.z, c.x, c.y, c.z};
 }
 
-Vec3 embedded(const std::array<Vec3, 4>& x, const Weights& c) {
-  return c[0] * x[0] + c[1] * x[1] + c[2] * x[2] + c[3] * x[3];
-}
-
 Mat3 restEdgesInverse(const std::array<Vec3, 4>& r) {
   return glm::inverse(Mat3(r[1] - r[0], r[2] - r[0], r[3] - r[0]));
 }
