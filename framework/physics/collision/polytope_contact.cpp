@@ -72,20 +72,31 @@ Manifold clipAgainstPolygon(const ClipPolygon& ref, const Vec3& n, const ClipPol
   }
   const ClipPolygon& a = *in;
   const Real offset = glm::dot(n, ref.p[0]);
-  ManifoldPoint candidates[ClipPolygon::kCapacity];
+  const auto separation = [&](int i) { return glm::dot(n, a.p[i]) - offset - incidentRadius; };
+  // Midway between the incident surface point and its projection on the reference face.
+  const auto candidate = [&](int i, Real s) {
+    return ManifoldPoint{a.p[i] - (incidentRadius + 0.5 * s) * n, s,
+                         faceContactId(flip, refFaceForIds, incFaceForIds, a.id[i])};
+  };
   int count = 0;
   Real deepest = std::numeric_limits<Real>::max();
   for (int i = 0; i < a.n; ++i) {
-    const Real s = glm::dot(n, a.p[i]) - offset - incidentRadius;
+    const Real s = separation(i);
     deepest = std::min(deepest, s);
-    if (s > margin) continue;
-    // Midway between the incident surface point and its projection on the reference face.
-    candidates[count++] = {a.p[i] - (incidentRadius + 0.5 * s) * n, s,
-                           faceContactId(flip, refFaceForIds, incFaceForIds, a.id[i])};
+    if (!(s > margin)) ++count;
   }
   Manifold m;
   m.normal = flip ? -n : n;
-  reduceToFour(candidates, count, n, m);
+  if (count <= 4) {  // all kept, in order (what reduceToFour does with at most four)
+    for (int i = 0; i < a.n; ++i)
+      if (const Real s = separation(i); !(s > margin)) m.points[m.count++] = candidate(i, s);
+  } else {
+    ManifoldPoint candidates[ClipPolygon::kCapacity];
+    int kept = 0;
+    for (int i = 0; i < a.n; ++i)
+      if (const Real s = separation(i); !(s > margin)) candidates[kept++] = candidate(i, s);
+    reduceToFour(candidates, kept, n, m);
+  }
   m.separation = count ? deepest : 0.0;
   return m;
 }

@@ -33,7 +33,9 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
     bone.restInverse = restEdgesInverse(bone.rest);
     bone.shape = collision::makeBox(b.halfExtents).value();
     const std::array<Vec3, 8> corners = boxCorners(b.halfExtents);
-    for (int k = 0; k < 8; ++k) bone.corners[k] = barycentric(bone.rest, corners[k]);
+    for (int i = 0; i < 8; ++i) bone.corners[i] = barycentric(bone.rest, corners[i]);
+    for (int i = 0; i < 8; ++i)
+      for (int k = 0; k < 4; ++k) bone.cornerWeights[k][i] = bone.corners[i][k];
     for (const Vec3& offset : bone.rest) {
       const Vec3 p = b.center + b.orientation * offset;
       r.x_.push_back(p);

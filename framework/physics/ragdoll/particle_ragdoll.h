@@ -135,6 +135,9 @@ class ParticleRagdoll {
     std::array<Vec3, 4> rest{};  // particle offsets in the box frame
     Mat3 restInverse{1.0};
     std::array<Weights, 8> corners{};  // barycentric weights of the box corners
+    // The same by particle (cornerWeights[k][i] = corners[i][k]): the ground test sums them corner by
+    // corner in packed pairs.
+    std::array<std::array<Real, 8>, 4> cornerWeights{};
     collision::Shape shape;            // the box, for the narrow phase
   };
   struct Stick {

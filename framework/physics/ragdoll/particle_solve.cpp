@@ -119,13 +119,12 @@ bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
   // summed in its order).
   const Real y[4] = {x_[B.first].y, x_[B.first + 1].y, x_[B.first + 2].y, x_[B.first + 3].y};
   std::array<Real, std::tuple_size_v<decltype(Bone::corners)>> depth;
+  const auto& w = B.cornerWeights;
+  for (std::size_t i = 0; i < depth.size(); ++i)  // the same sums, corner by corner (vectorised)
+    depth[i] = settings_.groundHeight - (w[0][i] * y[0] + w[1][i] * y[1] + w[2][i] * y[2] + w[3][i] * y[3]);
   // The deepest corner; equally deep ones (within 0.1 mm) are averaged (paper §3.3).
   Real deepest = 0.0;
-  for (std::size_t i = 0; i < depth.size(); ++i) {
-    const Weights& c = B.corners[i];
-    depth[i] = settings_.groundHeight - (c[0] * y[0] + c[1] * y[1] + c[2] * y[2] + c[3] * y[3]);
-    deepest = std::max(deepest, depth[i]);
-  }
+  for (const Real d : depth) deepest = std::max(deepest, d);
   if (!(deepest > 1e-9)) return false;
   std::array<Vec3, 4> p = particlesOf(bone);
   Weights weights{0.0, 0.0, 0.0, 0.0};
