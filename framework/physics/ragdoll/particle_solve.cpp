@@ -38,13 +38,18 @@ void ParticleRagdoll::relax() {
 void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {
   const Real size = glm::length(delta);
   if (!(size > 1e-15)) return;
-  // C = −|Δ| along n = Δ/|Δ| for the point of B minus the point of A: B gains, A gives.
-  Term terms[8];
-  for (int k = 0; k < 4; ++k) {
-    terms[k] = {bones_[b].first + k, inB[k]};
-    terms[4 + k] = {bones_[a].first + k, -inA[k]};
-  }
-  projectAlongGradient(x_, w_, terms, delta / size, -size);
+  // C = −|Δ| along n = Δ/|Δ| for the point of B minus the point of A: B gains, A gives. kernels.h's
+  // projection with the terms (B's particles, c_k) then (A's, −c_k) written out: the same products and
+  // sums in the same order ((w·(−c))·(−c) = (w·c)·c, and x − (−v) = x + v, exactly).
+  const int fb = bones_[b].first, fa = bones_[a].first;
+  Real denominator = 0.0;
+  for (int k = 0; k < 4; ++k) denominator += w_[fb + k] * inB[k] * inB[k];
+  for (int k = 0; k < 4; ++k) denominator += w_[fa + k] * inA[k] * inA[k];
+  if (!(denominator > 1e-300)) return;
+  const Vec3 n = delta / size;
+  const Real s = -size / denominator;
+  for (int k = 0; k < 4; ++k) x_[fb + k] -= (s * w_[fb + k] * inB[k]) * n;
+  for (int k = 0; k < 4; ++k) x_[fa + k] += (s * w_[fa + k] * inA[k]) * n;
 }
 
 void ParticleRagdoll::solveJoints() {
