@@ -138,7 +138,7 @@ class ParticleRagdoll {
     // The same by particle (cornerWeights[k][i] = corners[i][k]): the ground test sums them corner by
     // corner in packed pairs.
     std::array<std::array<Real, 8>, 4> cornerWeights{};
-    collision::Shape shape;            // the box, for the narrow phase
+    collision::Shape shape;  // the box, for the narrow phase
   };
   struct Stick {
     int a = 0, b = 0;
