@@ -44,11 +44,13 @@ struct Manifold {
   }
 };
 
-/// A convex polygon of world points with a feature id per vertex (clipping input and output).
+/// A convex polygon of world points with a feature id per vertex (clipping input and output). Only the
+/// first n entries are set: the arrays are left uninitialised (zeroing 64 points cost more than clipping
+/// a box face).
 struct ClipPolygon {
   static constexpr int kCapacity = 64;
-  std::array<Vec3, kCapacity> p{};
-  std::array<std::uint32_t, kCapacity> id{};
+  std::array<Vec3, kCapacity> p;
+  std::array<std::uint32_t, kCapacity> id;
   int n = 0;
   void push(const Vec3& x, std::uint32_t i) {
     if (n < kCapacity) p[n] = x, id[n] = i, ++n;

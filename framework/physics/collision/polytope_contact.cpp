@@ -52,9 +52,12 @@ Manifold clipAgainstFace(const ConvexHull& ref, const Transform& refPose, int re
 
 Manifold clipAgainstPolygon(const ClipPolygon& ref, const Vec3& n, const ClipPolygon& incident, Real incidentRadius,
                             bool flip, Real margin, int refFaceForIds, int incFaceForIds) {
-  ClipPolygon a = incident, b;
+  // Sutherland–Hodgman alternates between two buffers (the polygons hold 64 points: copying or
+  // swapping them cost more than the clipping).
+  ClipPolygon buffers[2];
+  const ClipPolygon* in = &incident;
   // Side planes: through each edge of the reference face, normal cross(edge, n) pointing outward.
-  for (int k = 0; k < ref.n && a.n > 0; ++k) {
+  for (int k = 0; k < ref.n && in->n > 0; ++k) {
     const Vec3& v0 = ref.p[k];
     const Vec3& v1 = ref.p[(k + 1) % ref.n];
     const Vec3 side = glm::cross(v1 - v0, n);
@@ -63,24 +66,37 @@ Manifold clipAgainstPolygon(const ClipPolygon& ref, const Vec3& n, const ClipPol
     // The side planes are moved out by kClipTolerance, so that an incident vertex lying on the reference
     // face's edge (equal boxes stacked exactly) stays a vertex instead of flickering between a vertex and
     // a clipped point from step to step, which would defeat warm starting.
-    clipPolygon(a, side / len, glm::dot(side / len, v0) + kClipTolerance, static_cast<std::uint32_t>(k), b);
-    std::swap(a, b);
+    ClipPolygon& out = in == &buffers[0] ? buffers[1] : buffers[0];
+    clipPolygon(*in, side / len, glm::dot(side / len, v0) + kClipTolerance, static_cast<std::uint32_t>(k), out);
+    in = &out;
   }
+  const ClipPolygon& a = *in;
   const Real offset = glm::dot(n, ref.p[0]);
-  ManifoldPoint candidates[ClipPolygon::kCapacity];
+  const auto separation = [&](int i) { return glm::dot(n, a.p[i]) - offset - incidentRadius; };
+  // Midway between the incident surface point and its projection on the reference face.
+  const auto candidate = [&](int i, Real s) {
+    return ManifoldPoint{a.p[i] - (incidentRadius + 0.5 * s) * n, s,
+                         faceContactId(flip, refFaceForIds, incFaceForIds, a.id[i])};
+  };
   int count = 0;
   Real deepest = std::numeric_limits<Real>::max();
   for (int i = 0; i < a.n; ++i) {
-    const Real s = glm::dot(n, a.p[i]) - offset - incidentRadius;
+    const Real s = separation(i);
     deepest = std::min(deepest, s);
-    if (s > margin) continue;
-    // Midway between the incident surface point and its projection on the reference face.
-    candidates[count++] = {a.p[i] - (incidentRadius + 0.5 * s) * n, s,
-                           faceContactId(flip, refFaceForIds, incFaceForIds, a.id[i])};
+    if (!(s > margin)) ++count;
   }
   Manifold m;
   m.normal = flip ? -n : n;
-  reduceToFour(candidates, count, n, m);
+  if (count <= 4) {  // all kept, in order (what reduceToFour does with at most four)
+    for (int i = 0; i < a.n; ++i)
+      if (const Real s = separation(i); !(s > margin)) m.points[m.count++] = candidate(i, s);
+  } else {
+    ManifoldPoint candidates[ClipPolygon::kCapacity];
+    int kept = 0;
+    for (int i = 0; i < a.n; ++i)
+      if (const Real s = separation(i); !(s > margin)) candidates[kept++] = candidate(i, s);
+    reduceToFour(candidates, kept, n, m);
+  }
   m.separation = count ? deepest : 0.0;
   return m;
 }

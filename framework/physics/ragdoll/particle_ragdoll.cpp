@@ -33,7 +33,9 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
     bone.restInverse = restEdgesInverse(bone.rest);
     bone.shape = collision::makeBox(b.halfExtents).value();
     const std::array<Vec3, 8> corners = boxCorners(b.halfExtents);
-    for (int k = 0; k < 8; ++k) bone.corners[k] = barycentric(bone.rest, corners[k]);
+    for (int i = 0; i < 8; ++i) bone.corners[i] = barycentric(bone.rest, corners[i]);
+    for (int i = 0; i < 8; ++i)
+      for (int k = 0; k < 4; ++k) bone.cornerWeights[k][i] = bone.corners[i][k];
     for (const Vec3& offset : bone.rest) {
       const Vec3 p = b.center + b.orientation * offset;
       r.x_.push_back(p);
@@ -86,7 +88,6 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
   }
   r.touched_.assign(r.bones_.size(), 0);
   r.touchNormal_.assign(r.bones_.size(), Vec3(0.0));
-  r.measure(1.0 / 60.0);
   return r;
 }
 
@@ -123,7 +124,6 @@ void ParticleRagdoll::step(Real dt) {
     solveContacts(it + 1 == settings_.iterations);
   }
   applyFriction();
-  measure(dt);
 }
 
 void ParticleRagdoll::findPairs(Real dt) {
@@ -218,7 +218,7 @@ std::pair<HingeFrame, Vec3> ParticleRagdoll::hingeMeasure(const Joint& j) const 
   return {f, pointOf(j.b, j.reference)};
 }
 
-void ParticleRagdoll::measure(Real dt) {
+ParticleStats ParticleRagdoll::measure(Real dt) const {
   ParticleStats s;
   s.bones = boneCount();
   s.particles = particleCount();
@@ -251,10 +251,10 @@ void ParticleRagdoll::measure(Real dt) {
       for (const Weights& c : bones_[b].corners)
         s.maxPenetration = std::max(s.maxPenetration, settings_.groundHeight - embedded(p, c).y);
     }
-  stats_ = s;
+  return s;
 }
 
-ParticleStats ParticleRagdoll::stats() const { return stats_; }
+ParticleStats ParticleRagdoll::stats() const { return measure(lastDt_); }
 
 std::size_t ParticleRagdoll::memoryBytes() const {
   const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
@@ -306,7 +306,6 @@ void ParticleRagdoll::placeDragged() {
     x_[i] += shift;
     xOld_[i] = x_[i];
   }
-  measure(lastDt_);
 }
 
 }  // namespace pba::ragdoll

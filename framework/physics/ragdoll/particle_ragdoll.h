@@ -135,7 +135,10 @@ class ParticleRagdoll {
     std::array<Vec3, 4> rest{};  // particle offsets in the box frame
     Mat3 restInverse{1.0};
     std::array<Weights, 8> corners{};  // barycentric weights of the box corners
-    collision::Shape shape;            // the box, for the narrow phase
+    // The same by particle (cornerWeights[k][i] = corners[i][k]): the ground test sums them corner by
+    // corner in packed pairs.
+    std::array<std::array<Real, 8>, 4> cornerWeights{};
+    collision::Shape shape;  // the box, for the narrow phase
   };
   struct Stick {
     int a = 0, b = 0;
@@ -177,7 +180,9 @@ class ParticleRagdoll {
   /// inverse masses (the generic projection of kernels.h).
   void pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta);
   void applyFriction();
-  void measure(Real dt);
+  /// The statistics of the current state with step length dt (computed when asked: nothing in the
+  /// step reads them).
+  ParticleStats measure(Real dt) const;
   Real stickStrain() const;
   /// The hinge frame of joint j seen from bone A and B's reference point.
   std::pair<HingeFrame, Vec3> hingeMeasure(const Joint& j) const;
@@ -200,7 +205,6 @@ class ParticleRagdoll {
   Vec3 dragTarget_{0.0};
   Real lastDt_ = 1.0 / 60.0;
   Real strainAfterRelaxation_ = 0.0;
-  ParticleStats stats_;
 };
 
 }  // namespace pba::ragdoll

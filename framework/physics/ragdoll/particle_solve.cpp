@@ -16,26 +16,40 @@ void ParticleRagdoll::relax() {
       for (const Stick& s : sticks_) projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
     return;
   }
+  // kernels.h's projection with the coefficients (−1, +1) written out: Σ w a² = w_a + w_b, and the
+  // same products and sums in the same order (bit for bit the general route).
   for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
     for (const Stick& s : sticks_) {
-      const Vec3 d = x_[s.b] - x_[s.a];
+      Vec3& xa = x_[s.a];
+      Vec3& xb = x_[s.b];
+      const Vec3 d = xb - xa;
       const Real length = glm::length(d);
       if (!(length > 1e-12)) continue;
-      const Term terms[2] = {{s.a, -1.0}, {s.b, 1.0}};
-      projectAlongGradient(x_, w_, terms, d / length, length - s.rest);
+      const Real wa = w_[s.a], wb = w_[s.b];
+      const Real denominator = wa + wb;
+      if (!(denominator > 1e-300)) continue;
+      const Vec3 n = d / length;
+      const Real scale = (length - s.rest) / denominator;
+      xa += (scale * wa) * n;
+      xb -= (scale * wb) * n;
     }
 }
 
 void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {
   const Real size = glm::length(delta);
   if (!(size > 1e-15)) return;
-  // C = −|Δ| along n = Δ/|Δ| for the point of B minus the point of A: B gains, A gives.
-  Term terms[8];
-  for (int k = 0; k < 4; ++k) {
-    terms[k] = {bones_[b].first + k, inB[k]};
-    terms[4 + k] = {bones_[a].first + k, -inA[k]};
-  }
-  projectAlongGradient(x_, w_, terms, delta / size, -size);
+  // C = −|Δ| along n = Δ/|Δ| for the point of B minus the point of A: B gains, A gives. kernels.h's
+  // projection with the terms (B's particles, c_k) then (A's, −c_k) written out: the same products and
+  // sums in the same order ((w·(−c))·(−c) = (w·c)·c, and x − (−v) = x + v, exactly).
+  const int fb = bones_[b].first, fa = bones_[a].first;
+  Real denominator = 0.0;
+  for (int k = 0; k < 4; ++k) denominator += w_[fb + k] * inB[k] * inB[k];
+  for (int k = 0; k < 4; ++k) denominator += w_[fa + k] * inA[k] * inA[k];
+  if (!(denominator > 1e-300)) return;
+  const Vec3 n = delta / size;
+  const Real s = -size / denominator;
+  for (int k = 0; k < 4; ++k) x_[fb + k] -= (s * w_[fb + k] * inB[k]) * n;
+  for (int k = 0; k < 4; ++k) x_[fa + k] += (s * w_[fa + k] * inA[k]) * n;
 }
 
 void ParticleRagdoll::solveJoints() {
@@ -110,13 +124,12 @@ bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
   // summed in its order).
   const Real y[4] = {x_[B.first].y, x_[B.first + 1].y, x_[B.first + 2].y, x_[B.first + 3].y};
   std::array<Real, std::tuple_size_v<decltype(Bone::corners)>> depth;
+  const auto& w = B.cornerWeights;
+  for (std::size_t i = 0; i < depth.size(); ++i)  // the same sums, corner by corner (vectorised)
+    depth[i] = settings_.groundHeight - (w[0][i] * y[0] + w[1][i] * y[1] + w[2][i] * y[2] + w[3][i] * y[3]);
   // The deepest corner; equally deep ones (within 0.1 mm) are averaged (paper §3.3).
   Real deepest = 0.0;
-  for (std::size_t i = 0; i < depth.size(); ++i) {
-    const Weights& c = B.corners[i];
-    depth[i] = settings_.groundHeight - (c[0] * y[0] + c[1] * y[1] + c[2] * y[2] + c[3] * y[3]);
-    deepest = std::max(deepest, depth[i]);
-  }
+  for (const Real d : depth) deepest = std::max(deepest, d);
   if (!(deepest > 1e-9)) return false;
   std::array<Vec3, 4> p = particlesOf(bone);
   Weights weights{0.0, 0.0, 0.0, 0.0};

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/gtx/component_wise.hpp>
-
 namespace pba::ragdoll {
 
 std::array<Vec3, 4> tetrahedronOffsets(const Vec3& h) {
@@ -18,10 +16,6 @@ Weights barycentric(const std::array<Vec3, 4>& x, const Vec3& point) {
   return {1.0 - c.x - c.y - c.z, c.x, c.y, c.z};
 }
 
-Vec3 embedded(const std::array<Vec3, 4>& x, const Weights& c) {
-  return c[0] * x[0] + c[1] * x[1] + c[2] * x[2] + c[3] * x[3];
-}
-
 Mat3 restEdgesInverse(const std::array<Vec3, 4>& r) {
   return glm::inverse(Mat3(r[1] - r[0], r[2] - r[0], r[3] - r[0]));
 }
@@ -33,8 +27,13 @@ collision::Transform fitFrame(const std::array<Vec3, 4>& x, const Mat3& restInve
   // next would move them by ~10⁻²⁸). A reflected (inverted) tetrahedron keeps det < 0: flip one axis then.
   for (int k = 0; k < 6; ++k) {
     const Mat3 next = 0.5 * (r + glm::transpose(glm::inverse(r)));
+    // The largest entry change, column by column as glm::compMax(glm::abs(·)) takes it; std::abs is one
+    // mask where glm's abs branches (they differ only in the sign of a zero, which the test ignores).
     Real change = 0.0;
-    for (int c = 0; c < 3; ++c) change = std::max(change, glm::compMax(glm::abs(next[c] - r[c])));
+    for (int c = 0; c < 3; ++c) {
+      const Vec3 d = next[c] - r[c];
+      change = std::max(change, std::max(std::max(std::abs(d.x), std::abs(d.y)), std::abs(d.z)));
+    }
     r = next;
     if (change < 1e-14) break;
   }

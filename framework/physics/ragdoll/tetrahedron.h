@@ -28,8 +28,10 @@ std::array<Vec3, 4> tetrahedronOffsets(const Vec3& halfExtents);
 /// The barycentric coordinates of `point` in the tetrahedron (x0..x3), Σ = 1. The tetrahedron must not
 /// be flat.
 Weights barycentric(const std::array<Vec3, 4>& x, const Vec3& point);
-/// Σ c_i x_i.
-Vec3 embedded(const std::array<Vec3, 4>& x, const Weights& c);
+/// Σ c_i x_i (inline: every joint point of every relaxation pass reads it).
+inline Vec3 embedded(const std::array<Vec3, 4>& x, const Weights& c) {
+  return c[0] * x[0] + c[1] * x[1] + c[2] * x[2] + c[3] * x[3];
+}
 /// The mean of the four particles: the centre of the box fitted to them (fitFrame).
 inline Vec3 centroid(const std::array<Vec3, 4>& x) { return 0.25 * (x[0] + x[1] + x[2] + x[3]); }
 

@@ -187,7 +187,8 @@ void solveJoint(Joint& j, std::vector<SolverBody>& bodies, const JointStep& step
       solvePoint(j, A, B, step.soft, useBias);
       break;
     case JointKind::Hinge:
-      solveMotorAndLimits(j, A, B, step, useBias, detail::twistAngle(j, A, B));
+      // The angle (a quaternion product and an atan2) only where a limit reads it.
+      solveMotorAndLimits(j, A, B, step, useBias, d.enableLimit ? detail::twistAngle(j, A, B) : 0.0);
       solveHingeAxis(j, A, B, step.soft, useBias);
       solvePoint(j, A, B, step.soft, useBias);
       break;

@@ -1,6 +1,9 @@
 // The particle ragdoll's own parts: the particulating (tetrahedron mass, centre and inertia equal the
 // box's, against the closed form of a solid box), barycentric embedding and frame fitting, hinge limits
-// beyond 180° on the correct side with the reference kernels, determinism, and bad descriptions.
+// beyond 180° on the correct side with the reference kernels, the statistics against sums over the
+// particles, determinism, and bad descriptions.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -73,6 +76,45 @@ TEST(RagdollParticleHinge, LimitsBeyondHalfATurnHoldOnTheCorrectSide) {
   for (int i = 0; i < 600; ++i) up.step(1.0 / 60.0), down.step(1.0 / 60.0);
   EXPECT_NEAR(radToDeg(up.jointAngle(0)), 0.0, 2.0);
   EXPECT_NEAR(radToDeg(down.jointAngle(0)), -90.0, 2.0);
+}
+
+// stats() measures when asked: the state after the last step, with that step's length (here 0.01 s, not
+// the 1/60 s before the first step). Expected values summed here from the particles: kinetic energy
+// Σ ½ m |(x − x_old)/h|², potential energy −Σ m g·x over free particles, and the deepest box corner below
+// the ground, the corners embedded by their barycentric weights in the tetrahedron.
+TEST(RagdollParticleStats, DescribeTheStateAfterTheLastStepWithItsStepLength) {
+  const RagdollDesc d = buildBoxesTest();
+  ParticleRagdoll r = ParticleRagdoll::build(d).value();
+  EXPECT_EQ(r.stats().kineticEnergy, 0.0);  // not started: the initial velocities need the step
+  const Real h = 0.01;
+  for (int step = 1; step <= 120; ++step) {
+    r.step(h);
+    if (step % 40 != 0) continue;
+    SCOPED_TRACE(step);
+    Real kinetic = 0.0, potential = 0.0, penetration = 0.0;
+    for (int b = 0; b < r.boneCount(); ++b) {
+      const Real m = 0.25 * r.boneMass(b);
+      std::array<Vec3, 4> x{};
+      for (int k = 0; k < 4; ++k) {
+        const int i = 4 * b + k;
+        x[k] = r.positions()[i];
+        const Vec3 v = (r.positions()[i] - r.previousPositions()[i]) / h;
+        kinetic += 0.5 * m * glm::dot(v, v);
+        potential += m * kStandardGravity * x[k].y;
+      }
+      const Vec3 e = r.halfExtents(b);
+      const std::array<Vec3, 4> rest = tetrahedronOffsets(e);
+      for (int c = 0; c < 8; ++c) {
+        const Vec3 corner(c & 1 ? e.x : -e.x, c & 2 ? e.y : -e.y, c & 4 ? e.z : -e.z);
+        penetration = std::max(penetration, -embedded(x, barycentric(rest, corner)).y);
+      }
+    }
+    const ParticleStats s = r.stats();
+    EXPECT_NEAR(s.kineticEnergy, kinetic, 1e-12 * kinetic);
+    EXPECT_NEAR(s.potentialEnergy, potential, 1e-12 * std::abs(potential));
+    EXPECT_NEAR(s.maxPenetration, penetration, 1e-12);
+    EXPECT_EQ(r.stats().kineticEnergy, s.kineticEnergy);  // asking again measures the same state
+  }
 }
 
 TEST(RagdollConstraint, AnEightTimesHeavierBoxRestsOnTheFloorWithoutSinking) {
