@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <ranges>
 #include <vector>
 
 #include "physics/exercises/not_implemented.h"
@@ -162,12 +163,25 @@ namespace {
   x[i] = projected;
 }
 
-/// Projects particle i out of every collider; counts its contacts into stats.
-inline void collideOne(std::span<const Prepared> prepared, std::size_t i, std::span<Vec3> x,
-                       std::span<const Vec3> xPrev, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
-                       CollisionPassStats& stats) {
-  for (const Prepared& p : prepared) {
-    if (!clearOf(p, x[i], margin)) collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
+/// Projects the particles `indices` selects (those with inverse mass ≠ 0) out of collider p. The plane's
+/// clear test runs with its axis and centre held in registers: most queries end there. A particle's
+/// colliders are visited one after the other, so a pass that calls this collider by collider gives each
+/// particle exactly what visiting its colliders in turn would, provided that no particle is listed twice.
+template <typename Indices>
+void collideEach(const Prepared& p, const Indices& indices, std::span<Vec3> x, std::span<const Vec3> xPrev,
+                 std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
+                 CollisionPassStats& stats) {
+  if (p.c->shape == ColliderShape::Plane) {
+    const Vec3 axis = p.axis, center = p.c->center;
+    for (const std::size_t i : indices) {
+      if (inverseMass[i] != 0.0 && !(glm::dot(axis, x[i] - center) >= margin))  // clearOf's plane test
+        collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
+    }
+    return;
+  }
+  for (const std::size_t i : indices) {
+    if (inverseMass[i] != 0.0 && !clearOf(p, x[i], margin))
+      collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
   }
 }
 
@@ -184,9 +198,10 @@ CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec
                               Real frictionScale) {
   CollisionPassStats stats;
   if (colliders.empty()) return stats;
-  const std::vector<Prepared> prepared = prepareAll(colliders);
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (inverseMass[i] != 0.0) collideOne(prepared, i, x, xPrev, margin, h, velocities, frictionScale, stats);
+  // Collider by collider: every particle once, so the same results as particle by particle.
+  for (const Prepared& p : prepareAll(colliders)) {
+    collideEach(p, std::views::iota(std::size_t{0}, x.size()), x, xPrev, inverseMass, margin, h, velocities,
+                frictionScale, stats);
   }
   return stats;
 }
@@ -196,8 +211,14 @@ void collideListed(std::span<const Collider> colliders, std::span<const std::uin
   if (colliders.empty()) return;
   const std::vector<Prepared> prepared = prepareAll(colliders);
   CollisionPassStats unused;
+  if (prepared.size() == 1) {  // the order per particle cannot differ
+    collideEach(prepared.front(), particles, x, xPrev, inverseMass, margin, h, {}, 0.0, unused);
+    return;
+  }
+  // A particle may be listed more than once: each listing visits all its colliders in turn.
   for (const std::uint32_t i : particles) {
-    if (inverseMass[i] != 0.0) collideOne(prepared, i, x, xPrev, margin, h, {}, 0.0, unused);
+    for (const Prepared& p : prepared)
+      collideEach(p, std::span<const std::uint32_t>(&i, 1), x, xPrev, inverseMass, margin, h, {}, 0.0, unused);
   }
 }
 
