@@ -65,7 +65,7 @@ PBA_IK_BENCH(BM_Sdls_Ball, SolverKind::SelectivelyDamped, JointType::Ball);
 PBA_IK_BENCH(BM_Gradient_Ball, SolverKind::GradientDescent, JointType::Ball);  // golden-section line search
 PBA_IK_BENCH(BM_Lbfgs_Ball, SolverKind::Lbfgs, JointType::Ball);
 PBA_IK_BENCH(BM_Ccd_Hinge, SolverKind::Ccd, JointType::Hinge);
-// The departure of ours for long limited chains (docs/performance-ik.md, "CCD on 1,000 limited
+// The departure of ours for long limited chains (docs/performance-ik-ccd.md, "CCD on 1,000 limited
 // hinges"): every joint turns by at most 0.02 rad (≈ 1.15°) per pass.
 void BM_Ccd_HingeMaxTurn(benchmark::State& s) { solveChain(s, SolverKind::Ccd, JointType::Hinge, 0.0, 0.02); }
 BENCHMARK(BM_Ccd_HingeMaxTurn)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond)->MinTime(0.5);

@@ -1,4 +1,4 @@
-// IK against a peer in the same run (docs/performance-ik.md, "Against Orocos KDL"): our solvers and,
+// IK against a peer in the same run (docs/performance-ik-kdl.md, "Against Orocos KDL"): our solvers and,
 // when liborocos-kdl-dev is installed, KDL's Levenberg-Marquardt solver ChainIkSolverPos_LMA on the
 // same chains and the same goals.
 //

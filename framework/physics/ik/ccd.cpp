@@ -11,7 +11,7 @@
 // are updated incrementally by each joint's rotation (no full FK per joint, unlike the naive loop).
 //
 // SolveOptions::ccdMaxTurn (ours, off by default): each joint turns by at most that angle per pass
-// (docs/performance-ik.md, "CCD on 1,000 limited hinges"). A hinge carrying one point then turns by
+// (docs/performance-ik-ccd.md, "CCD on 1,000 limited hinges"). A hinge carrying one point then turns by
 // half-angle quaternions while it stays inside its limits (turnHingeCapped): IK-2's rotation, cut to
 // the cap, composed with the hinge's own rotation about the same axis, its angle written once at the
 // end (flushPose), as FABRIK's forward pass does; at a limit it takes alignJoint's angle and clamp.

@@ -28,7 +28,7 @@ Vec3 rotationalColumn(const Vec3& worldAxis, const Vec3& pivot, const Vec3& effe
 /// IK-4 (jacobian_solvers.cpp): the damped least-squares step Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe.
 std::vector<Real> dampedLeastSquaresStep(const Matrix& J, const std::vector<Real>& error, Real lambda);
 
-/// IK-5 (fabrik.cpp): FABRIK's two passes on a chain of points p₀ … pₙ₋₁ with segment lengths
+/// IK-5 (fabrik_passes.cpp): FABRIK's two passes on a chain of points p₀ … pₙ₋₁ with segment lengths
 /// lengths[i] = |pᵢ₊₁ − pᵢ| (Aristidou & Lasenby 2011, Algorithm 1).
 /// Backward ("reaching"): pₙ₋₁ = target, then each earlier point moves toward its successor.
 void fabrikBackward(std::vector<Vec3>& points, const std::vector<Real>& lengths, const Vec3& target);

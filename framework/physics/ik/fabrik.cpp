@@ -6,8 +6,8 @@
 //
 // Plain FABRIK works on points. On a single chain of ball or free joints that no limit restricts
 // (the setting of the FABRIK paper) every placement of the points is a pose, so the solver iterates
-// on the points alone (IK-5's passes) and turns them into joint angles once, when the driver stops
-// (finish()).
+// on the points alone (IK-5's passes, fabrik_passes.cpp) and turns them into joint angles once, when
+// the driver stops (finish()).
 //
 // Everywhere else (trees, hinges, prismatic joints, limits) FABRIK runs on rigid bodies: joint j's
 // body is its frame (pivot P_j, world rotation R_j) with the points fixed in it: the pivots of its
@@ -48,64 +48,11 @@
 #include <memory>
 #include <span>
 
-#include "physics/exercises/not_implemented.h"
 #include "physics/ik/exercises.h"
 #include "physics/ik/fabrik_tree.h"
 #include "physics/ik/solver_internal.h"
 
 namespace pba::ik {
-
-// ***** IK-5: FABRIK's backward and forward passes (Aristidou & Lasenby 2011, Algorithm 1) *****
-// Backward pass (fabrikBackward), on points p[0..n-1] with lengths[i] = |p[i+1] − p[i]|:
-// (1) Move the last point onto the target: p[n−1] = target.
-// (2) For i from n−2 down to 0: the direction d = p[i] − p[i+1]; if |d| is (almost) zero leave p[i]
-//     where it is (no direction is defined); otherwise p[i] = p[i+1] + lengths[i] · d / |d|.
-// Forward pass (fabrikForward):
-// (3) Move the first point back onto the base: p[0] = base.
-// (4) For i from 1 to n−1: d = p[i] − p[i−1]; if |d| is (almost) zero leave p[i]; otherwise
-//     p[i] = p[i−1] + lengths[i−1] · d / |d|.
-// *****
-void fabrikBackward([[maybe_unused]] std::vector<Vec3>& points, [[maybe_unused]] const std::vector<Real>& lengths,
-                    [[maybe_unused]] const Vec3& target) {
-  // BEGIN SOLUTION
-  if (points.empty()) return;
-  points.back() = target;
-  for (size_t i = points.size() - 1; i-- > 0;) {
-    const Vec3 d = points[i] - points[i + 1];
-    const Real l = glm::length(d);
-    if (l > 1e-12) points[i] = points[i + 1] + d * (lengths[i] / l);
-  }
-  return;
-  // END SOLUTION
-  // STUB: exercises::markNotImplemented("IK-5");
-}
-
-void fabrikForward([[maybe_unused]] std::vector<Vec3>& points, [[maybe_unused]] const std::vector<Real>& lengths,
-                   [[maybe_unused]] const Vec3& base) {
-  // BEGIN SOLUTION
-  if (points.empty()) return;
-  points.front() = base;
-  for (size_t i = 1; i < points.size(); ++i) {
-    const Vec3 d = points[i] - points[i - 1];
-    const Real l = glm::length(d);
-    if (l > 1e-12) points[i] = points[i - 1] + d * (lengths[i - 1] / l);
-  }
-  return;
-  // END SOLUTION
-  // STUB: exercises::markNotImplemented("IK-5");
-}
-
-// Start-up probe: tells the lab whether IK-5 is still a stub.
-namespace {
-void probeFabrikPasses() {
-  std::vector<Vec3> points{Vec3(0.0), Vec3(1.0, 0.0, 0.0)};
-  const std::vector<Real> lengths{1.0};
-  fabrikBackward(points, lengths, Vec3(0.0, 1.0, 0.0));
-  fabrikForward(points, lengths, Vec3(0.0));
-}
-}  // namespace
-PBA_EXERCISE_PROBE(probeFabrikPasses());
-
 namespace detail {
 namespace {
 

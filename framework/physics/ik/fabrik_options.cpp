@@ -1,5 +1,6 @@
 // FABRIK's two departures of ours (SolveOptions::fabrikHingeTwist, fabrikLimitFit; off by default,
-// the published passes being fabrik.cpp), and the IK-6 clamp of candidate values both passes use.
+// the published passes being fabrik.cpp and IK-5's fabrik_passes.cpp), and the IK-6 clamp of
+// candidate values both passes use.
 //
 // Why (docs/performance-ik.md, "Trees and analytic IK"): on the hand (ball knuckles within ±60° per
 // Euler angle, two one-way hinges per finger), FABRIK as published reaches 21 % of goals from rest.

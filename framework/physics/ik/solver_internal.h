@@ -253,7 +253,7 @@ Real bestHingeValue(Real psi, Real lo, Real hi, bool clampLimits);
 
 /// The rotation R maximising Σ wᵢ toᵢ·(R fromᵢ) (Horn's quaternion method: the least-squares
 /// rotation carrying the vectors `from` onto `to`), nearest `reference` where the vectors leave a
-/// rotation free (collinear or coincident points). fabrik.cpp.
+/// rotation free (collinear or coincident points). fit_rotation.cpp.
 Quat fitRotation(const std::vector<Vec3>& from, const std::vector<Vec3>& to, const std::vector<Real>& w,
                  const Quat& reference);
 

@@ -18,7 +18,7 @@
 namespace pba::ik {
 namespace {
 
-// The setting of docs/performance-ik.md, "CCD on 1,000 limited hinges (issue 13)": the bench's cap.
+// The setting of docs/performance-ik-ccd.md, "CCD on 1,000 limited hinges (issue 13)": the bench's cap.
 constexpr Real kMaxTurn = 0.02;  // [rad]
 
 bool stubRan() { return testing::stubRan("CCD with limits needs IK-2 and IK-6, nothing checked"); }
@@ -38,7 +38,7 @@ TEST(IkCcdMaxTurn, IsOffByDefault) {
 
 // 1,000 planar hinges within ±30° (the bench's chain), 40 reachable goals of a seed the bench does not
 // use, cap 200 passes: at least 95 % reached (measured 100 %, about 10 passes), every pose inside the
-// limits. Plain CCD reaches about 1 % of such goals (docs/performance-ik.md).
+// limits. Plain CCD reaches about 1 % of such goals (docs/performance-ik-ccd.md).
 TEST(IkCcdMaxTurn, ThousandLimitedHingesReachAtLeast95PercentOfGoals) {
   exercises::clearNotImplemented();
   const Rig rig = testing::chain(JointType::Hinge, 1000, 30.0);
