@@ -1,11 +1,7 @@
 // CLOTH-4: sphere collision projection with friction, and the colliders that reduce to it (plane, box,
 // capsule). Cloth tests use the explicit solver (no other exercise). Reference values: geometry and the
 // closed forms of Coulomb friction on a slope.
-#include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <random>
-#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -105,95 +101,6 @@ TEST(CLOTH_4_Colliders, TheListedPassProjectsOnlyTheListedFreeParticlesWithoutFr
   EXPECT_EQ(x[1], Vec3(0.1, -0.02, 0.0));
   EXPECT_VEC3_NEAR(x[2], Vec3(0.2, margin, 0.0), 1e-15);
   EXPECT_EQ(x[3], Vec3(0.3, -0.02, 0.0));
-}
-
-// Four overlapping colliders and 400 particles scattered through them (some pinned), for the passes below.
-struct PassScene {
-  std::vector<Collider> colliders;
-  std::vector<Vec3> x, previous, v;
-  std::vector<Real> w;
-};
-PassScene overlappingColliders() {
-  PassScene s;
-  Collider plane{ColliderShape::Plane, Vec3(0.0, 0.1, 0.0), glm::angleAxis(0.3, Vec3(0.0, 0.0, 1.0))};
-  Collider sphere{ColliderShape::Sphere, Vec3(0.2, 0.3, 0.0)};
-  sphere.radius = 0.35;
-  Collider box{ColliderShape::Box, Vec3(-0.2, 0.25, 0.1), glm::angleAxis(0.7, glm::normalize(Vec3(1.0, 1.0, 0.0)))};
-  box.halfExtents = Vec3(0.3, 0.2, 0.25);
-  box.velocity = Vec3(0.4, 0.0, 0.0);
-  Collider capsule{ColliderShape::Capsule, Vec3(0.0, 0.35, -0.1), glm::angleAxis(1.1, Vec3(1.0, 0.0, 0.0))};
-  capsule.radius = 0.15;
-  capsule.halfLength = 0.3;
-  s.colliders = {plane, sphere, box, capsule};
-  std::mt19937 random(7);
-  std::uniform_real_distribution<Real> u(-0.6, 0.6);
-  for (int i = 0; i < 400; ++i) {
-    const Vec3 p(u(random), 0.3 + u(random), u(random));
-    s.x.push_back(p);
-    s.previous.push_back(p + 0.05 * Vec3(u(random), u(random), u(random)));
-    s.v.push_back(Vec3(u(random), u(random), u(random)));
-    s.w.push_back(i % 9 == 0 ? 0.0 : 1.0);
-  }
-  return s;
-}
-
-TEST(CLOTH_4_Colliders, ThePassGivesEachFreeParticleItsCollidersInTurnAsTheOneColliderQueryDoes) {
-  // Reference: particle by particle, each collider in turn through collide(), velocities += Δx/h.
-  const Real margin = 0.005, h = 0.01, frictionScale = 0.7;
-  PassScene pass = overlappingColliders();
-  PassScene reference = pass;
-  std::size_t contacts = 0;
-  Real deepest = 0.0;
-  for (std::size_t i = 0; i < reference.x.size(); ++i) {
-    if (reference.w[i] == 0.0) continue;
-    for (const Collider& c : reference.colliders) {
-      Real depth = 0.0;
-      const Vec3 projected = collide(c, reference.x[i], reference.previous[i], margin, h, &depth, frictionScale);
-      if (depth <= 0.0) continue;
-      ++contacts;
-      deepest = std::max(deepest, depth);
-      reference.v[i] += (projected - reference.x[i]) / h;
-      reference.x[i] = projected;
-    }
-  }
-  ASSERT_GT(contacts, 100u);  // the scene does exercise the colliders, several per particle
-  const CollisionPassStats stats =
-      collideAll(pass.colliders, pass.x, pass.previous, pass.w, margin, h, pass.v, frictionScale);
-  EXPECT_EQ(stats.contacts, contacts);
-  EXPECT_EQ(stats.deepest, deepest);
-  for (std::size_t i = 0; i < pass.x.size(); ++i) {
-    EXPECT_EQ(pass.x[i], reference.x[i]) << "particle " << i;
-    EXPECT_EQ(pass.v[i], reference.v[i]) << "particle " << i;
-  }
-}
-
-TEST(CLOTH_4_Colliders, TheListedPassVisitsAllCollidersForEachListingInListOrder) {
-  // Repeats in the list: each listing of a particle meets all its colliders before the next listing.
-  const Real margin = 0.005, h = 0.01;
-  PassScene pass = overlappingColliders();
-  PassScene reference = pass;
-  std::vector<std::uint32_t> listed;
-  for (std::uint32_t i = 0; i < pass.x.size(); i += 3) listed.insert(listed.end(), {i, i / 2, i});
-  for (const std::uint32_t i : listed) {
-    if (reference.w[i] == 0.0) continue;
-    for (const Collider& c : reference.colliders) {
-      Real depth = 0.0;
-      const Vec3 projected = collide(c, reference.x[i], reference.previous[i], margin, h, &depth, 0.0);
-      if (depth > 0.0) reference.x[i] = projected;
-    }
-  }
-  collideListed(pass.colliders, listed, pass.x, pass.previous, pass.w, margin, h);
-  for (std::size_t i = 0; i < pass.x.size(); ++i) EXPECT_EQ(pass.x[i], reference.x[i]) << "particle " << i;
-  // One collider: the same, through the loop that runs collider by collider.
-  const std::vector<Collider> one{pass.colliders[1]};
-  PassScene single = overlappingColliders(), singleReference = single;
-  for (const std::uint32_t i : listed) {
-    Real depth = 0.0;
-    const Vec3 projected = collide(one[0], singleReference.x[i], singleReference.previous[i], margin, h, &depth, 0.0);
-    if (singleReference.w[i] != 0.0 && depth > 0.0) singleReference.x[i] = projected;
-  }
-  collideListed(one, listed, single.x, single.previous, single.w, margin, h);
-  for (std::size_t i = 0; i < single.x.size(); ++i) EXPECT_EQ(single.x[i], singleReference.x[i]) << "particle " << i;
 }
 
 TEST(CLOTH_4_Friction, ClothSticksOnASlopeWithTanThetaBelowMuAndOtherwiseSlidesAtGTimesSinMinusMuCos) {
