@@ -87,11 +87,16 @@ SurfacePoint surfaceOf(const Prepared& p, const Vec3& x) {
   return {};
 }
 
-/// True when x is certainly farther than margin from the collider: above a plane (exact, the test
-/// surfaceOf makes), outside the bounding sphere of the others.
+/// True when x is farther than margin above the plane through `point` with unit normal `normal` (the
+/// distance surfaceOf computes for a plane).
+inline bool clearOfPlane(const Vec3& normal, const Vec3& point, const Vec3& x, Real margin) {
+  return glm::dot(normal, x - point) >= margin;
+}
+/// True when x is certainly farther than margin from the collider: above a plane (exact), outside the
+/// bounding sphere of the others.
 bool clearOf(const Prepared& p, const Vec3& x, Real margin) {
+  if (p.c->shape == ColliderShape::Plane) return clearOfPlane(p.axis, p.c->center, x, margin);
   const Vec3 d = x - p.c->center;
-  if (p.c->shape == ColliderShape::Plane) return glm::dot(p.axis, d) >= margin;
   const Real r = p.bound + margin;
   return glm::dot(d, d) > r * r;
 }
@@ -174,7 +179,7 @@ void collideEach(const Prepared& p, const Indices& indices, std::span<Vec3> x, s
   if (p.c->shape == ColliderShape::Plane) {
     const Vec3 axis = p.axis, center = p.c->center;
     for (const std::size_t i : indices) {
-      if (inverseMass[i] != 0.0 && !(glm::dot(axis, x[i] - center) >= margin))  // clearOf's plane test
+      if (inverseMass[i] != 0.0 && !clearOfPlane(axis, center, x[i], margin))
         collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
     }
     return;
@@ -217,8 +222,10 @@ void collideListed(std::span<const Collider> colliders, std::span<const std::uin
   }
   // A particle may be listed more than once: each listing visits all its colliders in turn.
   for (const std::uint32_t i : particles) {
-    for (const Prepared& p : prepared)
-      collideEach(p, std::span<const std::uint32_t>(&i, 1), x, xPrev, inverseMass, margin, h, {}, 0.0, unused);
+    if (inverseMass[i] == 0.0) continue;
+    for (const Prepared& p : prepared) {
+      if (!clearOf(p, x[i], margin)) collideTouching(p, i, x, xPrev, margin, h, {}, 0.0, unused);
+    }
   }
 }
 

@@ -4,7 +4,9 @@
 // CLOTH-4's projection the same way, so they agree with the stub too.
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <random>
+#include <span>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -44,30 +46,40 @@ PassScene overlappingColliders() {
   return s;
 }
 
+// The reference: the particles in `order`, each listing meeting `colliders` in turn through collide();
+// with `withVelocities`, v += Δx/h as collideAll does. Returns the contacts and the deepest penetration.
+CollisionPassStats referencePass(PassScene& s, std::span<const Collider> colliders,
+                                 std::span<const std::uint32_t> order, Real margin, Real h, Real frictionScale,
+                                 bool withVelocities) {
+  CollisionPassStats stats;
+  for (const std::uint32_t i : order) {
+    if (s.w[i] == 0.0) continue;
+    for (const Collider& c : colliders) {
+      Real depth = 0.0;
+      const Vec3 projected = collide(c, s.x[i], s.previous[i], margin, h, &depth, frictionScale);
+      if (depth <= 0.0) continue;
+      ++stats.contacts;
+      stats.deepest = std::max(stats.deepest, depth);
+      if (withVelocities) s.v[i] += (projected - s.x[i]) / h;
+      s.x[i] = projected;
+    }
+  }
+  return stats;
+}
+
 TEST(ClothColliderPasses, ThePassGivesEachFreeParticleItsCollidersInTurnAsTheOneColliderQueryDoes) {
-  // Reference: particle by particle, each collider in turn through collide(), velocities += Δx/h.
   const Real margin = 0.005, h = 0.01, frictionScale = 0.7;
   PassScene pass = overlappingColliders();
   PassScene reference = pass;
-  std::size_t contacts = 0;
-  Real deepest = 0.0;
-  for (std::size_t i = 0; i < reference.x.size(); ++i) {
-    if (reference.w[i] == 0.0) continue;
-    for (const Collider& c : reference.colliders) {
-      Real depth = 0.0;
-      const Vec3 projected = collide(c, reference.x[i], reference.previous[i], margin, h, &depth, frictionScale);
-      if (depth <= 0.0) continue;
-      ++contacts;
-      deepest = std::max(deepest, depth);
-      reference.v[i] += (projected - reference.x[i]) / h;
-      reference.x[i] = projected;
-    }
-  }
-  ASSERT_GT(contacts, 100u);  // the scene does exercise the colliders, several per particle
+  std::vector<std::uint32_t> everyParticle(pass.x.size());
+  std::iota(everyParticle.begin(), everyParticle.end(), 0u);
+  const CollisionPassStats expected =
+      referencePass(reference, reference.colliders, everyParticle, margin, h, frictionScale, true);
+  ASSERT_GT(expected.contacts, 100u);  // the scene does exercise the colliders, several per particle
   const CollisionPassStats stats =
       collideAll(pass.colliders, pass.x, pass.previous, pass.w, margin, h, pass.v, frictionScale);
-  EXPECT_EQ(stats.contacts, contacts);
-  EXPECT_EQ(stats.deepest, deepest);
+  EXPECT_EQ(stats.contacts, expected.contacts);
+  EXPECT_EQ(stats.deepest, expected.deepest);
   for (std::size_t i = 0; i < pass.x.size(); ++i) {
     EXPECT_EQ(pass.x[i], reference.x[i]) << "particle " << i;
     EXPECT_EQ(pass.v[i], reference.v[i]) << "particle " << i;
@@ -77,30 +89,19 @@ TEST(ClothColliderPasses, ThePassGivesEachFreeParticleItsCollidersInTurnAsTheOne
 TEST(ClothColliderPasses, TheListedPassVisitsAllCollidersForEachListingInListOrder) {
   // Repeats in the list: each listing of a particle meets all its colliders before the next listing.
   const Real margin = 0.005, h = 0.01;
-  PassScene pass = overlappingColliders();
-  PassScene reference = pass;
   std::vector<std::uint32_t> listed;
-  for (std::uint32_t i = 0; i < pass.x.size(); i += 3) listed.insert(listed.end(), {i, i / 2, i});
-  for (const std::uint32_t i : listed) {
-    if (reference.w[i] == 0.0) continue;
-    for (const Collider& c : reference.colliders) {
-      Real depth = 0.0;
-      const Vec3 projected = collide(c, reference.x[i], reference.previous[i], margin, h, &depth, 0.0);
-      if (depth > 0.0) reference.x[i] = projected;
-    }
+  for (std::uint32_t i = 0; i < 400; i += 3) listed.insert(listed.end(), {i, i / 2, i});
+  const std::vector<Collider> all = overlappingColliders().colliders;
+  // All four colliders, then one alone (the loop that runs collider by collider).
+  for (const std::span<const Collider> colliders :
+       {std::span<const Collider>(all), std::span<const Collider>(all).subspan(1, 1)}) {
+    PassScene pass = overlappingColliders();
+    PassScene reference = pass;
+    referencePass(reference, colliders, listed, margin, h, 0.0, false);
+    collideListed(colliders, listed, pass.x, pass.previous, pass.w, margin, h);
+    for (std::size_t i = 0; i < pass.x.size(); ++i)
+      EXPECT_EQ(pass.x[i], reference.x[i]) << colliders.size() << " colliders, particle " << i;
   }
-  collideListed(pass.colliders, listed, pass.x, pass.previous, pass.w, margin, h);
-  for (std::size_t i = 0; i < pass.x.size(); ++i) EXPECT_EQ(pass.x[i], reference.x[i]) << "particle " << i;
-  // One collider: the same, through the loop that runs collider by collider.
-  const std::vector<Collider> one{pass.colliders[1]};
-  PassScene single = overlappingColliders(), singleReference = single;
-  for (const std::uint32_t i : listed) {
-    Real depth = 0.0;
-    const Vec3 projected = collide(one[0], singleReference.x[i], singleReference.previous[i], margin, h, &depth, 0.0);
-    if (singleReference.w[i] != 0.0 && depth > 0.0) singleReference.x[i] = projected;
-  }
-  collideListed(one, listed, single.x, single.previous, single.w, margin, h);
-  for (std::size_t i = 0; i < single.x.size(); ++i) EXPECT_EQ(single.x[i], singleReference.x[i]) << "particle " << i;
 }
 
 }  // namespace
