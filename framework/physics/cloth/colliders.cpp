@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <ranges>
 #include <vector>
 
 #include "physics/exercises/not_implemented.h"
@@ -168,23 +167,27 @@ namespace {
   x[i] = projected;
 }
 
-/// Projects the particles `indices` selects (those with inverse mass ≠ 0) out of collider p. The plane's
+/// Projects the particles `indexOf` names (those with inverse mass ≠ 0) out of collider p. The plane's
 /// clear test runs with its axis and centre held in registers: most queries end there. A particle's
 /// colliders are visited one after the other, so a pass that calls this collider by collider gives each
 /// particle exactly what visiting its colliders in turn would, provided that no particle is listed twice.
-template <typename Indices>
-void collideEach(const Prepared& p, const Indices& indices, std::span<Vec3> x, std::span<const Vec3> xPrev,
+/// `indexOf(k)` names the k-th of `count` particles. (A callable rather than std::views::iota: clang 14,
+/// which builds the fuzz preset, cannot compile libstdc++ 12's <ranges>.)
+template <typename IndexOf>
+void collideEach(const Prepared& p, std::size_t count, IndexOf indexOf, std::span<Vec3> x, std::span<const Vec3> xPrev,
                  std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
                  CollisionPassStats& stats) {
   if (p.c->shape == ColliderShape::Plane) {
     const Vec3 axis = p.axis, center = p.c->center;
-    for (const std::size_t i : indices) {
+    for (std::size_t k = 0; k < count; ++k) {
+      const std::size_t i = indexOf(k);
       if (inverseMass[i] != 0.0 && !clearOfPlane(axis, center, x[i], margin))
         collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
     }
     return;
   }
-  for (const std::size_t i : indices) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = indexOf(k);
     if (inverseMass[i] != 0.0 && !clearOf(p, x[i], margin))
       collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
   }
@@ -205,8 +208,9 @@ CollisionPassStats collideAll(std::span<const Collider> colliders, std::span<Vec
   if (colliders.empty()) return stats;
   // Collider by collider: every particle once, so the same results as particle by particle.
   for (const Prepared& p : prepareAll(colliders)) {
-    collideEach(p, std::views::iota(std::size_t{0}, x.size()), x, xPrev, inverseMass, margin, h, velocities,
-                frictionScale, stats);
+    collideEach(
+        p, x.size(), [](std::size_t k) { return k; }, x, xPrev, inverseMass, margin, h, velocities, frictionScale,
+        stats);
   }
   return stats;
 }
@@ -217,7 +221,9 @@ void collideListed(std::span<const Collider> colliders, std::span<const std::uin
   const std::vector<Prepared> prepared = prepareAll(colliders);
   CollisionPassStats unused;
   if (prepared.size() == 1) {  // the order per particle cannot differ
-    collideEach(prepared.front(), particles, x, xPrev, inverseMass, margin, h, {}, 0.0, unused);
+    collideEach(
+        prepared.front(), particles.size(), [particles](std::size_t k) { return std::size_t{particles[k]}; }, x, xPrev,
+        inverseMass, margin, h, {}, 0.0, unused);
     return;
   }
   // A particle may be listed more than once: each listing visits all its colliders in turn.
