@@ -171,7 +171,7 @@ namespace {
 /// clear test runs with its axis and centre held in registers: most queries end there. A particle's
 /// colliders are visited one after the other, so a pass that calls this collider by collider gives each
 /// particle exactly what visiting its colliders in turn would, provided that no particle is listed twice.
-/// `indexOf(k)` names the k-th of `count` particles. (A callable rather than std::views::iota: clang 14,
+/// `indexOf(k)` names the k-th of `count` particles. (A callable rather than an iota view: clang 14,
 /// which builds the fuzz preset, cannot compile libstdc++ 12's <ranges>.)
 template <typename IndexOf>
 void collideEach(const Prepared& p, std::size_t count, IndexOf indexOf, std::span<Vec3> x, std::span<const Vec3> xPrev,
