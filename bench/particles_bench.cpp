@@ -1,8 +1,9 @@
 // Particles benchmarks (issue 4, docs/architecture.md §8): particle updates per second per core of the fused
 // gravity + drag + plane kernel at 10⁴ and 10⁶ particles beside a STREAM-like triad (the memory
 // bandwidth limit, measured in the same run); cost per particle of spatial-hash pair collisions at 10⁵,
-// per sweep and through a neighbour list; one fountain pool step at 10⁶; ns per degree of freedom per
-// step of every integrator on a large oscillator system.
+// per sweep and through a neighbour list; one fountain pool step at 10⁵ and 10⁶, and the same with parts
+// of the scene taken away (where its time goes), beside one call of PART-5 on a resting particle; ns per
+// degree of freedom per step of every integrator on a large oscillator system.
 // Run: build/release/bench/pba_particles_bench (see docs/performance-particles.md).
 #include <benchmark/benchmark.h>
 
@@ -109,17 +110,27 @@ BENCHMARK(BM_NeighbourListBuildAndThreeSweeps)->Arg(100000)->Unit(benchmark::kMi
 // One step of the fountain's pool at 10⁶ (particles::stepFountain + Emitter::spawn) with the lab's
 // fountain settings, after 6 s of filling so that the pool is full and in steady state (a third of
 // it resting on the ground). The lab takes two such steps per displayed frame.
-void BM_FountainPoolStep(benchmark::State& state) {
-  const auto n = static_cast<std::size_t>(state.range(0));
+// What the fountain's step is made of: the same pool with parts of the scene taken away (docs/
+// performance-particles.md, "Where the fountain's time goes"). Variant (first argument):
+//   0 the lab's scene, 1 no spheres, 2 no obstacles at all (no contact ever: motion, ageing, removal,
+//   sums), 3 no spheres and static friction 100 (every resting particle sticks: PART-5's cheap branch),
+//   4 the spheres lifted 100 m out of reach (their tests without their contacts).
+enum FountainVariant { kWholeScene, kNoSpheres, kNoObstacles, kNoSpheresAllStick, kSpheresOutOfReach };
+void fountainPoolSteps(benchmark::State& state, std::size_t n, int variant) {
   particles::EmitterDesc ed{Vec3(0.0, 0.1, 0.0), kUp, 0.0, 3.0, 0.3, degToRad(12.0), 8.0, 0.1, 0.01, n, colors::kBlue,
                             colors::kOrange};
   ed.rate = static_cast<Real>(n) / (ed.lifetime * (1.0 - ed.lifetimeJitter));  // the scene's keep_full
   particles::Emitter emitter(ed, 1);
   particles::Particles p;
   p.reserve(n);
-  const std::vector<particles::PlaneObstacle> planes{particles::PlaneObstacle{}};
-  const std::vector<particles::SphereObstacle> spheres{
+  std::vector<particles::PlaneObstacle> planes{particles::PlaneObstacle{}};
+  std::vector<particles::SphereObstacle> spheres{
       {Vec3(1.2, 1.0, 0.0), 0.6}, {Vec3(-0.8, 0.5, 1.0), 0.5}, {Vec3(0.2, 0.4, -1.3), 0.4}};
+  if (variant == kNoSpheres || variant == kNoSpheresAllStick || variant == kNoObstacles) spheres.clear();
+  if (variant == kNoObstacles) planes.clear();
+  if (variant == kSpheresOutOfReach) {
+    for (particles::SphereObstacle& sphere : spheres) sphere.center.y += 100.0;
+  }
   particles::FusedFountainDesc f;
   f.dragRate = 0.005 / ed.particleMass;
   f.wind = Vec3(2.0, 0.0, 0.0);
@@ -127,19 +138,56 @@ void BM_FountainPoolStep(benchmark::State& state) {
   f.vortexCore = 0.5;
   f.planes = planes;
   f.spheres = spheres;
-  f.material = particles::ContactMaterial{0.4, 0.3, 0.2, 0.1};
+  f.material = particles::ContactMaterial{0.4, variant == kNoSpheresAllStick ? 100.0 : 0.3, 0.2, 0.1};
   f.radius = 0.02;
   const Real h = 1.0 / 120.0;
   for (int s = 0; s < 720; ++s) {
     particles::stepFountain(p, f, h);
     emitter.spawn(p, h);
   }
+  std::size_t contacts = 0, steps = 0;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(particles::stepFountain(p, f, h));
+    contacts += particles::stepFountain(p, f, h).contacts;
     emitter.spawn(p, h);
+    ++steps;
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+  state.counters["contact_share"] =
+      static_cast<double>(contacts) / static_cast<double>(std::max<std::size_t>(1, steps * n));
+}
+void BM_FountainPoolStep(benchmark::State& state) {
+  fountainPoolSteps(state, static_cast<std::size_t>(state.range(0)), kWholeScene);
+}
+void BM_FountainParts(benchmark::State& state) {
+  fountainPoolSteps(state, static_cast<std::size_t>(state.range(1)), static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_FountainParts)
+    ->ArgsProduct({{kNoSpheres, kNoObstacles, kNoSpheresAllStick, kSpheresOutOfReach}, {100000, 1000000}})
+    ->Unit(benchmark::kMillisecond);
+
+// One call of PART-5 (particles::contactVelocity) on a resting particle's velocity (inward g·h, the
+// fountain's material with restitution 0), over 333,000 particles (a third of the pool at 10⁶): the part
+// of a ground contact that is the student's scalar function. Argument: 0 every particle sticks (small
+// tangential speed), 1 every one slides, 2 a random half of each, which defeats branch prediction.
+void BM_ContactVelocityResting(benchmark::State& state) {
+  const std::size_t n = 333000;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<Real> u(-1.0, 1.0);
+  std::vector<Vec3> v(n), out(n);
+  for (Vec3& x : v) {
+    const Real tangential = state.range(0) == 0 ? 0.01 : state.range(0) == 1 ? 0.3 : (u(rng) > 0.0 ? 0.01 : 0.3);
+    x = Vec3(tangential * u(rng), -kStandardGravity / 120.0, tangential * u(rng));
+  }
+  const particles::ContactMaterial resting{0.0, 0.3, 0.2, 0.1};
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = particles::contactVelocity(v[i], kUp, resting);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
+BENCHMARK(BM_ContactVelocityResting)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
 BENCHMARK(BM_FountainPoolStep)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 // ns per DOF-step of each integrator on 10⁵ independent oscillators (force evaluation included), and its
