@@ -107,14 +107,15 @@ void BM_NeighbourListBuildAndThreeSweeps(benchmark::State& state) {
 }
 BENCHMARK(BM_NeighbourListBuildAndThreeSweeps)->Arg(100000)->Unit(benchmark::kMillisecond);
 
-// One step of the fountain's pool at 10⁶ (particles::stepFountain + Emitter::spawn) with the lab's
-// fountain settings, after 6 s of filling so that the pool is full and in steady state (a third of
-// it resting on the ground). The lab takes two such steps per displayed frame.
-// What the fountain's step is made of: the same pool with parts of the scene taken away (docs/
-// performance-particles.md, "Where the fountain's time goes"). Variant (first argument):
+// One step of the fountain's pool (particles::stepFountain + Emitter::spawn) with the lab's fountain
+// settings, after 6 s of filling so that the pool is full and in steady state (about a quarter of it
+// resting on the ground; counter contact_share). The lab takes two such steps per displayed frame.
+// BM_FountainParts runs the same pool with parts of the scene taken away, to show what the step is made
+// of (docs/performance-particles.md, "Where the fountain's time goes"). Variant (first argument):
 //   0 the lab's scene, 1 no spheres, 2 no obstacles at all (no contact ever: motion, ageing, removal,
 //   sums), 3 no spheres and static friction 100 (every resting particle sticks: PART-5's cheap branch),
 //   4 the spheres lifted 100 m out of reach (their tests without their contacts).
+constexpr Real kFountainStep = 1.0 / 120.0;  // [s] the lab's physics step
 enum FountainVariant { kWholeScene, kNoSpheres, kNoObstacles, kNoSpheresAllStick, kSpheresOutOfReach };
 void fountainPoolSteps(benchmark::State& state, std::size_t n, int variant) {
   particles::EmitterDesc ed{Vec3(0.0, 0.1, 0.0), kUp, 0.0, 3.0, 0.3, degToRad(12.0), 8.0, 0.1, 0.01, n, colors::kBlue,
@@ -140,24 +141,25 @@ void fountainPoolSteps(benchmark::State& state, std::size_t n, int variant) {
   f.spheres = spheres;
   f.material = particles::ContactMaterial{0.4, variant == kNoSpheresAllStick ? 100.0 : 0.3, 0.2, 0.1};
   f.radius = 0.02;
-  const Real h = 1.0 / 120.0;
+  const Real h = kFountainStep;
   for (int s = 0; s < 720; ++s) {
     particles::stepFountain(p, f, h);
     emitter.spawn(p, h);
   }
-  std::size_t contacts = 0, steps = 0;
+  std::size_t contacts = 0;
   for (auto _ : state) {
     contacts += particles::stepFountain(p, f, h).contacts;
     emitter.spawn(p, h);
-    ++steps;
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
+  const auto updates = static_cast<std::int64_t>(state.iterations() * n);
+  state.SetItemsProcessed(updates);
   state.counters["contact_share"] =
-      static_cast<double>(contacts) / static_cast<double>(std::max<std::size_t>(1, steps * n));
+      static_cast<double>(contacts) / static_cast<double>(std::max<std::int64_t>(1, updates));
 }
 void BM_FountainPoolStep(benchmark::State& state) {
   fountainPoolSteps(state, static_cast<std::size_t>(state.range(0)), kWholeScene);
 }
+BENCHMARK(BM_FountainPoolStep)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 void BM_FountainParts(benchmark::State& state) {
   fountainPoolSteps(state, static_cast<std::size_t>(state.range(1)), static_cast<int>(state.range(0)));
 }
@@ -176,7 +178,7 @@ void BM_ContactVelocityResting(benchmark::State& state) {
   std::vector<Vec3> v(n), out(n);
   for (Vec3& x : v) {
     const Real tangential = state.range(0) == 0 ? 0.01 : state.range(0) == 1 ? 0.3 : (u(rng) > 0.0 ? 0.01 : 0.3);
-    x = Vec3(tangential * u(rng), -kStandardGravity / 120.0, tangential * u(rng));
+    x = Vec3(tangential * u(rng), -kStandardGravity * kFountainStep, tangential * u(rng));
   }
   const particles::ContactMaterial resting{0.0, 0.3, 0.2, 0.1};
   for (auto _ : state) {
@@ -187,8 +189,6 @@ void BM_ContactVelocityResting(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * n));
 }
 BENCHMARK(BM_ContactVelocityResting)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
-
-BENCHMARK(BM_FountainPoolStep)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 // ns per DOF-step of each integrator on 10⁵ independent oscillators (force evaluation included), and its
 // ratio to the roofline floor of that method (roofline.h) measured in the same run. The floor is one

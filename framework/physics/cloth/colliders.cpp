@@ -177,19 +177,18 @@ template <typename IndexOf>
 void collideEach(const Prepared& p, std::size_t count, IndexOf indexOf, std::span<Vec3> x, std::span<const Vec3> xPrev,
                  std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
                  CollisionPassStats& stats) {
-  if (p.c->shape == ColliderShape::Plane) {
-    const Vec3 axis = p.axis, center = p.c->center;
+  auto sweep = [&](auto clear) {
     for (std::size_t k = 0; k < count; ++k) {
       const std::size_t i = indexOf(k);
-      if (inverseMass[i] != 0.0 && !clearOfPlane(axis, center, x[i], margin))
+      if (inverseMass[i] != 0.0 && !clear(x[i]))
         collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
     }
-    return;
-  }
-  for (std::size_t k = 0; k < count; ++k) {
-    const std::size_t i = indexOf(k);
-    if (inverseMass[i] != 0.0 && !clearOf(p, x[i], margin))
-      collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
+  };
+  if (p.c->shape == ColliderShape::Plane) {
+    const Vec3 axis = p.axis, center = p.c->center;
+    sweep([axis, center, margin](const Vec3& xi) { return clearOfPlane(axis, center, xi, margin); });
+  } else {
+    sweep([&p, margin](const Vec3& xi) { return clearOf(p, xi, margin); });
   }
 }
 
