@@ -74,6 +74,12 @@ else()
     pba_missing("Dear ImGui with its GLFW and OpenGL3 backends" "libimgui-dev" "imgui[glfw-binding,opengl3-binding]")
   endif()
   target_link_libraries(pba_imgui INTERFACE PkgConfig::PBA_IMGUI)
+  # Debian keeps the backends' headers in imgui/backends; vcpkg's port puts them beside imgui.h. The code
+  # includes them by name alone (<imgui_impl_glfw.h>), so that folder joins the include path.
+  pkg_get_variable(PBA_IMGUI_INCLUDEDIR imgui includedir)
+  if(EXISTS "${PBA_IMGUI_INCLUDEDIR}/backends")
+    target_include_directories(pba_imgui SYSTEM INTERFACE "${PBA_IMGUI_INCLUDEDIR}/backends")
+  endif()
 endif()
 
 # stb (stb_image.h, stb_image_write.h): Debian builds the implementations into libstb (found through its

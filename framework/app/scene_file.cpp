@@ -174,9 +174,15 @@ Result<LoadedScene> loadSceneFile(const std::string& path, const std::string& la
   if (const auto size = fs::file_size(path, ec); !ec && size > kMaxSceneFileBytes)
     return fileError(path, "is " + std::to_string(size) + " bytes; a scene file is at most " +
                                std::to_string(kMaxSceneFileBytes) + " bytes");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parseSceneJson(buffer.str(), path, lab);
+  // Read at most one byte past the limit, whatever size the system reported: a file that grows, or a
+  // device that passes for a regular file (Wine's /dev/zero), must not be read without end.
+  std::string text(kMaxSceneFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxSceneFileBytes)
+    return fileError(path, "is more than " + std::to_string(kMaxSceneFileBytes) + " bytes; a scene file is at most " +
+                               std::to_string(kMaxSceneFileBytes) + " bytes");
+  return parseSceneJson(text, path, lab);
 }
 
 nlohmann::json sceneToJson(const std::string& lab, const std::string& name, const Scene& scene, std::optional<Real> dt,

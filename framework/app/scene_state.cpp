@@ -7,6 +7,10 @@
 extern "C" std::size_t __sanitizer_get_current_allocated_bytes();
 #elif defined(__GLIBC__)
 #include <malloc.h>
+#elif defined(_WIN32)
+#include <malloc.h>
+#elif defined(__APPLE__)
+#include <malloc/malloc.h>
 #endif
 
 namespace pba::app {
@@ -17,6 +21,16 @@ std::size_t heapBytesInUse() {
 #elif defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 33))
   const struct mallinfo2 info = mallinfo2();
   return info.uordblks + info.hblkhd;  // small blocks in the arenas and large blocks mapped on their own
+#elif defined(_WIN32)
+  // The C runtime's heap, block by block (about 40 ns a block): the blocks in use.
+  _HEAPINFO entry{};
+  entry._pentry = nullptr;
+  std::size_t used = 0;
+  while (_heapwalk(&entry) == _HEAPOK)
+    if (entry._useflag == _USEDENTRY) used += entry._size;
+  return used;
+#elif defined(__APPLE__)
+  return mstats().bytes_used;  // every malloc zone
 #else
   return 0;
 #endif

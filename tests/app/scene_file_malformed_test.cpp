@@ -81,6 +81,9 @@ TEST(SceneFileMalformed, ADirectoryIsNotASceneFile) {
 }
 
 TEST(SceneFileMalformed, ADeviceIsNotReadUntilItEnds) {
+#if defined(_WIN32)
+  GTEST_SKIP() << "no /dev/zero on Windows (under Wine it passes for a regular file)";
+#endif
   // /dev/zero never ends: the lab used to read it until it ran out of memory.
   const Result<LoadedScene> r = loadSceneFile("/dev/zero", "test");
   ASSERT_FALSE(r.ok());

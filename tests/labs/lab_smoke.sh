@@ -155,7 +155,7 @@ case "$check" in
     "${run[@]}" env PATH=/nonexistent "$exe" --record "$work/b.mp4" --frames 5 2>"$work/noff.err"
     rc=$?
     [[ $rc -eq 2 ]] || fail "without ffmpeg --record b.mp4 exited $rc, expected 2"
-    grep -q "b.mp4: recording MP4 or GIF needs ffmpeg, which is not installed (apt-get install ffmpeg)" "$work/noff.err" ||
+    grep -q "b.mp4: recording MP4 or GIF needs ffmpeg on the PATH (apt-get, brew or winget install ffmpeg)" "$work/noff.err" ||
       fail "without ffmpeg the message is: $(cat "$work/noff.err")"
     # The A/B window: two views side by side, the metrics of both sides.
     "${run[@]}" "$exe" --compare "dt=0.0167" "dt=0.004" --frames 60 --screenshot "$work/ab.png" --metrics "$work/ab.json" \

@@ -92,7 +92,9 @@ Manifold collideBoxes(const Shape& a, const Transform& pa, const Shape& b, const
     m.separation = sepE;
     return m;
   }
-  const bool flip = sepB > sepA + kAxisTolerance;
+  // A's face only within the tolerance of the best axis of all: compared with B's face alone, a face of
+  // B preferred over the edge and then A's preferred over B's could end up twice the tolerance deep.
+  const bool flip = std::max(sepB, sepE) > sepA + kAxisTolerance;
   const Shape& ref = flip ? b : a;
   const Shape& inc = flip ? a : b;
   const Transform& pr = flip ? pb : pa;
@@ -194,7 +196,7 @@ Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, c
     m.separation = sepE;
     return m;
   }
-  const bool flip = sepB > sepA + kAxisTolerance;
+  const bool flip = std::max(sepB, sepE) > sepA + kAxisTolerance;  // as for boxes
   const ConvexHull& ref = flip ? hb : ha;
   const ConvexHull& inc = flip ? ha : hb;
   const Transform& pr = flip ? pb : pa;
