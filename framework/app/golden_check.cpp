@@ -36,7 +36,8 @@ std::string buildPlatform() {
   s = "Clang " + std::to_string(__clang_major__) + "." + std::to_string(__clang_minor__) + "." +
       std::to_string(__clang_patchlevel__);
 #elif defined(__GNUC__)
-  s = "GNU " + std::to_string(__GNUC__) + "." + std::to_string(__GNUC_MINOR__) + "." + std::to_string(__GNUC_PATCHLEVEL__);
+  s = "GNU " + std::to_string(__GNUC__) + "." + std::to_string(__GNUC_MINOR__) + "." +
+      std::to_string(__GNUC_PATCHLEVEL__);
 #elif defined(_MSC_VER)
   s = "MSVC " + std::to_string(_MSC_FULL_VER);
 #else
@@ -77,11 +78,12 @@ std::string buildPlatform() {
 
 // Tolerance comparison (docs/architecture.md, "Golden trajectories"): what a correct solution written in
 // another order of operations, or built by another compiler or libm, still meets after 60 frames. Rounding
-// differences start at ~1e-16 relative and grow through the dynamics; the three differently written
-// solutions of tools/check_golden_tolerance.sh (std::fma, reordered, another formula) and the CLOTH-2
-// variant with glm::normalize stay below 1e-9 relative in every metric and 1e-9 m in every position of the
-// 52 scenes, so these bounds leave three orders of magnitude of margin while an error of a solution (a sign,
-// a missing factor, a wrong frame) moves energies by percents and positions by millimetres at least.
+// differences start at ~1e-16 relative and grow through the dynamics. With the differently written
+// solutions of tools/check_golden_tolerance.sh (CLOTH-2 with std::fma and glm::normalize, PART-4 and PART-5
+// reordered, RIGID-2 through another formula) every scene that is not chaotic (below) stays within
+// 2e-5 of these bounds (cloth/drape's max_compression, 2e-11 relative), so they leave a wide margin for
+// other platforms, while an error of a solution (a sign, a missing factor, a wrong frame) moves energies
+// by percents and positions by millimetres at least.
 constexpr double kRelativeTolerance = 1e-6;  ///< every floating-point metric (energies [J] among them)
 constexpr double kAbsoluteTolerance = 1e-9;  ///< added to it, for metrics that should be zero
 constexpr double kPositionTolerance = 1e-6;  ///< [m] each coordinate of the drawn positions' summary
@@ -92,6 +94,20 @@ constexpr double kTimeTolerance = 1e-9;      ///< [s] the simulated clock
 /// size: within 10 % of the golden one, or 2, whichever is larger.
 constexpr double kCountRelativeTolerance = 0.1;
 constexpr double kCountAbsoluteTolerance = 2.0;
+/// Chaotic scenes: many bodies in contact with one another, where a rounding difference grows to the size
+/// of the motion within the golden run. Measured (tools/check_golden_tolerance.sh): cloth/self-collision,
+/// CLOTH-2 with glm::normalize and std::fma, 1 % in energy and 1 cm in the bounding box after 1 s;
+/// particles/granular, PART-5 reordered, 0.1 % in energy and 0.2 mm in the deepest overlap. The piles
+/// are listed for the same reason on other platforms (another libm rounds their contacts otherwise). In
+/// a tolerance comparison such a scene is compared for its course, not its trajectory: step count,
+/// clock, the number of positions drawn, its names and flags, every metric still a number; the exact
+/// comparison on the recording platform covers it bit for bit, and the lab's tests check its physics.
+constexpr std::string_view kChaoticScenes[] = {"cloth/self-collision", "particles/granular", "rigid/pile",
+                                               "rigid/bench-boxes", "ragdoll/pile"};
+bool isChaotic(const std::string& lab, const std::string& scene) {
+  const std::string name = lab + "/" + scene;
+  return std::find(std::begin(kChaoticScenes), std::end(kChaoticScenes), name) != std::end(kChaoticScenes);
+}
 
 /// Every position a scene draws (points, ends of lines, arrows and capsules, centres of spheres and boxes,
 /// mesh vertices; text anchors left out), summarised for the tolerance comparison: the count, the centroid
@@ -207,7 +223,7 @@ struct Worst {
 
 /// Compares `actual` with `expected` (one scene) within the tolerances; notes every difference in `worst`
 /// and appends the failing fields to `failures`.
-void compareWithin(const nlohmann::json& expected, const nlohmann::json& actual, const std::string& path,
+void compareWithin(const nlohmann::json& expected, const nlohmann::json& actual, const std::string& path, bool chaotic,
                    Worst& worst, std::vector<std::string>& failures) {
   auto fail = [&](const std::string& what) { failures.push_back(path + " " + what); };
   if (path == "draw_hash") return;  // bits of every drawn value (colours too): only an exact check uses it
@@ -219,16 +235,17 @@ void compareWithin(const nlohmann::json& expected, const nlohmann::json& actual,
         fail("(" + key + ") missing");
         continue;
       }
-      compareWithin(value, actual[key], at, worst, failures);
+      compareWithin(value, actual[key], at, chaotic, worst, failures);
     }
     for (const auto& [key, value] : actual.items())
-      if (!expected.contains(key)) failures.push_back((path.empty() ? key : path + "." + key) + " (none) -> " + value.dump());
+      if (!expected.contains(key))
+        failures.push_back((path.empty() ? key : path + "." + key) + " (none) -> " + value.dump());
     return;
   }
   if (expected.is_array()) {
     if (!actual.is_array() || actual.size() != expected.size()) return fail(expected.dump() + " -> " + actual.dump());
     for (std::size_t i = 0; i < expected.size(); ++i)
-      compareWithin(expected[i], actual[i], path + "[" + std::to_string(i) + "]", worst, failures);
+      compareWithin(expected[i], actual[i], path + "[" + std::to_string(i) + "]", chaotic, worst, failures);
     return;
   }
   if (expected.is_number() && actual.is_number()) {
@@ -236,6 +253,8 @@ void compareWithin(const nlohmann::json& expected, const nlohmann::json& actual,
     double bound;
     if (path.rfind("positions_m.count", 0) == 0 || path == "steps") {
       bound = 0.0;
+    } else if (chaotic && path != "sim_time_s") {
+      return;
     } else if (path.rfind("positions_m.", 0) == 0) {
       bound = kPositionTolerance;
     } else if (path == "sim_time_s") {
@@ -351,7 +370,13 @@ int checkGolden(const std::string& lab, const GoldenOptions& o, std::ostream& ou
     if (comparison == Comparison::Tolerance) {
       Worst worst;
       std::vector<std::string> differences;
-      compareWithin(expected, fp.value(), "", worst, differences);
+      const bool chaotic = isChaotic(lab, entry.name);
+      compareWithin(expected, fp.value(), "", chaotic, worst, differences);
+      if (differences.empty() && chaotic) {
+        out << "golden ok: " << lab << "/" << entry.name << " after " << frames << " frames, its course only (a "
+            << "chaotic scene: a rounding difference grows to the size of its motion)\n";
+        continue;
+      }
       if (differences.empty()) {
         char ratio[32];
         std::snprintf(ratio, sizeof ratio, "%.3g", worst.ratio);
