@@ -11,6 +11,7 @@ namespace {
 struct Record {
   std::mutex mutex;
   std::set<std::string, std::less<>> tags;
+  std::set<std::string, std::less<>> used;  // outside the probes
   std::vector<void (*)()> probes;
 };
 Record& record() {
@@ -56,12 +57,19 @@ void markNotImplemented(std::string_view tag) {
   Record& r = record();
   std::lock_guard lock(r.mutex);
   if (r.tags.find(tag) == r.tags.end()) r.tags.emplace(tag);
+  if (!probing.load() && r.used.find(tag) == r.used.end()) r.used.emplace(tag);
 }
 
 std::vector<std::string> notImplementedTags() {
   Record& r = record();
   std::lock_guard lock(r.mutex);
   return {r.tags.begin(), r.tags.end()};
+}
+
+std::vector<std::string> notImplementedTagsUsed() {
+  Record& r = record();
+  std::lock_guard lock(r.mutex);
+  return {r.used.begin(), r.used.end()};
 }
 
 bool registerProbe(void (*probe)()) {
@@ -87,6 +95,7 @@ void clearNotImplemented() {
   Record& r = record();
   std::lock_guard lock(r.mutex);
   r.tags.clear();
+  r.used.clear();
 }
 
 }  // namespace pba::exercises

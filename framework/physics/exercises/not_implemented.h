@@ -17,6 +17,9 @@ namespace pba::exercises {
 void markNotImplemented(std::string_view tag);
 /// Tags recorded so far, sorted, without repeats.
 std::vector<std::string> notImplementedTags();
+/// The tags of those stubs that ran outside the start-up probes (runProbes): the computation in hand
+/// needed them. The test main reports a failing test whose code path ran one as skipped ("needs TAG").
+std::vector<std::string> notImplementedTagsUsed();
 /// Forgets every record (tests use it).
 void clearNotImplemented();
 
