@@ -62,12 +62,17 @@ LimitCorrection hingeLimit(const HingeFrame& frame, const Vec3& p, Real lower, R
 }
 
 // ***** RAG-3: the ball-joint cone limit (Ragdoll paper §3.2.3) *****
-// (1) d = p − apex and its length L (nothing to do when L is 0). The paper's plane has the cone axis
-//     as normal through the apex: the distance of p from it is d·axis; on the cone's rim it would be
-//     c_dist = L cos(halfAngle).
-// (2) Inside when d·axis ≥ c_dist: report Inside with p as the target.
-// (3) Outside: the direction t ⟂ axis in the plane of axis and d (d minus its axial part, normalised;
-//     any ⟂ direction when that is zero). The target is apex + L (cos(halfAngle) axis + sin(halfAngle) t).
+// Inputs in world axes: the apex (the joint) [m], the cone's unit axis, bone B's reference point p [m],
+// the half-angle of the cone [rad], between 0 and π.
+// (1) Measure p from the apex: its distance from the apex, and its height above the paper's plane (the
+//     plane through the apex with the axis as its normal). A point at the apex has no direction: Inside.
+// (2) Find the height a point at that same distance would have on the cone's rim. p is inside the cone
+//     when it stands at least that high: return LimitSide::Inside with p itself as the target.
+// (3) Outside, return LimitSide::Upper (a cone has one limit, the rim) and as the target the point of the
+//     rim that is as far from the apex as p and lies in the plane through the axis and p. When p lies on
+//     the axis behind the apex that plane is not defined: any plane through the axis will do.
+// Check: the target is as far from the apex as p, at exactly the half-angle from the axis, on p's side;
+// p already on the rim is Inside.
 // *****
 LimitCorrection coneLimit(const Vec3& apex, const Vec3& axis, const Vec3& p, Real halfAngle) {
   // BEGIN SOLUTION
