@@ -75,12 +75,15 @@ struct Workspace {
 // ----- Generic methods: any OdeSystem (state copied out, advanced, copied back) -----
 
 // ***** PART-1: explicit Euler (Lobb notes, "ODE view": Euler) *****
-// (1) Read the current state s(t) from the system (getState) and the time t.
-// (2) Evaluate the derivative at the START of the step: k = f(s, t).
-// (3) Move along it: s(t + h) = s(t) + h k, component by component.
-// (4) Write the state back (setState) and advance the system's time to t + h.
-// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() does steps (1)–(2)
-// into w.s and w.k1, endGenericStep() step (4).)
+// One step of length h [s] of the system's first-order ODE ds/dt = f(s, t), the state s being every
+// position and velocity the system exposes (getState/setState), the clock its time [s].
+// (1) Decide where in the step explicit Euler takes its slope, and get that slope from the system.
+// (2) Move every component of the state along the slope for the length of the step.
+// (3) Leave the system with its new state AND its clock advanced by the step.
+// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() reads the state and
+// the first slope into w.s and w.k1, endGenericStep() writes back and advances the clock.)
+// Check: on ds/dt = λ s one step multiplies s by a factor you can work out by hand; halving h halves the
+// error after a fixed time (first order: the convergence test measures it).
 // *****
 void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
 
