@@ -54,10 +54,14 @@ Real energy(const BallDesc& desc, const BallState& state);
 Real heightAboveGround(const BallDesc& desc, const BallState& state);
 
 // ***** HELLO-1: the explicit Euler step (Lobb notes, "ODE view": Euler) *****
-// (1) Keep the state at the start of the step: x(t) and v(t), and the acceleration a(t) passed in.
-// (2) New position: x(t + h) = x(t) + h v(t), using the velocity at the START of the step.
-// (3) New velocity: v(t + h) = v(t) + h a(t).
-// (4) Return the new state. (Using the new velocity in (2) would give symplectic Euler: not this one.)
+// Inputs: the ball's state at time t (position [m], velocity [m/s]), the acceleration a(t) [m/s²] and the
+// step h [s]. Output: the state at t + h.
+// (1) Explicit Euler takes every derivative at the START of the step: which velocity moves the position,
+//     and which acceleration changes the velocity?
+// (2) Update both and return the new state. (Using the velocity of the END of the step to move would
+//     be symplectic Euler: not this one.)
+// Check: with constant a, after n steps your positions equal chapter 0's summed recurrence; they lag the
+// exact parabola by an error proportional to h.
 // *****
 BallState eulerStep(const BallState& state, const Vec3& acceleration, Real h);
 

@@ -67,10 +67,17 @@ Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h) {
 
 // ***** RIGID-3: The collision impulse with restitution (Baraff & Witkin 2001, "Rigid Body Dynamics
 // II", §8.3) *****
-// (1) Arms r_A, r_B from each centre of mass to the contact point; v_rel = n·(v_A(p) − v_B(p)).
-// (2) Not approaching (v_rel ≥ 0): no impulse.
-// (3) The denominator: both inverse masses plus, for each body, n · ((I⁻¹ (r × n)) × r).
-// (4) j = −(1 + e) v_rel / denominator.
+// Inputs in world axes: the two bodies (ImpulseBody: inverse mass, inverse inertia, centre, velocities),
+// the contact point [m], the unit normal n from B toward A, the restitution e. Output: the impulse's
+// size j [N·s] ≥ 0, applied as +j n to A and −j n to B.
+// (1) The relative velocity of the two material points at the contact, and its part along n [m/s]:
+//     what sign does it have while the bodies approach? A contact that is not approaching gets nothing.
+// (2) Work out from B&W §8.3 how much that normal relative velocity changes per unit impulse: each
+//     body's translation contributes through its inverse mass, its rotation through the arm from its
+//     centre to the point and its inverse inertia (world axes).
+// (3) Choose j so that the normal relative velocity after the impulse is −e times the one before.
+// Check: two equal spheres meeting head on with e = 1 exchange velocities; e = 0 leaves no normal
+// relative velocity; a static body (inverse mass and inertia 0) receives nothing but still acts.
 // *****
 Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
                       Real restitution) {
@@ -88,12 +95,15 @@ Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& po
 }
 
 // ***** RIGID-4: The friction impulse clamped to μ·j (Coulomb's law for impulses; Mirtich 1996, §3.3) *****
-// (1) The tangential part of the relative velocity v_A(p) − v_B(p) (remove the normal component); no
-//     tangential motion: no friction.
-// (2) t = its direction. The impulse along −t that would stop it has size |v_t| / k_t, with k_t built
-//     like RIGID-3's denominator but with t in place of n.
-// (3) Coulomb: the friction impulse can be at most μ times the normal impulse; clamp its size.
-// (4) Return it as a vector acting on A (it points against the sliding).
+// Inputs as RIGID-3 plus the normal impulse j [N·s] already decided and the friction coefficient μ.
+// Output: the friction impulse on A [N·s] (B receives its negative), in the contact's tangent plane.
+// (1) The sliding: the relative velocity at the contact without its normal part. No sliding, no friction.
+// (2) The impulse that would stop the sliding: how much does the sliding speed change per unit impulse
+//     along the sliding direction (the same reasoning as RIGID-3's, along another direction)?
+// (3) Coulomb: friction can never exceed μ times the normal impulse. Return the stopping impulse when
+//     it is within that bound, otherwise the largest one allowed, against the sliding.
+// Check: μ = 0 gives nothing; the result is perpendicular to n and opposes the sliding; a large μ stops
+// the sliding exactly; the size never exceeds μ j.
 // *****
 Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
                      Real normalImpulse, Real friction) {
