@@ -19,6 +19,9 @@ Record& record() {
   return instance;
 }
 
+// Whether a stub ran outside the probes since the last clearNotImplemented() (anyNotImplementedUsed).
+std::atomic<bool> usedAny{false};
+
 // True while runProbes() runs: probes call every exercise on purpose, which is not a use to trace.
 std::atomic<bool> probing{false};
 
@@ -57,7 +60,10 @@ void markNotImplemented(std::string_view tag) {
   Record& r = record();
   std::lock_guard lock(r.mutex);
   if (r.tags.find(tag) == r.tags.end()) r.tags.emplace(tag);
-  if (!probing.load() && r.used.find(tag) == r.used.end()) r.used.emplace(tag);
+  if (!probing.load() && r.used.find(tag) == r.used.end()) {
+    r.used.emplace(tag);
+    usedAny.store(true);
+  }
 }
 
 std::vector<std::string> notImplementedTags() {
@@ -71,6 +77,8 @@ std::vector<std::string> notImplementedTagsUsed() {
   std::lock_guard lock(r.mutex);
   return {r.used.begin(), r.used.end()};
 }
+
+bool anyNotImplementedUsed() { return usedAny.load(); }
 
 bool registerProbe(void (*probe)()) {
   Record& r = record();
@@ -96,6 +104,7 @@ void clearNotImplemented() {
   std::lock_guard lock(r.mutex);
   r.tags.clear();
   r.used.clear();
+  usedAny.store(false);
 }
 
 }  // namespace pba::exercises
