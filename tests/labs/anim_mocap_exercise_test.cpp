@@ -150,7 +150,8 @@ const RecordedJoint kHumanoid[] = {
     {32, "RightToeBase", Vec3(-5.11989430174, 2.75734952762, 18.2233414268)},
 };
 
-// Debian assimp-testmodels' BVH/01_01.bvh (CMU subject 1, trial 1), frames 0, 1000 and the last, six joints.
+// resources/models/mocap/01_01.bvh (CMU subject 1, trial 1, as in Debian's assimp-testmodels), frames 0,
+// 1000 and the last, six joints.
 const RecordedJoint kCmu0101[] = {
     {0, "Hips", Vec3(9.3722, 17.8693, -17.3198)},
     {0, "LeftFoot", Vec3(11.5019362587, 1.44557361886, -16.48051)},
@@ -204,7 +205,7 @@ TEST(ANIM_3_MocapPlayback, HumanoidBvhJointsMatchTheRecordedPositionsOfItsChanne
 }
 
 TEST(ANIM_3_MocapPlayback, CmuBvhOfAssimpTestModelsMatchesTheRecordedPositions) {
-  const std::string path = "/usr/share/assimp/models/BVH/01_01.bvh";  // Debian assimp-testmodels
+  const std::string path = PBA_TEST_RESOURCE_DIR "/models/mocap/01_01.bvh";
   ASSERT_TRUE(std::ifstream(path).good())
       << path << " missing: install the Debian package assimp-testmodels (./pba installs it)";
   // The lab reads .bvh files in double (bvh_import.h); through Assimp's float keys this file was 2.3e-6 m
@@ -235,7 +236,7 @@ TEST(MocapImport, FileWithoutAnimationOrUnreadableIsAnErrorNamingTheFile) {
 // scaled like the lab's character. Debian assimp-testmodels' Wuson (X/Testwuson.X): a skinned mesh of
 // 40 nodes with a 30-frame animation.
 TEST(ANIM_3_MocapSkin, WusonMeshFollowsAnIndependentLinearBlendOfTheFilesAnimation) {
-  const std::string path = "/usr/share/assimp/models/X/Testwuson.X";
+  const std::string path = PBA_TEST_RESOURCE_DIR "/models/Testwuson.X";
   ASSERT_TRUE(std::ifstream(path).good()) << path << " missing: install assimp-testmodels (./pba installs it)";
   const pba::Result<lab::ImportedClip> imported = lab::importClip(path, 1.7);
   ASSERT_TRUE(imported.ok()) << imported.error();
@@ -294,7 +295,7 @@ TEST(ANIM_3_MocapSkin, WusonMeshFollowsAnIndependentLinearBlendOfTheFilesAnimati
 // names in the same order (End Sites as "EndSite_<parent>") and the same rest offsets.
 TEST(MocapImport, BvhReaderNamesAndOrdersTheJointsAsTheAssimpImport) {
   for (const std::string& path : {lab::resolveResourcePath("resources/models/humanoid.bvh"),
-                                  std::string("/usr/share/assimp/models/BVH/01_01.bvh")}) {
+                                  std::string(PBA_TEST_RESOURCE_DIR "/models/mocap/01_01.bvh")}) {
     SCOPED_TRACE(path);
     const pba::Result<lab::BvhClip> read = lab::readBvh(path);
     ASSERT_TRUE(read.ok()) << read.error();
