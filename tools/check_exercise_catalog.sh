@@ -8,6 +8,11 @@ src="$1"
 build="$2"
 catalog="$src/resources/exercises.tsv"
 mapfile -t rows < <(awk -F'\t' 'NR > 1 && $1 != "" { print $1 }' "$catalog")
+# The columns: tag, lab, title, minutes (the estimated time, a whole number of minutes), hint.
+header="$(head -n 1 "$catalog")"
+[[ "$header" == $'tag\tlab\ttitle\tminutes\thint' ]] || { echo "FAIL: $catalog: header is not tag, lab, title, minutes, hint"; exit 1; }
+bad_rows="$(awk -F'\t' 'NR > 1 && $1 != "" && (NF != 5 || $4 !~ /^[1-9][0-9]*$/ || $4 > 120) { print $1 }' "$catalog")"
+[[ -z "$bad_rows" ]] || { echo "FAIL: rows without five columns or an estimated time of 1-120 minutes: $bad_rows"; exit 1; }
 mapfile -t stubs < <(grep -rhoE '// STUB: .*notImplemented\("[A-Z]+-[0-9]+"|// STUB: .*markNotImplemented\("[A-Z]+-[0-9]+"' \
   "$src/framework" "$src/labs" | grep -oE '[A-Z]+-[0-9]+' | sort -u)
 # Membership through associative arrays: `printf | grep -q` under pipefail fails at random when grep

@@ -18,9 +18,9 @@ jobs="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 
 passed=0
 failed=0
-printf '%-8s  %-44s  %-6s  %s\n' "TAG" "EXERCISE" "RESULT" "HINT"
-printf '%-8s  %-44s  %-6s  %s\n' "--------" "--------------------------------------------" "------" "----"
-while IFS=$'\t' read -r tag lab title hint; do
+printf '%-8s  %-44s  %5s  %-6s  %s\n' "TAG" "EXERCISE" "TIME" "RESULT" "HINT"
+printf '%-8s  %-44s  %5s  %-6s  %s\n' "--------" "--------------------------------------------" "-----" "------" "----"
+while IFS=$'\t' read -r tag lab title minutes hint; do
   [[ "$tag" == "tag" || -z "$tag" ]] && continue
   if [[ ${#wanted[@]} -gt 0 && " ${wanted[*]} " != *" $tag "* ]]; then continue; fi
   prefix="^${tag//-/_}_"
@@ -28,11 +28,11 @@ while IFS=$'\t' read -r tag lab title hint; do
   status=$?
   total="$(grep -oE 'out of [0-9]+' <<<"$log" | grep -oE '[0-9]+' | tail -n 1)"
   if [[ $status -eq 0 && -n "$total" ]]; then
-    printf '%-8s  %-44s  %-6s\n' "$tag" "$title" "pass"
+    printf '%-8s  %-44s  %5s  %-6s\n' "$tag" "$title" "${minutes}m" "pass"
     passed=$((passed + 1))
   else
     if grep -q 'No tests were found' <<<"$log"; then hint="no tests named ${tag//-/_}_* were found (build the tests first)"; fi
-    printf '%-8s  %-44s  %-6s  %s\n' "$tag" "$title" "FAIL" "$hint"
+    printf '%-8s  %-44s  %5s  %-6s  %s\n' "$tag" "$title" "${minutes}m" "FAIL" "$hint"
     failed=$((failed + 1))
   fi
 done <"$catalog"

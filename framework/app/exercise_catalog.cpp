@@ -1,5 +1,6 @@
 #include "app/exercise_catalog.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -17,7 +18,10 @@ std::vector<ExerciseInfo> loadExercises(const std::string& path, const std::stri
     }
     std::istringstream row(line);
     ExerciseInfo e;
-    if (std::getline(row, e.tag, '\t') && std::getline(row, e.lab, '\t') && std::getline(row, e.title, '\t')) {
+    std::string minutes;
+    if (std::getline(row, e.tag, '\t') && std::getline(row, e.lab, '\t') && std::getline(row, e.title, '\t') &&
+        std::getline(row, minutes, '\t')) {
+      e.minutes = std::atoi(minutes.c_str());
       std::getline(row, e.hint);
       if (e.lab == lab) out.push_back(std::move(e));
     }

@@ -1,6 +1,7 @@
 #pragma once
-// The exercise catalog resources/exercises.tsv (tag, lab, title, hint): one source for ./pba grade
-// and for the lab's on-screen exercise status.
+// The exercise catalog resources/exercises.tsv (tag, lab, title, minutes, hint): one source for ./pba
+// grade and for the lab's on-screen exercise status. `minutes` is the estimated time a student who has read
+// the workbook section needs for the exercise.
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@ struct ExerciseInfo {
   std::string tag;  ///< e.g. "HELLO-1"
   std::string lab;  ///< e.g. "hello"
   std::string title;
+  int minutes = 0;  ///< estimated time [min]
   std::string hint;
 };
 

@@ -31,9 +31,6 @@ RagdollScene::RagdollScene() {
                "Particle method: sweep and prune over bone boxes. Off: every unjointed pair, as the paper did.");
   params_.flag("bone_collisions", &p.boneCollisions,
                "Particle method: boxes of unjointed bones collide with each other.");
-  params_.flag("student_code", &studentCode_,
-               "Particle method: run your exercises RAG-1..4 (sticks, hinge and cone limits, contacts) instead of the "
-               "reference kernels.");
   params_.integer("substeps", &w.substeps, 1, 16, "",
                   "Constraint method: substeps of the rigid world's soft step. Typical 4.");
   params_.integer("constraint_iterations", &w.iterations, 1, 20, "",
@@ -95,7 +92,6 @@ void RagdollScene::start(const ragdoll::RagdollDesc& desc, Real half) {
   if (half < 0.0) half = halfSeparation(desc);
   const Vec3 g(0.0, -gravity_, 0.0);
   particleSettings_.gravity = g;
-  particleSettings_.student = {studentCode_, studentCode_, studentCode_, studentCode_};
   constraintSettings_.world.gravity = g;
   ragdoll::RagdollDesc left = ragdoll::translated(desc, Vec3(-half, 0.0, 0.0));
   ragdoll::RagdollDesc right = ragdoll::translated(desc, Vec3(half, 0.0, 0.0));
@@ -115,7 +111,6 @@ void RagdollScene::updateRest(Rest& rest, Real kinetic, Real dt) const {
 void RagdollScene::step(Real dt) {
   const Vec3 g(0.0, -gravity_, 0.0);
   particleSettings_.gravity = g;
-  particleSettings_.student = {studentCode_, studentCode_, studentCode_, studentCode_};
   particle_.settings() = particleSettings_;
   constraintSettings_.world.gravity = g;
   constraint_.world().settings() = constraintSettings_.world;

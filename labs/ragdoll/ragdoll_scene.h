@@ -75,7 +75,6 @@ class RagdollScene : public app::Scene {
   ragdoll::ConstraintRagdoll constraint_;
   Shown shown_ = Shown::Both;
   Real gravity_ = kStandardGravity;  ///< [m/s²]
-  bool studentCode_ = false;
   ragdoll::ParticleDrawOptions draw_;
   bool drawConstraintContacts_ = false;
   Real restBound_ = 0.0;  ///< [J] ½ M (5 cm/s)²

@@ -8,14 +8,20 @@
 namespace pba::animation {
 
 // ***** ANIM-2: Catmull-Rom tangents with non-uniform knots and the boundary rules (CMU asst4) *****
-// (1) No knot: region Empty. One knot, t at or before the first knot, or t at or after the last: region
-//     Constant with `key` the knot whose value holds.
-// (2) Otherwise find the interval [t_i, t_i+1) that holds t (the times increase strictly; a binary
-//     search keeps long channels cheap); key = i, length h = t_i+1 − t_i, u = (t − t_i)/h.
-// (3) The tangent at k1 is (p2 − p0)/(t2 − t0); times h it is a weight on p0 and one on p2 (slots 0
-//     and 2 of startTangent). The tangent at k2 is (p3 − p1)/(t3 − t1) times h (slots 3 and 1).
-// (4) A missing k0 (i = 0) is the mirror k1 − (k2 − k1): write p0 and t0 in terms of k1 and k2 and fold
-//     p0's weight into theirs. Likewise a missing k3 at the last interval.
+// Inputs: the channel's knot times [s] (strictly increasing) and the time t [s]. Output: the region, the
+// knot `key`, the interval length h [s] and u in [0, 1), and the weights that make the segment's start
+// and end tangents out of the knot values.
+// (1) No knot: region Empty. One knot, or t at or before the first knot or at or after the last: region
+//     Constant, `key` the knot whose value holds.
+// (2) Otherwise find the interval that holds t (a binary search keeps long channels cheap) and u.
+// (3) The tangent at a knot is the slope between its two neighbours, in value per second; the Hermite
+//     segment wants it per unit of u: work out the weights each neighbour's value gets (slots 0 and 2
+//     of startTangent for the start, 3 and 1 for the end).
+// (4) At the first and last interval a neighbour is missing: it is the mirror of the far knot through
+//     the near one. Write its value and time in terms of the two real knots and fold its weight into
+//     theirs.
+// Check: on knots with values on a straight line the tangents equal the line's slope times h, also at
+// the ends; uniform knots give the uniform Catmull-Rom tangents of asst4.
 // *****
 CatmullRomSegment catmullRomSegment(std::span<const Real> times, Real t) {
   // BEGIN SOLUTION

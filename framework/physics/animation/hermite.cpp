@@ -6,11 +6,15 @@
 namespace pba::animation {
 
 // ***** ANIM-1: the Hermite basis and its derivatives (CMU asst4, "Splines") *****
-// (1) derivative 0: the four cubics of the comment in hermite.h at u (powers of u, no loops needed).
-// (2) derivative 1: differentiate each cubic once with respect to u.
-// (3) derivative 2: differentiate once more (each becomes a straight line in u).
-// (4) Any other derivative order: every weight is 0 (a cubic's fourth derivative vanishes; the third is
-//     not used by the library).
+// Input: u in [0, 1] and a derivative order. Output: the four weights h00, h10, h01, h11 (hermite.h) of
+// p0, m0, p1, m1, or their derivatives with respect to u.
+// (1) derivative 0: each weight is a cubic in u. Work out the four cubics from the conditions of
+//     hermite.h: at u = 0 and u = 1 the curve and its slope must come out as p0, p1, m0, m1 (four
+//     conditions per weight, four coefficients).
+// (2) derivative 1 and 2: differentiate each cubic with respect to u.
+// (3) Any other derivative order: every weight is 0 (the third is not used by the library).
+// Check: with p0 = p1 = 1 and m0 = m1 = 0 the curve is 1 for every u; finite
+// differences of derivative 0 match derivative 1.
 // *****
 HermiteBasis hermiteBasis(Real u, int derivative) {
   // BEGIN SOLUTION

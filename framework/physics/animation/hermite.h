@@ -4,7 +4,7 @@
 //
 // On u ∈ [0, 1] a segment from p0 to p1 with tangents m0, m1 (d/du, normalised time) is
 //   H(u) = h00(u) p0 + h10(u) m0 + h01(u) p1 + h11(u) m1,
-//   h00 = 2u³ − 3u² + 1,  h10 = u³ − 2u² + u,  h01 = −2u³ + 3u²,  h11 = u³ − u².
+// with four cubics in u fixed by H(0) = p0, H(1) = p1, H'(0) = m0, H'(1) = m1 (ANIM-1 works them out).
 // Limiting cases: H(0) = p0, H(1) = p1, H'(0) = m0, H'(1) = m1. On a knot interval [t1, t2] of length
 // h, u = (t − t1)/h, so the tangents in time units are m/h and d/dt = (1/h) d/du, d²/dt² = (1/h²) d²/du².
 #include "physics/core/types.h"

@@ -26,12 +26,18 @@ Vec3 rotationBetween(const Vec3& a, const Vec3& b) {
 }  // namespace
 
 // ***** ANIM-4: the pendulum joint step with the reaction term (CMU asst4, "Pendulum joints") *****
-// (1) The effective gravity in the pivot's frame is g − a (a only when drive.reaction is on; off, g).
-// (2) Angular acceleration ω̇ = (m L / I) d × (g − a); a spring joint (k > 0) adds −(k/I) φ, where φ is
-//     the rotation vector that takes the rest direction onto d (rotationBetween gives it).
-// (3) Symplectic Euler: update ω with ω̇ first, then damp it, ω ← ω exp(−c dt).
-// (4) Keep ω perpendicular to d (a spin about the link does nothing here), then turn d by the NEW ω·dt
-//     (rotateByVector) and renormalise d.
+// One symplectic Euler step dt [s] of a link of mass m, length L and inertia I about its pivot: its unit
+// direction d, angular velocity ω [rad/s] (world axes), the pivot's acceleration a [m/s²], gravity g.
+// (1) In the pivot's frame the link feels gravity and an inertial pull opposite to the pivot's
+//     acceleration (the reaction term, only when drive.reaction is on).
+// (2) The angular acceleration is the torque of that pull about the pivot over I; a spring joint (k > 0)
+//     adds a restoring torque proportional to the rotation that takes the rest direction onto d
+//     (rotationBetween gives it).
+// (3) Symplectic Euler: update ω first, damp it (exponential decay at rate c), then turn d by the NEW ω
+//     over dt (rotateByVector) and bring it back to unit length. A spin about the link itself does
+//     nothing here: keep ω perpendicular to d.
+// Check: small swings have the period 2π √(I / (m g L)); with the reaction on, a pivot accelerating
+// downwards with g (falling freely) lets the link float.
 // *****
 PendulumState stepPendulum(const PendulumDesc& desc, const PendulumState& state, const PendulumDrive& drive, Real dt) {
   // BEGIN SOLUTION

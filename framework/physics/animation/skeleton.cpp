@@ -41,13 +41,18 @@ Status validate(const Skeleton& s) {
 Pose restPose(const Skeleton& s) { return Pose{s.restTranslations, s.restRotations}; }
 
 // ***** ANIM-3: forward kinematics of the joint tree (CMU asst4, "Character") *****
-// (1) One world frame per joint; parents come before children in the skeleton, so a single pass in
-//     index order sees every parent's frame before its children (the recursive traversal of asst4,
-//     unrolled).
-// (2) The root (parent −1) takes its local translation and rotation as its world frame.
-// (3) Any other joint i with parent j: p_i = p_j + R_j c_i, R_i = R_j q_i (rotate the child's offset
-//     by the parent's WORLD rotation, then compose the rotations in that order).
+// Inputs: the skeleton (parents come before children; each joint's offset [m] lives in its PARENT's
+// frame) and the pose (local translations [m] and rotations). Output: every joint's world position [m]
+// and world rotation.
+// (1) One pass in index order is enough: every parent's world frame is known before its children's (the
+//     recursive traversal of asst4, unrolled).
+// (2) The root's world frame is its local one.
+// (3) For any other joint: its offset is expressed in the parent's frame, so which rotation turns it
+//     into world axes (the parent's local one, or everything above it)? In which order do the parent's
+//     world rotation and the joint's local rotation compose?
 // (4) Keep the quaternions unit length: a long chain of products drifts otherwise.
+// Check: a planar two-link arm matches its closed form; translating the root moves every joint rigidly;
+// each joint seen from its parent's world frame has its local offset and rotation.
 // *****
 std::vector<JointWorld> forwardKinematics(const Skeleton& skeleton, const Pose& pose) {
   // BEGIN SOLUTION

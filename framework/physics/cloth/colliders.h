@@ -38,16 +38,17 @@ struct SurfacePoint {
 SurfacePoint closestSurface(const Collider& c, const Vec3& x);
 
 // ***** CLOTH-4: sphere collision projection with friction (Müller et al. 2007 §3.5; Macklin et al. 2014 §6.1) *****
-// A particle ended a step at x, coming from xPrev (where it was at the start of the step, already moved
-// with the collider). The sphere has centre c and radius r (the collider's radius plus the cloth's
+// A particle ended a step at x [m], coming from xPrev (where it was at the start of the step, already
+// moved with the collider). The sphere has centre c and radius r (the collider's radius plus the cloth's
 // collision margin). Return where the particle ends after the contact:
-// (1) d = |x − c| − r. If d ≥ 0 (outside or touching), or x sits at the very centre, return x unchanged.
-// (2) Push the particle out along n = (x − c)/|x − c| onto the surface: x' = c + r n. Its depth was −d.
-// (3) Friction acts on the tangential part of the motion over the step, δ_t = δ − (δ·n) n with δ = x' − xPrev.
-//     Coulomb: the friction "impulse" is at most μ times the normal one, i.e. it can undo at most μ·(−d) of
-//     tangential motion. If |δ_t| ≤ μ (−d) the particle sticks: x' −= δ_t. Otherwise it slides and loses
-//     μ (−d) of it: x' −= δ_t · μ (−d) / |δ_t|.
-// (4) Return x'.
+// (1) Act only on a particle inside the sphere (leave it alone at the very centre: no direction).
+// (2) Project it out onto the surface along the sphere's normal there; remember how deep it was.
+// (3) Friction acts on the tangential part of the particle's motion over the step (from xPrev to its
+//     projected position). Coulomb: it can undo at most μ times the depth of that motion. Within the
+//     budget the particle sticks (all tangential motion undone); beyond it, it slides and loses exactly
+//     the budget, never more, never reversing.
+// Check: outside points are untouched; inside points end on the surface (|x' − c| = r) when there is no
+// friction; μ = 0 leaves the tangential motion alone; friction never moves a point back past xPrev.
 // *****
 Vec3 projectOutOfSphere(const Vec3& x, const Vec3& xPrev, const Vec3& center, Real radius, Real friction);
 

@@ -64,15 +64,18 @@ Mat3 dampingBlock(const SpringJacobian& s);
 
 // ***** CLOTH-3: the aerodynamic force on one triangle (drag and lift of a flat plate) *****
 // Inputs: the triangle's vertices x0, x1, x2 [m], their velocities v0, v1, v2 [m/s], the wind velocity w
-// [m/s] at the triangle, the air density ρ, the drag and lift coefficients C_D, C_L.
-// (1) The triangle moves through the air with u = (v0 + v1 + v2)/3 − w. If |u| is (nearly) 0, no force.
-// (2) Its normal N = (x1 − x0) × (x2 − x0) has length twice the area A. Use the unit normal n̂ oriented
-//     so that n̂·u ≥ 0 (cloth is two-sided: the flow sees the same plate from either side).
-// (3) With û = u/|u| and cos θ = n̂·û (θ the angle between the flow and the normal), the air pushes on the
-//     projected area A cos θ with the dynamic pressure q = ½ ρ |u|²:
-//       drag  f_D = −C_D q A cos θ û                 (against the motion through the air)
-//       lift  f_L = −C_L q A cos θ (n̂ − cos θ û)     (⟂ u, in the plane of u and n̂; |n̂ − cos θ û| = sin θ)
-// (4) Return f_D + f_L, the force on the whole triangle [N] (the caller gives a third to each vertex).
+// [m/s] at the triangle, the air density ρ [kg/m³], the drag and lift coefficients C_D, C_L. Output: the
+// force on the whole triangle [N] (the caller gives a third to each vertex).
+// (1) The flow the triangle sees: its own mean velocity relative to the wind. No flow, no force.
+// (2) The triangle's area and unit normal from its edges; cloth is two-sided, so turn the normal to face
+//     the flow.
+// (3) The air pushes with the dynamic pressure of the flow on the area the triangle presents to it (its
+//     projection across the flow). Drag acts against the flow; lift is perpendicular to the flow, in
+//     the plane of the flow and the normal, and vanishes when the plate faces the flow or lies along it.
+//     Work out both with their coefficients.
+// Check: face-on flow gives full drag and no lift; edge-on flow gives nothing; at 45° drag and lift
+// follow the projected area; flipping the triangle's winding changes nothing; adding the same velocity
+// to the triangle and the wind changes nothing.
 // *****
 Vec3 triangleAerodynamicForce(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& v0, const Vec3& v1,
                               const Vec3& v2, const Vec3& wind, Real airDensity, Real dragCoefficient,

@@ -27,16 +27,18 @@
 namespace pba::cloth {
 
 // ***** CLOTH-5: the matrix–vector product of the implicit system (Baraff & Witkin 1998, eq. 16) *****
-// Compute out = A y with A = M − h ∂f/∂v − h² ∂f/∂x for the cloth's springs and mass damping, without
-// building A (the conjugate gradient only ever needs products):
-// (1) The mass and the Rayleigh mass damping f = −c m v (so −h ∂f/∂v = +h c M):
-//     out_i = (1 + h c) m_i y_i for every particle.
-// (2) Each spring s couples its ends i, j. With Δy = y_j − y_i, its stiffness block applied to Δy is
-//     K_s Δy = lateral Δy + (stiffness − lateral) n (n·Δy) and its damping block D_s Δy = damping n (n·Δy)
-//     (SpringJacobian in forces.h). Since ∂f_i/∂x_j = K_s and ∂f_i/∂x_i = −K_s (the same for D_s),
-//     the spring's share of −h D y − h² K y is −t on particle i and +t on particle j, with
-//     t = h² K_s Δy + h D_s Δy.
+// Compute out = A y for the backward Euler system A = M − h ∂f/∂v − h² ∂f/∂x of the cloth's springs and
+// Rayleigh mass damping (force −c m v), with step h [s], without ever building A: the conjugate gradient
+// only needs products. y and out hold one Vec3 per particle.
+// (1) The mass and mass-damping terms act on each particle alone: work out what the −h ∂f/∂v of the
+//     damping force adds to the mass there.
+// (2) Each spring couples its two ends through its stiffness and damping blocks (SpringJacobian in
+//     forces.h gives them in factored form, to be applied to a vector, never multiplied out). From the
+//     signs of ∂f_i/∂x_j and ∂f_i/∂x_i, work out what the spring adds to particle i and to particle j,
+//     and which power of h multiplies each block.
 // (3) Pins and contacts are not your concern: the solver filters the result.
+// Check: A is symmetric (yᵀ A z = zᵀ A y for random y, z); with h = 0 the product is M y; a uniform y
+// (every particle the same vector) sees no spring term; EqualsTheSystemMatrixBuiltFromCentralDifferences.
 // *****
 void implicitSystemProduct(std::span<const SpringJacobian> springs, std::span<const Real> mass, Real massDamping,
                            Real h, std::span<const Vec3> y, std::span<Vec3> out);

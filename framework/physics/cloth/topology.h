@@ -29,11 +29,13 @@ struct GridLink {
 // ***** CLOTH-1: the spring topology of a grid (Provot 1995, §2 "structural, shear and flexion springs") *****
 // Particle (i, j) of an nx × ny grid, i = 0…nx−1 along a row, j = 0…ny−1, has index j·nx + i.
 // Return every spring of the grid exactly once, as a GridLink (p, q, kind):
-// (1) Stretch (structural): each particle to its right neighbour (i+1, j) and to the one below (i, j+1).
-// (2) Shear: each particle to both diagonal neighbours of its quad: (i+1, j+1) and, from (i+1, j), to (i, j+1).
-// (3) Bend (flexion): each particle to the particle two steps to the right (i+2, j) and two steps down (i, j+2).
-// Never reach outside the grid (a particle on the last column has no right neighbour). Rest lengths are
-// not your concern: the caller measures them on the rest positions.
+// (1) Stretch (structural) springs join grid neighbours, shear springs the two diagonals of every quad,
+//     bend (flexion) springs particles one particle apart along a row or a column (Provot §2).
+// (2) To list each spring once, let each particle start only the springs that go to its right and
+//     downwards; work out which of them exist at the grid's last columns and rows.
+// Rest lengths are not your concern: the caller measures them on the rest positions.
+// Check: a 3 × 3 grid has 12 stretch, 8 shear and 6 bend springs; no spring appears twice or joins a
+// particle to itself; every index is below nx·ny.
 // *****
 std::vector<GridLink> gridSpringTopology(int nx, int ny);
 

@@ -28,15 +28,18 @@ struct DistanceCorrection {
 };
 
 // ***** CLOTH-2: the XPBD distance constraint update with compliance (Macklin et al. 2016, eq. 17–18) *****
-// Constraint C = |x_i − x_j| − L between particles of inverse masses w_i, w_j. Inputs: positions, inverse
-// masses, rest length L [m], compliance α [m/N], the substep h [s] and the multiplier λ accumulated so far
-// in this substep. Return the position corrections and Δλ:
-// (1) n = (x_i − x_j)/|x_i − x_j| (the gradient of C with respect to x_i; −n with respect to x_j).
-//     If the particles coincide or both are pinned (w_i + w_j = 0) there is nothing to do: return zeros.
-// (2) The time-step-scaled compliance α̃ = α / h².
-// (3) Δλ = (−C − α̃ λ) / (w_i + w_j + α̃).
-// (4) Δx_i = +w_i Δλ n and Δx_j = −w_j Δλ n.
-// With α = 0 this is PBD's projection: each call makes the constraint exactly satisfied.
+// The constraint keeps two particles at their rest length L [m]: C is their distance minus L. Inputs:
+// positions [m], inverse masses w_i, w_j [1/kg] (0: pinned), L, compliance α [m/N], the substep h [s] and
+// the multiplier λ accumulated so far in this substep. Return the position corrections of both
+// particles and the change Δλ of the multiplier.
+// (1) The gradient of C with respect to each particle: a unit direction, opposite for the two. When the
+//     particles coincide or both are pinned there is nothing to do: return zeros.
+// (2) From Macklin et al. eq. 17–18, work out Δλ: the compliance enters scaled by the substep, and the
+//     multiplier accumulated so far enters too (that is what makes XPBD independent of the iteration
+//     count).
+// (3) Each particle moves along its gradient by Δλ weighted by its own inverse mass.
+// Check: with α = 0 one call makes the distance exactly L (PBD); a pinned particle never moves; the
+// heavier particle moves less; a large compliance barely moves anything.
 // *****
 DistanceCorrection xpbdDistanceCorrection(const Vec3& xi, const Vec3& xj, Real wi, Real wj, Real restLength,
                                           Real compliance, Real h, Real lambda);

@@ -1,24 +1,25 @@
 // Round pairs in closed form: the cores are points and segments, so the closest points of the cores
-// (Ericson §5.1.2, §5.1.9) give the normal and separation; the radii are subtracted.
+// (Ericson §5.1.2, §5.1.9) reduce every pair to two spheres, whose contact is COLL-1's.
 #include <cmath>
+#include <optional>
 
 #include "physics/collision/closest_points.h"
+#include "physics/collision/exercises.h"
 #include "physics/collision/narrow_phase.h"
 
 namespace pba::collision {
 namespace {
 
-// One contact from the closest points ca (core of A) and cb (core of B).
-Manifold fromCorePoints(const Vec3& ca, Real ra, const Vec3& cb, Real rb, Real margin, std::uint32_t id,
-                        const Vec3& fallbackNormal) {
+// One contact from the closest points ca (core of A) and cb (core of B): two spheres about them, which is
+// COLL-1 (collision/exercises.h), asked with A's radius grown by the speculative margin so that it reports
+// every pair within the margin; its depth and midpoint are then moved back to the real surfaces.
+Manifold fromCorePoints(const Vec3& ca, Real ra, const Vec3& cb, Real rb, Real margin, std::uint32_t id) {
   Manifold m;
-  const Vec3 d = cb - ca;
-  const Real distance = glm::length(d);
-  m.separation = distance - ra - rb;
-  if (m.separation > margin) return m;
-  m.normal = distance > 1e-12 ? d / distance : fallbackNormal;
-  const Vec3 surfaceA = ca + ra * m.normal, surfaceB = cb - rb * m.normal;
-  m.add(0.5 * (surfaceA + surfaceB), m.separation, id);
+  const std::optional<SphereContact> c = sphereSphereContact(ca, ra + margin, cb, rb);
+  if (!c) return m;
+  m.normal = c->normal;
+  m.separation = margin - c->depth;
+  m.add(c->point - 0.5 * margin * c->normal, m.separation, id);
   return m;
 }
 
@@ -33,20 +34,20 @@ Segment coreSegment(const Shape& capsule, const Transform& pose) {
 }  // namespace
 
 Manifold collideSpheres(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
-  return fromCorePoints(pa.position, a.radius, pb.position, b.radius, margin, 0, kUp);
+  return fromCorePoints(pa.position, a.radius, pb.position, b.radius, margin, 0);
 }
 
 Manifold collideSphereCapsule(const Shape& sphere, const Transform& ps, const Shape& capsule, const Transform& pc,
                               Real margin) {
   const Segment s = coreSegment(capsule, pc);
   const Vec3 onSegment = closestPointOnSegment(ps.position, s.p, s.q);
-  return fromCorePoints(ps.position, sphere.radius, onSegment, capsule.radius, margin, 0, kUp);
+  return fromCorePoints(ps.position, sphere.radius, onSegment, capsule.radius, margin, 0);
 }
 
 Manifold collideCapsules(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
   const Segment sa = coreSegment(a, pa), sb = coreSegment(b, pb);
   const SegmentPair c = closestPointsSegments(sa.p, sa.q, sb.p, sb.q);
-  Manifold m = fromCorePoints(c.onFirst, a.radius, c.onSecond, b.radius, margin, 0, kUp);
+  Manifold m = fromCorePoints(c.onFirst, a.radius, c.onSecond, b.radius, margin, 0);
   if (m.count == 0) return m;
   // Nearly parallel capsules lying side by side: two points at the ends of the overlap of B's segment
   // projected onto A's, so that a capsule resting on another does not rock on one point.

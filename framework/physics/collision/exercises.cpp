@@ -46,10 +46,16 @@ std::optional<SphereContact> spherePlaneContact(const Vec3& center, Real radius,
 }
 
 // ***** COLL-2: One separating-axis test for two boxes (Ericson §4.4.1; Gottschalk, Lin & Manocha 1996) *****
-// (1) Project the line between the centres on the axis: |(c_B − c_A)·L|.
-// (2) Each box's projection is an interval around its centre; its half-length is the sum over the box's
-//     three axes of half extent × |axis·L| (the axes are the columns of its rotation matrix).
-// (3) The gap is the centre distance minus both half-lengths.
+// Inputs: two oriented boxes (centre [m], rotation whose columns are the box's axes in world axes, half
+// extents [m]) and one unit axis L in world axes. Output: the gap [m] between the boxes' projections on
+// L: positive when L separates them, negative (minus the overlap) when not.
+// (1) Project the centres on L: how far apart are they along L, whatever their order?
+// (2) Each box projects onto an interval about its centre's projection. Work out its half-length: how
+//     much does each of the box's three axes, with its half extent, stretch along L?
+// (3) The gap follows from the distance between the centres and the two half-lengths.
+// Check: two unit cubes side by side along x with a 1 m gap give 1 on L = x and a negative gap on y; the
+// result does not change when L is negated; turning a cube by 45° about z lengthens its half-length on x
+// to √2/2 times its side.
 // *****
 Real obbSeparationOnAxis(const Obb& a, const Obb& b, const Vec3& axis) {
   // BEGIN SOLUTION

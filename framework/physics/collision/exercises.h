@@ -1,7 +1,7 @@
 #pragma once
-// The collision-detection exercises (docs/architecture.md, "Exercises"; workbook chapter 4). The narrow phase
-// (narrow_phase.h) does not call these: it reaches the same answers by its own routes (closest points of
-// cores, support points), so that each exercise is graded alone.
+// The collision-detection exercises (docs/architecture.md, "Exercises"; workbook chapter 4). The narrow
+// phase (narrow_phase.h) calls COLL-1 for every round pair (spheres and capsules, through the closest
+// points of their cores); its tests feed the exercises fixed inputs, so each is graded alone.
 #include <optional>
 
 #include "physics/core/types.h"

@@ -11,12 +11,16 @@ namespace {
 struct Record {
   std::mutex mutex;
   std::set<std::string, std::less<>> tags;
+  std::set<std::string, std::less<>> used;  // outside the probes
   std::vector<void (*)()> probes;
 };
 Record& record() {
   static Record instance;
   return instance;
 }
+
+// Whether a stub ran outside the probes since the last clearNotImplemented() (anyNotImplementedUsed).
+std::atomic<bool> usedAny{false};
 
 // True while runProbes() runs: probes call every exercise on purpose, which is not a use to trace.
 std::atomic<bool> probing{false};
@@ -56,6 +60,10 @@ void markNotImplemented(std::string_view tag) {
   Record& r = record();
   std::lock_guard lock(r.mutex);
   if (r.tags.find(tag) == r.tags.end()) r.tags.emplace(tag);
+  if (!probing.load() && r.used.find(tag) == r.used.end()) {
+    r.used.emplace(tag);
+    usedAny.store(true);
+  }
 }
 
 std::vector<std::string> notImplementedTags() {
@@ -63,6 +71,14 @@ std::vector<std::string> notImplementedTags() {
   std::lock_guard lock(r.mutex);
   return {r.tags.begin(), r.tags.end()};
 }
+
+std::vector<std::string> notImplementedTagsUsed() {
+  Record& r = record();
+  std::lock_guard lock(r.mutex);
+  return {r.used.begin(), r.used.end()};
+}
+
+bool anyNotImplementedUsed() { return usedAny.load(); }
 
 bool registerProbe(void (*probe)()) {
   Record& r = record();
@@ -87,6 +103,8 @@ void clearNotImplemented() {
   Record& r = record();
   std::lock_guard lock(r.mutex);
   r.tags.clear();
+  r.used.clear();
+  usedAny.store(false);
 }
 
 }  // namespace pba::exercises

@@ -17,6 +17,12 @@ namespace pba::exercises {
 void markNotImplemented(std::string_view tag);
 /// Tags recorded so far, sorted, without repeats.
 std::vector<std::string> notImplementedTags();
+/// The tags of those stubs that ran outside the start-up probes (runProbes): the computation in hand
+/// needed them. The test main reports a failing test whose code path ran one as skipped ("needs TAG").
+std::vector<std::string> notImplementedTagsUsed();
+/// Whether notImplementedTagsUsed() is not empty: one lock-free load, safe in a signal handler (the test
+/// main's, when a stub's safe default leads to a floating-point trap).
+bool anyNotImplementedUsed();
 /// Forgets every record (tests use it).
 void clearNotImplemented();
 

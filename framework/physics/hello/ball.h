@@ -54,10 +54,14 @@ Real energy(const BallDesc& desc, const BallState& state);
 Real heightAboveGround(const BallDesc& desc, const BallState& state);
 
 // ***** HELLO-1: the explicit Euler step (Lobb notes, "ODE view": Euler) *****
-// (1) Keep the state at the start of the step: x(t) and v(t), and the acceleration a(t) passed in.
-// (2) New position: x(t + h) = x(t) + h v(t), using the velocity at the START of the step.
-// (3) New velocity: v(t + h) = v(t) + h a(t).
-// (4) Return the new state. (Using the new velocity in (2) would give symplectic Euler: not this one.)
+// Inputs: the ball's state at time t (position [m], velocity [m/s]), the acceleration a(t) [m/s²] and the
+// step h [s]. Output: the state at t + h.
+// (1) Explicit Euler takes every derivative at the START of the step: which velocity moves the position,
+//     and which acceleration changes the velocity?
+// (2) Update both and return the new state. (Using the velocity of the END of the step to move would
+//     be symplectic Euler: not this one.)
+// Check: with constant a, after n steps your positions equal chapter 0's summed recurrence; they lag the
+// exact parabola by an error proportional to h.
 // *****
 BallState eulerStep(const BallState& state, const Vec3& acceleration, Real h);
 
@@ -68,11 +72,18 @@ struct BounceResult {
 };
 
 // ***** HELLO-2: the ground bounce (Lobb notes, "particle/plane collisions") *****
-// (1) Contact test: the ball touches the plane when dot(N, x − P) < radius (P any point of the plane).
-// (2) Only a ball moving INTO the plane bounces: check dot(N, v) < 0.
-// (3) Split the velocity: normal part v_n = dot(N, v) N, tangential part v_t = v − v_n.
-// (4) New velocity v' = v_t − restitution · v_n (the tangential part is kept: no friction here).
-// (5) Push the centre back onto the surface along N so that the ball does not stay inside the ground.
+// Inputs: the ball (centre [m], velocity [m/s], radius [m]), the ground plane (a point P of it and its
+// unit normal N pointing out of the ground) and the restitution e between 0 and 1. Output: the ball after
+// the contact.
+// (1) When does the ball touch the plane? Think of the centre's signed height above the plane and the
+//     radius.
+// (2) When should it bounce at all? Only a ball heading INTO the plane: which sign of which product
+//     tells you?
+// (3) The ground acts on the velocity's normal part only (no friction here): how much of it comes back,
+//     and in which direction? The tangential part is kept.
+// (4) Put the ball back on the surface so that it does not stay inside the ground.
+// Check: a ball dropped with e = 1 returns to its height; e = 0 stops the normal motion; a ball rolling
+// along the ground keeps its speed; a ball leaving the ground is untouched.
 // *****
 BounceResult bounceOffPlane(const BallState& state, Real radius, Real restitution, const Vec3& planePoint,
                             const Vec3& planeNormal);

@@ -14,13 +14,17 @@
 namespace pba::ik {
 
 // ***** IK-1: single-joint analytic IK (Workbook §2.1 task 2) *****
-// (1) Normalise both directions: b = boneDirection / |boneDirection|, t = toTarget / |toTarget|.
-//     If either is (almost) zero there is nothing to do: return angle 0 (any axis).
-// (2) cos θ = b · t (dot product); the rotation axis is b × t (cross product), sin θ = |b × t|.
-// (3) θ = atan2(|b × t|, b · t): in [0, π], and never NaN (acos of a dot product slightly above 1 is).
-// (4) If |b × t| is (almost) zero the directions are parallel (θ = 0, keep any axis) or opposite
-//     (θ = π about any axis perpendicular to b: anyPerpendicular(b)).
-// (5) Return the unit axis and θ.
+// Inputs in world axes: the bone's direction and the direction from the joint to the target (any
+// lengths). Output: the unit axis and the angle θ in [0, π] [rad] of the smallest rotation that turns the
+// first direction onto the second.
+// (1) Only directions matter. If either is (almost) zero there is nothing to do: angle 0, any axis.
+// (2) Which two products of the directions give the axis and the cosine and sine of the angle? Get θ
+//     from them with an inverse trigonometric function that stays exact near 0 and π and never returns
+//     NaN for a cosine rounded slightly above 1.
+// (3) Parallel directions: θ = 0 (keep any axis). Opposite ones: a half turn about any axis
+//     perpendicular to the bone (anyPerpendicular).
+// Check: the returned rotation applied to the bone direction gives the target direction; θ = π/2 for
+// perpendicular directions; the axis has unit length.
 // *****
 AxisAngle analyticSingleJoint([[maybe_unused]] const Vec3& boneDirection, [[maybe_unused]] const Vec3& toTarget) {
   // BEGIN SOLUTION

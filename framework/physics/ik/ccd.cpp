@@ -26,16 +26,18 @@
 namespace pba::ik {
 
 // ***** IK-2: the CCD joint update as a quaternion (Workbook §2.4, Algorithm 1) *****
-// (1) V1 = effector − pivot (the direction the bone chain points now), V2 = target − pivot (where it
-//     should point).
-// (2) If either vector is (almost) zero, there is no defined rotation: return the identity.
-// (3) The rotation turns V1 onto V2 about n = V1 × V2 by their angle θ. A unit quaternion is
-//     (cos θ/2, sin θ/2 · n̂). Write cos θ and sin θ with the dot and cross products and use the
-//     half-angle identities: up to a positive factor, the quaternion's scalar part is
-//     |V1| |V2| + V1 · V2 and its vector part is V1 × V2. Normalise it: no trigonometry needed.
-// (4) When that scalar part is (almost) zero the vectors are opposite: the answer is a half turn,
-//     scalar part 0 and vector part any unit vector perpendicular to V1 (anyPerpendicular).
-// (5) glm::dquat's constructor takes (w, x, y, z).
+// Inputs in world axes [m]: the joint's pivot, the effector, the target. Output: the unit quaternion
+// (glm::dquat, constructor order (w, x, y, z)) that turns the direction pivot → effector onto the
+// direction pivot → target by the smallest angle.
+// (1) The two directions from the pivot. If either is (almost) zero there is no defined rotation:
+//     return the identity.
+// (2) Work out the quaternion without trigonometry: the dot and cross products give the cosine and sine
+//     of the angle (times the lengths), and the half-angle identities turn them into the quaternion's
+//     scalar and vector parts up to a common positive factor. Normalise.
+// (3) When the directions are opposite the axis is undefined: any half turn about an axis perpendicular
+//     to the first direction will do (anyPerpendicular).
+// Check: the result turns the first direction exactly onto the second's direction; it has unit length;
+// parallel directions give the identity.
 // *****
 Quat ccdJointUpdate([[maybe_unused]] const Vec3& pivot, [[maybe_unused]] const Vec3& effector,
                     [[maybe_unused]] const Vec3& target) {

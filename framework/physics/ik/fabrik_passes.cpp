@@ -9,14 +9,15 @@
 namespace pba::ik {
 
 // ***** IK-5: FABRIK's backward and forward passes (Aristidou & Lasenby 2011, Algorithm 1) *****
-// Backward pass (fabrikBackward), on points p[0..n-1] with lengths[i] = |p[i+1] − p[i]|:
-// (1) Move the last point onto the target: p[n−1] = target.
-// (2) For i from n−2 down to 0: the direction d = p[i] − p[i+1]; if |d| is (almost) zero leave p[i]
-//     where it is (no direction is defined); otherwise p[i] = p[i+1] + lengths[i] · d / |d|.
-// Forward pass (fabrikForward):
-// (3) Move the first point back onto the base: p[0] = base.
-// (4) For i from 1 to n−1: d = p[i] − p[i−1]; if |d| is (almost) zero leave p[i]; otherwise
-//     p[i] = p[i−1] + lengths[i−1] · d / |d|.
+// The chain is the points p[0..n-1] [m] with segment lengths lengths[i] between p[i] and p[i+1].
+// Backward pass (fabrikBackward): pin the last point on the target and walk back to the first. Forward
+// pass (fabrikForward): pin the first point back on the base and walk out to the last.
+// (1) In either pass, each point's new place depends only on its already-moved neighbour and where the
+//     point itself was: the segment between them must get its length back, and the point must stay on
+//     the line toward that neighbour. Work out where that puts it.
+// (2) If a point coincides with its neighbour no direction is defined: leave it where it is.
+// Check: after a backward pass the last point is on the target and every segment has its length; after a
+// forward pass the first point is on the base; a reachable target is approached pass after pass.
 // *****
 void fabrikBackward([[maybe_unused]] std::vector<Vec3>& points, [[maybe_unused]] const std::vector<Real>& lengths,
                     [[maybe_unused]] const Vec3& target) {

@@ -6,11 +6,17 @@
 namespace pba::ik {
 
 // ***** IK-3: a Jacobian column of a rotational joint (Workbook §2.5; IK slides, "Columns") *****
-// (1) The effector e moves on a circle about the joint's axis a (unit, world space) through the
-//     pivot r: its velocity for a unit angular speed is the cross product of the axis with the lever.
-// (2) The lever is e − r: the vector from the pivot to the CURRENT effector position (not the target:
-//     the Workbook's formula has a typo there; the IK slides have it right).
-// (3) Return a × (e − r). Its units are metres per radian.
+// Inputs in world axes: the joint's unit axis, its pivot (a point of the axis) [m], the effector's
+// position [m]. The column is the velocity of the effector [m/s] when this joint alone turns at
+// 1 rad/s, all others held: metres per radian.
+// (1) Which point is moving: the effector where it is NOW, not where it should go (the Workbook's
+//     formula has a typo there; the IK slides have it right). Describe it from the pivot.
+// (2) A point turning about an axis moves on a circle about that axis: work out its velocity's direction
+//     (tangent to the circle, by the right-hand rule about the axis) and its size (the radius of the
+//     circle times the angular speed).
+// Check: the column is perpendicular to the axis and to the lever; it is zero when the effector lies on
+// the axis; doubling the distance from the axis doubles it; it matches a finite difference of the
+// effector's position over a small turn (numericalJacobian in jacobian.h).
 // *****
 Vec3 rotationalColumn([[maybe_unused]] const Vec3& worldAxis, [[maybe_unused]] const Vec3& pivot,
                       [[maybe_unused]] const Vec3& effector) {

@@ -31,11 +31,14 @@
 namespace pba::ik {
 
 // ***** IK-4: the damped least-squares step (IK slides, "Inverting J"; Buss 2004 §5) *****
-// (1) Form the small square matrix A = J Jᵀ (rows × rows) with gram(J).
-// (2) Add the damping: A(i, i) += λ² for every i. A is then symmetric positive definite for λ > 0.
-// (3) Solve A f = Δe with solveSpd(A, error, f). If it fails (λ = 0 and J singular), return zeros.
-// (4) Return Δθ = Jᵀ f with multiplyTransposed(J, f) (J.cols entries).
-//     With λ = 0 this is the pseudo-inverse step Jᵀ (J Jᵀ)⁻¹ Δe of Workbook §2.5.
+// Inputs: the Jacobian J (rows: effector coordinates [m or scaled rad], columns: DOFs), the error Δe
+// (rows entries) and the damping λ ≥ 0. Output: the change of the DOFs Δθ (J.cols entries).
+// (1) Buss §5 writes the damped step so that the only system to solve is small and square (rows × rows,
+//     not columns × columns): work out that matrix (gram(J) gives J Jᵀ) and where λ enters it.
+// (2) Solve it with solveSpd; when the solve fails (λ = 0 and J singular), return zeros.
+// (3) Turn the solution back into a change of the DOFs (multiplyTransposed).
+// Check: with λ = 0 and J invertible the step solves J Δθ = Δe exactly (the pseudo-inverse step of
+// Workbook §2.5); a larger λ shortens the step; a singular J with λ > 0 gives a finite step.
 // *****
 std::vector<Real> dampedLeastSquaresStep([[maybe_unused]] const Matrix& J,
                                          [[maybe_unused]] const std::vector<Real>& error,

@@ -12,12 +12,16 @@
 namespace pba::ik {
 
 // ***** IK-6: joint-limit clamping (Workbook §2.7; IK slides, "Joint limits") *****
-// (1) Look up the joint and its first DOF index (Joint::firstDof) and DOF count (dofCount(type)).
-// (2) For each of its scalar DOFs k: clamp pose.dofs[firstDof + k] into [joint.lo[k], joint.hi[k]].
-// (3) For a Free joint: take the rotation vector of pose.rotations[j] (rotationVector: axis · angle).
-//     If its length (the angle) exceeds joint.maxRotation, scale it down to exactly maxRotation and
-//     store the quaternion of the shortened vector (quatFromRotationVector).
-// (4) Fixed joints have nothing to clamp.
+// Inputs: the skeleton, a joint index j and the pose to correct in place. Scalar DOFs (hinge angles
+// [rad], prismatic offsets [m]) live in pose.dofs, a free joint's rotation in pose.rotations[j].
+// (1) Which DOFs does joint j own in the pose (Joint::firstDof, dofCount(type)), and where are their
+//     limits? Bring each one back into its range.
+// (2) A free joint is limited by its rotation ANGLE (joint.maxRotation): when it turns further, shorten
+//     the rotation to exactly the limit while keeping its axis (rotationVector and
+//     quatFromRotationVector convert between a quaternion and axis · angle).
+// (3) Fixed joints have nothing to clamp.
+// Check: values inside their ranges are untouched; a clamped free joint turns by exactly maxRotation
+// about its old axis; other joints' DOFs never change.
 // *****
 void clampJointToLimits([[maybe_unused]] const Skeleton& skeleton, [[maybe_unused]] Pose& pose,
                         [[maybe_unused]] int j) {

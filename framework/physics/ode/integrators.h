@@ -75,12 +75,15 @@ struct Workspace {
 // ----- Generic methods: any OdeSystem (state copied out, advanced, copied back) -----
 
 // ***** PART-1: explicit Euler (Lobb notes, "ODE view": Euler) *****
-// (1) Read the current state s(t) from the system (getState) and the time t.
-// (2) Evaluate the derivative at the START of the step: k = f(s, t).
-// (3) Move along it: s(t + h) = s(t) + h k, component by component.
-// (4) Write the state back (setState) and advance the system's time to t + h.
-// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() does steps (1)–(2)
-// into w.s and w.k1, endGenericStep() step (4).)
+// One step of length h [s] of the system's first-order ODE ds/dt = f(s, t), the state s being every
+// position and velocity the system exposes (getState/setState), the clock its time [s].
+// (1) Decide where in the step explicit Euler takes its slope, and get that slope from the system.
+// (2) Move every component of the state along the slope for the length of the step.
+// (3) Leave the system with its new state AND its clock advanced by the step.
+// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() reads the state and
+// the first slope into w.s and w.k1, endGenericStep() writes back and advances the clock.)
+// Check: on ds/dt = λ s one step multiplies s by a factor you can work out by hand; halving h halves the
+// error after a fixed time (first order: the convergence test measures it).
 // *****
 void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
 
@@ -92,24 +95,29 @@ void midpointStep(OdeSystem& system, Real h, Workspace& w);
 void midpointStep(SecondOrderSystem& system, Real h, Workspace& w);
 
 // ***** PART-3: classical Runge–Kutta 4 (Lobb notes, RK4) *****
-// (1) Read s and t. Evaluate four slopes, each from the previous one:
-//     k1 = f(s, t);  k2 = f(s + (h/2) k1, t + h/2);  k3 = f(s + (h/2) k2, t + h/2);  k4 = f(s + h k3, t + h).
-//     (The notes scale each k by h; here k is the slope itself, so h multiplies at the end.)
-// (2) Combine with Simpson-like weights: s(t + h) = s + h (k1 + 2 k2 + 2 k3 + k4) / 6.
-// (3) Write the state back and advance the time to t + h (beginGenericStep/endGenericStep as in PART-1).
+// One step of length h [s] of ds/dt = f(s, t) on the system's whole state (as PART-1).
+// (1) Four slopes, each taken at a trial state built from the previous slope: at the start of the step,
+//     twice at its middle, and at its end. Work out each trial state and its time. (The notes scale each
+//     slope by h; here a slope is the derivative itself, so h multiplies when you use it.)
+// (2) Combine the four with RK4's weights (Simpson's rule) into the step.
+// (3) Write the state back and advance the clock by h (beginGenericStep/endGenericStep as in PART-1).
+// Check: exact when ds/dt is a polynomial in t alone of degree ≤ 3; halving h divides the error by 16.
 // *****
 void rk4Step(OdeSystem& system, Real h, Workspace& w);
 
 // ----- Methods that use the split s = (q, v) of a SecondOrderSystem (in place) -----
 
 // ***** PART-2: symplectic (semi-implicit) Euler (Lobb notes, "simple loop"; CMU asst4 pendulum) *****
-// (1) Evaluate the acceleration at the start of the step: a = M⁻¹ f(t, q, v).
-// (2) Update the velocity FIRST: v ← v + h a.
-// (3) Update the position with the NEW velocity: q ← q + h v.
-//     (Using the old velocity here would be explicit Euler, whose energy grows every step.)
-// (4) Tell the system (stateChanged) and advance the time to t + h.
+// One step of length h [s] of a second-order system: positions q [m], velocities v [m/s], accelerations
+// from the forces at the start of the step.
+// (1) Get the acceleration at the start of the step.
+// (2) Update both velocity and position, in the order that makes the method symplectic: which changes
+//     first, and which velocity then moves the position? (The other order is explicit Euler, whose
+//     energy grows every step: Lobb's "simple loop" explains the difference.)
+// (3) Tell the system its state changed and advance its clock by h.
 // (ode/step_helpers.h has two helpers the other in-place methods use: startInPlace() does the
-// bookkeeping and step (1), finishInPlace() step (4).)
+// bookkeeping and step (1), finishInPlace() step (3).)
+// Check: on a spring the energy stays bounded over thousands of steps; first order in h.
 // *****
 void symplecticEulerStep(SecondOrderSystem& system, Real h, Workspace& w);
 
@@ -127,12 +135,15 @@ struct VerletHistory {
 };
 
 // ***** PART-6: position Verlet (Ragdoll paper §2, after Jakobsen 2001) *****
-// The update (verletRecurrence in position_verlet.cpp) receives q(t), the previous positions
-// q(t − h) and a = M⁻¹ f at time t; it returns true once it has stepped.
-// (1) For every coordinate: q(t + h) = 2 q(t) − q(t − h) + h² a. No velocity is used.
-// (2) The velocity is implicit in the positions. Estimate it for the state (second order, exact under
-//     constant acceleration): v(t + h) = (q(t + h) − q(t)) / h + (h/2) a.
-// (3) Shift the history: the old q(t) becomes history.previous; q(t + h) becomes the current position.
+// The update (verletRecurrence in position_verlet.cpp) receives q(t), the previous positions q(t − h)
+// and the acceleration at time t; it returns true once it has stepped.
+// (1) New positions from the two last positions and the acceleration, for every coordinate: no velocity
+//     is used (Jakobsen §3 derives the recurrence from two Taylor expansions).
+// (2) The state still needs a velocity: estimate it from the positions, to second order (exact under
+//     constant acceleration).
+// (3) Shift the history so that the next call sees the right two positions.
+// Check: under constant acceleration the positions follow the parabola exactly; the step keeps a
+// spring's energy bounded; halving h divides the error by 4.
 // *****
 void verletStep(SecondOrderSystem& system, Real h, VerletHistory& history, Workspace& w);
 

@@ -85,16 +85,18 @@ SurfacePoint closestSurface(const SphereObstacle& o, const Vec3& x);
 SurfacePoint closestSurface(const BoxObstacle& o, const Vec3& x);
 
 // ***** PART-5: contact velocity with restitution and Coulomb friction (Lobb notes, collisions) *****
-// Given the velocity v of a particle touching a surface with outward unit normal N, return the velocity
-// after the contact.
-// (1) Normal speed v_n = N·v. If v_n ≥ 0 the particle is leaving: return v unchanged.
-// (2) Split v into the normal part v_n N and the tangential part v_t = v − v_n N.
-// (3) Restitution: e = material.restitution, but 0 when the impact is slow (−v_n ≤ restingSpeed):
-//     resting contact must not bounce. The new normal velocity is −e v_n (along N).
-// (4) The normal velocity change Δv_n = −(1 + e) v_n is the impulse per unit mass of the contact.
-// (5) Coulomb friction on v_t: if |v_t| ≤ μ_s Δv_n the particle sticks (v_t' = 0); otherwise it slides
-//     and loses μ_k Δv_n of tangential speed: v_t' = v_t (1 − μ_k Δv_n / |v_t|), never reversing.
-// (6) Return v_t' − e v_n N.
+// Given the velocity v [m/s] of a particle touching a surface with outward unit normal N (world axes),
+// return the velocity after the contact. `material` holds the restitution e, the resting speed below
+// which an impact must not bounce [m/s], and the static and kinetic friction coefficients.
+// (1) Decompose v into its part along N and its part in the surface. Decide when the contact has
+//     nothing to do (which way is the particle heading?).
+// (2) The normal part: how much of the approach speed comes back, and when must none come back (a slow
+//     impact is resting contact)? The change of normal velocity is the contact's impulse per unit mass.
+// (3) The tangential part: Coulomb friction is an impulse per unit mass bounded by the friction
+//     coefficients times that normal change. When the bound can stop the sliding (static coefficient),
+//     the particle sticks; otherwise the kinetic bound takes speed off along the sliding direction.
+// Check: a leaving particle is untouched; a resting contact leaves no normal speed; friction never
+// reverses the sliding direction nor adds speed; with no friction the tangential part is unchanged.
 // *****
 Vec3 contactVelocity(const Vec3& v, const Vec3& normal, const ContactMaterial& material);
 

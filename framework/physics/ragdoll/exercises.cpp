@@ -26,18 +26,20 @@ void projectStick(Vec3& a, Vec3& b, Real wa, Real wb, Real rest) {
 }
 
 // ***** RAG-2: the hinge limit by half-planes (Ragdoll paper §3.2.2) *****
-// (1) Work with q = p − origin, minus its part along the axis. If q is (almost) on the axis, there is
-//     no angle: report Inside with p as the target.
-// (2) Direction of angle t about the axis: cos t · zero + sin t · (axis × zero). Each limit is the
-//     half-plane from the axis towards its direction; the plane's normal, the direction turned by a
-//     further +90°, tells the sides apart: the signed distance of q from the lower limit's plane
-//     is ≥ 0 on the side of increasing angle; for the upper limit take the opposite normal.
-// (3) When the range upper − lower is at most π, p is inside only when on the inner side of BOTH
-//     planes; above π, when on the inner side of EITHER (the allowed wedge is then the larger one).
-// (4) Outside: the third plane through the axis, the one through the middle of the forbidden wedge
-//     (angle (lower + upper)/2 + π), tells which limit is nearer: the side of increasing angle from
-//     there leads to lower + 2π, the other side to upper.
-// (5) The target: the limit's direction scaled by |q|, plus origin and p's part along the axis.
+// Inputs in world axes: the hinge frame (a point of the axis, the unit axis, the unit direction of angle
+// 0, perpendicular to the axis), bone B's reference point p [m], the limits lower ≤ 0 ≤ upper [rad]
+// (upper − lower below 2π, so wider than π is allowed). Angles about the axis by the right-hand rule.
+// (1) Look at p from the axis: its part across the axis (if (almost) none, there is no angle: Inside,
+//     target p) and its part along it.
+// (2) Each limit is a half-plane through the axis. Using only signed distances from planes through the
+//     axis (no atan2), decide on which side of each limit's plane p lies; work out how "inside" reads
+//     when the range is at most π, and when it is wider.
+// (3) Outside: a third plane through the axis, through the middle of the forbidden wedge, tells which
+//     limit p is nearer: return LimitSide::Lower or LimitSide::Upper accordingly.
+// (4) The target: p turned about the axis onto that limit's half-plane, keeping its distance from the
+//     axis and its height along it.
+// Check: angles inside the range are Inside with target p; the target is at the limit's angle, as far
+// from the axis as p, at p's height; with a range of 270° the forbidden quarter is the right one.
 // *****
 LimitCorrection hingeLimit(const HingeFrame& frame, const Vec3& p, Real lower, Real upper) {
   // BEGIN SOLUTION
@@ -62,12 +64,17 @@ LimitCorrection hingeLimit(const HingeFrame& frame, const Vec3& p, Real lower, R
 }
 
 // ***** RAG-3: the ball-joint cone limit (Ragdoll paper §3.2.3) *****
-// (1) d = p − apex and its length L (nothing to do when L is 0). The paper's plane has the cone axis
-//     as normal through the apex: the distance of p from it is d·axis; on the cone's rim it would be
-//     c_dist = L cos(halfAngle).
-// (2) Inside when d·axis ≥ c_dist: report Inside with p as the target.
-// (3) Outside: the direction t ⟂ axis in the plane of axis and d (d minus its axial part, normalised;
-//     any ⟂ direction when that is zero). The target is apex + L (cos(halfAngle) axis + sin(halfAngle) t).
+// Inputs in world axes: the apex (the joint) [m], the cone's unit axis, bone B's reference point p [m],
+// the half-angle of the cone [rad], between 0 and π.
+// (1) Measure p from the apex: its distance from the apex, and its height above the paper's plane (the
+//     plane through the apex with the axis as its normal). A point at the apex has no direction: Inside.
+// (2) Find the height a point at that same distance would have on the cone's rim. p is inside the cone
+//     when it stands at least that high: return LimitSide::Inside with p itself as the target.
+// (3) Outside, return LimitSide::Upper (a cone has one limit, the rim) and as the target the point of the
+//     rim that is as far from the apex as p and lies in the plane through the axis and p. When p lies on
+//     the axis behind the apex that plane is not defined: any plane through the axis will do.
+// Check: the target is as far from the apex as p, at exactly the half-angle from the axis, on p's side;
+// p already on the rim is Inside.
 // *****
 LimitCorrection coneLimit(const Vec3& apex, const Vec3& axis, const Vec3& p, Real halfAngle) {
   // BEGIN SOLUTION
@@ -85,11 +92,16 @@ LimitCorrection coneLimit(const Vec3& apex, const Vec3& axis, const Vec3& p, Rea
 }
 
 // ***** RAG-4: the deepest contact spread over the tetrahedron (Ragdoll paper §3.3) *****
-// (1) The whole push is n·depth. Against the ground (b.particles is null) A takes all of it; else A
-//     takes the share M_B/(M_A + M_B) and B the rest, in the opposite direction (the heavier bone
-//     moves less).
-// (2) For each moving side: λ = 1 / Σ c_j², then every particle i moves by c_i λ Δ. (Check: the
-//     contact point Σ c_i x_i then moves by Σ c_i² λ Δ = Δ.)
+// Inputs: the two sides (each bone's four particles, the contact point's barycentric weights c_i with
+// Σ c_i = 1, the bone's mass [kg]; B may be the static ground), the unit normal from B to A and the depth
+// [m] ≥ 0 by which they overlap.
+// (1) The whole push separates the two by the depth along the normal. Share it between the two bones so
+//     that momentum is kept (the heavier bone moves less); against the ground A takes all of it.
+// (2) Each side moves its four particles in proportion to their weights, scaled so that the contact
+//     point (the weighted sum of the particles) moves by exactly that side's share: work out the scale
+//     from the weights.
+// Check: the contact point of each side moves by exactly its share; equal masses share equally; the
+// ground never moves; a particle with weight 0 stays put.
 // *****
 void resolveDeepestContact(ContactSide& a, ContactSide& b, const Vec3& normal, Real depth) {
   // BEGIN SOLUTION

@@ -1,9 +1,7 @@
 #pragma once
 // The ragdoll exercises RAG-1..4 (docs/workbook/06-ragdolls.md): the particle ragdoll's kernels in the
-// paper's own form (Ragdoll paper §3; Jakobsen 2001). The particle ragdoll's reference solver
-// (particle_ragdoll.h) reaches the same corrections by its own routes — one generic projection of a
-// constraint along its gradient (kernels.h) and limits measured as angles — so that each exercise is
-// graded alone; `StudentKernels` switches the solver onto these functions one by one.
+// paper's own form (Ragdoll paper §3; Jakobsen 2001). The particle ragdoll (particle_ragdoll.h) calls them
+// for its sticks, limits and contacts; their tests feed them fixed inputs, so each is graded alone.
 #include <array>
 
 #include "physics/ragdoll/kernels.h"

@@ -25,7 +25,8 @@ void ParticleRagdoll::draw(DebugDraw& d, const ParticleDrawOptions& o, const Col
           const Vec3 from = std::cos(j.lower) * f.zero + std::sin(j.lower) * glm::cross(f.axis, f.zero);
           d.arc(f.origin, f.axis, from, j.upper - j.lower, 0.6 * reach, colors::kOrange);
           d.line(f.origin, f.origin + 0.6 * reach * from, colors::kOrange);
-          d.line(f.origin, atHingeAngle(f, f.origin + 0.6 * reach * f.zero, j.upper), colors::kOrange);
+          const Vec3 to = std::cos(j.upper) * f.zero + std::sin(j.upper) * glm::cross(f.axis, f.zero);
+          d.line(f.origin, f.origin + 0.6 * reach * to, colors::kOrange);
         }
       } else if (j.limited) {
         const Vec3 apex = pointOf(j.a, j.origin);

@@ -199,13 +199,17 @@ void ParticleRagdoll::applyFriction() {
 }
 
 Real ParticleRagdoll::jointAngle(int joint) const {
+  // Measurements for the stats and the on-screen angles (the limits themselves are RAG-2 and RAG-3).
   const Joint& j = joints_[joint];
   if (j.kind == JointKind::Hinge) {
-    const auto [frame, ref] = hingeMeasure(j);
-    return hingeAngle(frame, ref);
+    const auto [f, ref] = hingeMeasure(j);
+    const Vec3 q = ref - f.origin;  // angle about the axis from `zero`, right-hand rule, in (−π, π]
+    return std::atan2(glm::dot(q, glm::cross(f.axis, f.zero)), glm::dot(q, f.zero));
   }
   const Vec3 apex = pointOf(j.a, j.origin);
-  return angleFromAxis(apex, glm::normalize(pointOf(j.a, j.axisEnd) - apex), pointOf(j.b, j.reference));
+  const Vec3 axis = glm::normalize(pointOf(j.a, j.axisEnd) - apex);
+  const Vec3 d = pointOf(j.b, j.reference) - apex;  // angle from the cone axis, in [0, π]
+  return std::atan2(glm::length(glm::cross(axis, d)), glm::dot(axis, d));
 }
 
 std::pair<HingeFrame, Vec3> ParticleRagdoll::hingeMeasure(const Joint& j) const {
@@ -240,8 +244,11 @@ ParticleStats ParticleRagdoll::measure(Real dt) const {
       s.maxJointError = std::max(s.maxJointError, glm::length(pointOf(j.a, p.inA) - pointOf(j.b, p.inB)));
     if (!j.limited) continue;
     const Real angle = jointAngle(static_cast<int>(k));
-    const Real beyond = j.kind == JointKind::Hinge ? std::max({0.0, unwrapAround(angle, j.lower, j.upper) - j.upper,
-                                                               j.lower - unwrapAround(angle, j.lower, j.upper)})
+    // A hinge's angle measured from the middle of its range, into (mid − π, mid + π]: a range wider than
+    // π is then judged without a jump at ±π.
+    const Real mid = 0.5 * (j.lower + j.upper);
+    const Real unwrapped = mid + std::remainder(angle - mid, 2.0 * kPi);
+    const Real beyond = j.kind == JointKind::Hinge ? std::max({0.0, unwrapped - j.upper, j.lower - unwrapped})
                                                    : std::max(0.0, angle - j.cone);
     s.maxLimitViolation = std::max(s.maxLimitViolation, beyond);
   }

@@ -22,8 +22,8 @@
 // on its axis. Limits: a reference point of B, turned back onto the limit (hinge: its half-plane, ball:
 // the cone) while bone A is pushed the other way at the same point (the paper's "Newton's third law").
 //
-// Every correction is one projection of a constraint along its gradient (kernels.h, PBD form); with
-// `StudentKernels` the sticks, limits and contacts run the exercises RAG-1..4 instead.
+// The sticks, limits and contacts are the exercises RAG-1..4 (exercises.h), which every step calls; the
+// joint points and the mouse are one projection of a constraint along its gradient (kernels.h, PBD form).
 #include <array>
 #include <optional>
 #include <string>
@@ -39,14 +39,6 @@
 #include "physics/ragdoll/tetrahedron.h"
 
 namespace pba::ragdoll {
-
-/// Which parts of the step run the exercises (exercises.h) in place of the reference kernels.
-struct StudentKernels {
-  bool stick = false;    ///< RAG-1
-  bool hinge = false;    ///< RAG-2
-  bool cone = false;     ///< RAG-3
-  bool contact = false;  ///< RAG-4
-};
 
 struct ParticleSettings {
   Vec3 gravity{0.0, -kStandardGravity, 0.0};  ///< [m/s²]
@@ -64,7 +56,6 @@ struct ParticleSettings {
   /// Removed share of each step's motion per second [1/s] (x − x_old scaled by 1 − damping·h). 0 in
   /// the paper; a small value lets a figure settle (named departure, off by default).
   Real damping = 0.0;
-  StudentKernels student;
 };
 
 struct ParticleStats {

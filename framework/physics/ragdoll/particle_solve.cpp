@@ -1,6 +1,7 @@
 // The particle ragdoll's relaxation and projection (particle_ragdoll.h, step 3): sticks, joints, limits,
-// the mouse, contacts. Reference route: every correction is kernels.h's projection along a gradient;
-// StudentKernels route the sticks, limits and contacts through the exercises instead.
+// the mouse, contacts. The sticks, the limits and the contacts are the exercises RAG-1..4 (exercises.h),
+// called here and nowhere copied; the joint points and the mouse are projections along a gradient
+// (kernels.h), written out.
 #include <algorithm>
 #include <cmath>
 
@@ -11,28 +12,8 @@
 namespace pba::ragdoll {
 
 void ParticleRagdoll::relax() {
-  if (settings_.student.stick) {
-    for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
-      for (const Stick& s : sticks_) projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);
-    return;
-  }
-  // kernels.h's projection with the coefficients (−1, +1) written out: Σ w a² = w_a + w_b, and the
-  // same products and sums in the same order (bit for bit the general route).
   for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
-    for (const Stick& s : sticks_) {
-      Vec3& xa = x_[s.a];
-      Vec3& xb = x_[s.b];
-      const Vec3 d = xb - xa;
-      const Real length = glm::length(d);
-      if (!(length > 1e-12)) continue;
-      const Real wa = w_[s.a], wb = w_[s.b];
-      const Real denominator = wa + wb;
-      if (!(denominator > 1e-300)) continue;
-      const Vec3 n = d / length;
-      const Real scale = (length - s.rest) / denominator;
-      xa += (scale * wa) * n;
-      xb -= (scale * wb) * n;
-    }
+    for (const Stick& s : sticks_) projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);  // RAG-1
 }
 
 void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {
@@ -67,22 +48,12 @@ void ParticleRagdoll::solveLimits() {
     if (j.kind == JointKind::Hinge) {
       const auto [frame, p] = hingeMeasure(j);
       ref = p;
-      if (settings_.student.hinge) {
-        target = hingeLimit(frame, p, j.lower, j.upper).target;
-      } else {
-        const Real angle = unwrapAround(hingeAngle(frame, p), j.lower, j.upper);
-        const Real clamped = std::clamp(angle, j.lower, j.upper);
-        target = clamped == angle ? p : atHingeAngle(frame, p, clamped);
-      }
+      target = hingeLimit(frame, p, j.lower, j.upper).target;  // RAG-2
     } else {
       const Vec3 apex = pointOf(j.a, j.origin);
       const Vec3 axis = glm::normalize(pointOf(j.a, j.axisEnd) - apex);
       ref = pointOf(j.b, j.reference);
-      if (settings_.student.cone) {
-        target = coneLimit(apex, axis, ref, j.cone).target;
-      } else {
-        target = angleFromAxis(apex, axis, ref) > j.cone ? atAngleFromAxis(apex, axis, ref, j.cone) : ref;
-      }
+      target = coneLimit(apex, axis, ref, j.cone).target;  // RAG-3
     }
     if (target == ref) continue;
     // B's reference point moves onto the limit, A is pushed back at the same point (the paper's
@@ -97,9 +68,14 @@ void ParticleRagdoll::solveDrag() {
   const Vec3 gap = dragTarget_ - pointOf(dragBone_, dragWeights_);
   const Real size = glm::length(gap);
   if (!(size > 1e-12)) return;
-  Term terms[4];
-  for (int k = 0; k < 4; ++k) terms[k] = {bones_[dragBone_].first + k, dragWeights_[k]};
-  projectAlongGradient(x_, w_, terms, gap / size, -0.5 * size);
+  // kernels.h's projection of C = −½|gap| along n = gap/|gap| with the terms (the bone's particles, c_k).
+  const int first = bones_[dragBone_].first;
+  Real denominator = 0.0;
+  for (int k = 0; k < 4; ++k) denominator += w_[first + k] * dragWeights_[k] * dragWeights_[k];
+  if (!(denominator > 1e-300)) return;
+  const Vec3 n = gap / size;
+  const Real s = -0.5 * size / denominator;
+  for (int k = 0; k < 4; ++k) x_[first + k] -= (s * w_[first + k] * dragWeights_[k]) * n;
 }
 
 void ParticleRagdoll::solveContacts(bool record) {
@@ -143,15 +119,9 @@ bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
   touched_[bone] = 1;
   touchNormal_[bone] = kUp;
   if (record) contacts_.push_back({embedded(p, weights), kUp});
-  if (settings_.student.contact) {
-    ContactSide side{&p, weights, B.mass}, ground{};
-    resolveDeepestContact(side, ground, kUp, deepest);
-    for (int k = 0; k < 4; ++k) x_[B.first + k] = p[k];
-    return true;
-  }
-  Term terms[4];
-  for (int k = 0; k < 4; ++k) terms[k] = {B.first + k, weights[k]};
-  projectAlongGradient(x_, w_, terms, kUp, -deepest);
+  ContactSide side{&p, weights, B.mass}, ground{};
+  resolveDeepestContact(side, ground, kUp, deepest);  // RAG-4
+  for (int k = 0; k < 4; ++k) x_[B.first + k] = p[k];
   return true;
 }
 
@@ -177,19 +147,15 @@ void ParticleRagdoll::solveBonePair(int a, int b, bool record) {
   touchNormal_[a] = -m.normal, touchNormal_[b] = m.normal;
   if (record) contacts_.push_back({point, m.normal});
   const Weights inA = weightsOf(a, point), inB = weightsOf(b, point);
-  if (settings_.student.contact) {
-    // The exercise's convention: the normal points from B to A, so A is the side pushed along +n.
-    std::array<Vec3, 4> pa = particlesOf(a), pb = particlesOf(b);
-    ContactSide sideB{&pb, inB, bones_[b].fixed ? 1e30 : bones_[b].mass};
-    ContactSide sideA{&pa, inA, bones_[a].fixed ? 1e30 : bones_[a].mass};
-    resolveDeepestContact(sideA, sideB, -m.normal, -deepest);
-    for (int k = 0; k < 4; ++k) {
-      if (!bones_[a].fixed) x_[bones_[a].first + k] = pa[k];
-      if (!bones_[b].fixed) x_[bones_[b].first + k] = pb[k];
-    }
-    return;
+  // RAG-4. The exercise's convention: the normal points from B to A, so A is the side pushed along +n.
+  std::array<Vec3, 4> pa = particlesOf(a), pb = particlesOf(b);
+  ContactSide sideB{&pb, inB, bones_[b].fixed ? 1e30 : bones_[b].mass};
+  ContactSide sideA{&pa, inA, bones_[a].fixed ? 1e30 : bones_[a].mass};
+  resolveDeepestContact(sideA, sideB, -m.normal, -deepest);
+  for (int k = 0; k < 4; ++k) {
+    if (!bones_[a].fixed) x_[bones_[a].first + k] = pa[k];
+    if (!bones_[b].fixed) x_[bones_[b].first + k] = pb[k];
   }
-  pushApart(a, inA, b, inB, -deepest * m.normal);
 }
 
 }  // namespace pba::ragdoll

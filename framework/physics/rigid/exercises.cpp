@@ -9,9 +9,13 @@ namespace pba::rigid {
 
 // ***** RIGID-1: Box inertia tensor and its world transform (Baraff & Witkin 2001, "Rigid Body
 // Dynamics I", §2.9–2.10) *****
-// (1) A solid box of full side lengths (a, b, c) = 2h has, about its centre and its own axes, a
-//     diagonal tensor: each diagonal entry is m/12 times the sum of the squares of the two OTHER sides.
-// (2) Return it as a Mat3 (glm is column-major; off-diagonal entries are 0).
+// Inputs: the mass [kg] and the half extents h [m] (the full sides are twice as long). Output: the
+// inertia tensor [kg·m²] about the centre of mass, in the box's own axes.
+// (1) Work out from the integral of Baraff & Witkin §2.9 (or its table of solids) which entries a box
+//     centred on its own axes has, and which of the three sides each one depends on.
+// (2) Return it as a Mat3 (glm is column-major).
+// Check: a cube's tensor is a multiple of the identity; stretching the box along x leaves I_xx alone
+// and raises the other two; the tensor scales with the mass and with the square of the size.
 // *****
 Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents) {
   // BEGIN SOLUTION
@@ -27,8 +31,12 @@ Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents) {
 }
 
 // ***** RIGID-1 (continued): the world-space tensor *****
-// (1) Turn the quaternion into its rotation matrix R (body axes → world axes).
-// (2) The tensor seen in world axes is R I_body Rᵀ (rotate into the body frame, apply, rotate back).
+// Inputs: the tensor in body axes and the orientation q (body axes → world axes). Output: the tensor that
+// maps an angular velocity in WORLD axes to the angular momentum in world axes.
+// (1) Think of what the body tensor expects: an ω expressed in body axes. Chain the changes of frame
+//     that take a world ω into the body frame, apply the body tensor, and bring the result back.
+// Check: the world tensor is symmetric with the body tensor's eigenvalues; for q the identity it is the
+// body tensor; L computed either way (in world axes, or in body axes and rotated) agrees.
 // *****
 Mat3 worldInertiaTensor(const Mat3& bodyInertia, const Quat& q) {
   // BEGIN SOLUTION
@@ -39,10 +47,14 @@ Mat3 worldInertiaTensor(const Mat3& bodyInertia, const Quat& q) {
 }
 
 // ***** RIGID-2: Quaternion integration of the orientation (Baraff & Witkin 2001, §4.2) *****
-// (1) Write ω as the pure quaternion (0, ω).
-// (2) The derivative of q is half of that pure quaternion multiplied by q (on the LEFT, since ω is in
-//     world axes).
-// (3) Take one explicit Euler step of length h, then renormalise: the step leaves the unit sphere.
+// Inputs: the orientation q (unit, body → world), the angular velocity ω [rad/s] in WORLD axes, the step
+// h [s]. Output: the orientation after one explicit Euler step, of unit length.
+// (1) Find in B&W §4.2 the time derivative of q for a world-axes ω: what ω becomes as a quaternion, the
+//     factor in front, and on which side of q it multiplies (the side is fixed by the frame of ω).
+// (2) Take one explicit Euler step of the four components, then bring q back to unit length: the step
+//     leaves the unit sphere.
+// Check: ω = 0 leaves q unchanged; a small step about z turns a body's x axis towards +y by ω h to
+// first order; the result has unit length.
 // *****
 Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h) {
   // BEGIN SOLUTION
@@ -55,10 +67,17 @@ Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h) {
 
 // ***** RIGID-3: The collision impulse with restitution (Baraff & Witkin 2001, "Rigid Body Dynamics
 // II", §8.3) *****
-// (1) Arms r_A, r_B from each centre of mass to the contact point; v_rel = n·(v_A(p) − v_B(p)).
-// (2) Not approaching (v_rel ≥ 0): no impulse.
-// (3) The denominator: both inverse masses plus, for each body, n · ((I⁻¹ (r × n)) × r).
-// (4) j = −(1 + e) v_rel / denominator.
+// Inputs in world axes: the two bodies (ImpulseBody: inverse mass, inverse inertia, centre, velocities),
+// the contact point [m], the unit normal n from B toward A, the restitution e. Output: the impulse's
+// size j [N·s] ≥ 0, applied as +j n to A and −j n to B.
+// (1) The relative velocity of the two material points at the contact, and its part along n [m/s]:
+//     what sign does it have while the bodies approach? A contact that is not approaching gets nothing.
+// (2) Work out from B&W §8.3 how much that normal relative velocity changes per unit impulse: each
+//     body's translation contributes through its inverse mass, its rotation through the arm from its
+//     centre to the point and its inverse inertia (world axes).
+// (3) Choose j so that the normal relative velocity after the impulse is −e times the one before.
+// Check: two equal spheres meeting head on with e = 1 exchange velocities; e = 0 leaves no normal
+// relative velocity; a static body (inverse mass and inertia 0) receives nothing but still acts.
 // *****
 Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
                       Real restitution) {
@@ -76,12 +95,15 @@ Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& po
 }
 
 // ***** RIGID-4: The friction impulse clamped to μ·j (Coulomb's law for impulses; Mirtich 1996, §3.3) *****
-// (1) The tangential part of the relative velocity v_A(p) − v_B(p) (remove the normal component); no
-//     tangential motion: no friction.
-// (2) t = its direction. The impulse along −t that would stop it has size |v_t| / k_t, with k_t built
-//     like RIGID-3's denominator but with t in place of n.
-// (3) Coulomb: the friction impulse can be at most μ times the normal impulse; clamp its size.
-// (4) Return it as a vector acting on A (it points against the sliding).
+// Inputs as RIGID-3 plus the normal impulse j [N·s] already decided and the friction coefficient μ.
+// Output: the friction impulse on A [N·s] (B receives its negative), in the contact's tangent plane.
+// (1) The sliding: the relative velocity at the contact without its normal part. No sliding, no friction.
+// (2) The impulse that would stop the sliding: how much does the sliding speed change per unit impulse
+//     along the sliding direction (the same reasoning as RIGID-3's, along another direction)?
+// (3) Coulomb: friction can never exceed μ times the normal impulse. Return the stopping impulse when
+//     it is within that bound, otherwise the largest one allowed, against the sliding.
+// Check: μ = 0 gives nothing; the result is perpendicular to n and opposes the sliding; a large μ stops
+// the sliding exactly; the size never exceeds μ j.
 // *****
 Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
                      Real normalImpulse, Real friction) {

@@ -16,11 +16,11 @@ namespace pba::rigid {
 /// Inertia tensor of a solid box of mass m [kg] and half extents h [m] about its centre, body axes
 /// [kg·m²].
 Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents);
-/// The tensor in world axes for orientation q: I_world = R I_body Rᵀ.
+/// The tensor in world axes for orientation q (body axes → world axes).
 Mat3 worldInertiaTensor(const Mat3& bodyInertia, const Quat& q);
 
 // RIGID-2
-/// One explicit step of the orientation: q̇ = ½ (0, ω) q with ω in world axes [rad/s], then renormalise.
+/// One explicit Euler step of the orientation under ω in world axes [rad/s], renormalised.
 Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h);
 
 /// What the impulse formulas need of a body.
@@ -34,8 +34,8 @@ struct ImpulseBody {
 };
 
 // RIGID-3
-/// Magnitude j ≥ 0 of the collision impulse with restitution e (0 when not approaching):
-///   j = −(1 + e) v_rel / (1/m_A + 1/m_B + n·((I_A⁻¹(r_A × n)) × r_A) + n·((I_B⁻¹(r_B × n)) × r_B)).
+/// Magnitude j ≥ 0 of the collision impulse with restitution e (0 when not approaching): after +j n on A
+/// and −j n on B the normal relative velocity at the point is −e times what it was.
 Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
                       Real restitution);
 

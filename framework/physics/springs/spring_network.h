@@ -27,13 +27,17 @@ struct Spring {
 };
 
 // ***** PART-4: the damped spring force (Lobb notes, "Damped spring") *****
-// Returns the force on particle i from the spring to particle j.
-// (1) Spring vector r = x_j − x_i, length l = |r|. If l is (nearly) zero the direction is undefined:
+// Returns the force [N] on particle i from the spring to particle j: positions [m], velocities [m/s],
+// stiffness k [N/m], rest length L [m], damping k_d [N·s/m] acting along the spring only.
+// (1) The spring's direction and length. When the two ends (nearly) coincide there is no direction:
 //     return a zero force.
-// (2) Unit direction r̂ = r / l and relative velocity ṙ = v_j − v_i.
-// (3) Magnitude: k (l − L) from the stretch plus k_d (r̂·ṙ) from the rate of change of length.
-//     (Positive when stretched or lengthening: it pulls i towards j.)
-// (4) Force on i = magnitude · r̂. (The force on j is its negative: the caller applies both.)
+// (2) The size of the force has two parts: one from how far the spring is stretched beyond its rest
+//     length, one from how fast its length is changing (the relative velocity's part along the spring,
+//     not its sideways part).
+// (3) The force on i acts along the spring; decide its sign so that a stretched or lengthening spring
+//     pulls i towards j. (The force on j is its negative: the caller applies both.)
+// Check: no force at rest length and rest; momentum conserved (f_i + f_j = 0); a sideways relative
+// velocity adds no damping; the elastic part is minus the gradient of the spring's stored energy.
 // *****
 Vec3 dampedSpringForce(const Vec3& xi, const Vec3& xj, const Vec3& vi, const Vec3& vj, Real stiffness, Real restLength,
                        Real damping);

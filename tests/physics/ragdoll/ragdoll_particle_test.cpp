@@ -1,6 +1,6 @@
 // The particle ragdoll's own parts: the particulating (tetrahedron mass, centre and inertia equal the
 // box's, against the closed form of a solid box), barycentric embedding and frame fitting, hinge limits
-// beyond 180° on the correct side with the reference kernels, the statistics against sums over the
+// beyond 180° on the correct side (through RAG-2), the statistics against sums over the
 // particles, determinism, and bad descriptions.
 #include <algorithm>
 #include <array>
