@@ -137,9 +137,9 @@ fetch_source() {
 
 # ---------------------------------------------------------------------------------------------------
 # Dependency prefixes: $CACHE/<source>-<version>/, one a source package, each built once. A prefix is
-# complete when its .pba-recipe holds the hash of the recipe that built it (the build function below,
-# the toolchain file and the imgui glue), so a changed recipe rebuilds it; .pba-source says what was
-# built (the archive may hold only an older source than the binary package's).
+# complete when its .pba-recipe holds the hash of the recipe that built it (the build function below
+# and the imgui glue), so a changed recipe rebuilds it; .pba-source says what was built (the archive
+# may hold only an older source than the binary package's).
 PREFIXES=()
 
 cross_cmake() { # cross_cmake SOURCE BUILD PREFIX [CMAKE ARGS...]
@@ -260,7 +260,7 @@ DEPS=(
 )
 
 recipe_hash() { # recipe_hash FUNCTION
-  { declare -f "$1" cross_cmake; cat "$TOOLCHAIN"; [[ "$1" == build_imgui ]] && cat "$ROOT/cmake/cross/imgui/CMakeLists.txt";
+  { declare -f "$1" cross_cmake; [[ "$1" == build_imgui ]] && cat "$ROOT/cmake/cross/imgui/CMakeLists.txt";
     [[ "$1" == build_assimp ]] && echo "${ASSIMP_IMPORTERS[*]}"; true; } | sha256sum | cut -c1-16
 }
 
@@ -298,13 +298,99 @@ build_deps() {
 
 # ---------------------------------------------------------------------------------------------------
 # Wine: a private prefix in the cache, created once.
+WINE=wine
 wine_init() {
+  WINE="$(command -v wine || command -v wine64)" || die "wine is not installed"
   export WINEPREFIX="$CACHE/wineprefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
   export WINEARCH=win64
   if [[ ! -f "$WINEPREFIX/system.reg" ]]; then
     wineboot -i >/dev/null 2>&1 || die "wineboot -i failed (WINEPREFIX=$WINEPREFIX)"
   fi
   wineserver -w 2>/dev/null || true
+}
+
+# The smoke project of cmake/cross/smoke against the prefixes: a window with GLFW + GLEW + ImGui
+# under Xvfb, and a GoogleTest test, both under Wine. Says whether the prefixes work before the
+# project's own code is compiled.
+smoke_prefix() {
+  local bld="$BUILD/cross-smoke"
+  mkdir -p "$OUT"
+  cmake -S "$ROOT/cmake/cross/smoke" -B "$bld" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$TOOLCHAIN" \
+    -DCMAKE_BUILD_TYPE=Release >"$OUT/smoke-configure.log" 2>&1 ||
+    { tail -n 30 "$OUT/smoke-configure.log" >&2; die "smoke: configure failed ($OUT/smoke-configure.log)"; }
+  nice -n 5 cmake --build "$bld" -j "$JOBS" >"$OUT/smoke-build.log" 2>&1 ||
+    { grep -E 'error|undefined' "$OUT/smoke-build.log" | head -n 30 >&2; die "smoke: build failed ($OUT/smoke-build.log)"; }
+  (cd "$OUT" && wine "$bld/smoke_gtest.exe" --gtest_brief=1) >"$OUT/smoke-gtest.log" 2>&1 ||
+    { cat "$OUT/smoke-gtest.log" >&2; die "smoke: the GoogleTest test failed under Wine"; }
+  (cd "$OUT" && xvfb "$WINE" "$bld/smoke_window.exe" smoke.png) >"$OUT/smoke-window.log" 2>&1 ||
+    { cat "$OUT/smoke-window.log" >&2; die "smoke: the window failed under Wine + Xvfb"; }
+  sed 's/^/  /' "$OUT/smoke-window.log" >&2
+}
+
+xvfb() { bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" "$@"; }
+
+FAILED=()
+
+configure_project() {
+  mkdir -p "$OUT"
+  (cd "$ROOT" && cmake --preset windows-mingw) >"$OUT/configure.log" 2>&1 ||
+    { tail -n 40 "$OUT/configure.log" >&2; die "configure failed ($OUT/configure.log)"; }
+}
+
+# Builds every target; keeps going past errors so that the log lists them all.
+build_project() {
+  if ! nice -n 5 cmake --build "$BUILD" -j "$JOBS" -- -k 0 >"$OUT/build.log" 2>&1; then
+    grep -E ': (fatal )?error|undefined reference|: multiple definition' "$OUT/build.log" | sort -u | head -n 60 >&2
+    die "build failed ($OUT/build.log)"
+  fi
+  local warnings
+  warnings="$(grep -c ': warning:' "$OUT/build.log" || true)"
+  [[ "$warnings" -gt 0 ]] && say "$warnings compiler warnings (grep ': warning:' $OUT/build.log)"
+  say "built $(find "$BUILD/bin" -name '*.exe' | wc -l) programs in $BUILD/bin"
+}
+
+# Each GoogleTest program once, the whole suite in one Wine process (ctest would start Wine once a test).
+run_tests() {
+  local exe name t0 summary
+  mkdir -p "$OUT/tests"
+  while IFS= read -r exe; do
+    name="$(basename "$exe" .exe)"
+    t0=$SECONDS
+    if (cd "$OUT/tests" && timeout 1200 "$WINE" "$exe" --gtest_brief=1) >"$OUT/tests/$name.log" 2>&1; then
+      summary="$(grep -E '^\[  PASSED  \]' "$OUT/tests/$name.log" | tail -n1)"
+      say "  $name: ${summary:-passed} ($((SECONDS - t0)) s)"
+    else
+      FAILED+=("$name")
+      say "  $name: FAILED ($((SECONDS - t0)) s, $OUT/tests/$name.log):"
+      grep -E '^\[  FAILED  \]|Failure|error' "$OUT/tests/$name.log" | head -n 20 | sed 's/^/    /' >&2
+    fi
+  done < <(find "$BUILD" -name 'pba_*_tests.exe' -not -path '*/cross-smoke/*' | sort)
+}
+
+# Each lab's default scene: headless with its metrics, then a screenshot under Xvfb.
+run_labs() {
+  local lab exe t0
+  mkdir -p "$OUT/labs"
+  for lab in $(cd "$ROOT/labs" && for d in */; do [[ -f "$d/CMakeLists.txt" ]] && echo "${d%/}"; done); do
+    exe="$BUILD/bin/pba-$lab.exe"
+    [[ -f "$exe" ]] || { FAILED+=("$lab (no $exe)"); continue; }
+    t0=$SECONDS
+    if (cd "$OUT/labs" && timeout 600 "$WINE" "$exe" --headless --metrics -) >"$OUT/labs/$lab.headless.log" 2>&1; then
+      say "  $lab --headless: ok ($((SECONDS - t0)) s)"
+    else
+      FAILED+=("$lab --headless")
+      say "  $lab --headless: FAILED ($((SECONDS - t0)) s): $(tail -n 3 "$OUT/labs/$lab.headless.log" | tr '\n' ' ')"
+    fi
+    t0=$SECONDS
+    rm -f "$OUT/labs/$lab.png"
+    if (cd "$OUT/labs" && timeout 600 bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" \
+      "$WINE" "$exe" --screenshot "$lab.png") >"$OUT/labs/$lab.screenshot.log" 2>&1 && [[ -s "$OUT/labs/$lab.png" ]]; then
+      say "  $lab --screenshot: $OUT/labs/$lab.png ($((SECONDS - t0)) s)"
+    else
+      FAILED+=("$lab --screenshot")
+      say "  $lab --screenshot: FAILED ($((SECONDS - t0)) s): $(tail -n 3 "$OUT/labs/$lab.screenshot.log" | tr '\n' ' ')"
+    fi
+  done
 }
 
 main() {
@@ -316,11 +402,16 @@ main() {
   export PBA_MINGW_PREFIX_PATH
   PBA_MINGW_PREFIX_PATH="$(IFS=':'; echo "${PREFIXES[*]}")"
   step "wine prefix" wine_init
+  step "prefix smoke (GLFW + GLEW + ImGui window, GoogleTest) under Wine" smoke_prefix
   step "configure (windows-mingw)" configure_project
   step "build (.exe)" build_project
   step "unit tests under Wine" run_tests
-  [[ $tests_only == 1 ]] && return 0
-  step "labs under Wine" run_labs
+  [[ $tests_only == 0 ]] && step "labs under Wine (headless, then a screenshot under Xvfb)" run_labs
+  if [[ ${#FAILED[@]} -gt 0 ]]; then
+    say "failed: ${FAILED[*]}"
+    return 1
+  fi
+  say "all passed under Wine; logs, metrics and screenshots in $OUT"
 }
 
 main; exit $?
