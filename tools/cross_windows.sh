@@ -237,6 +237,13 @@ build_assimp() {
     -DASSIMP_BUILD_ASSIMP_TOOLS=OFF -DASSIMP_BUILD_SAMPLES=OFF -DASSIMP_BUILD_DOCS=OFF \
     -DASSIMP_BUILD_ZLIB=OFF -DASSIMP_BUILD_DRACO=OFF -DASSIMP_WARNINGS_AS_ERRORS=OFF \
     -DASSIMP_INSTALL_PDB=OFF -DASSIMP_BUILD_ASSIMP_VIEW=OFF -DCMAKE_CXX_FLAGS="$inc" -DCMAKE_C_FLAGS="$inc"
+  # assimp exports minizip and z as bare names (pkg-config's), which a consumer's linker cannot find:
+  # name the archives of the zlib prefix instead.
+  local zlib targets
+  for zlib in "${PREFIXES[@]}"; do [[ -f "$zlib/lib/libminizip.a" ]] && break; done
+  targets="$(find "$prefix/lib/cmake" -name assimpTargets.cmake)"
+  grep -q ';minizip;z"' "$targets" || die "assimp: no bare minizip;z in $targets"
+  sed -i "s|;minizip;z\"|;$zlib/lib/libminizip.a;$zlib/lib/libz.a\"|" "$targets"
 }
 
 build_imgui() {
@@ -261,7 +268,7 @@ DEPS=(
 
 recipe_hash() { # recipe_hash FUNCTION
   { declare -f "$1" cross_cmake; [[ "$1" == build_imgui ]] && cat "$ROOT/cmake/cross/imgui/CMakeLists.txt";
-    [[ "$1" == build_assimp ]] && echo "${ASSIMP_IMPORTERS[*]}"; true; } | sha256sum | cut -c1-16
+    [[ "$1" == build_assimp ]] && echo "${ASSIMP_IMPORTERS[*]} ${PREFIXES[*]}"; true; } | sha256sum | cut -c1-16
 }
 
 build_deps() {
