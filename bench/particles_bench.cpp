@@ -21,6 +21,7 @@
 #include "physics/particles/kernels.h"
 #include "physics/particles/spatial_hash.h"
 #include "roofline.h"
+#include "thread_cpu_time.h"
 
 namespace {
 using namespace pba;
@@ -237,11 +238,6 @@ FusedCost fusedCost(ode::IntegratorKind kind) {
 // machine the load changes within a run, and a roof measured once at the start made the ratios of the
 // later rows swing by up to 1.8× (both roofs fell together when another job took the core).
 bench::Roofline oscillatorRoofline() { return bench::measureRoofline(2 * kOscillators); }
-double threadCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 void BM_Integrator(benchmark::State& state) {
   const auto kind = static_cast<ode::IntegratorKind>(state.range(0));
@@ -254,7 +250,7 @@ void BM_Integrator(benchmark::State& state) {
   // Two figures per method: the mean CPU time over all steps (times_floor), and the best single step
   // (best_times_floor), which is measured the way the roofline is (the best of many short passes), so
   // that a load that comes and goes during the run does not favour one side of the ratio.
-  const double start = threadCpuSeconds();
+  const double start = bench::threadCpuSeconds();
   double bestSeconds = 1e300;
   for (auto _ : state) {
     const auto stepStart = std::chrono::steady_clock::now();
@@ -263,7 +259,7 @@ void BM_Integrator(benchmark::State& state) {
         std::min(bestSeconds, std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count());
   }
   const double dofSteps = static_cast<double>(state.iterations()) * desc.copies;
-  const double nsPerDofStep = 1e9 * (threadCpuSeconds() - start) / dofSteps;
+  const double nsPerDofStep = 1e9 * (bench::threadCpuSeconds() - start) / dofSteps;
   const double bestNsPerDofStep = 1e9 * bestSeconds / desc.copies;
   const FusedCost cost = fusedCost(kind);
   const double floorNs = roofline.floorNs(cost.bytes, cost.flops);

@@ -23,15 +23,12 @@
 #include <btBulletDynamicsCommon.h>
 #endif
 
+#include "thread_cpu_time.h"
+
 namespace {
 using namespace pba;
 using namespace pba::ragdoll;
 
-double cpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 void report(benchmark::State& state, double seconds, int steps, Real dt) {
   state.SetIterationTime(seconds / steps);
@@ -43,9 +40,9 @@ enum class Method { Particle, Constraint };
 
 template <typename Step>
 double timeSteps(int steps, Step&& step) {
-  const double t0 = cpuSeconds();
+  const double t0 = bench::threadCpuSeconds();
   for (int i = 0; i < steps; ++i) step();
-  return cpuSeconds() - t0;
+  return bench::threadCpuSeconds() - t0;
 }
 
 // Particle method: `sweeps` stick sweeps per iteration; the paper's tests run its published form

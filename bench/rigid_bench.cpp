@@ -20,6 +20,8 @@
 #include <btBulletDynamicsCommon.h>
 #endif
 
+#include "thread_cpu_time.h"
+
 namespace {
 using namespace pba;
 
@@ -31,12 +33,6 @@ std::vector<rigid::BodyDesc> sceneBodies(Scene s) {
   return s == Scene::Boxes3000 ? rigid::benchBoxes() : rigid::benchStack1000();
 }
 
-// Thread CPU time [s]: the machine this runs on is shared, and wall time would count the waits.
-double cpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 void report(benchmark::State& state, double seconds, std::size_t bodies) {
   const double msPerStep = 1e3 * seconds / kSteps;
@@ -60,9 +56,9 @@ void BM_Ours(benchmark::State& state, Scene scene, bool classic) {
     rigid::World world(s);
     rigid::addGround(world, 0.5);
     rigid::addAll(world, bodies);
-    const double t0 = cpuSeconds();
+    const double t0 = bench::threadCpuSeconds();
     for (int i = 0; i < kSteps; ++i) world.step(kDt);
-    report(state, cpuSeconds() - t0, bodies.size());
+    report(state, bench::threadCpuSeconds() - t0, bodies.size());
     state.counters["solver_iterations"] = world.stats().solverIterations;
   }
 }
@@ -117,9 +113,9 @@ void BM_Bullet(benchmark::State& state, Scene scene) {
       rigid.back()->setActivationState(DISABLE_DEACTIVATION);
       world.addRigidBody(rigid.back().get());
     }
-    const double t0 = cpuSeconds();
+    const double t0 = bench::threadCpuSeconds();
     for (int i = 0; i < kSteps; ++i) world.stepSimulation(kDt, 0);
-    report(state, cpuSeconds() - t0, bodies.size());
+    report(state, bench::threadCpuSeconds() - t0, bodies.size());
     for (auto& b : rigid) world.removeRigidBody(b.get());
     world.removeRigidBody(&groundBody);
   }

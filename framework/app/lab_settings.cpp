@@ -7,16 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/host_system.h"
+
 namespace pba::app {
 
 std::string settingsDirectory(const std::string& lab) {
-  std::filesystem::path base;
-  if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg)
-    base = xdg;
-  else if (const char* home = std::getenv("HOME"); home && *home)
-    base = std::filesystem::path(home) / ".config";
-  else
-    return {};
+  const std::filesystem::path base = userConfigDir();
+  if (base.empty()) return {};
   return (base / "pba-labs" / lab).string();
 }
 

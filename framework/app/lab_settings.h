@@ -1,6 +1,7 @@
 #pragma once
 // Per-lab persisted settings (docs/architecture.md §3): last scene, window size, lecture mode, plotted metrics.
-// Stored as JSON next to the ImGui ini in $XDG_CONFIG_HOME/pba-labs/<lab>/ (default ~/.config).
+// Stored as JSON next to the ImGui ini in <user config folder>/pba-labs/<lab>/: %APPDATA% on Windows,
+// ~/Library/Application Support on macOS, $XDG_CONFIG_HOME (default ~/.config) elsewhere.
 #include <string>
 #include <vector>
 

@@ -1,8 +1,8 @@
 #include "app/progress_line.h"
 
-#include <unistd.h>
-
 #include <algorithm>
+
+#include "app/host_system.h"
 
 namespace pba::app {
 
@@ -24,7 +24,7 @@ ProgressLine::ProgressLine(std::string label, long total, std::string unit, bool
     : label_(std::move(label)),
       unit_(std::move(unit)),
       total_(total),
-      tty_(::isatty(STDERR_FILENO) != 0),
+      tty_(standardErrorIsTerminal()),
       piped_(piped),
       started_(std::chrono::steady_clock::now()),
       lastDrawn_(started_) {}

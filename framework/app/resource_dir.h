@@ -1,15 +1,17 @@
-// Where the labs find their resources (shaders, scene files, the exercise catalog): the repository's
-// resources/ folder, fixed at configure time.
+// Where the labs find their resources (shaders, the UI font, models, scene files, the exercise catalog).
+// A lab looks, in order: in $PBA_RESOURCE_DIR; in a resources/ folder next to its executable; in
+// <prefix>/share/pba-labs/resources above a <prefix>/bin executable (what `cmake --install` lays out); and
+// last in the source tree's resources/ folder, fixed at configure time (a build that has not moved).
 #pragma once
 
 #include <string>
 
 namespace pba::app {
 
-/// The absolute path of the repository's resources/ folder, without a trailing slash.
+/// The path of the resources/ folder the labs use, without a trailing slash.
 const std::string& resourceDir();
 
-/// The repository root: the folder above resourceDir().
+/// The folder above resourceDir(): the repository root in a build tree, share/pba-labs when installed.
 std::string repositoryRoot();
 
 /// A file named on the command line or in a scene: the path as given when it exists (or is absolute or

@@ -1,6 +1,5 @@
 #include "app/soak_run.h"
 
-#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,8 +14,10 @@
 #include <string>
 #if defined(__GLIBC__)
 #include <malloc.h>
+#include <unistd.h>
 #endif
 
+#include "app/host_system.h"
 #include "app/lab.h"
 #include "app/lab_session.h"
 #include "app/scene_registry.h"
@@ -43,18 +44,6 @@ constexpr bool kSanitizerBuild = false;
 #else
 constexpr bool kSanitizerBuild = false;
 #endif
-
-/// Resident set size [bytes] (VmRSS), after handing freed heap pages back to the system (glibc's malloc
-/// keeps them otherwise).
-std::size_t residentBytes() {
-#if defined(__GLIBC__)
-  malloc_trim(0);
-#endif
-  std::ifstream statm("/proc/self/statm");
-  std::size_t size = 0, resident = 0;
-  statm >> size >> resident;
-  return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
-}
 
 /// Bytes the program holds through malloc (freed memory and allocator overhead aside): what a leak grows,
 /// where the resident size also counts fragmentation.

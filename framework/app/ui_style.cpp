@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "app/resource_dir.h"
+
 namespace pba::app {
 namespace {
 
@@ -16,8 +18,8 @@ constexpr float kLectureSidePixels = 19.0f;  // legends and a scene's own window
 // the text then takes the same share of the picture as at 1280×720.
 constexpr float kLargeLectureHeight = 960.0f;
 constexpr float kLargeLectureFactor = 4.0f / 3.0f;
-// Debian's fonts-dejavu-core; ./pba installs it. Without it ImGui's built-in font is used.
-constexpr const char* kFontPath = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+// DejaVu Sans, shipped in resources/fonts (its licence beside it). Without it ImGui's built-in font is used.
+constexpr const char* kFontFile = "fonts/DejaVuSans.ttf";
 // The glyphs the labs' texts use, all in DejaVu Sans: ImGui loads only Latin-1 by default, and every
 // ω, μ_s, θ, ψ, − (minus), ≈, ≤, √, ₀, → in a description or tooltip showed as '?'. (Pairs of first
 // and last code point; zero-terminated; must outlive the font atlas.)
@@ -61,8 +63,11 @@ UiFonts loadUiFonts(float contentScale) {
   fonts.contentScale = contentScale > 0.0f ? contentScale : 1.0f;
   ImGuiIO& io = ImGui::GetIO();
   const float k = fonts.contentScale, large = kLargeLectureFactor;
-  if (std::filesystem::exists(kFontPath)) {
-    auto add = [&](float pixels) { return io.Fonts->AddFontFromFileTTF(kFontPath, pixels * k, nullptr, kGlyphRanges); };
+  const std::string fontPath = (std::filesystem::path(resourceDir()) / kFontFile).string();
+  if (std::filesystem::exists(fontPath)) {
+    auto add = [&](float pixels) {
+      return io.Fonts->AddFontFromFileTTF(fontPath.c_str(), pixels * k, nullptr, kGlyphRanges);
+    };
     fonts.regular = add(kRegularPixels);
     fonts.lecture = {add(kLecturePixels), add(kLectureSidePixels)};
     fonts.lectureLarge = {add(kLecturePixels * large), add(kLectureSidePixels * large)};

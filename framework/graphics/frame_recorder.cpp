@@ -1,27 +1,18 @@
-// FrameRecorder: ffmpeg through popen (rawvideo rgb24 on stdin), PNG files through stb_image_write.
+// FrameRecorder: ffmpeg through a pipe (rawvideo rgb24 on stdin), PNG files through stb_image_write.
 #include "graphics/frame_recorder.h"
 
 #include <stb_image_write.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <csignal>
 #include <cstdlib>
 #include <filesystem>
+
+#include "graphics/child_process.h"
 
 namespace pba::graphics {
 namespace {
 
 bool endsWith(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-/// The path in single quotes for /bin/sh, with embedded quotes escaped.
-std::string shellQuoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
 }
 
 }  // namespace
@@ -34,22 +25,7 @@ std::optional<RecordFormat> recordFormatOf(const std::string& path) {
   return std::nullopt;
 }
 
-std::string findFfmpeg() {
-  const char* path = std::getenv("PATH");
-  if (!path) return {};
-  std::string dirs = path;
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-    const std::string dir = dirs.substr(start, end - start);
-    if (!dir.empty()) {
-      const std::string candidate = dir + "/ffmpeg";
-      if (::access(candidate.c_str(), X_OK) == 0) return candidate;
-    }
-    start = end + 1;
-  }
-  return {};
-}
+std::string findFfmpeg() { return findProgramOnPath("ffmpeg"); }
 
 FrameRecorder::~FrameRecorder() {
   if (active_) close(nullptr);
@@ -79,7 +55,7 @@ bool FrameRecorder::open(const std::string& path, int width, int height, int fps
   const std::string ffmpeg = findFfmpeg();
   if (ffmpeg.empty())
     return fail(
-        "recording MP4 or GIF needs ffmpeg, which is not installed (apt-get install ffmpeg); "
+        "recording MP4 or GIF needs ffmpeg on the PATH (apt-get, brew or winget install ffmpeg); "
         "or record PNG files: --record DIR/");
   const std::string input = " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " + std::to_string(width) +
                             "x" + std::to_string(height) + " -r " + std::to_string(fps) + " -i -";
@@ -87,11 +63,11 @@ bool FrameRecorder::open(const std::string& path, int width, int height, int fps
   // a palette computed from the whole clip.
   const std::string output =
       format_ == RecordFormat::Mp4
-          ? " -c:v libx264 -preset veryfast -crf 20 -pix_fmt yuv420p -vf 'scale=trunc(iw/2)*2:trunc(ih/2)*2'"
-            " -movflags +faststart "
-          : " -vf 'fps=30,split[a][b];[a]palettegen[p];[b][p]paletteuse' -loop 0 ";
-  std::signal(SIGPIPE, SIG_IGN);  // a failed ffmpeg gives a write error, not the end of the lab
-  pipe_ = ::popen((shellQuoted(ffmpeg) + input + output + shellQuoted(path)).c_str(), "w");
+          ? " -c:v libx264 -preset veryfast -crf 20 -pix_fmt yuv420p -vf " +
+                quotedArgument("scale=trunc(iw/2)*2:trunc(ih/2)*2") + " -movflags +faststart "
+          : " -vf " + quotedArgument("fps=30,split[a][b];[a]palettegen[p];[b][p]paletteuse") + " -loop 0 ";
+  // A failed ffmpeg gives a write error, not the end of the lab (openWritePipe ignores SIGPIPE).
+  pipe_ = openWritePipe(quotedArgument(ffmpeg) + input + output + quotedArgument(path));
   if (!pipe_) return fail("cannot start ffmpeg");
   active_ = true;
   return true;
@@ -126,12 +102,10 @@ bool FrameRecorder::close(std::string* error) {
   if (!active_) return true;
   active_ = false;
   if (!pipe_) return true;
-  const int status = ::pclose(pipe_);
+  const int status = closeWritePipe(pipe_);
   pipe_ = nullptr;
   if (status != 0) {
-    if (error)
-      *error =
-          path_ + ": ffmpeg failed (exit " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : status) + ")";
+    if (error) *error = path_ + ": ffmpeg failed (exit " + std::to_string(status) + ")";
     return false;
   }
   return true;

@@ -16,10 +16,17 @@ void onGlfwError(int code, const char* description) {
   g_lastGlfwError = std::string(description ? description : "unknown") + " (GLFW error " + std::to_string(code) + ")";
 }
 
+// Only an X11 or Wayland desktop announces itself in the environment: there, no DISPLAY means no
+// window can open, and saying so is clearer than GLFW's error. Windows and macOS always have a desktop
+// session when a program can run at all, so GLFW alone decides there.
 bool hasDisplay() {
+#if defined(_WIN32) || defined(__APPLE__)
+  return true;
+#else
   const char* x11 = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   return (x11 && *x11) || (wayland && *wayland);
+#endif
 }
 
 bool acquireGlfw(std::string* error) {

@@ -1,6 +1,6 @@
 // Animation lab, scene "mocap": plays a motion-capture clip imported through Assimp (default: the
 // project's humanoid, resources/models/humanoid.bvh; any BVH/FBX/glTF with an animation through
-// --skeleton, e.g. Debian assimp-testmodels' CMU 01_01.bvh), with the trajectory of one joint drawn
+// --skeleton, e.g. the CMU 01_01.bvh shipped in resources/models/mocap), with the trajectory of one joint drawn
 // over the whole clip, and the file's meshes skinned by the played pose when it has any (e.g. the
 // Wuson, X/Testwuson.X; app/character_skin.h, the IK lab's character skin) (Workbook §2.7, advanced: "load an animated skeleton").
 #include <imgui.h>
@@ -92,10 +92,10 @@ class MocapScene final : public AnimScene {
   }
   std::vector<app::Preset> presets() const override {
     return {{"humanoid", {{"skeleton", "resources/models/humanoid.bvh"}}},
-            {"cmu 01_01", {{"skeleton", "/usr/share/assimp/models/BVH/01_01.bvh"}, {"trail_joint", "LeftHand"}}},
-            {"boxing", {{"skeleton", "/usr/share/assimp/models/BVH/Boxing_Toes.bvh"}, {"trail_joint", ""}}},
-            // A skinned, animated file of Debian's assimp-testmodels: the mesh follows the clip.
-            {"skinned wuson", {{"skeleton", "/usr/share/assimp/models/X/Testwuson.X"}, {"trail_joint", ""}}},
+            {"cmu 01_01", {{"skeleton", "resources/models/mocap/01_01.bvh"}, {"trail_joint", "LeftHand"}}},
+            {"boxing", {{"skeleton", "resources/models/mocap/Boxing_Toes.bvh"}, {"trail_joint", ""}}},
+            // A skinned, animated file shipped in resources/models (from Assimp's test models): the mesh follows the clip.
+            {"skinned wuson", {{"skeleton", "resources/models/Testwuson.X"}, {"trail_joint", ""}}},
             {"step", {{"rotation", "step"}}},
             {"squad", {{"rotation", "squad"}}}};
   }

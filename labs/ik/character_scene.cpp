@@ -1,7 +1,7 @@
 // IK lab, scene "character": any skeleton Assimp loads (BVH, FBX, COLLADA, glTF), converted into
 // ball joints (character_rig.h), with hands and feet reaching for moving goals. The default is the
 // project's own humanoid, resources/models/humanoid.bvh (made by tools/make_humanoid_bvh.py):
-//   pba-ik --skeleton /usr/share/assimp/models/BVH/01_01.bvh --effectors lHand,rHand
+//   pba-ik --skeleton resources/models/mocap/01_01.bvh --effectors lHand,rHand
 #include <algorithm>
 #include <cmath>
 
@@ -90,8 +90,8 @@ class CharacterScene final : public IkScene {
             {"sdls", {{"solver", "sdls"}}},
             {"ccd", {{"solver", "ccd"}}},
             {"fabrik", {{"solver", "fabrik"}}},
-            // A skinned file from Debian's assimp-testmodels (installed by ./pba): the mesh follows the IK.
-            {"skinned wuson", {{"skeleton", "/usr/share/assimp/models/X/Testwuson.X"}, {"effectors", ""}}}};
+            // A skinned file shipped in resources/models (from Assimp's test models): the mesh follows the IK.
+            {"skinned wuson", {{"skeleton", "resources/models/Testwuson.X"}, {"effectors", ""}}}};
   }
 
  protected:

@@ -2,7 +2,7 @@
 // project's resources/models/humanoid.bvh), in the file's rest pose or one frame of its animation, dropped
 // with both methods side by side. The skeleton becomes boxes and joints in the library
 // (physics/ragdoll/skeleton_ragdoll.h); the file is read here (skeleton_import.h). Examples:
-//   pba-ragdoll --skeleton /usr/share/assimp/models/BVH/01_01.bvh --frame 100
+//   pba-ragdoll --skeleton resources/models/mocap/01_01.bvh --frame 100
 #include "app/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
@@ -54,9 +54,9 @@ class CharacterScene final : public lab::RagdollScene {
   }
   std::vector<app::Preset> presets() const override {
     std::vector<app::Preset> p = RagdollScene::presets();
-    // Debian's assimp-testmodels (installed by ./pba): the CMU motion-capture skeleton, 31 joints.
+    // The CMU motion-capture skeleton shipped in resources/models/mocap, 31 joints.
     p.resize(8);
-    p.push_back({"CMU 01_01.bvh, frame 100", {{"skeleton", "/usr/share/assimp/models/BVH/01_01.bvh"}, {"frame", 100}}});
+    p.push_back({"CMU 01_01.bvh, frame 100", {{"skeleton", "resources/models/mocap/01_01.bvh"}, {"frame", 100}}});
     return p;
   }
 

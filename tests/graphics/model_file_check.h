@@ -10,8 +10,6 @@
 
 #include <glm/glm.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -21,16 +19,21 @@
 #include <string>
 #include <vector>
 
+#include "support/unique_name.h"
+
 namespace pba::testing::models {
 
 namespace gfx = pba::graphics;
 
-inline const std::string kAssimpModels = "/usr/share/assimp/models/";
+/// Debian's assimp-testmodels folder (tests/CMakeLists.txt finds it; these tests are built only then).
+inline const std::string kAssimpModels = PBA_ASSIMP_TEST_MODELS;
+/// The model files shipped with the labs (resources/models/).
+inline const std::string kShippedModels = PBA_TEST_RESOURCE_DIR "/models/";
 
 /// True when the file exists; otherwise records a failure that names the package to install.
 inline bool testModelPresent(const std::string& path) {
   if (std::filesystem::exists(path)) return true;
-  ADD_FAILURE() << path << " is missing: install the Debian package assimp-testmodels";
+  ADD_FAILURE() << path << " is missing (resources/models, or Debian's assimp-testmodels)";
   return false;
 }
 
@@ -48,14 +51,14 @@ inline std::string readBytes(const std::string& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-/// A scratch directory of its own (the process id keeps parallel runs of the release and sanitizer
+/// A scratch directory of its own (a random token keeps parallel runs of the release and sanitizer
 /// builds apart, the counter two directories of one test), removed with its files at scope end.
 class ScratchDir {
  public:
   ScratchDir() {
     static int created = 0;
     path_ = std::filesystem::temp_directory_path() /
-            ("pba-model-test-" + std::to_string(::getpid()) + "-" + std::to_string(created++));
+            ("pba-model-test-" + pba::testing::processUniqueToken() + "-" + std::to_string(created++));
     std::filesystem::create_directories(path_);
   }
   ~ScratchDir() {

@@ -16,8 +16,8 @@ namespace gfx = pba::graphics;
 
 namespace {
 
-const std::string kBvh = "/usr/share/assimp/models/BVH/01_01.bvh";
-const std::string kSkin = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf";
+const std::string kBvh = pba::testing::models::kShippedModels + "mocap/01_01.bvh";
+const std::string kSkin = pba::testing::models::kShippedModels + "simple_skin/simple_skin.gltf";
 
 using pba::testing::models::loadOrFail;
 

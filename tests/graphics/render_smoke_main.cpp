@@ -28,8 +28,8 @@ namespace colors = pba::graphics::colors;
 
 namespace {
 
-const char* kSkinPath = "/usr/share/assimp/models/glTF2/simple_skin/simple_skin.gltf";
-const char* kBvhPath = "/usr/share/assimp/models/BVH/01_01.bvh";
+const char* kSkinPath = PBA_TEST_RESOURCE_DIR "/models/simple_skin/simple_skin.gltf";
+const char* kBvhPath = PBA_TEST_RESOURCE_DIR "/models/mocap/01_01.bvh";
 
 void drawScene(gfx::DebugRenderer& debug) {
   // A row of primitives on the ground, casting shadows.
@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
 
   auto skin = gfx::loadModel(kSkinPath, &error);
   if (!skin) {
-    std::fprintf(stderr, "pba_render_smoke: %s (install assimp-testmodels)\n", error.c_str());
+    std::fprintf(stderr, "pba_render_smoke: %s (resources/models)\n", error.c_str());
     return 1;
   }
   std::vector<std::unique_ptr<gfx::SkinnedMesh>> skinMeshes;

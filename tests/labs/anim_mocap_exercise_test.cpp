@@ -153,7 +153,7 @@ TEST(ANIM_3_MocapPlayback, HumanoidBvhJointsMatchAnIndependentForwardKinematicsO
 }
 
 TEST(ANIM_3_MocapPlayback, CmuBvhOfAssimpTestModelsMatchesAnIndependentForwardKinematics) {
-  const std::string path = "/usr/share/assimp/models/BVH/01_01.bvh";  // Debian assimp-testmodels
+  const std::string path = PBA_TEST_RESOURCE_DIR "/models/mocap/01_01.bvh";
   ASSERT_TRUE(std::ifstream(path).good())
       << path << " missing: install the Debian package assimp-testmodels (./pba installs it)";
   // The lab reads .bvh files in double (bvh_import.h); through Assimp's float keys this file was 2.3e-6 m
@@ -184,7 +184,7 @@ TEST(MocapImport, FileWithoutAnimationOrUnreadableIsAnErrorNamingTheFile) {
 // scaled like the lab's character. Debian assimp-testmodels' Wuson (X/Testwuson.X): a skinned mesh of
 // 40 nodes with a 30-frame animation.
 TEST(ANIM_3_MocapSkin, WusonMeshFollowsAnIndependentLinearBlendOfTheFilesAnimation) {
-  const std::string path = "/usr/share/assimp/models/X/Testwuson.X";
+  const std::string path = PBA_TEST_RESOURCE_DIR "/models/Testwuson.X";
   ASSERT_TRUE(std::ifstream(path).good()) << path << " missing: install assimp-testmodels (./pba installs it)";
   const pba::Result<lab::ImportedClip> imported = lab::importClip(path, 1.7);
   ASSERT_TRUE(imported.ok()) << imported.error();
@@ -243,7 +243,7 @@ TEST(ANIM_3_MocapSkin, WusonMeshFollowsAnIndependentLinearBlendOfTheFilesAnimati
 // names in the same order (End Sites as "EndSite_<parent>") and the same rest offsets.
 TEST(MocapImport, BvhReaderNamesAndOrdersTheJointsAsTheAssimpImport) {
   for (const std::string& path : {lab::resolveResourcePath("resources/models/humanoid.bvh"),
-                                  std::string("/usr/share/assimp/models/BVH/01_01.bvh")}) {
+                                  std::string(PBA_TEST_RESOURCE_DIR "/models/mocap/01_01.bvh")}) {
     SCOPED_TRACE(path);
     const pba::Result<lab::BvhClip> read = lab::readBvh(path);
     ASSERT_TRUE(read.ok()) << read.error();

@@ -15,7 +15,7 @@ namespace {
 using namespace pba::ik;
 
 // Debian's assimp-testmodels (installed by ./pba): the Wuson, a skinned creature with 40 nodes.
-constexpr const char* kWuson = "/usr/share/assimp/models/X/Testwuson.X";
+constexpr const char* kWuson = PBA_TEST_RESOURCE_DIR "/models/Testwuson.X";
 
 TEST(IkCharacterSkin, VerticesBoundToOneBoneMoveRigidlyWithItsJoint) {
   ASSERT_TRUE(std::filesystem::exists(kWuson)) << "install assimp-testmodels (./pba does)";

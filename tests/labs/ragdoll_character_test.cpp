@@ -107,7 +107,7 @@ LoadedSkeleton load(const std::string& path, int frame) {
   return s ? s.value() : LoadedSkeleton{};
 }
 
-const char* const kCmu = "/usr/share/assimp/models/BVH/01_01.bvh";
+const char* const kCmu = PBA_TEST_RESOURCE_DIR "/models/mocap/01_01.bvh";
 
 TEST(RagdollCharacter, HumanoidBvhLandsAndComesToRestWithBothMethods) {
   expectLandsAndRests(load("resources/models/humanoid.bvh", -1).joints, "humanoid.bvh");

@@ -4,14 +4,61 @@
 // search, the fountain's motion) run two particles per instruction with the scalar code's operations in
 // its order, so their results are bit for bit those of the scalar code; a division becomes one divpd for
 // two particles.
+//
+// Compilers without the extension (MSVC) get a plain two-element struct with the same operators, lane
+// by lane: the same IEEE operations in the same order, so the same bits, only without the packing.
+// PBA_PORTABLE_LANES forces that path on GCC and Clang too (the libc++ preset tests it).
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 #include "physics/core/types.h"
 
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(PBA_PORTABLE_LANES)
+#define PBA_VECTOR_EXTENSION_LANES 1
+#endif
+
 namespace pba {
 
+#if defined(PBA_VECTOR_EXTENSION_LANES)
 using Pair [[gnu::vector_size(2 * sizeof(Real))]] = Real;
+#else
+/// Per lane all bits set (true, -1) or none (false, 0), as the vector extension's comparisons give.
+struct PairMask {
+  std::int64_t lane[2];
+  std::int64_t operator[](int i) const { return lane[i]; }
+};
+inline PairMask operator&(PairMask a, PairMask b) { return {{a.lane[0] & b.lane[0], a.lane[1] & b.lane[1]}}; }
+inline PairMask& operator|=(PairMask& a, PairMask b) {
+  a.lane[0] |= b.lane[0];
+  a.lane[1] |= b.lane[1];
+  return a;
+}
+
+struct Pair {
+  Real lane[2];
+  Real operator[](int i) const { return lane[i]; }
+};
+// Each operator applies the scalar operation to lane 0, then lane 1; a scalar operand counts for both.
+#define PBA_PAIR_ARITHMETIC(op)                                                                             \
+  inline Pair operator op(Pair a, Pair b) { return {{a.lane[0] op b.lane[0], a.lane[1] op b.lane[1]}}; } \
+  inline Pair operator op(Pair a, Real b) { return {{a.lane[0] op b, a.lane[1] op b}}; }                 \
+  inline Pair operator op(Real a, Pair b) { return {{a op b.lane[0], a op b.lane[1]}}; }
+PBA_PAIR_ARITHMETIC(+)
+PBA_PAIR_ARITHMETIC(-)
+PBA_PAIR_ARITHMETIC(*)
+PBA_PAIR_ARITHMETIC(/)
+#undef PBA_PAIR_ARITHMETIC
+inline Pair operator-(Pair a) { return {{-a.lane[0], -a.lane[1]}}; }
+#define PBA_PAIR_COMPARISON(op)                                                                     \
+  inline PairMask operator op(Pair a, Pair b) {                                                     \
+    return {{a.lane[0] op b.lane[0] ? std::int64_t{-1} : 0, a.lane[1] op b.lane[1] ? std::int64_t{-1} : 0}}; \
+  }                                                                                                 \
+  inline PairMask operator op(Pair a, Real b) { return a op Pair{{b, b}}; }
+PBA_PAIR_COMPARISON(<)
+PBA_PAIR_COMPARISON(>=)
+#undef PBA_PAIR_COMPARISON
+#endif
 
 /// Two consecutive doubles from memory (no alignment needed).
 inline Pair loadPair(const Real* from) {
@@ -20,8 +67,10 @@ inline Pair loadPair(const Real* from) {
   return v;
 }
 inline Pair splat(Real a) { return Pair{a, a}; }
+#if defined(PBA_VECTOR_EXTENSION_LANES)
 /// What comparing two Pairs gives: per lane all bits set (true) or none (false).
 using PairMask = decltype(Pair{} < Pair{});
+#endif
 
 /// One coordinate of two points a[i] and a[j] (j may equal i).
 struct PairVec3 {

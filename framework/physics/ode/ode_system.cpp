@@ -66,7 +66,7 @@ void SecondOrderSystem::forceDifferential(Real t, std::span<const Real> q, std::
     dirScale = std::max({dirScale, std::abs(dq[i]), std::abs(dv[i])});
   }
   if (dirScale == 0.0) {
-    std::ranges::fill(out, 0.0);
+    std::fill(out.begin(), out.end(), 0.0);  // not std::ranges::fill: libc++ 14 lacks it
     return;
   }
   const Real eps = 1e-6 * stateScale / dirScale;
