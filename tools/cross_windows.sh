@@ -193,12 +193,11 @@ build_utfcpp() { # header-only: utf8.h and utf8/ as Debian installs them (includ
   fi
 }
 
-build_libstb() { # header-only: include/stb/*.h as Debian installs them (pkg-config stb)
+build_libstb() { # header-only: include/stb/*.h as Debian installs them, and no .pc file (as vcpkg):
+  # the project then compiles the implementations itself
   local src="$1" prefix="$2"
-  mkdir -p "$prefix/include/stb" "$prefix/lib/pkgconfig"
+  mkdir -p "$prefix/include/stb"
   cp "$src"/*.h "$prefix/include/stb/"
-  printf 'prefix=%s\nincludedir=${prefix}/include/stb\nName: stb\nDescription: stb single-file libraries (headers)\nVersion: 0.0\nCflags: -I${includedir}\n' \
-    "$prefix" >"$prefix/lib/pkgconfig/stb.pc"
 }
 
 build_glm() { cross_cmake "$1" "$3" "$2" -DGLM_TEST_ENABLE=OFF -DBUILD_TESTING=OFF; }
@@ -334,7 +333,10 @@ smoke_prefix() {
   sed 's/^/  /' "$OUT/smoke-window.log" >&2
 }
 
-xvfb() { bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" "$@"; }
+# Wine's desktop process outlives a program for a few seconds and keeps the display it started with
+# (none, or an Xvfb that has gone): each run starts from a stopped wineserver. The prefix is private.
+wine_fresh() { wineserver -k 2>/dev/null || true; wineserver -w 2>/dev/null || true; }
+xvfb() { wine_fresh; bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" "$@"; }
 
 FAILED=()
 
@@ -363,6 +365,7 @@ run_tests() {
   while IFS= read -r exe; do
     name="$(basename "$exe" .exe)"
     t0=$SECONDS
+    wine_fresh
     if (cd "$OUT/tests" && timeout 1200 "$WINE" "$exe" --gtest_brief=1) >"$OUT/tests/$name.log" 2>&1; then
       summary="$(grep -E '^\[  PASSED  \]' "$OUT/tests/$name.log" | tail -n1)"
       say "  $name: ${summary:-passed} ($((SECONDS - t0)) s)"
@@ -382,6 +385,7 @@ run_labs() {
     exe="$BUILD/bin/pba-$lab.exe"
     [[ -f "$exe" ]] || { FAILED+=("$lab (no $exe)"); continue; }
     t0=$SECONDS
+    wine_fresh
     if (cd "$OUT/labs" && timeout 600 "$WINE" "$exe" --headless --metrics -) >"$OUT/labs/$lab.headless.log" 2>&1; then
       say "  $lab --headless: ok ($((SECONDS - t0)) s)"
     else
@@ -390,6 +394,7 @@ run_labs() {
     fi
     t0=$SECONDS
     rm -f "$OUT/labs/$lab.png"
+    wine_fresh
     if (cd "$OUT/labs" && timeout 600 bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" \
       "$WINE" "$exe" --screenshot "$lab.png") >"$OUT/labs/$lab.screenshot.log" 2>&1 && [[ -s "$OUT/labs/$lab.png" ]]; then
       say "  $lab --screenshot: $OUT/labs/$lab.png ($((SECONDS - t0)) s)"
