@@ -336,7 +336,10 @@ smoke_prefix() {
 # Wine's desktop process outlives a program for a few seconds and keeps the display it started with
 # (none, or an Xvfb that has gone): each run starts from a stopped wineserver. The prefix is private.
 wine_fresh() { wineserver -k 2>/dev/null || true; wineserver -w 2>/dev/null || true; }
-xvfb() { wine_fresh; bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" "$@"; }
+# The screen is larger than the labs' 1280 x 720 window: on a 1280 x 720 screen Wine fits the window
+# and its caption into the screen, and the frame came out 1280 x 705.
+XVFB_SCREEN="-screen 0 1920x1080x24"
+xvfb() { wine_fresh; bash "$ROOT/tools/with_xvfb.sh" -s "$XVFB_SCREEN" "$@"; }
 
 FAILED=()
 MAX_RSS_KB=$((${PBA_CROSS_MAX_RSS_MB:-4096} * 1024))
@@ -419,7 +422,7 @@ run_labs() {
     t0=$SECONDS
     rm -f "$OUT/labs/$lab.png"
     wine_fresh
-    if (cd "$OUT/labs" && limited 600 bash "$ROOT/tools/with_xvfb.sh" -s "-screen 0 1280x720x24" \
+    if (cd "$OUT/labs" && limited 600 bash "$ROOT/tools/with_xvfb.sh" -s "$XVFB_SCREEN" \
       "$WINE" "$exe" --screenshot "$lab.png") >"$OUT/labs/$lab.screenshot.log" 2>&1 && [[ -s "$OUT/labs/$lab.png" ]]; then
       say "  $lab --screenshot: $OUT/labs/$lab.png ($((SECONDS - t0)) s)"
     else
