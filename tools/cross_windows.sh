@@ -299,7 +299,7 @@ build_deps() {
     built=$((built + 1))
     say "built $src $version: $((SECONDS - t0)) s"
   done
-  say "dependency prefixes ($built built, $((${#DEPS[@]} - built)) cached): $CACHE ($(du -sh "$CACHE" | cut -f1))"
+  say "dependency prefixes ($built built, $((${#DEPS[@]} - built)) cached): $CACHE ($(du -sch "${PREFIXES[@]}" | tail -n1 | cut -f1))"
 }
 
 # ---------------------------------------------------------------------------------------------------
