@@ -29,7 +29,6 @@ namespace {
 using namespace pba;
 using namespace pba::ragdoll;
 
-
 void report(benchmark::State& state, double seconds, int steps, Real dt) {
   state.SetIterationTime(seconds / steps);
   state.counters["ms_per_step"] = 1e3 * seconds / steps;

@@ -33,7 +33,6 @@ std::vector<rigid::BodyDesc> sceneBodies(Scene s) {
   return s == Scene::Boxes3000 ? rigid::benchBoxes() : rigid::benchStack1000();
 }
 
-
 void report(benchmark::State& state, double seconds, std::size_t bodies) {
   const double msPerStep = 1e3 * seconds / kSteps;
   state.SetIterationTime(seconds / kSteps);

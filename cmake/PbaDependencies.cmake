@@ -100,7 +100,20 @@ if(NOT assimp_FOUND)
   pba_missing("Assimp" "libassimp-dev" "assimp")
 endif()
 
-if(PBA_BUILD_TESTS)
+# GoogleTest from its sources (PBA_GTEST_SOURCE_DIR, e.g. Debian's /usr/src/googletest) when the tests
+# are built against another standard library than the system's GoogleTest was (the libcxx preset).
+set(PBA_GTEST_SOURCE_DIR "" CACHE PATH "Build GoogleTest from these sources instead of finding its package")
+if(PBA_BUILD_TESTS AND PBA_GTEST_SOURCE_DIR)
+  set(INSTALL_GTEST OFF CACHE BOOL "" FORCE)
+  set(BUILD_GMOCK OFF CACHE BOOL "" FORCE)
+  add_subdirectory("${PBA_GTEST_SOURCE_DIR}" "${CMAKE_BINARY_DIR}/googletest" EXCLUDE_FROM_ALL)
+  # Its headers as system headers: the project's warnings are for the project's code.
+  get_target_property(pba_gtest_includes gtest INTERFACE_INCLUDE_DIRECTORIES)
+  set_target_properties(gtest PROPERTIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES "${pba_gtest_includes}")
+  if(NOT TARGET GTest::gtest)
+    add_library(GTest::gtest ALIAS gtest)
+  endif()
+elseif(PBA_BUILD_TESTS)
   find_package(GTest CONFIG QUIET)
   if(NOT GTest_FOUND)
     pba_missing("GoogleTest" "googletest libgtest-dev" "gtest")

@@ -12,20 +12,25 @@ pba_say() {
 }
 pba_die() { printf 'pba: %s\n' "$1" >&2; exit "${2:-1}"; }
 
+# pba_missing_packages PACKAGE...: those of the list that are not installed.
 pba_missing_packages() {
   local p missing=()
-  for p in "${PBA_PACKAGES[@]}"; do
+  for p in "$@"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
   echo "${missing[@]:-}"
 }
 
 # Installs missing system packages with apt-get (sudo when not root; non-interactive).
+# pba_ensure_packages [EXTRA...]: the base list plus the extra packages one command needs.
 pba_ensure_packages() {
   [[ "${PBA_NO_INSTALL:-0}" == 1 ]] && return 0
-  command -v dpkg-query >/dev/null || { pba_say "not a Debian/Ubuntu system: install the packages of README.md by hand"; return 0; }
+  if ! command -v dpkg-query >/dev/null; then
+    pba_say "not a Debian/Ubuntu system: install what README.md, \"On your own machine\", lists for yours"
+    return 0
+  fi
   local missing
-  missing="$(pba_missing_packages)"
+  missing="$(pba_missing_packages "${PBA_PACKAGES[@]}" "$@")"
   [[ -z "${missing// /}" ]] && return 0
   local sudo=()
   if [[ $(id -u) -ne 0 ]]; then
@@ -47,10 +52,15 @@ pba_build() {
     pba_say "configuring ($preset)"
     cmake --preset "$preset" >&2 || pba_die "configure failed (./pba doctor lists what is missing)"
   fi
+  pba_say "building ($preset${*:+: $*})"
+  if [[ $# -eq 0 ]]; then
+    # The build preset's own targets (the libcxx preset builds only the physics and app tests).
+    cmake --build --preset "$preset" -j "$PBA_JOBS" >&2 || pba_die "build failed"
+    return
+  fi
   local targets=()
   local t
   for t in "$@"; do targets+=(--target "$t"); done
-  pba_say "building ($preset${*:+: $*})"
   cmake --build "$dir" -j "$PBA_JOBS" "${targets[@]}" >&2 || pba_die "build failed"
 }
 
@@ -107,12 +117,21 @@ pba_take_preset() {
   done
 }
 
+# Packages only one preset needs, beyond the base list.
+pba_preset_packages() {
+  case "$1" in
+    libcxx) echo "libc++-14-dev libc++abi-14-dev" ;;
+  esac
+}
+
 pba_cmd_test() {
   pba_take_preset release "$@"
-  pba_ensure_packages
+  # shellcheck disable=SC2046
+  pba_ensure_packages $(pba_preset_packages "$PBA_PRESET")
   pba_build "$PBA_PRESET"
   pba_say "running the tests ($PBA_PRESET)"
-  ctest --preset "$PBA_PRESET" -j "$PBA_JOBS" "${PBA_ARGS[@]}"
+  # ${A[@]+...}: an empty array is "unbound" to bash before 4.4 under set -u (macOS has bash 3.2).
+  ctest --preset "$PBA_PRESET" -j "$PBA_JOBS" ${PBA_ARGS[@]+"${PBA_ARGS[@]}"}
 }
 
 pba_cmd_grade() {
@@ -237,7 +256,7 @@ pba_cmd_screenshots() {
 
 pba_cmd_doctor() {
   local ok=1 missing
-  missing="$(pba_missing_packages)"
+  missing="$(pba_missing_packages "${PBA_PACKAGES[@]}")"
   if [[ -n "${missing// /}" ]]; then
     echo "packages: MISSING $missing  (./pba test installs them, or: sudo apt-get install $missing)"
     ok=0

@@ -247,9 +247,13 @@ bool keepOnlyReadersOfExtension(Assimp::Importer& importer, const std::string& p
   std::vector<Assimp::BaseImporter*> others;
   for (std::size_t i = 0; i < importer.GetImporterCount(); ++i) {
     Assimp::BaseImporter* reader = importer.GetImporter(i);
-    std::set<std::string> extensions;
-    reader->GetExtensionList(extensions);
-    if (extensions.count(ext.substr(1)) == 0) others.push_back(reader);
+    // The reader's extensions from its description ("gltf glb"): a plain C string, so this also links
+    // where Assimp was built against another C++ standard library (the libcxx preset).
+    const aiImporterDesc* info = reader->GetInfo();
+    std::istringstream words(info && info->mFileExtensions ? info->mFileExtensions : "");
+    bool claims = false;
+    for (std::string word; words >> word;) claims = claims || word == ext.substr(1);
+    if (!claims) others.push_back(reader);
   }
   for (Assimp::BaseImporter* reader : others) {
     importer.UnregisterLoader(reader);  // the importer no longer owns it

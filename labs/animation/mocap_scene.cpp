@@ -91,13 +91,14 @@ class MocapScene final : public AnimScene {
     AnimScene::ui();
   }
   std::vector<app::Preset> presets() const override {
-    return {{"humanoid", {{"skeleton", "resources/models/humanoid.bvh"}}},
-            {"cmu 01_01", {{"skeleton", "resources/models/mocap/01_01.bvh"}, {"trail_joint", "LeftHand"}}},
-            {"boxing", {{"skeleton", "resources/models/mocap/Boxing_Toes.bvh"}, {"trail_joint", ""}}},
-            // A skinned, animated file shipped in resources/models (from Assimp's test models): the mesh follows the clip.
-            {"skinned wuson", {{"skeleton", "resources/models/Testwuson.X"}, {"trail_joint", ""}}},
-            {"step", {{"rotation", "step"}}},
-            {"squad", {{"rotation", "squad"}}}};
+    return {
+        {"humanoid", {{"skeleton", "resources/models/humanoid.bvh"}}},
+        {"cmu 01_01", {{"skeleton", "resources/models/mocap/01_01.bvh"}, {"trail_joint", "LeftHand"}}},
+        {"boxing", {{"skeleton", "resources/models/mocap/Boxing_Toes.bvh"}, {"trail_joint", ""}}},
+        // A skinned, animated file shipped in resources/models (from Assimp's test models): the mesh follows the clip.
+        {"skinned wuson", {{"skeleton", "resources/models/Testwuson.X"}, {"trail_joint", ""}}},
+        {"step", {{"rotation", "step"}}},
+        {"squad", {{"rotation", "squad"}}}};
   }
 
  protected:

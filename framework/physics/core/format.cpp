@@ -1,5 +1,6 @@
 #include "physics/core/format.h"
 
+#include <cfenv>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -25,10 +26,15 @@ std::string formatExact(Real value) {
     std::snprintf(buf, sizeof buf, "%.0f", value);
     return buf;
   }
+  // A too-short text of a value near the largest double reads back as infinity and raises the overflow
+  // flag: the floating-point environment is held (flags kept, traps off) while trying.
+  std::fenv_t environment;
+  std::feholdexcept(&environment);
   for (int digits = 1; digits <= 17; ++digits) {
     std::snprintf(buf, sizeof buf, "%.*g", digits, value);
     if (!std::isfinite(value) || std::strtod(buf, nullptr) == value) break;
   }
+  std::fesetenv(&environment);
   return buf;
 #endif
 }

@@ -40,7 +40,7 @@ struct Pair {
   Real operator[](int i) const { return lane[i]; }
 };
 // Each operator applies the scalar operation to lane 0, then lane 1; a scalar operand counts for both.
-#define PBA_PAIR_ARITHMETIC(op)                                                                             \
+#define PBA_PAIR_ARITHMETIC(op)                                                                          \
   inline Pair operator op(Pair a, Pair b) { return {{a.lane[0] op b.lane[0], a.lane[1] op b.lane[1]}}; } \
   inline Pair operator op(Pair a, Real b) { return {{a.lane[0] op b, a.lane[1] op b}}; }                 \
   inline Pair operator op(Real a, Pair b) { return {{a op b.lane[0], a op b.lane[1]}}; }
@@ -50,10 +50,10 @@ PBA_PAIR_ARITHMETIC(*)
 PBA_PAIR_ARITHMETIC(/)
 #undef PBA_PAIR_ARITHMETIC
 inline Pair operator-(Pair a) { return {{-a.lane[0], -a.lane[1]}}; }
-#define PBA_PAIR_COMPARISON(op)                                                                     \
-  inline PairMask operator op(Pair a, Pair b) {                                                     \
+#define PBA_PAIR_COMPARISON(op)                                                                              \
+  inline PairMask operator op(Pair a, Pair b) {                                                              \
     return {{a.lane[0] op b.lane[0] ? std::int64_t{-1} : 0, a.lane[1] op b.lane[1] ? std::int64_t{-1} : 0}}; \
-  }                                                                                                 \
+  }                                                                                                          \
   inline PairMask operator op(Pair a, Real b) { return a op Pair{{b, b}}; }
 PBA_PAIR_COMPARISON(<)
 PBA_PAIR_COMPARISON(>=)

@@ -14,9 +14,13 @@
 #include "physics/collision/gjk.h"
 #include "physics/collision/narrow_phase.h"
 #include "support/expect_helpers.h"
+#include "support/portable_random.h"
 
 namespace pba::collision {
 namespace {
+
+using pba::test::standardNormal;
+using pba::test::uniform;
 
 using PairFn = std::function<Manifold(const Shape&, const Transform&, const Shape&, const Transform&, Real)>;
 
@@ -25,16 +29,23 @@ struct Agreement {
 };
 
 Transform randomPose(std::mt19937_64& rng, Real spread) {
-  std::uniform_real_distribution<Real> u(-spread, spread);
-  std::normal_distribution<Real> n(0.0, 1.0);
-  return {Vec3(u(rng), u(rng), u(rng)), glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)))};
+  // The same poses for a seed on every system (support/portable_random.h).
+  auto u = [&] { return uniform(rng, -spread, spread); };
+  auto n = [&] { return standardNormal(rng); };
+  // One draw per statement: the order in which function arguments are evaluated differs between
+  // compilers, the order of declarations does not.
+  const Real px = u(), py = u(), pz = u();
+  const Real w = n(), x = n(), y = n(), z = n();
+  const Vec3 position(px, py, pz);
+  return {position, glm::normalize(Quat(w, x, y, z))};
 }
 
 std::vector<Vec3> randomHullPoints(std::mt19937_64& rng, Real size) {
-  std::normal_distribution<Real> n(0.0, 1.0);
   std::vector<Vec3> p;
-  for (int i = 0; i < 12; ++i)
-    p.push_back(size * glm::normalize(Vec3(n(rng), n(rng), n(rng))) * (0.6 + 0.4 * std::abs(n(rng))));
+  for (int i = 0; i < 12; ++i) {
+    const Real x = standardNormal(rng), y = standardNormal(rng), z = standardNormal(rng);
+    p.push_back(size * glm::normalize(Vec3(x, y, z)) * (0.6 + 0.4 * std::abs(standardNormal(rng))));
+  }
   return p;
 }
 
