@@ -3,9 +3,11 @@
 
 PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-dev libimgui-dev
   libassimp-dev nlohmann-json3-dev libstb-dev libeigen3-dev googletest libgtest-dev libbenchmark-dev
-  xvfb xauth assimp-testmodels fonts-dejavu-core python3 python3-matplotlib ccache xdotool clang-format ffmpeg
+  xvfb xauth assimp-testmodels python3 python3-matplotlib ccache xdotool clang-format ffmpeg
   clang libclang-rt-14-dev)
-PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || sysctl -n hw.ncpu 2>/dev/null || echo 2)}"
+# The preset of run and test: on macOS the vcpkg one (README.md, "On your own machine"), else release.
+if [[ "$(uname -s)" == Darwin ]]; then PBA_DEFAULT_PRESET=macos; else PBA_DEFAULT_PRESET=release; fi
 
 pba_say() {
   if [[ -t 2 ]]; then printf '\033[1m[pba]\033[0m %s\n' "$*" >&2; else printf '[pba] %s\n' "$*" >&2; fi
@@ -83,8 +85,8 @@ pba_cmd_run() {
   if [[ $# -gt 0 && "$1" != -* ]]; then lab="$1"; shift; fi
   [[ -f "$ROOT/labs/$lab/CMakeLists.txt" ]] || pba_die "unknown lab '$lab' (labs: $(pba_list_labs | tr '\n' ' '))" 2
   pba_ensure_packages
-  pba_build release "pba-$lab"
-  local exe="$ROOT/build/release/bin/pba-$lab"
+  pba_build "$PBA_DEFAULT_PRESET" "pba-$lab"
+  local exe="$ROOT/build/$PBA_DEFAULT_PRESET/bin/pba-$lab"
   local arg
   for arg in "$@"; do
     case "$arg" in
@@ -125,7 +127,7 @@ pba_preset_packages() {
 }
 
 pba_cmd_test() {
-  pba_take_preset release "$@"
+  pba_take_preset "$PBA_DEFAULT_PRESET" "$@"
   # shellcheck disable=SC2046
   pba_ensure_packages $(pba_preset_packages "$PBA_PRESET")
   pba_build "$PBA_PRESET"
