@@ -382,7 +382,7 @@ build_project() {
   local warnings
   warnings="$(grep -c ': warning:' "$OUT/build.log" || true)"
   [[ "$warnings" -gt 0 ]] && say "$warnings compiler warnings (grep ': warning:' $OUT/build.log)"
-  say "built $(find "$BUILD/bin" -name '*.exe' | wc -l) programs in $BUILD/bin"
+  say "$(find "$BUILD" -name '*.exe' -not -path '*/CMakeFiles/*' -not -path '*/cross-smoke/*' | wc -l) programs (.exe) in $BUILD"
 }
 
 # Each GoogleTest program once, the whole suite in one Wine process (ctest would start Wine once a test).
