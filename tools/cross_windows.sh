@@ -286,6 +286,7 @@ build_deps() {
     say "building $src $version for MinGW-w64 ..."
     local dir="$WORK/$src" tree
     mkdir -p "$dir"
+    apt_private_init # here, not in fetch_source's subshell, so that it runs once
     tree="$(fetch_source "$src" "$version" "$dir" "${kind:+$bin}")"
     rm -rf "$prefix" "$prefix.partial"
     "$fn" "$tree" "$prefix.partial" "$dir/build"
