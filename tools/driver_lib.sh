@@ -350,3 +350,11 @@ pba_cmd_soak() {
   [[ $failed -eq 0 ]] || pba_die "soak failed"
   pba_say "every lab soaked $minutes min clean"
 }
+
+# ./pba cross windows [--tests-only]: the Windows build proved here (tools/cross_windows.sh).
+pba_cmd_cross() {
+  case "${1:-}" in
+    windows) shift; bash "$ROOT/tools/cross_windows.sh" "$@" ;;
+    *) pba_die "usage: ./pba cross windows [--tests-only]" 2 ;;
+  esac
+}

@@ -1,0 +1,457 @@
+#!/usr/bin/env bash
+# tools/cross_windows.sh [--tests-only] [--deps-only]: `./pba cross windows`.
+# Proves the Windows build here (docs/architecture.md, "students' own machines"): builds the
+# dependencies for MinGW-w64 (the -posix compilers) from Debian's own source packages, once, into a
+# cache outside the clone; configures the project with the windows-mingw preset, which finds every
+# dependency through its CONFIG package as on Windows with vcpkg; builds every lab and test as .exe;
+# runs the unit tests under Wine and each lab's default scene under Wine (headless, then a screenshot
+# under Xvfb). Prints the time of each step.
+#   --tests-only  stop after the unit tests (no lab runs)
+#   --deps-only   stop after the dependency prefixes
+# Environment: PBA_CROSS_CACHE (default ${XDG_CACHE_HOME:-~/.cache}/pba-labs/mingw-w64),
+# PBA_JOBS, PBA_NO_INSTALL=1 (no apt-get install of the host tools).
+# Writes build/windows-mingw (the build) and build/windows-mingw/cross (logs, metrics, screenshots).
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+TRIPLE=x86_64-w64-mingw32
+TOOLCHAIN="$ROOT/cmake/toolchains/mingw-w64-posix.cmake"
+CACHE="${PBA_CROSS_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/pba-labs/mingw-w64}"
+JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+BUILD="$ROOT/build/windows-mingw"
+OUT="$BUILD/cross"
+
+tests_only=0
+deps_only=0
+for arg in "$@"; do
+  case "$arg" in
+    --tests-only) tests_only=1 ;;
+    --deps-only) deps_only=1 ;;
+    -h | --help) sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "usage: ./pba cross windows [--tests-only] [--deps-only]" >&2; exit 2 ;;
+  esac
+done
+
+say() { printf '[cross] %s\n' "$*" >&2; }
+die() { printf 'cross: %s\n' "$*" >&2; exit 1; }
+
+# step NAME COMMAND...: runs COMMAND and prints how long it took.
+step() {
+  local name="$1"; shift
+  local t0=$SECONDS
+  say "$name ..."
+  "$@"
+  say "$name: $((SECONDS - t0)) s"
+}
+
+# ---------------------------------------------------------------------------------------------------
+# Host tools
+HOST_PACKAGES=(cmake ninja-build pkg-config dpkg-dev mingw-w64 g++-mingw-w64-x86-64-posix
+  gcc-mingw-w64-x86-64-posix wine wine64 xvfb xauth)
+
+ensure_host_tools() {
+  local p missing=()
+  for p in "${HOST_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+  done
+  [[ ${#missing[@]} -eq 0 ]] && return 0
+  [[ "${PBA_NO_INSTALL:-0}" == 1 ]] && die "missing packages: ${missing[*]} (PBA_NO_INSTALL=1)"
+  local sudo=()
+  [[ $(id -u) -ne 0 ]] && sudo=(sudo)
+  say "installing: ${missing[*]}"
+  DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2 ||
+    die "apt-get install failed for: ${missing[*]}"
+}
+
+# ---------------------------------------------------------------------------------------------------
+# Debian source packages through a private apt state: deb-src entries derived from the machine's own
+# apt sources (every `deb` entry, as `deb-src`), in a temporary folder removed on exit. The system's
+# apt configuration and lists are not touched.
+WORK=""
+APT_OPTS=()
+cleanup() { [[ -n "$WORK" ]] && rm -rf "$WORK"; }
+trap cleanup EXIT
+
+apt_private_init() {
+  [[ ${#APT_OPTS[@]} -gt 0 ]] && return 0
+  local dir="$WORK/apt" f
+  mkdir -p "$dir/sources.list.d" "$dir/lists/partial" "$dir/cache/archives/partial"
+  : >"$dir/sources.list"
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [[ -f "$f" ]] || continue
+    # deb822 stanzas whose Types name `deb` become deb-src stanzas.
+    awk 'BEGIN { RS = ""; ORS = "\n\n" }
+         /(^|\n)Types:[^\n]*[ \t]deb([ \t]|\n|$)/ { sub(/Types:[^\n]*/, "Types: deb-src"); print }' \
+      "$f" >"$dir/sources.list.d/$(basename "$f")"
+  done
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+    [[ -f "$f" ]] || continue
+    sed -n 's/^[[:space:]]*deb[[:space:]]/deb-src /p' "$f" >>"$dir/sources.list"
+  done
+  APT_OPTS=(-o "Dir::Etc::SourceList=$dir/sources.list" -o "Dir::Etc::SourceParts=$dir/sources.list.d"
+    -o "Dir::State::Lists=$dir/lists" -o "Dir::Cache=$dir/cache" -o "APT::Sandbox::User=$(id -un)")
+  apt-get "${APT_OPTS[@]}" update -qq >&2 || die "apt-get update (deb-src) failed"
+}
+
+# src_version SOURCE BINARY: the version of SOURCE that built the candidate of BINARY in the system's
+# apt lists (the Debian packages the native build uses); read offline.
+src_version() {
+  local src="$1" bin="$2" info v
+  info="$(apt-cache show --no-all-versions "$bin" 2>/dev/null)" || true
+  v="$(sed -n "s/^Source: $src (\(.*\))$/\1/p" <<<"$info" | head -n1)"
+  [[ -n "$v" ]] || v="$(sed -n 's/^Version: //p' <<<"$info" | head -n1)"
+  [[ -n "$v" ]] || v="$(dpkg-query -W -f='${Version}' "$bin" 2>/dev/null || true)"
+  [[ -n "$v" ]] || die "no version of $bin in apt's lists (apt-get update)"
+  echo "$v"
+}
+
+# fetch_source SOURCE VERSION DIR [BINARY]: unpacks Debian's source package (patches applied) into
+# DIR/src and prints the path of the tree. Falls back to the other versions apt knows when the archive
+# lacks this one, and for a header-only package (BINARY given) to the files of its binary package.
+fetch_source() {
+  local src="$1" version="$2" dir="$3" bin="${4:-}" v tree
+  apt_private_init
+  mkdir -p "$dir/src"
+  local versions=("$version")
+  mapfile -t -O 1 versions < <(apt-cache "${APT_OPTS[@]}" showsrc "$src" 2>/dev/null |
+    sed -n 's/^Version: //p' | grep -vxF "$version" | sort -urV)
+  for v in "${versions[@]}"; do
+    if (cd "$dir/src" && apt-get "${APT_OPTS[@]}" source -qq --only-source "$src=$v" >/dev/null 2>&1); then
+      tree="$(find "$dir/src" -mindepth 1 -maxdepth 1 -type d | head -n1)"
+      [[ "$v" != "$version" ]] && say "$src $version is not in the source archive: building $v"
+      echo "source package $src $v" >"$dir/fetched"
+      echo "$tree"
+      return 0
+    fi
+    rm -rf "${dir:?}/src"/*
+  done
+  if [[ -n "$bin" ]] && (cd "$dir" && apt-get download -qq "$bin=$version" >/dev/null 2>&1); then
+    say "$src $version: no source in the archive, taking the headers of $bin"
+    dpkg-deb -x "$dir"/"${bin}"_*.deb "$dir/src/$bin"
+    echo "binary package $bin $version (headers)" >"$dir/fetched"
+    echo "$dir/src/$bin"
+    return 0
+  fi
+  die "apt-get source $src=$version failed"
+}
+
+# ---------------------------------------------------------------------------------------------------
+# Dependency prefixes: $CACHE/<source>-<version>/, one a source package, each built once. A prefix is
+# complete when its .pba-recipe holds the hash of the recipe that built it (the build function below
+# and the imgui glue), so a changed recipe rebuilds it; .pba-source says what was built (the archive
+# may hold only an older source than the binary package's).
+PREFIXES=()
+
+cross_cmake() { # cross_cmake SOURCE BUILD PREFIX [CMAKE ARGS...]
+  local src="$1" bld="$2" prefix="$3"; shift 3
+  local deps
+  deps="$(IFS=';'; echo "${PREFIXES[*]:-}")"
+  cmake -S "$src" -B "$bld" -G Ninja -Wno-dev -DCMAKE_TOOLCHAIN_FILE="$TOOLCHAIN" \
+    -DPBA_MINGW_PREFIX_PATH="$deps" -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
+    -DBUILD_SHARED_LIBS=OFF -DCMAKE_POSITION_INDEPENDENT_CODE=OFF "$@" >"$bld.configure.log" 2>&1 ||
+    { tail -n 40 "$bld.configure.log" >&2; die "configure failed: $src (log $bld.configure.log)"; }
+  nice -n 5 cmake --build "$bld" -j "$JOBS" >"$bld.build.log" 2>&1 ||
+    { tail -n 40 "$bld.build.log" >&2; die "build failed: $src (log $bld.build.log)"; }
+  cmake --install "$bld" >"$bld.install.log" 2>&1 || { tail -n 20 "$bld.install.log" >&2; die "install failed: $src"; }
+}
+
+build_zlib() { # zlib (libz.a) and its contrib/minizip (libminizip.a + minizip.pc), compiled directly:
+  # Debian's source has no win32/ makefile, and zlib's CMake names its Windows libraries zlib*.
+  local src="$1" prefix="$2" bld="$3" f
+  mkdir -p "$prefix/include/minizip" "$prefix/lib/pkgconfig" "$bld/z" "$bld/minizip"
+  for f in adler32 compress crc32 deflate gzclose gzlib gzread gzwrite inflate infback inftrees inffast \
+    trees uncompr zutil; do
+    nice -n 5 "$TRIPLE-gcc-posix" -O2 -I"$src" -c "$src/$f.c" -o "$bld/z/$f.o"
+  done
+  "$TRIPLE-ar" rcs "$prefix/lib/libz.a" "$bld"/z/*.o
+  cp "$src/zlib.h" "$src/zconf.h" "$prefix/include/"
+  for f in ioapi unzip zip iowin32; do
+    nice -n 5 "$TRIPLE-gcc-posix" -O2 -I"$prefix/include" -c "$src/contrib/minizip/$f.c" -o "$bld/minizip/$f.o"
+    cp "$src/contrib/minizip/$f.h" "$prefix/include/minizip/"
+  done
+  cp "$src/contrib/minizip/crypt.h" "$prefix/include/minizip/"
+  "$TRIPLE-ar" rcs "$prefix/lib/libminizip.a" "$bld"/minizip/*.o
+  cat >"$prefix/lib/pkgconfig/minizip.pc" <<PC
+prefix=$prefix
+libdir=\${prefix}/lib
+includedir=\${prefix}/include
+Name: minizip
+Description: zip and unzip on top of zlib (zlib's contrib/minizip)
+Version: 1.2
+Libs: -L\${libdir} -lminizip -lz
+Cflags: -I\${includedir}/minizip -I\${includedir}
+PC
+}
+
+build_utfcpp() { # header-only: utf8.h and utf8/ as Debian installs them (include/utf8cpp)
+  local src="$1" prefix="$2"
+  mkdir -p "$prefix/include/utf8cpp"
+  if [[ -d "$src/source" ]]; then
+    cp -r "$src/source/." "$prefix/include/utf8cpp/"
+  else # the binary package's headers (fetch_source's fallback for header-only packages)
+    cp -r "$src/usr/include/utf8cpp/." "$prefix/include/utf8cpp/"
+  fi
+}
+
+build_libstb() { # header-only: include/stb/*.h as Debian installs them, and no .pc file (as vcpkg):
+  # the project then compiles the implementations itself
+  local src="$1" prefix="$2"
+  mkdir -p "$prefix/include/stb"
+  cp "$src"/*.h "$prefix/include/stb/"
+}
+
+build_glm() { cross_cmake "$1" "$3" "$2" -DGLM_TEST_ENABLE=OFF -DBUILD_TESTING=OFF; }
+
+build_eigen3() {
+  cross_cmake "$1" "$3" "$2" -DBUILD_TESTING=OFF -DEIGEN_BUILD_DOC=OFF -DEIGEN_BUILD_PKGCONFIG=ON \
+    -DCMAKE_Fortran_COMPILER=NOTFOUND -DEIGEN_TEST_NOQT=ON
+}
+
+build_nlohmann_json3() { cross_cmake "$1" "$3" "$2" -DJSON_BuildTests=OFF -DJSON_Install=ON; }
+
+build_glfw3() {
+  cross_cmake "$1" "$3" "$2" -DGLFW_BUILD_EXAMPLES=OFF -DGLFW_BUILD_TESTS=OFF -DGLFW_BUILD_DOCS=OFF
+}
+
+build_glew() { cross_cmake "$1/build/cmake" "$3" "$2" -DBUILD_UTILS=OFF; }
+
+build_googletest() { cross_cmake "$1" "$3" "$2" -DBUILD_GMOCK=ON -DINSTALL_GTEST=ON -Dgtest_disable_pthreads=OFF; }
+
+# Assimp: the importers the labs, presets and tests read; no exporters, tools, tests or samples.
+# Debian's source leaves out zlib, minizip, utf8cpp and stb: they come from their own prefixes. Its
+# patch that links Debian's libdraco is taken back (Draco, glTF's mesh compression, stays off).
+ASSIMP_IMPORTERS=(BVH OBJ GLTF FBX COLLADA PLY STL X 3DS MD5)
+build_assimp() {
+  local src="$1" prefix="$2" bld="$3" imp flags=() inc=""
+  if [[ -f "$src/debian/patches/use-system-libdraco.patch" ]]; then
+    patch -d "$src" -R -p1 -s <"$src/debian/patches/use-system-libdraco.patch" || die "assimp: cannot revert use-system-libdraco.patch"
+  fi
+  for imp in "${ASSIMP_IMPORTERS[@]}"; do flags+=("-DASSIMP_BUILD_${imp}_IMPORTER=ON"); done
+  for imp in "${PREFIXES[@]}"; do
+    [[ -d "$imp/include/utf8cpp" ]] && inc+=" -I$imp/include/utf8cpp"
+    [[ -d "$imp/include/stb" ]] && inc+=" -I$imp/include"
+  done
+  cross_cmake "$src" "$bld" "$prefix" -DASSIMP_BUILD_ALL_IMPORTERS_BY_DEFAULT=OFF "${flags[@]}" \
+    -DASSIMP_NO_EXPORT=ON -DASSIMP_BUILD_ALL_EXPORTERS_BY_DEFAULT=OFF -DASSIMP_BUILD_TESTS=OFF \
+    -DASSIMP_BUILD_ASSIMP_TOOLS=OFF -DASSIMP_BUILD_SAMPLES=OFF -DASSIMP_BUILD_DOCS=OFF \
+    -DASSIMP_BUILD_ZLIB=OFF -DASSIMP_BUILD_DRACO=OFF -DASSIMP_WARNINGS_AS_ERRORS=OFF \
+    -DASSIMP_INSTALL_PDB=OFF -DASSIMP_BUILD_ASSIMP_VIEW=OFF -DCMAKE_CXX_FLAGS="$inc" -DCMAKE_C_FLAGS="$inc"
+  # assimp exports minizip and z as bare names (pkg-config's), which a consumer's linker cannot find:
+  # name the archives of the zlib prefix instead.
+  local zlib targets
+  for zlib in "${PREFIXES[@]}"; do [[ -f "$zlib/lib/libminizip.a" ]] && break; done
+  targets="$(find "$prefix/lib/cmake" -name assimpTargets.cmake)"
+  grep -q ';minizip;z"' "$targets" || die "assimp: no bare minizip;z in $targets"
+  sed -i "s|;minizip;z\"|;$zlib/lib/libminizip.a;$zlib/lib/libz.a\"|" "$targets"
+}
+
+build_imgui() {
+  cross_cmake "$ROOT/cmake/cross/imgui" "$3" "$2" -DIMGUI_SOURCE_DIR="$1"
+}
+
+# Debian source package, a binary package it builds (for its version), the build function, and
+# `headers` where the binary package's headers may stand in for a source the archive lacks.
+DEPS=(
+  "zlib zlib1g-dev build_zlib"
+  "utfcpp libutfcpp-dev build_utfcpp headers"
+  "libstb libstb-dev build_libstb"
+  "glm libglm-dev build_glm"
+  "eigen3 libeigen3-dev build_eigen3"
+  "nlohmann-json3 nlohmann-json3-dev build_nlohmann_json3"
+  "glfw3 libglfw3-dev build_glfw3"
+  "glew libglew-dev build_glew"
+  "googletest googletest build_googletest"
+  "assimp libassimp-dev build_assimp"
+  "imgui libimgui-dev build_imgui"
+)
+
+recipe_hash() { # recipe_hash FUNCTION
+  { declare -f "$1" cross_cmake; [[ "$1" == build_imgui ]] && cat "$ROOT/cmake/cross/imgui/CMakeLists.txt";
+    [[ "$1" == build_assimp ]] && echo "${ASSIMP_IMPORTERS[*]} ${PREFIXES[*]}"; true; } | sha256sum | cut -c1-16
+}
+
+build_deps() {
+  local entry src bin fn kind version prefix hash t0 built=0
+  mkdir -p "$CACHE"
+  for entry in "${DEPS[@]}"; do
+    read -r src bin fn kind <<<"$entry"
+    version="$(src_version "$src" "$bin")"
+    prefix="$CACHE/$src-${version#*:}" # the folder's name without the epoch
+    hash="$(recipe_hash "$fn")"
+    if [[ -f "$prefix/.pba-recipe" && "$(cat "$prefix/.pba-recipe")" == "$hash" ]]; then
+      PREFIXES+=("$prefix")
+      continue
+    fi
+    t0=$SECONDS
+    say "building $src $version for MinGW-w64 ..."
+    local dir="$WORK/$src" tree
+    mkdir -p "$dir"
+    apt_private_init # here, not in fetch_source's subshell, so that it runs once
+    tree="$(fetch_source "$src" "$version" "$dir" "${kind:+$bin}")"
+    rm -rf "$prefix" "$prefix.partial"
+    "$fn" "$tree" "$prefix.partial" "$dir/build"
+    # The prefix paths written into .pc and CMake files name the final folder.
+    { grep -rlF "$prefix.partial" "$prefix.partial" || true; } | xargs -r sed -i "s|$prefix.partial|$prefix|g"
+    cp "$dir/fetched" "$prefix.partial/.pba-source"
+    echo "$hash" >"$prefix.partial/.pba-recipe"
+    mv "$prefix.partial" "$prefix"
+    rm -rf "$dir"
+    PREFIXES+=("$prefix")
+    built=$((built + 1))
+    say "built $src $version: $((SECONDS - t0)) s"
+  done
+  say "dependency prefixes ($built built, $((${#DEPS[@]} - built)) cached): $CACHE ($(du -sch "${PREFIXES[@]}" | tail -n1 | cut -f1))"
+}
+
+# ---------------------------------------------------------------------------------------------------
+# Wine: a private prefix in the cache, created once.
+WINE=wine
+wine_init() {
+  WINE="$(command -v wine || command -v wine64)" || die "wine is not installed"
+  export WINEPREFIX="$CACHE/wineprefix" WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
+  export WINEARCH=win64
+  if [[ ! -f "$WINEPREFIX/system.reg" ]]; then
+    wineboot -i >/dev/null 2>&1 || die "wineboot -i failed (WINEPREFIX=$WINEPREFIX)"
+  fi
+  wineserver -w 2>/dev/null || true
+}
+
+# The smoke project of cmake/cross/smoke against the prefixes: a window with GLFW + GLEW + ImGui
+# under Xvfb, and a GoogleTest test, both under Wine. Says whether the prefixes work before the
+# project's own code is compiled.
+smoke_prefix() {
+  local bld="$BUILD/cross-smoke"
+  mkdir -p "$OUT"
+  cmake -S "$ROOT/cmake/cross/smoke" -B "$bld" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$TOOLCHAIN" \
+    -DCMAKE_BUILD_TYPE=Release >"$OUT/smoke-configure.log" 2>&1 ||
+    { tail -n 30 "$OUT/smoke-configure.log" >&2; die "smoke: configure failed ($OUT/smoke-configure.log)"; }
+  nice -n 5 cmake --build "$bld" -j "$JOBS" >"$OUT/smoke-build.log" 2>&1 ||
+    { grep -E 'error|undefined' "$OUT/smoke-build.log" | head -n 30 >&2; die "smoke: build failed ($OUT/smoke-build.log)"; }
+  (cd "$OUT" && wine "$bld/smoke_gtest.exe" --gtest_brief=1) >"$OUT/smoke-gtest.log" 2>&1 ||
+    { cat "$OUT/smoke-gtest.log" >&2; die "smoke: the GoogleTest test failed under Wine"; }
+  (cd "$OUT" && xvfb "$WINE" "$bld/smoke_window.exe" smoke.png) >"$OUT/smoke-window.log" 2>&1 ||
+    { cat "$OUT/smoke-window.log" >&2; die "smoke: the window failed under Wine + Xvfb"; }
+  sed 's/^/  /' "$OUT/smoke-window.log" >&2
+}
+
+# Wine's desktop process outlives a program for a few seconds and keeps the display it started with
+# (none, or an Xvfb that has gone): each run starts from a stopped wineserver. The prefix is private.
+wine_fresh() { wineserver -k 2>/dev/null || true; wineserver -w 2>/dev/null || true; }
+# The screen is larger than the labs' 1280 x 720 window: on a 1280 x 720 screen Wine fits the window
+# and its caption into the screen, and the frame came out 1280 x 705.
+XVFB_SCREEN="-screen 0 1920x1080x24"
+xvfb() { wine_fresh; bash "$ROOT/tools/with_xvfb.sh" -s "$XVFB_SCREEN" "$@"; }
+
+FAILED=()
+MAX_RSS_KB=$((${PBA_CROSS_MAX_RSS_MB:-4096} * 1024))
+
+# limited SECONDS COMMAND...: runs COMMAND in a session of its own and kills the session when it runs
+# past SECONDS or its processes together hold more than PBA_CROSS_MAX_RSS_MB (4096) resident: a
+# program whose memory bound does not hold on Windows must not take the machine down with it.
+limited() {
+  local limit_s="$1" ticks=0 rss pid
+  shift
+  setsid "$@" &
+  pid=$!
+  while kill -0 "$pid" 2>/dev/null; do
+    rss="$(ps -o rss= --sid "$pid" 2>/dev/null | awk '{ s += $1 } END { print s + 0 }')"
+    if ((rss > MAX_RSS_KB || ticks >= limit_s)); then
+      if ((rss > MAX_RSS_KB)); then echo "cross: killed at $((rss / 1024)) MB resident"; else echo "cross: killed after ${limit_s} s"; fi
+      kill -9 -- "-$pid" 2>/dev/null
+      wait "$pid" 2>/dev/null
+      return 137
+    fi
+    sleep 1
+    ticks=$((ticks + 1))
+  done
+  wait "$pid"
+}
+
+configure_project() {
+  mkdir -p "$OUT"
+  (cd "$ROOT" && cmake --preset windows-mingw) >"$OUT/configure.log" 2>&1 ||
+    { tail -n 40 "$OUT/configure.log" >&2; die "configure failed ($OUT/configure.log)"; }
+}
+
+# Builds every target; keeps going past errors so that the log lists them all and what built still runs.
+build_project() {
+  if ! nice -n 5 cmake --build "$BUILD" -j "$JOBS" -- -k 0 >"$OUT/build.log" 2>&1; then
+    grep -E ': (fatal )?error|undefined reference|: multiple definition' "$OUT/build.log" | sort -u | head -n 60 >&2
+    FAILED+=(build)
+    say "build failed ($OUT/build.log): what did build is run below"
+  fi
+  local warnings
+  warnings="$(grep -c ': warning:' "$OUT/build.log" || true)"
+  [[ "$warnings" -gt 0 ]] && say "$warnings compiler warnings (grep ': warning:' $OUT/build.log)"
+  say "$(find "$BUILD" -name '*.exe' -not -path '*/CMakeFiles/*' -not -path '*/cross-smoke/*' | wc -l) programs (.exe) in $BUILD"
+}
+
+# Each GoogleTest program once, the whole suite in one Wine process (ctest would start Wine once a test).
+run_tests() {
+  local exe name t0 summary
+  mkdir -p "$OUT/tests"
+  while IFS= read -r exe; do
+    name="$(basename "$exe" .exe)"
+    t0=$SECONDS
+    wine_fresh
+    if (cd "$OUT/tests" && limited 1200 "$WINE" "$exe" --gtest_brief=1) >"$OUT/tests/$name.log" 2>&1; then
+      summary="$(grep -E '^\[  PASSED  \]' "$OUT/tests/$name.log" | tail -n1)"
+      say "  $name: ${summary:-passed} ($((SECONDS - t0)) s)"
+    else
+      FAILED+=("$name")
+      say "  $name: FAILED ($((SECONDS - t0)) s, $OUT/tests/$name.log):"
+      grep -E '^\[  FAILED  \]|Failure|^cross: killed' "$OUT/tests/$name.log" | sort -u | head -n 20 | sed 's/^/    /' >&2
+    fi
+  done < <(find "$BUILD" -name 'pba_*_tests.exe' -not -path '*/cross-smoke/*' | sort)
+}
+
+# Each lab's default scene: headless with its metrics, then a screenshot under Xvfb.
+run_labs() {
+  local lab exe t0
+  mkdir -p "$OUT/labs"
+  for lab in $(cd "$ROOT/labs" && for d in */; do [[ -f "$d/CMakeLists.txt" ]] && echo "${d%/}"; done); do
+    exe="$BUILD/bin/pba-$lab.exe"
+    [[ -f "$exe" ]] || { FAILED+=("$lab (no $exe)"); continue; }
+    t0=$SECONDS
+    wine_fresh
+    if (cd "$OUT/labs" && limited 600 "$WINE" "$exe" --headless --metrics -) >"$OUT/labs/$lab.headless.log" 2>&1; then
+      say "  $lab --headless: ok ($((SECONDS - t0)) s)"
+    else
+      FAILED+=("$lab --headless")
+      say "  $lab --headless: FAILED ($((SECONDS - t0)) s): $(tail -n 3 "$OUT/labs/$lab.headless.log" | tr '\n' ' ')"
+    fi
+    t0=$SECONDS
+    rm -f "$OUT/labs/$lab.png"
+    wine_fresh
+    if (cd "$OUT/labs" && limited 600 bash "$ROOT/tools/with_xvfb.sh" -s "$XVFB_SCREEN" \
+      "$WINE" "$exe" --screenshot "$lab.png") >"$OUT/labs/$lab.screenshot.log" 2>&1 && [[ -s "$OUT/labs/$lab.png" ]]; then
+      say "  $lab --screenshot: $OUT/labs/$lab.png ($((SECONDS - t0)) s)"
+    else
+      FAILED+=("$lab --screenshot")
+      say "  $lab --screenshot: FAILED ($((SECONDS - t0)) s): $(tail -n 3 "$OUT/labs/$lab.screenshot.log" | tr '\n' ' ')"
+    fi
+  done
+}
+
+main() {
+  command -v apt-get >/dev/null || die "needs a Debian or Ubuntu host (apt-get source)"
+  ensure_host_tools
+  WORK="$(mktemp -d "${TMPDIR:-/tmp}/pba-cross.XXXXXX")"
+  step "dependencies (MinGW-w64, Debian sources)" build_deps
+  [[ $deps_only == 1 ]] && return 0
+  export PBA_MINGW_PREFIX_PATH
+  PBA_MINGW_PREFIX_PATH="$(IFS=':'; echo "${PREFIXES[*]}")"
+  step "wine prefix" wine_init
+  step "prefix smoke (GLFW + GLEW + ImGui window, GoogleTest) under Wine" smoke_prefix
+  step "configure (windows-mingw)" configure_project
+  step "build (.exe)" build_project
+  step "unit tests under Wine" run_tests
+  [[ $tests_only == 0 ]] && step "labs under Wine (headless, then a screenshot under Xvfb)" run_labs
+  if [[ ${#FAILED[@]} -gt 0 ]]; then
+    say "failed: ${FAILED[*]}"
+    return 1
+  fi
+  say "all passed under Wine; logs, metrics and screenshots in $OUT"
+}
+
+main; exit $?
