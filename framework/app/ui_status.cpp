@@ -43,7 +43,7 @@ nlohmann::json windowsJson() {
         (w->Flags & (ImGuiWindowFlags_ChildWindow | ImGuiWindowFlags_Tooltip | ImGuiWindowFlags_Popup)))
       continue;
     if (std::string(w->Name).rfind("Debug##", 0) == 0) continue;  // ImGui's implicit fallback window
-    const float y1 = w->Collapsed ? w->Pos.y + w->TitleBarHeight() : w->Pos.y + w->Size.y;
+    const float y1 = w->Collapsed ? w->TitleBarRect().Max.y : w->Pos.y + w->Size.y;
     out.push_back({{"name", w->Name}, {"rect", {w->Pos.x, w->Pos.y, w->Pos.x + w->Size.x, y1}}});
   }
   return out;
