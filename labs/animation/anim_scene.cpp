@@ -10,7 +10,7 @@ namespace {
 
 /// A key pressed this frame. ImGui 1.87 takes the named key itself; 1.86 (Debian 12's) an index
 /// that GetKeyIndex maps it to (removed in 1.91).
-bool keyPressed(ImGuiKey key) {
+bool imguiKeyPressed(ImGuiKey key) {
 #if IMGUI_VERSION_NUM >= 18700
   return ImGui::IsKeyPressed(key);
 #else
@@ -152,15 +152,15 @@ void AnimScene::timelineKeys() {
     seek(best);
   };
   for (int dir : {-1, +1}) {
-    if (!keyPressed(dir < 0 ? ImGuiKey_LeftArrow : ImGuiKey_RightArrow)) continue;
+    if (!imguiKeyPressed(dir < 0 ? ImGuiKey_LeftArrow : ImGuiKey_RightArrow)) continue;
     if (io.KeyAlt)
       jumpKey(dir);
     else
       seek(time_ + dir * (io.KeyShift ? 10.0 : 1.0) * frame);
   }
-  if (keyPressed(ImGuiKey_Home)) seek(0.0);
-  if (keyPressed(ImGuiKey_End)) seek(duration());
-  if (keyPressed(ImGuiKey_Delete) && selectedKey_ >= 0 && deleteKey(selectedKey_)) selectedKey_ = -1;
+  if (imguiKeyPressed(ImGuiKey_Home)) seek(0.0);
+  if (imguiKeyPressed(ImGuiKey_End)) seek(duration());
+  if (imguiKeyPressed(ImGuiKey_Delete) && selectedKey_ >= 0 && deleteKey(selectedKey_)) selectedKey_ = -1;
 }
 
 void AnimScene::timelineBar() {
