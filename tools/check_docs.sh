@@ -13,7 +13,10 @@
 #     - "packages: all N installed" in chapter 0: the length of PBA_PACKAGES in tools/driver_lib.sh;
 #     - the exit code of a run paused by the instability guard, wherever a clause mentions the guard
 #       and an exit code: kExitGuardPaused in framework/app/lab.h;
-#  4. no page says that a lab which exists in labs/ is "not yet written".
+#  4. no page says that a lab which exists in labs/ is "not yet written";
+#  5. in docs/course/*.md, a line that lists exercise tags and ends them with "(N min)" gives N as the sum of
+#     those tags' minutes in resources/exercises.tsv; "All N exercises come to M min" gives the catalog's
+#     count and total; the syllabus's week table lists every exercise of the catalog exactly once.
 # Prints one line per problem (FILE:LINE: what) and exits 1 when there is any.
 set -uo pipefail
 root="${1:?usage: tools/check_docs.sh ROOT}"
@@ -177,8 +180,49 @@ done < <(for lab in "${labs[@]}"; do
              cut -d: -f1,2 | sed "s/\$/:$lab/"
          done)
 
+# --- 5. exercise minutes in the course pages ------------------------------------------------------
+catalog=resources/exercises.tsv
+if [[ -f "$catalog" ]]; then
+  course=()
+  for f in "${docs[@]}"; do [[ "$f" == docs/course/* ]] && course+=("$f"); done
+  if [[ ${#course[@]} -gt 0 ]]; then
+    while IFS= read -r l; do problem "$l"; done < <(awk -F'\t' -v catalog="$catalog" '
+      FILENAME == catalog { if (FNR > 1 && $1 != "") { minutes[$1] = $4; n++; total += $4 } next }
+      {
+        line = $0
+        if (match(line, /\([0-9]+ min\)/)) {
+          quoted = substr(line, RSTART + 1, RLENGTH - 6) + 0
+          head = substr(line, 1, RSTART - 1)
+          sum = 0; tags = ""
+          while (match(head, /[A-Z]+-[0-9]+/)) {
+            tag = substr(head, RSTART, RLENGTH); head = substr(head, RSTART + RLENGTH)
+            if (!(tag in minutes)) { printf "%s:%d: %s is not in %s\n", FILENAME, FNR, tag, catalog; continue }
+            sum += minutes[tag]; tags = tags " " tag
+          }
+          if (tags != "" && sum != quoted)
+            printf "%s:%d: quotes %d min for%s; %s gives %d\n", FILENAME, FNR, quoted, tags, catalog, sum
+        }
+        if (match(line, /All [0-9]+ exercises come to [0-9]+ min/)) {
+          split(substr(line, RSTART, RLENGTH), w, " ")
+          if (w[2] + 0 != n || w[6] + 0 != total)
+            printf "%s:%d: quotes %d exercises and %d min; %s has %d and %d\n", FILENAME, FNR, w[2], w[6], catalog, n, total
+        }
+        if (FILENAME ~ /syllabus\.md$/ && line ~ /^\| *[0-9]+ *\|/) {
+          rest = line
+          while (match(rest, /[A-Z]+-[0-9]+/)) { listed[substr(rest, RSTART, RLENGTH)]++; rest = substr(rest, RSTART + RLENGTH) }
+          syllabus = FILENAME
+        }
+      }
+      END {
+        if (syllabus != "")
+          for (tag in minutes)
+            if (listed[tag] != 1) printf "%s: the week table lists %s %d times (once expected)\n", syllabus, tag, listed[tag]
+      }' "$catalog" "${course[@]}")
+  fi
+fi
+
 if [[ $problems -gt 0 ]]; then
   echo "check_docs: $problems problem(s): fix the docs (or the figure in the code they quote)"
   exit 1
 fi
-echo "ok: $checked paths in backticks exist; exercise headings, $blocks_note, package count and the guard's exit code match the code"
+echo "ok: $checked paths in backticks exist; exercise headings, $blocks_note, package count, the guard's exit code and exercise minutes match the code"
