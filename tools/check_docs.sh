@@ -141,12 +141,16 @@ guard_code="$(sed -nE 's/.*kExitGuardPaused *= *([0-9]+).*/\1/p' framework/app/l
 if [[ -z "$guard_code" ]]; then
   problem "framework/app/lab.h: no kExitGuardPaused constant found"
 else
-  guard_quotes="$(awk -v want="$guard_code" '
-    function check(text, at,   rest, n) {
+  # Prose is joined into paragraphs and split into clauses at ". ", "; ", ", " and ": "; a code block's
+  # lines are clauses of their own. Each quote is reported at the line of the paragraph that holds it.
+  guard_quotes="$(awk '
+    function check(text,   rest, quote, n, at, i) {
       if (tolower(text) !~ /guard/) return
       rest = text
       while (match(rest, /[Ee]xit(s|ed|ing)?( with)?( code| status)? `?[0-9]+/)) {
-        n = substr(rest, RSTART, RLENGTH); gsub(/[^0-9]/, "", n)
+        quote = substr(rest, RSTART, RLENGTH); n = quote; gsub(/[^0-9]/, "", n)
+        at = start
+        for (i = 0; i < nlines; i++) if (index(lines[i], quote)) { at = start + i; break }
         printf "%s:%d:%s\n", FILENAME, at, n
         rest = substr(rest, RSTART + RLENGTH)
       }
@@ -154,14 +158,14 @@ else
     function flush(   i, k, parts) {
       if (para == "") return
       k = split(para, parts, /[.;,:] /)
-      for (i = 1; i <= k; i++) check(parts[i], start)
-      para = ""
+      for (i = 1; i <= k; i++) check(parts[i])
+      para = ""; nlines = 0
     }
     FNR == 1 { flush(); fenced = 0 }
     /^[ \t]*```/ { flush(); fenced = !fenced; next }
-    fenced { check($0, FNR); next }
+    fenced { start = FNR; nlines = 1; lines[0] = $0; check($0); nlines = 0; next }
     /^[ \t]*$/ || /^#/ || /^[ \t]*([-*]|[0-9]+\.) / || /^\|/ { flush() }
-    { if (para == "") start = FNR; para = para " " $0 }
+    { if (para == "") start = FNR; lines[nlines++] = $0; para = para " " $0 }
     END { flush() }' "${docs[@]}")"
   while IFS=: read -r file line n; do
     [[ -z "$file" ]] && continue
@@ -185,9 +189,12 @@ catalog=resources/exercises.tsv
 if [[ -f "$catalog" ]]; then
   course=()
   for f in "${docs[@]}"; do [[ "$f" == docs/course/* ]] && course+=("$f"); done
-  if [[ ${#course[@]} -gt 0 ]]; then
+  if ! head -n 1 "$catalog" | tr '\t' '\n' | grep -qx minutes; then
+    problem "$catalog: no column named minutes in its header"
+  elif [[ ${#course[@]} -gt 0 ]]; then
     while IFS= read -r l; do problem "$l"; done < <(awk -F'\t' -v catalog="$catalog" '
-      FILENAME == catalog { if (FNR > 1 && $1 != "") { minutes[$1] = $4; n++; total += $4 } next }
+      FILENAME == catalog && FNR == 1 { for (i = 1; i <= NF; i++) if ($i == "minutes") col = i; next }
+      FILENAME == catalog { if ($1 != "") { minutes[$1] = $col; n++; total += $col } next }
       {
         line = $0
         if (match(line, /\([0-9]+ min\)/)) {
