@@ -16,7 +16,9 @@
 #  4. no page says that a lab which exists in labs/ is "not yet written";
 #  5. in docs/course/*.md, a line that lists exercise tags and ends them with "(N min)" gives N as the sum of
 #     those tags' minutes in resources/exercises.tsv; "All N exercises come to M min" gives the catalog's
-#     count and total; the syllabus's week table lists every exercise of the catalog exactly once.
+#     count and total; the syllabus's week table lists every exercise of the catalog exactly once;
+#  6. a row of ./pba grade's table shown in a code block (tag, title, TIME, pass or FAIL, hint) has the
+#     catalog's title and minutes, and a FAIL row the catalog's hint.
 # Prints one line per problem (FILE:LINE: what) and exits 1 when there is any.
 set -uo pipefail
 root="${1:?usage: tools/check_docs.sh ROOT}"
@@ -228,8 +230,36 @@ if [[ -f "$catalog" ]]; then
   fi
 fi
 
+# --- 6. ./pba grade's rows quoted in the docs --------------------------------------------------------
+if [[ -f "$catalog" ]]; then
+  while IFS= read -r l; do problem "$l"; done < <(awk -F'\t' -v catalog="$catalog" '
+    function trim(t) { gsub(/^ +| +$/, "", t); return t }
+    FILENAME == catalog && FNR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+    FILENAME == catalog { title[$1] = $col["title"]; minutes[$1] = $col["minutes"]; hint[$1] = $col["hint"]; next }
+    FNR == 1 { fenced = 0 }
+    /^[ \t]*```/ { fenced = !fenced; next }
+    !fenced || !/^[A-Z]+-[0-9]+ / { next }
+    {
+      tag = $0; sub(/ .*/, "", tag)
+      rest = substr($0, length(tag) + 1)
+      if (!match(rest, /  +(pass|FAIL)( |$)/)) next
+      before = trim(substr(rest, 1, RSTART - 1))
+      result = trim(substr(rest, RSTART, RLENGTH))
+      shown_hint = trim(substr(rest, RSTART + RLENGTH))
+      time = ""
+      if (match(before, /  +[0-9]+m$/)) { time = trim(substr(before, RSTART)); before = trim(substr(before, 1, RSTART - 1)) }
+      if (!(tag in title)) { printf "%s:%d: grade row for %s, which is not in %s\n", FILENAME, FNR, tag, catalog; next }
+      if (before != title[tag])
+        printf "%s:%d: grade row for %s shows the title \"%s\"; %s has \"%s\"\n", FILENAME, FNR, tag, before, catalog, title[tag]
+      if (time != minutes[tag] "m")
+        printf "%s:%d: grade row for %s shows TIME \"%s\"; ./pba grade prints %sm from %s\n", FILENAME, FNR, tag, time, minutes[tag], catalog
+      if (result == "FAIL" && shown_hint != hint[tag])
+        printf "%s:%d: grade row for %s shows another hint than %s\n", FILENAME, FNR, tag, catalog
+    }' "$catalog" "${docs[@]}")
+fi
+
 if [[ $problems -gt 0 ]]; then
   echo "check_docs: $problems problem(s): fix the docs (or the figure in the code they quote)"
   exit 1
 fi
-echo "ok: $checked paths in backticks exist; exercise headings, $blocks_note, package count, the guard's exit code and exercise minutes match the code"
+echo "ok: $checked paths in backticks exist; exercise headings, $blocks_note, package count, the guard's exit code, exercise minutes and grade rows match the code"
