@@ -1,6 +1,7 @@
 #pragma once
 // Entry point shared by every lab executable: parses the command line, loads the scene, then runs
-// headless or in a window. Exit codes: 0 success, 2 bad arguments or input file, 1 internal failure.
+// headless or in a window. Exit codes: 0 success, 2 bad arguments or input file, 1 internal failure,
+// 3 a headless run paused by the instability guard.
 #include <string>
 
 #include "app/command_line.h"
