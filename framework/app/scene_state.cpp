@@ -22,7 +22,7 @@ std::size_t heapBytesInUse() {
   const struct mallinfo2 info = mallinfo2();
   return info.uordblks + info.hblkhd;  // small blocks in the arenas and large blocks mapped on their own
 #elif defined(_WIN32)
-  // The C runtime's heap, block by block (about 40 ns a block): the blocks in use.
+  // The C runtime's heap, walked block by block: the sum of the blocks in use.
   _HEAPINFO entry{};
   entry._pentry = nullptr;
   std::size_t used = 0;
