@@ -1,8 +1,10 @@
-// Quaternion interpolation: slerp and squad (see rotation.h for the sources and formulas).
+// Quaternion interpolation: slerp and squad (see rotation.h for the sources; squad is exercise ANIM-5).
 #include "physics/animation/rotation.h"
 
 #include <algorithm>
 #include <cmath>
+
+#include "physics/exercises/not_implemented.h"
 
 namespace pba::animation {
 
@@ -35,15 +37,34 @@ Quat slerp(const Quat& q0, const Quat& q1In, Real u) {
   return (std::sin((1.0 - u) * theta) / s) * q0 + (std::sin(u * theta) / s) * q1;
 }
 
-Quat squadControl(const Quat& previous, const Quat& current, const Quat& next) {
-  const Quat inv = glm::conjugate(current);
-  const Vec3 a = quatLog(inv * next);
-  const Vec3 b = quatLog(inv * previous);
-  return glm::normalize(current * quatExp(-0.25 * (a + b)));
-}
-
-Quat squad(const Quat& q0, const Quat& q1, const Quat& s0, const Quat& s1, Real u) {
-  return glm::normalize(slerp(slerp(q0, q1, u), slerp(s0, s1, u), 2.0 * u * (1.0 - u)));
+// ***** ANIM-5: Shoemake's squad between two keys (Shoemake 1985; Dam, Koch & Lillholm 1998, §6.2–6.4) *****
+// Inputs: four unit keys on one hemisphere (q1 and q2 bound the segment, q0 and q3 are their neighbours
+// when hasPrevious / hasNext), and u ∈ [0, 1] (the segment's own parameter, not seconds).
+// (1) The inner control point of a key with both neighbours: in that key's own frame, take the logarithms
+//     (quatLog) of the rotations to its two neighbours; the control point turns the key by minus a quarter
+//     of their sum, mapped back with quatExp (workbook §7.2). A key at an end of the channel is its own
+//     control point.
+// (2) Bring the second control point to the hemisphere of the first.
+// (3) Interpolate twice along great arcs (slerp): once between the keys, once between the control points,
+//     both at u; then between those two results with the weight of workbook §7.2, which vanishes at both
+//     ends of the segment.
+// (4) Return a unit quaternion.
+// Check: u = 0 and u = 1 give the keys; keys about one axis give a rotation about that axis whose angle is
+// the scalar formula of §7.2; the angular velocity is continuous across an interior key on uniform knots.
+// *****
+Quat squadSegment(const Quat& q0, const Quat& q1, const Quat& q2, const Quat& q3, bool hasPrevious, bool hasNext,
+                  Real u) {
+  // BEGIN SOLUTION
+  const auto control = [](const Quat& previous, const Quat& current, const Quat& next) {
+    const Quat inverse = glm::conjugate(current);
+    return glm::normalize(current * quatExp(-0.25 * (quatLog(inverse * next) + quatLog(inverse * previous))));
+  };
+  const Quat s1 = hasPrevious ? control(q0, q1, q2) : q1;
+  Quat s2 = hasNext ? control(q1, q2, q3) : q2;
+  if (glm::dot(s1, s2) < 0.0) s2 = -s2;
+  return glm::normalize(slerp(slerp(q1, q2, u), slerp(s1, s2, u), 2.0 * u * (1.0 - u)));
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("ANIM-5", q1, q0, q2, q3, hasPrevious, hasNext, u);  // holds the key
 }
 
 Quat interpolateRotation(std::span<const Real> times, const std::vector<Quat>& keys, Real t,
@@ -62,9 +83,7 @@ Quat interpolateRotation(std::span<const Real> times, const std::vector<Quat>& k
   if (mode == RotationInterpolation::Slerp) return slerp(q1, q2, u);
   const Quat q0 = i > 0 ? near(q1, keys[i - 1]) : q1;
   const Quat q3 = i + 2 < n ? near(q2, keys[i + 2]) : q2;
-  const Quat s1 = i > 0 ? squadControl(q0, q1, q2) : q1;
-  const Quat s2 = i + 2 < n ? squadControl(q1, q2, q3) : q2;
-  return squad(q1, q2, s1, near(s1, s2), u);
+  return squadSegment(q0, q1, q2, q3, i > 0, i + 2 < n, u);  // ANIM-5
 }
 
 Real rotationAngle(const Quat& a, const Quat& b) {
@@ -72,5 +91,9 @@ Real rotationAngle(const Quat& a, const Quat& b) {
   const Quat r = glm::conjugate(a) * b;
   return 2.0 * std::atan2(glm::length(Vec3(r.x, r.y, r.z)), std::abs(r.w));
 }
+
+// Start-up probe: tells the lab whether ANIM-5 is still a stub.
+PBA_EXERCISE_PROBE(squadSegment(Quat(1, 0, 0, 0), Quat(1, 0, 0, 0), glm::angleAxis(0.5, kUp), glm::angleAxis(1.0, kUp),
+                                true, true, 0.5));
 
 }  // namespace pba::animation

@@ -5,9 +5,8 @@
 //   slerp(q0, q1, u) = q0 (q0⁻¹ q1)^u : the great arc, at constant angular speed, of angle θ with
 //                      cos θ = q0·q1 (after flipping q1 to the same hemisphere: the shorter way round).
 //   log(q) = (θ/2) n for q = (cos θ/2, sin θ/2 n);  exp is its inverse.
-//   squad(q_i, q_i+1, s_i, s_i+1, u) = slerp(slerp(q_i, q_i+1, u), slerp(s_i, s_i+1, u), 2u(1 − u)),
-//   s_i = q_i exp(−(log(q_i⁻¹ q_i+1) + log(q_i⁻¹ q_i−1))/4): a C¹ curve through the keys (Shoemake's
-//   spherical analogue of a cubic Bézier; the end keys use s = q).
+//   squad: Shoemake's spherical analogue of a cubic Bézier between two keys, a C¹ curve through the keys
+//   (exercise ANIM-5, squadSegment; its theory is workbook §7.2).
 #include <span>
 #include <vector>
 
@@ -21,10 +20,13 @@ Vec3 quatLog(const Quat& q);
 Quat quatExp(const Vec3& v);
 /// Shortest-arc spherical linear interpolation; unit length; exact at u = 0 and u = 1 (up to sign).
 Quat slerp(const Quat& q0, const Quat& q1, Real u);
-/// Shoemake's inner control point s_i of key i between its neighbours.
-Quat squadControl(const Quat& previous, const Quat& current, const Quat& next);
-/// Spherical quadrangle interpolation between q0 and q1 with controls s0, s1.
-Quat squad(const Quat& q0, const Quat& q1, const Quat& s0, const Quat& s1, Real u);
+// ANIM-5
+/// Shoemake's squad on one segment: the rotation at u ∈ [0, 1] between the keys q1 (u = 0) and q2
+/// (u = 1), whose neighbouring keys are q0 (before q1) and q3 (after q2). All four are unit and already
+/// on one hemisphere, each relative to its predecessor. At an end of the channel a key has no neighbour
+/// (hasPrevious or hasNext false: q0 or q3 is then ignored) and is its own inner control point.
+Quat squadSegment(const Quat& q0, const Quat& q1, const Quat& q2, const Quat& q3, bool hasPrevious, bool hasNext,
+                  Real u);
 
 enum class RotationInterpolation {
   Step,   ///< the key at or before t

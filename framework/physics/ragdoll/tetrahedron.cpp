@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/exercises/not_implemented.h"
+
 namespace pba::ragdoll {
 
 std::array<Vec3, 4> tetrahedronOffsets(const Vec3& h) {
@@ -20,15 +22,27 @@ Mat3 restEdgesInverse(const std::array<Vec3, 4>& r) {
   return glm::inverse(Mat3(r[1] - r[0], r[2] - r[0], r[3] - r[0]));
 }
 
+// ***** RAG-5: the box's frame from its four particles (Ragdoll paper §3.1, "Display") *****
+// Inputs: the particles x0..x3 [m] in world axes, and the inverse of the rest edge matrix (columns
+// r1 − r0, r2 − r0, r3 − r0 of the rest offsets in the box's frame). Output: the box's centre (the mean
+// of the particles, as given) and the rotation of the box's frame into world axes.
+// (1) Build the deformation that carries the rest edges onto the current edges (world edges times the
+//     given inverse). It is a rotation only while the bone is perfectly rigid; after relaxation it is a
+//     rotation times a small stretch.
+// (2) Keep only its rotation part, the polar factor (the rotation nearest to it): find it with Higham's
+//     Newton iteration (workbook §6.7, RAG-5). Stop when a pass changes no entry by more than about 1e-14,
+//     and after six passes at most (it converges quadratically from a nearly rigid bone).
+// (3) An inverted tetrahedron has a polar factor with determinant −1, which no rotation is: turn it into a
+//     proper rotation by flipping one of its axes.
+// (4) Return the centre with the rotation as a unit quaternion.
+// Check: a rigidly moved tetrahedron gives back its rotation exactly; a rotation times a symmetric
+// positive stretch gives back the rotation alone; the result is always unit length.
+// *****
 collision::Transform fitFrame(const std::array<Vec3, 4>& x, const Mat3& restInverse) {
+  // BEGIN SOLUTION
   Mat3 r = Mat3(x[1] - x[0], x[2] - x[0], x[3] - x[0]) * restInverse;
-  // Higham's iteration converges quadratically to the polar factor; a bone is nearly rigid, so a few
-  // passes reach rounding (at most 6; it stops when a pass moves no entry by more than 10⁻¹⁴, where the
-  // next would move them by ~10⁻²⁸). A reflected (inverted) tetrahedron keeps det < 0: flip one axis then.
   for (int k = 0; k < 6; ++k) {
     const Mat3 next = 0.5 * (r + glm::transpose(glm::inverse(r)));
-    // The largest entry change, column by column as glm::compMax(glm::abs(·)) takes it; std::abs is one
-    // mask where glm's abs branches (they differ only in the sign of a zero, which the test ignores).
     Real change = 0.0;
     for (int c = 0; c < 3; ++c) {
       const Vec3 d = next[c] - r[c];
@@ -39,6 +53,8 @@ collision::Transform fitFrame(const std::array<Vec3, 4>& x, const Mat3& restInve
   }
   if (glm::determinant(r) < 0.0) r[0] = -r[0];
   return {centroid(x), glm::normalize(glm::quat_cast(r))};
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RAG-5", collision::Transform{centroid(x)}, restInverse);  // unrotated
 }
 
 Mat3 pointMassInertia(const std::array<Vec3, 4>& x, const Weights& m) {
@@ -53,5 +69,8 @@ Mat3 pointMassInertia(const std::array<Vec3, 4>& x, const Weights& m) {
   }
   return inertia;
 }
+
+// Start-up probe: tells the lab whether RAG-5 is still a stub.
+PBA_EXERCISE_PROBE(fitFrame(tetrahedronOffsets(Vec3(0.1, 0.2, 0.3)), restEdgesInverse(tetrahedronOffsets(Vec3(0.1, 0.2, 0.3)))));
 
 }  // namespace pba::ragdoll

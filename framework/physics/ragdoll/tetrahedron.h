@@ -35,9 +35,9 @@ inline Vec3 embedded(const std::array<Vec3, 4>& x, const Weights& c) {
 /// The mean of the four particles: the centre of the box fitted to them (fitFrame).
 inline Vec3 centroid(const std::array<Vec3, 4>& x) { return 0.25 * (x[0] + x[1] + x[2] + x[3]); }
 
-/// The rigid frame that best fits the tetrahedron: centre = mean of the particles, rotation = the polar
-/// factor of the deformation F = [x_k − x_0] [r_k − r_0]⁻¹ against the rest offsets r (Higham's iteration
-/// R ← (R + R⁻ᵀ)/2). The box is drawn and collided in this frame (paper §3.1, "Display").
+/// The rigid frame that best fits the tetrahedron (exercise RAG-5): centre = mean of the particles,
+/// rotation = the polar factor of the deformation of the rest edges into the current ones. The box is
+/// drawn and collided in this frame (paper §3.1, "Display").
 collision::Transform fitFrame(const std::array<Vec3, 4>& x, const Mat3& restEdgesInverse);
 /// [r_1 − r_0, r_2 − r_0, r_3 − r_0]⁻¹ of the rest offsets.
 Mat3 restEdgesInverse(const std::array<Vec3, 4>& rest);

@@ -41,12 +41,11 @@ TEST(RagdollTetrahedron, HasTheMassCentreAndInertiaOfItsBoxForSeveralBoxesAndRot
   }
 }
 
-TEST(RagdollTetrahedron, EmbedsPointsAndRecoversARigidFrame) {
+TEST(RagdollTetrahedron, EmbedsPointsWithBarycentricWeights) {
   std::mt19937_64 rng(6);
   std::normal_distribution<Real> n(0.0, 1.0);
   const Vec3 h(0.2, 0.4, 0.1);
   const std::array<Vec3, 4> rest = tetrahedronOffsets(h);
-  const Mat3 inv = restEdgesInverse(rest);
   for (int trial = 0; trial < 50; ++trial) {
     SCOPED_TRACE(trial);
     const Quat q = glm::normalize(Quat(n(rng), n(rng), n(rng), n(rng)));
@@ -57,9 +56,6 @@ TEST(RagdollTetrahedron, EmbedsPointsAndRecoversARigidFrame) {
     const Weights c = barycentric(x, p);
     EXPECT_NEAR(c[0] + c[1] + c[2] + c[3], 1.0, 1e-12);
     EXPECT_VEC3_NEAR(embedded(x, c), p, 1e-12);
-    const collision::Transform f = fitFrame(x, inv);
-    EXPECT_VEC3_NEAR(f.position, t, 1e-12);
-    EXPECT_NEAR(std::abs(glm::dot(f.rotation, q)), 1.0, 1e-9);
   }
 }
 
