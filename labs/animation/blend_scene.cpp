@@ -1,10 +1,7 @@
 // Animation lab, scene "blend": a cross-fade between two clips of the same skeleton, the built-in
-// humanoid's walk and run. Both are sampled at the same phase of their cycles (the usual way to
-// blend gaits: feet stay in step), the cycle length is blended with the same weight, and the poses
-// mix by lerp (translations) and slerp (rotations) with weights (1 − w, w). The weight follows a
-// timeline (walk, fade, run, fade back) or the slider.
-#include <cmath>
-
+// humanoid's walk and run, blended at the same phase of their cycles by exercise ANIM-6 (blendAtPhase).
+// The faint walk and run beside it are the two inputs at that phase. The weight follows a timeline
+// (walk, fade, run, fade back) or the slider.
 #include "anim_scene.h"
 #include "physics/animation/builders.h"
 
@@ -31,6 +28,7 @@ class BlendScene final : public AnimScene {
     walk_ = an::buildGaitClip(skeleton_, {}, "walk");
     run_ = an::buildGaitClip(skeleton_, an::runGait(), "run");
     phase_ = 0.0;
+    pose_ = an::restPose(skeleton_);  // what a stubbed ANIM-6 leaves
     resetClock();
   }
   void draw(DebugDraw& d) const override {
@@ -65,19 +63,19 @@ class BlendScene final : public AnimScene {
       const an::BlendWeights down = an::crossFadeWeights(t, 4.0 + fade_, fade_);
       weights_ = {1.0 - up.second * down.first, up.second * down.first};
     }
-    const an::Playback inPlace{true, an::RootMotion::InPlace};
-    an::Pose a, b;
-    an::playPose(skeleton_, walk_, phase_ * walk_.duration, inPlace, a);
-    an::playPose(skeleton_, run_, phase_ * run_.duration, inPlace, b);
-    an::blendPoses(a, b, weights_.second, pose_);
+    // ANIM-6 at this phase: the blend, and its two inputs (weights 0 and 1 give each clip alone).
+    an::Pose a = an::restPose(skeleton_), b = a;
+    an::blendAtPhase(skeleton_, walk_, run_, 0.0, phase_, 0.0, a);
+    an::blendAtPhase(skeleton_, walk_, run_, 1.0, phase_, 0.0, b);
+    an::blendAtPhase(skeleton_, walk_, run_, weights_.second, phase_, 0.0, pose_);
     walkWorld_ = an::forwardKinematics(skeleton_, a);
     runWorld_ = an::forwardKinematics(skeleton_, b);
     world_ = an::forwardKinematics(skeleton_, pose_);
     continuity_ = continuityError(walk_.tracks[0].translation);
   }
   void simulate(Real dt) override {
-    const Real period = weights_.first * walk_.duration + weights_.second * run_.duration;
-    phase_ = std::fmod(phase_ + speed_ * dt / period, 1.0);
+    an::Pose next;  // the pose at the new phase is evaluate()'s, next frame
+    phase_ = an::blendAtPhase(skeleton_, walk_, run_, weights_.second, phase_, speed_ * dt, next);  // ANIM-6
   }
   void addMetrics(nlohmann::json& m) const override {
     m["blend_weight"] = weights_.second;

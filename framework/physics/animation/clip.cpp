@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/exercises/not_implemented.h"
+
 namespace pba::animation {
 
 const char* rootMotionName(RootMotion mode) {
@@ -125,4 +127,49 @@ void blendPoses(const Pose& a, const Pose& b, Real w, Pose& out) {
   }
 }
 
+// ***** ANIM-6: two clips blended at the same phase (CMU asst4 "Keyframes"; Kovar & Gleicher 2003, §3) *****
+// Inputs: the skeleton, two looping clips of it (durations in seconds, different in general), the weight w
+// ∈ [0, 1] of b, the phase in [0, 1) (the fraction of a cycle both clips have done) and the time step dt [s].
+// (1) The blended character walks one cycle in a blended time: find its cycle length [s] from the two
+//     clips' durations with the weights (1 − w, w), and advance the phase by the fraction of a cycle that
+//     dt is. Keep the phase in [0, 1).
+// (2) Turn the new phase into each clip's own time [s] (the same fraction of each clip's duration), and
+//     sample both poses looping, with the root held in place (playPose, RootMotion::InPlace), so that the
+//     two cycles' feet stay in step whatever their lengths.
+// (3) Mix the two poses with the weights (blendPoses) into `out`, and return the new phase.
+// Check: w = 0 plays a alone and w = 1 plays b alone, each at its own speed; halfway, one cycle takes the
+// mean of the two durations; the phase wraps from just below 1 to just above 0.
+// *****
+Real blendAtPhase(const Skeleton& skeleton, const Clip& a, const Clip& b, Real w, Real phase, Real dt, Pose& out) {
+  // BEGIN SOLUTION
+  const Real period = (1.0 - w) * a.duration + w * b.duration;
+  const Real next = dt == 0.0 ? phase : std::fmod(phase + dt / period, 1.0);
+  const Playback inPlace{true, RootMotion::InPlace};
+  Pose poseA, poseB;
+  playPose(skeleton, a, next * a.duration, inPlace, poseA);
+  playPose(skeleton, b, next * b.duration, inPlace, poseB);
+  blendPoses(poseA, poseB, w, out);
+  return next;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("ANIM-6", phase, skeleton, a, b, w, dt, out);  // nothing moves
+}
+
 }  // namespace pba::animation
+
+namespace {
+pba::animation::Skeleton probeBlendSkeleton() {
+  pba::animation::Skeleton s;
+  s.add("root", -1, pba::Vec3(0.0));
+  return s;
+}
+pba::Real probeBlend() {
+  const pba::animation::Skeleton s = probeBlendSkeleton();
+  pba::animation::Clip c;
+  c.duration = 1.0;
+  c.tracks.resize(1);
+  pba::animation::Pose out;
+  return pba::animation::blendAtPhase(s, c, c, 0.5, 0.0, 0.1, out);
+}
+}  // namespace
+// Start-up probe: tells the lab whether ANIM-6 is still a stub.
+PBA_EXERCISE_PROBE(probeBlend());

@@ -74,4 +74,11 @@ BlendWeights crossFadeWeights(Real t, Real start, Real duration);
 /// Pose mixing a (weight 1 − w) and b (weight w); w = 0 gives a, w = 1 gives b exactly.
 void blendPoses(const Pose& a, const Pose& b, Real w, Pose& out);
 
+// ANIM-6
+/// Two looping cycles of one skeleton (a walk and a run) blended at one phase: advances the shared phase
+/// [0, 1) by dt [s] at the cycle length blended with weight w, then writes to `out` the pose that mixes a
+/// (weight 1 − w) and b (weight w), both sampled at the new phase with the root kept in place. Returns the
+/// new phase. dt = 0 gives the pose at `phase` itself.
+Real blendAtPhase(const Skeleton& skeleton, const Clip& a, const Clip& b, Real w, Real phase, Real dt, Pose& out);
+
 }  // namespace pba::animation

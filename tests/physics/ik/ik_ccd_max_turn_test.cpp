@@ -21,7 +21,7 @@ namespace {
 // The setting of docs/performance-ik-ccd.md, "CCD on 1,000 limited hinges (issue 13)": the bench's cap.
 constexpr Real kMaxTurn = 0.02;  // [rad]
 
-bool stubRan() { return testing::stubRan("CCD with limits needs IK-2 and IK-6, nothing checked"); }
+bool ccdStubRan() { return testing::stubRan("CCD with limits needs IK-2 and IK-6, nothing checked"); }
 
 SolveOptions cappedCcd(int maxIterations) {
   SolveOptions o;
@@ -49,7 +49,7 @@ TEST(IkCcdMaxTurn, ThousandLimitedHingesReachAtLeast95PercentOfGoals) {
   constexpr int kGoals = 10;
 #endif
   const testing::BatchStats s = testing::runRandomTargets(rig, o, kGoals, 7);
-  if (stubRan()) return;
+  if (ccdStubRan()) return;
   std::printf("[ stats    ] CCD, cap %.3f rad, 1,000 hinges ±30°: %.1f %% of %d goals, %.1f passes\n", kMaxTurn,
               100.0 * s.successRate(), kGoals, s.meanIterations);
   EXPECT_EQ(s.nonFinite, 0);
@@ -66,7 +66,7 @@ TEST(IkCcdMaxTurn, ShorterLimitedChainsReachTheirGoals) {
       testing::runRandomTargets(testing::chain(JointType::Hinge, 10), cappedCcd(1000), 200, 7);
   const testing::BatchStats hundred =
       testing::runRandomTargets(testing::chain(JointType::Hinge, 100, 30.0), cappedCcd(200), 40, 7);
-  if (stubRan()) return;
+  if (ccdStubRan()) return;
   std::printf("[ stats    ] CCD, cap %.3f rad: 10 hinges %.1f %%, 100 hinges %.1f %%\n", kMaxTurn,
               100.0 * ten.successRate(), 100.0 * hundred.successRate());
   for (const testing::BatchStats* s : {&ten, &hundred}) {
@@ -93,7 +93,7 @@ TEST(IkCcdMaxTurn, NoJointTurnsMoreThanTheCapInOnePass) {
     SolveOptions plain = cappedCcd(1);
     plain.ccdMaxTurn = 0.0;
     solve(rig.skeleton, free, e, plain);
-    if (stubRan()) return;
+    if (ccdStubRan()) return;
     Real largest = 0.0, largestFree = 0.0;
     for (int j = 0; j < rig.skeleton.jointCount(); ++j) {
       const Joint& joint = rig.skeleton.joint(j);
