@@ -6,7 +6,7 @@
 # (PBA_PHYSICS_SHARED): a tree that differs from this one only in those blocks needs its physics library
 # built, nothing else, and this build's executables run against it with LD_LIBRARY_PATH. So:
 #  1. the student release (tools/student_release.sh): it configures, its physics library builds with the
-#     release preset's flags and -Werror (the other files of the hand-out are this tree's, which built),
+#     release preset's flags and -Werror (the hand-out's own presets leave -Werror off; the check turns it on) (the other files of the hand-out are this tree's, which built),
 #     and against it every exercise test fails, every other test passes, ./pba grade reports failures,
 #     and no solution's lines appear anywhere in it (check_solution_leaks.py);
 #  2. (PBA_CHECK_ISOLATION=0 leaves it out) the switchable tree (each exercise switched to its stub at
@@ -40,7 +40,7 @@ mkdir -p "$tests_dir"
 
 physics_of() {  # physics_of TREE: configure TREE as ./pba run would, build its physics library
   local started=$SECONDS
-  (cd "$1" && cmake --preset release -DPBA_BUILD_BENCH=OFF "-DPBA_CCACHE_DIR=$cache" >"$1/configure.log" 2>&1) ||
+  (cd "$1" && cmake --preset release -DPBA_BUILD_BENCH=OFF -DPBA_WARNINGS_AS_ERRORS=ON "-DPBA_CCACHE_DIR=$cache" >"$1/configure.log" 2>&1) ||
     { tail -n 40 "$1/configure.log"; echo "FAIL: $1 does not configure"; exit 1; }
   cmake --build "$1/build/release" --target pba_physics -j "$jobs" >"$1/build.log" 2>&1 ||
     { tail -n 40 "$1/build.log"; echo "FAIL: the physics library of $1 does not build"; exit 1; }

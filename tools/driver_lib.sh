@@ -5,6 +5,18 @@ PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-d
   libassimp-dev nlohmann-json3-dev libstb-dev libeigen3-dev googletest libgtest-dev libbenchmark-dev
   xvfb xauth assimp-testmodels python3 python3-matplotlib ccache xdotool clang-format ffmpeg
   clang libclang-rt-14-dev)
+# What only this repository's own checks need: Google Benchmark (bench/), clang for the fuzz and clang-14
+# checks, clang-format for the format check. The student hand-out (.student-release) does not install them.
+PBA_DEVELOPER_PACKAGES=(libbenchmark-dev clang-format clang libclang-rt-14-dev)
+if [[ -f "${ROOT:-.}/.student-release" ]]; then
+  pba_developer_only=" ${PBA_DEVELOPER_PACKAGES[*]} "
+  pba_student_packages=()
+  for pba_package in "${PBA_PACKAGES[@]}"; do
+    [[ "$pba_developer_only" == *" $pba_package "* ]] || pba_student_packages+=("$pba_package")
+  done
+  PBA_PACKAGES=("${pba_student_packages[@]}")
+  unset pba_developer_only pba_student_packages pba_package
+fi
 PBA_JOBS="${PBA_JOBS:-$(nproc 2>/dev/null || sysctl -n hw.ncpu 2>/dev/null || echo 2)}"
 # The preset of run and test: on macOS the vcpkg one (README.md, "On your own machine"), else release.
 if [[ "$(uname -s)" == Darwin ]]; then PBA_DEFAULT_PRESET=macos; else PBA_DEFAULT_PRESET=release; fi
