@@ -43,9 +43,9 @@ struct ContactSide {
 
 // RAG-4
 /// The paper's deepest-contact response (§3.3): A and B overlap by `depth` [m] ≥ 0 along the unit
-/// `normal` (pointing from B to A). Split the push by mass (A moves by M_B/(M_A + M_B) n d, B by
-/// −M_A/(M_A + M_B) n d; against the ground A moves by all of it), and hand each side's push Δ to its
-/// particles as c_i λ Δ with λ = 1/Σ c_j², so that the contact point itself moves by exactly Δ.
+/// `normal` (pointing from B to A). The push is split between the bones by mass (against the ground A
+/// takes all of it), and each side hands its share to its particles in proportion to their weights so
+/// that the contact point itself moves by exactly that share (workbook §6.7, RAG-4).
 void resolveDeepestContact(ContactSide& a, ContactSide& b, const Vec3& normal, Real depth);
 
 }  // namespace pba::ragdoll
