@@ -71,6 +71,7 @@ Mat3 pointMassInertia(const std::array<Vec3, 4>& x, const Weights& m) {
 }
 
 // Start-up probe: tells the lab whether RAG-5 is still a stub.
-PBA_EXERCISE_PROBE(fitFrame(tetrahedronOffsets(Vec3(0.1, 0.2, 0.3)), restEdgesInverse(tetrahedronOffsets(Vec3(0.1, 0.2, 0.3)))));
+PBA_EXERCISE_PROBE(fitFrame(tetrahedronOffsets(Vec3(0.1, 0.2, 0.3)),
+                            restEdgesInverse(tetrahedronOffsets(Vec3(0.1, 0.2, 0.3)))));
 
 }  // namespace pba::ragdoll

@@ -67,9 +67,7 @@ TEST(ANIM_6_BlendAtPhase, EachWeightSamplesBothClipsAtTheSamePhaseAndMixesThem) 
 TEST(ANIM_6_BlendAtPhase, OneCycleTakesTheBlendedDuration) {
   // Cycle lengths: 1 s (a alone), 2 s (b alone), 1.5 s halfway, 1.25 s at w = 1/4.
   const Cycles c;
-  const struct {
-    Real w, period;
-  } cases[] = {{0.0, 1.0}, {1.0, 2.0}, {0.5, 1.5}, {0.25, 1.25}};
+  const struct { Real w, period; } cases[] = {{0.0, 1.0}, {1.0, 2.0}, {0.5, 1.5}, {0.25, 1.25}};
   for (const auto& k : cases) {
     SCOPED_TRACE(k.w);
     Pose out = restPose(c.skeleton);

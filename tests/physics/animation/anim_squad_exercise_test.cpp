@@ -38,8 +38,8 @@ TEST(ANIM_5_Squad, KeysAboutOneAxisFollowTheScalarSquadOfTheirAngles) {
       SCOPED_TRACE(testing::Message() << "previous " << hasPrevious << " next " << hasNext << " u " << u);
       const Real a = angles[1] + u * (angles[2] - angles[1]);
       const Real b = s1 + u * (s2 - s1);
-      const Quat q = squadSegment(about(angles[0]), about(angles[1]), about(angles[2]), about(angles[3]),
-                                  hasPrevious, hasNext, u);
+      const Quat q =
+          squadSegment(about(angles[0]), about(angles[1]), about(angles[2]), about(angles[3]), hasPrevious, hasNext, u);
       expectSameRotation(q, about(a + 2.0 * u * (1.0 - u) * (b - a)), 1e-12);
     }
   }
@@ -51,7 +51,7 @@ TEST(ANIM_5_Squad, UnequalStepsAboutOneAxisBendTheAngleAwayFromTheSlerpLine) {
   const Quat q = squadSegment(about(0.0), about(0.2), about(1.0), about(1.2), true, true, 0.5);
   const Real s1 = 0.2 - (0.8 - 0.2) / 4.0, s2 = 1.0 - (0.2 - 0.8) / 4.0;  // 0.05 and 1.15
   const Real expected = 0.6 + 0.5 * (0.5 * (s1 + s2) - 0.6);              // 0.6: the slerp midpoint
-  EXPECT_NEAR(expected, 0.6, 1e-15);  // this symmetric case keeps the midpoint …
+  EXPECT_NEAR(expected, 0.6, 1e-15);                                      // this symmetric case keeps the midpoint …
   expectSameRotation(q, about(expected), 1e-12);
   const Quat quarter = squadSegment(about(0.0), about(0.2), about(1.0), about(1.2), true, true, 0.25);
   const Real a = 0.2 + 0.25 * 0.8, b = s1 + 0.25 * (s2 - s1);
@@ -73,8 +73,8 @@ TEST(ANIM_5_Squad, PassesThroughTheKeysStaysUnitAndTurnsSmoothlyAcrossAKey) {
     const bool hasPrevious = k > 0, hasNext = k + 2 < 5;
     const Quat& q0 = keys[static_cast<size_t>(hasPrevious ? k - 1 : k)];
     const Quat& q3 = keys[static_cast<size_t>(hasNext ? k + 2 : k + 1)];
-    return squadSegment(q0, keys[static_cast<size_t>(k)], keys[static_cast<size_t>(k + 1)], q3, hasPrevious,
-                        hasNext, u);
+    return squadSegment(q0, keys[static_cast<size_t>(k)], keys[static_cast<size_t>(k + 1)], q3, hasPrevious, hasNext,
+                        u);
   };
   for (int k = 0; k < 4; ++k) {
     SCOPED_TRACE(k);
