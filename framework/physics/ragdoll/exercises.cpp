@@ -9,8 +9,9 @@ namespace pba::ragdoll {
 // ***** RAG-1: the stick constraint with inverse masses (Ragdoll paper §3.1; Jakobsen 2001, §3) *****
 // (1) The vector from a to b, its length, and the error: length minus rest.
 // (2) Nothing to do when both ends are pinned (wa + wb = 0) or the ends coincide (no direction).
-// (3) Each end moves along the unit direction by the error times its share of wa + wb: a towards b,
-//     b towards a when the stick is too long, apart when too short. The heavier end moves less.
+// (3) Both ends move along the stick's direction and together remove the whole error. Work out how the
+//     error is shared from the inverse masses (a pinned end does not move, the heavier end moves less)
+//     and which way each end goes when the stick is too long and when it is too short.
 // *****
 void projectStick(Vec3& a, Vec3& b, Real wa, Real wb, Real rest) {
   // BEGIN SOLUTION
