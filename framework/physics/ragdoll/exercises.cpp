@@ -122,10 +122,48 @@ void resolveDeepestContact(ContactSide& a, ContactSide& b, const Vec3& normal, R
   // STUB: static_cast<void>(exercises::notImplemented("RAG-4", 0, a, b, normal, depth));  // nothing moves
 }
 
+// ***** RAG-6: a joint point embedded in two bones (Müller et al. 2007, §3.3; Ragdoll paper §3.2.1) *****
+// Inputs: the two sides (each bone's four particles [m], their inverse masses [1/kg] and the point's
+// barycentric weights; a side may be null) and the move delta [m] of B's point relative to A's.
+// (1) Nothing to do for a (nearly) zero delta. Otherwise the constraint is the gap along delta's unit
+//     direction; write down its gradient with respect to each particle of each side: how does the
+//     embedded point move when one particle moves, and with which sign for A and for B?
+// (2) Apply the projection of workbook §6.2 (kernels.h) with those gradients. Nothing moves when every
+//     particle involved is pinned.
+// (3) B's point goes along delta, A's against it, each side by its share of the inverse masses and
+//     weights, so that together they close exactly delta.
+// Check: the relative move of the two points is exactly delta; momentum Σ m Δx is kept; a pinned side
+// stays; a particle of weight 0 stays.
+// *****
+void moveEmbeddedPoints(EmbeddedSide a, EmbeddedSide b, const Vec3& delta) {
+  // BEGIN SOLUTION
+  const Real size = glm::length(delta);
+  if (!(size > 1e-15)) return;
+  Real denominator = 0.0;
+  if (b.particles)
+    for (int k = 0; k < 4; ++k) denominator += b.inverseMasses[k] * b.weights[k] * b.weights[k];
+  if (a.particles)
+    for (int k = 0; k < 4; ++k) denominator += a.inverseMasses[k] * a.weights[k] * a.weights[k];
+  if (!(denominator > 1e-300)) return;
+  const Vec3 n = delta / size;
+  const Real s = -size / denominator;
+  if (b.particles)
+    for (int k = 0; k < 4; ++k) b.particles[k] -= (s * b.inverseMasses[k] * b.weights[k]) * n;
+  if (a.particles)
+    for (int k = 0; k < 4; ++k) a.particles[k] += (s * a.inverseMasses[k] * a.weights[k]) * n;
+  // END SOLUTION
+  // STUB: static_cast<void>(exercises::notImplemented("RAG-6", 0, a, b, delta));  // nothing moves
+}
+
 namespace {
 void probeStick() {
   Vec3 a(0.0), b(2.0, 0.0, 0.0);
   projectStick(a, b, 1.0, 1.0, 1.0);
+}
+void probeJoint() {
+  std::array<Vec3, 4> x{};
+  const std::array<Real, 4> w{1.0, 1.0, 1.0, 1.0};
+  moveEmbeddedPoints(EmbeddedSide{}, EmbeddedSide{x.data(), w.data()}, kUp);
 }
 void probeContact() {
   std::array<Vec3, 4> x{};
@@ -139,5 +177,6 @@ PBA_EXERCISE_PROBE(probeStick());
 PBA_EXERCISE_PROBE(hingeLimit(HingeFrame{}, Vec3(0.0, 0.0, 1.0), -0.5, 0.5));
 PBA_EXERCISE_PROBE(coneLimit(Vec3(0.0), kUp, Vec3(1.0, 0.0, 0.0), 0.5));
 PBA_EXERCISE_PROBE(probeContact());
+PBA_EXERCISE_PROBE(probeJoint());
 
 }  // namespace pba::ragdoll

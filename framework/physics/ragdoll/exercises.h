@@ -1,10 +1,11 @@
 #pragma once
-// The ragdoll exercises RAG-1..4 (docs/workbook/06-ragdolls.md): the particle ragdoll's kernels in the
+// The ragdoll exercises RAG-1..4 and RAG-6 (docs/workbook/06-ragdolls.md; RAG-5 is in tetrahedron.h): the particle ragdoll's kernels in the
 // paper's own form (Ragdoll paper §3; Jakobsen 2001). The particle ragdoll (particle_ragdoll.h) calls them
 // for its sticks, limits and contacts; their tests feed them fixed inputs, so each is graded alone.
 #include <array>
 
 #include "physics/ragdoll/kernels.h"
+#include "physics/ragdoll/tetrahedron.h"
 
 namespace pba::ragdoll {
 
@@ -47,5 +48,19 @@ struct ContactSide {
 /// takes all of it), and each side hands its share to its particles in proportion to their weights so
 /// that the contact point itself moves by exactly that share (workbook §6.7, RAG-4).
 void resolveDeepestContact(ContactSide& a, ContactSide& b, const Vec3& normal, Real depth);
+
+/// One bone's side of a correction at a point embedded in it: the bone's four particles, their inverse
+/// masses and the point's barycentric weights c_i (Σ c_i = 1).
+struct EmbeddedSide {
+  Vec3* particles = nullptr;            ///< the four particles; null: a side that does not take part
+  const Real* inverseMasses = nullptr;  ///< [1/kg] of the four particles (0: pinned)
+  Weights weights{0.25, 0.25, 0.25, 0.25};
+};
+
+// RAG-6
+/// Moves the point embedded in B by `delta` [m] relative to the point embedded in A, as one projection
+/// along delta's direction shared by inverse masses and weights (a joint: B's copy of the joint point
+/// onto A's; a limit: B's reference point onto its target, A pushed back). A null side does not move.
+void moveEmbeddedPoints(EmbeddedSide a, EmbeddedSide b, const Vec3& delta);
 
 }  // namespace pba::ragdoll

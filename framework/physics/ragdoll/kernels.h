@@ -9,8 +9,8 @@
 // A stick is C = |x_b − x_a| − L with a = (−1, +1) along n = (x_b − x_a)/|·|; a joint point or a contact
 // point embedded with barycentric weights c_i has a_i = c_i (one side, plus) and −c_i (the other).
 //
-// The joint points and the mouse write this projection out (particle_solve.cpp); the sticks, limits and
-// contacts are the exercises RAG-1..4 (exercises.h), which the solver calls.
+// The sticks, limits, contacts and embedded points (joints, limits, the mouse) are the exercises RAG-1..4
+// and RAG-6 (exercises.h), which the solver calls.
 
 #include "physics/core/types.h"
 

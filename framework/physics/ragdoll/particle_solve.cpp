@@ -1,7 +1,6 @@
 // The particle ragdoll's relaxation and projection (particle_ragdoll.h, step 3): sticks, joints, limits,
-// the mouse, contacts. The sticks, the limits and the contacts are the exercises RAG-1..4 (exercises.h),
-// called here and nowhere copied; the joint points and the mouse are projections along a gradient
-// (kernels.h), written out.
+// the mouse, contacts. The sticks, the limits, the contacts and the moves of embedded points (joints,
+// limits, the mouse) are the exercises RAG-1..4 and RAG-6 (exercises.h), called here and nowhere copied.
 #include <algorithm>
 #include <cmath>
 
@@ -17,20 +16,8 @@ void ParticleRagdoll::relax() {
 }
 
 void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {
-  const Real size = glm::length(delta);
-  if (!(size > 1e-15)) return;
-  // C = −|Δ| along n = Δ/|Δ| for the point of B minus the point of A: B gains, A gives. kernels.h's
-  // projection with the terms (B's particles, c_k) then (A's, −c_k) written out: the same products and
-  // sums in the same order ((w·(−c))·(−c) = (w·c)·c, and x − (−v) = x + v, exactly).
   const int fb = bones_[b].first, fa = bones_[a].first;
-  Real denominator = 0.0;
-  for (int k = 0; k < 4; ++k) denominator += w_[fb + k] * inB[k] * inB[k];
-  for (int k = 0; k < 4; ++k) denominator += w_[fa + k] * inA[k] * inA[k];
-  if (!(denominator > 1e-300)) return;
-  const Vec3 n = delta / size;
-  const Real s = -size / denominator;
-  for (int k = 0; k < 4; ++k) x_[fb + k] -= (s * w_[fb + k] * inB[k]) * n;
-  for (int k = 0; k < 4; ++k) x_[fa + k] += (s * w_[fa + k] * inA[k]) * n;
+  moveEmbeddedPoints({&x_[fa], &w_[fa], inA}, {&x_[fb], &w_[fb], inB}, delta);  // RAG-6
 }
 
 void ParticleRagdoll::solveJoints() {
@@ -64,18 +51,12 @@ void ParticleRagdoll::solveLimits() {
 
 void ParticleRagdoll::solveDrag() {
   if (dragBone_ < 0) return;
-  // A stiff pull of the grabbed point halfway to the target per iteration (the mouse has no mass).
+  // A stiff pull of the grabbed point halfway to the target per iteration (the mouse has no mass): RAG-6
+  // with the bone alone on B's side.
   const Vec3 gap = dragTarget_ - pointOf(dragBone_, dragWeights_);
-  const Real size = glm::length(gap);
-  if (!(size > 1e-12)) return;
-  // kernels.h's projection of C = −½|gap| along n = gap/|gap| with the terms (the bone's particles, c_k).
+  if (!(glm::length(gap) > 1e-12)) return;
   const int first = bones_[dragBone_].first;
-  Real denominator = 0.0;
-  for (int k = 0; k < 4; ++k) denominator += w_[first + k] * dragWeights_[k] * dragWeights_[k];
-  if (!(denominator > 1e-300)) return;
-  const Vec3 n = gap / size;
-  const Real s = -0.5 * size / denominator;
-  for (int k = 0; k < 4; ++k) x_[first + k] -= (s * w_[first + k] * dragWeights_[k]) * n;
+  moveEmbeddedPoints({}, {&x_[first], &w_[first], dragWeights_}, 0.5 * gap);
 }
 
 void ParticleRagdoll::solveContacts(bool record) {
