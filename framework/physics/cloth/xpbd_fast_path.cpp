@@ -33,7 +33,8 @@ void sweepXpbdLinksFast(std::span<const Link> links, const std::array<Real, kLin
     // fusing them differently from the scalar route.
     const Pair xx = rx * rx, yy = ry * ry, zz = rz * rz;
     const Pair d = xx + yy + zz;
-    const Real la = std::sqrt(d[0]), lb = std::sqrt(d[1]);
+    const Pair root = sqrtPair(d);
+    const Real la = root[0], lb = root[1];
     const Pair wi{w[a.i], w[b.i]}, wj{w[a.j], w[b.j]};
     const Pair wSum = wi + wj;
     const bool skipA = la < kMinLength || wSum[0] == 0.0, skipB = lb < kMinLength || wSum[1] == 0.0;

@@ -41,7 +41,8 @@ void relaxSticksFast(std::span<const Stick> sticks, std::span<Vec3> x, std::span
     const Pair dz = Pair{x[p.b].z, x[q.b].z} - Pair{x[p.a].z, x[q.a].z};
     const Pair xx = dx * dx, yy = dy * dy, zz = dz * dz;  // glm::dot's order, unfused
     const Pair squared = xx + yy + zz;
-    const Real lp = std::sqrt(squared[0]), lq = std::sqrt(squared[1]);
+    const Pair root = sqrtPair(squared);
+    const Real lp = root[0], lq = root[1];
     const Pair wa{w[p.a], w[q.a]}, wb{w[p.b], w[q.b]};
     const Pair wSum = wa + wb;
     const bool moveP = wSum[0] > 0.0 && lp > 1e-12, moveQ = &p != &q && wSum[1] > 0.0 && lq > 1e-12;
