@@ -76,7 +76,8 @@ void BM_StickRelaxation(benchmark::State& state) {
       x.push_back(Vec3(0.5 * bone, 0.0, 0.0) + corner[c] + Vec3(0.01 * std::sin(1.7 * (4 * bone + c))));
       w.push_back(4.0 / 3.0);
     }
-    for (const auto& e : kPairs) sticks.push_back({first + e[0], first + e[1], glm::length(corner[e[0]] - corner[e[1]])});
+    for (const auto& e : kPairs)
+      sticks.push_back({first + e[0], first + e[1], glm::length(corner[e[0]] - corner[e[1]])});
   }
   for (auto _ : state) {
     if constexpr (kFast) {

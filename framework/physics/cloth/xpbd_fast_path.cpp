@@ -14,16 +14,16 @@ namespace pba::cloth {
 // shares a particle runs alone (its lane 1 repeats it and is dropped). Every lane does CLOTH-2's IEEE
 // operations in its order, and a skipped link (coincident particles, both pinned) adds +0 as the scalar
 // route adds its zero correction, so the results are those of sweepXpbdLinksScalar to the bit.
-void sweepXpbdLinksFast(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde,
-                        std::span<Vec3> x, std::span<const Real> w, std::span<Real> lambda) {
+void sweepXpbdLinksFast(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde, std::span<Vec3> x,
+                        std::span<const Real> w, std::span<Real> lambda) {
   // BEGIN SOLUTION
   constexpr Real kMinLength = 1e-12;  // [m] as CLOTH-2: coincident particles have no direction
   const std::size_t n = links.size();
   std::size_t k = 0;
   while (k < n) {
     const Link& a = links[k];
-    const bool paired = k + 1 < n && links[k + 1].i != a.i && links[k + 1].i != a.j && links[k + 1].j != a.i &&
-                        links[k + 1].j != a.j;
+    const bool paired =
+        k + 1 < n && links[k + 1].i != a.i && links[k + 1].i != a.j && links[k + 1].j != a.i && links[k + 1].j != a.j;
     const Link& b = paired ? links[k + 1] : a;
     const std::size_t kb = paired ? k + 1 : k;
     const Pair rx = Pair{x[a.i].x, x[b.i].x} - Pair{x[a.j].x, x[b.j].x};

@@ -18,7 +18,7 @@ void sweepXpbdLinksScalar(std::span<const Link> links, const std::array<Real, kL
                           std::span<Vec3> x, std::span<const Real> w, std::span<Real> lambda);
 /// The same sweep with the same results, faster (two links per instruction where consecutive links share
 /// no particle). The hand-out runs sweepXpbdLinksScalar here.
-void sweepXpbdLinksFast(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde,
-                        std::span<Vec3> x, std::span<const Real> w, std::span<Real> lambda);
+void sweepXpbdLinksFast(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde, std::span<Vec3> x,
+                        std::span<const Real> w, std::span<Real> lambda);
 
 }  // namespace pba::cloth

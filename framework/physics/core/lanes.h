@@ -8,9 +8,9 @@
 // Compilers without the extension (MSVC) get a plain two-element struct with the same operators, lane
 // by lane: the same IEEE operations in the same order, so the same bits, only without the packing.
 // PBA_PORTABLE_LANES forces that path on GCC and Clang too (the libc++ preset tests it).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cmath>
 #include <cstring>
 
 #include "physics/core/types.h"

@@ -132,7 +132,8 @@ class ParticleRagdoll {
     std::array<std::array<Real, 8>, 4> cornerWeights{};
     collision::Shape shape;  // the box, for the narrow phase
   };
-  using Stick = ragdoll::Stick;  // stick_fast_path.h
+  // A stick is RAG-1's input (stick_fast_path.h).
+  using Stick = ragdoll::Stick;
   struct PointPair {  // one joint point, embedded in both bones
     Weights inA{}, inB{};
   };

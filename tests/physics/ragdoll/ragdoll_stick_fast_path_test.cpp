@@ -21,8 +21,8 @@ void expectSameRelaxation(const std::vector<Stick>& sticks, const std::vector<Ve
   relaxSticksFast(sticks, fast, w, sweeps);
   for (std::size_t i = 0; i < x.size(); ++i) {
     ASSERT_EQ(std::memcmp(&scalar[i], &fast[i], sizeof(Vec3)), 0)
-        << "particle " << i << ": scalar (" << scalar[i].x << ", " << scalar[i].y << ", " << scalar[i].z
-        << "), fast (" << fast[i].x << ", " << fast[i].y << ", " << fast[i].z << ")";
+        << "particle " << i << ": scalar (" << scalar[i].x << ", " << scalar[i].y << ", " << scalar[i].z << "), fast ("
+        << fast[i].x << ", " << fast[i].y << ", " << fast[i].z << ")";
   }
 }
 
