@@ -23,7 +23,9 @@ void relaxSticksScalar(std::span<const Stick> sticks, std::span<Vec3> x, std::sp
 // stick (both ends pinned, coincident ends) writes nothing, as RAG-1 does, so the results are those of
 // relaxSticksScalar to the bit. Sticks that do not fall into such runs go one at a time (lane 1 repeats
 // lane 0 and is dropped).
-void relaxSticksFast(std::span<const Stick> sticks, std::span<Vec3> x, std::span<const Real> w, int sweeps) {
+// flatten: the two lambdas below inline into the loop (GCC kept `project` a call).
+[[gnu::flatten]] void relaxSticksFast(std::span<const Stick> sticks, std::span<Vec3> x, std::span<const Real> w,
+                                      int sweeps) {
   // BEGIN SOLUTION
   constexpr std::size_t kRun = 6;  // a tetrahedron's sticks
   const auto particleRange = [&](std::size_t first) {
