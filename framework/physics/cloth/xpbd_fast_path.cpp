@@ -14,8 +14,9 @@ namespace pba::cloth {
 // shares a particle runs alone (its lane 1 repeats it and is dropped). Every lane does CLOTH-2's IEEE
 // operations in its order, and a skipped link (coincident particles, both pinned) adds +0 as the scalar
 // route adds its zero correction, so the results are those of sweepXpbdLinksScalar to the bit.
-void sweepXpbdLinksFast(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde, std::span<Vec3> x,
-                        std::span<const Real> w, std::span<Real> lambda) {
+// flatten: the lambda below inlines into the loop, as in relaxSticksFast.
+[[gnu::flatten]] void sweepXpbdLinksFast(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde,
+                                         std::span<Vec3> x, std::span<const Real> w, std::span<Real> lambda) {
   // BEGIN SOLUTION
   constexpr Real kMinLength = 1e-12;  // [m] as CLOTH-2: coincident particles have no direction
   const std::size_t n = links.size();
