@@ -9,6 +9,11 @@ with other names or constants still matches; keywords and operators kept). Every
 RELEASE_ROOT (library, labs, tests, tools, docs, hints) is tokenised the same way, and any window of a
 solution that occurs in a release file is reported with the block, the file and the line. Windows made
 of boilerplate only (too few distinct tokens) are skipped. Exit status 1 when something leaks.
+
+Fast paths (docs/architecture.md §5): a scalar exercise and its fast path are two blocks that may hold the
+same computation. Both are gone from the release, so they never flag each other; a window of either that
+reappears in code outside the blocks (a fast path escaping into shared code) is in the release and is
+reported. The index therefore holds every block's windows and the scan reads only the release.
 """
 import argparse
 import os
@@ -62,9 +67,9 @@ def solution_blocks(root):
                 if "// BEGIN SOLUTION" in line:
                     start = i + 1
                 elif "// END SOLUTION" in line and start is not None:
-                    stub = next((l for l in lines[i + 1:i + 4] if "STUB:" in l), "")
-                    tag = re.search(r'"([A-Z]+-[0-9]+)"', stub)
-                    blocks.append((os.path.relpath(path, root), start + 1, tag.group(1) if tag else "?",
+                    stub = next((l for l in lines[i + 1:i + 4] if "STUB:" in l or "FAST PATH:" in l), "")
+                    tag = re.search(r'"([A-Z]+-[0-9]+)"|FAST PATH: ([A-Z]+-[0-9]+)', stub)
+                    blocks.append((os.path.relpath(path, root), start + 1, (tag.group(1) or tag.group(2)) if tag else "?",
                                    "\n".join(lines[start:i])))
                     start = None
     return blocks

@@ -8,6 +8,11 @@
 # stays, behind a run-time switch that runs the stub when PBA_STUB_EXERCISES names the tag (see
 # ExerciseSwitch in framework/physics/exercises/not_implemented.h). Either way a block must end its
 # function: the stub lines are followed by the function's closing brace.
+#
+# A fast path (docs/architecture.md §5, "Fast paths") is a block whose stub calls the student's scalar
+# exercise instead of notImplemented; a "// FAST PATH: TAG ..." line between END SOLUTION and the stub
+# names its exercise. It stays as a comment in the hand-out, and in the switchable tree it gives the
+# switch its tag, so the fast path switches to its stub together with its exercise.
 set -euo pipefail
 mode=release
 if [[ "${1:-}" == --switchable ]]; then mode=switchable; shift; fi
@@ -35,7 +40,7 @@ for f in "${files[@]}"; do
     if ! awk -v file="$f" -v mode="$mode" '
       function flush_block(   i, tag, returns) {
         if (mode == "release") { for (i = 1; i <= nstub; i++) print stub[i]; return }
-        tag = ""
+        tag = fasttag
         for (i = 1; i <= nstub; i++) if (tag == "" && match(stub[i], /"[A-Z]+-[0-9]+"/)) tag = substr(stub[i], RSTART, RLENGTH)
         if (tag == "") { print file ":" NR ": no exercise tag in the STUB lines" > "/dev/stderr"; exit 3 }
         print indent "static const ::pba::exercises::ExerciseSwitch pbaExerciseSwitch(" tag ");"
@@ -52,11 +57,15 @@ for f in "${files[@]}"; do
       }
       /\/\/ END SOLUTION/ { if (!inside) { print file ":" NR ": END SOLUTION without BEGIN" > "/dev/stderr"; exit 3 } inside = 0; ended = 1; next }
       inside { sol[++nsol] = $0; next }
+      ended && !nstub && /^[ \t]*\/\/ FAST PATH: [A-Z]+-[0-9]+/ {
+        if (fasttag != "") { print file ":" NR ": two FAST PATH lines" > "/dev/stderr"; exit 3 }
+        match($0, /[A-Z]+-[0-9]+/); fasttag = "\"" substr($0, RSTART, RLENGTH) "\""; print; next
+      }
       ended && /^[ \t]*\/\/ STUB: / { line = $0; sub(/\/\/ STUB: /, "", line); stub[++nstub] = line; next }
       ended {
         if (!nstub) { print file ":" NR ": a solution block must be followed by // STUB: lines" > "/dev/stderr"; exit 3 }
         if ($0 !~ /^[ \t]*}/) { print file ":" NR ": a solution block and its stub must end the function (expected })" > "/dev/stderr"; exit 3 }
-        flush_block(); ended = 0
+        flush_block(); ended = 0; fasttag = ""
       }
       { print }
       END { if (inside || ended) { print file ": BEGIN SOLUTION without END, or a block at the end of the file" > "/dev/stderr"; exit 3 } }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "physics/cloth/forces.h"
+#include "physics/cloth/xpbd_fast_path.h"
 #include "physics/exercises/not_implemented.h"
 
 namespace pba::cloth {
@@ -69,13 +70,18 @@ template <bool kXpbd>
 }
 }  // namespace
 
+void sweepXpbdLinksScalar(std::span<const Link> links, const std::array<Real, kLinkKinds>& alphaTilde,
+                          std::span<Vec3> x, std::span<const Real> w, std::span<Real> lambda) {
+  sweepLinks<true>(links, alphaTilde, 1.0, x, w, lambda);
+}
+
 void sweepDistanceConstraints(std::span<const Link> links, const std::array<Real, kLinkKinds>& compliance,
                               const SweepMode& mode, Real h, std::span<Vec3> x, std::span<const Real> w,
                               std::span<Real> lambda) {
   std::array<Real, kLinkKinds> alphaTilde{};
   for (std::size_t k = 0; k < kLinkKinds; ++k) alphaTilde[k] = mode.xpbd ? compliance[k] / (h * h) : 0.0;
   if (mode.xpbd) {
-    sweepLinks<true>(links, alphaTilde, 1.0, x, w, lambda);
+    sweepXpbdLinksFast(links, alphaTilde, x, w, lambda);  // CLOTH-2's fast path (xpbd_fast_path.h)
   } else {
     sweepLinks<false>(links, alphaTilde, mode.pbdStiffness, x, w, lambda);
   }

@@ -8,6 +8,7 @@
 // Compilers without the extension (MSVC) get a plain two-element struct with the same operators, lane
 // by lane: the same IEEE operations in the same order, so the same bits, only without the packing.
 // PBA_PORTABLE_LANES forces that path on GCC and Clang too (the libc++ preset tests it).
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -16,6 +17,9 @@
 
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(PBA_PORTABLE_LANES)
 #define PBA_VECTOR_EXTENSION_LANES 1
+#endif
+#if defined(PBA_VECTOR_EXTENSION_LANES) && defined(__SSE2__)
+#include <emmintrin.h>
 #endif
 
 namespace pba {
@@ -71,6 +75,17 @@ inline Pair splat(Real a) { return Pair{a, a}; }
 /// What comparing two Pairs gives: per lane all bits set (true) or none (false).
 using PairMask = decltype(Pair{} < Pair{});
 #endif
+
+/// The square roots of both lanes: sqrtpd where SSE2 and the vector extension are there, else one
+/// std::sqrt per lane. Both are IEEE's correctly rounded square root, so the same bits; a negative lane
+/// gives NaN either way (sqrtpd sets no errno).
+inline Pair sqrtPair(Pair a) {
+#if defined(PBA_VECTOR_EXTENSION_LANES) && defined(__SSE2__)
+  return reinterpret_cast<Pair>(_mm_sqrt_pd(reinterpret_cast<__m128d>(a)));
+#else
+  return Pair{std::sqrt(a[0]), std::sqrt(a[1])};
+#endif
+}
 
 /// One coordinate of two points a[i] and a[j] (j may equal i).
 struct PairVec3 {

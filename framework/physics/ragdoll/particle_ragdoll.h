@@ -36,6 +36,7 @@
 #include "physics/core/debug_draw.h"
 #include "physics/ragdoll/kernels.h"
 #include "physics/ragdoll/ragdoll_desc.h"
+#include "physics/ragdoll/stick_fast_path.h"
 #include "physics/ragdoll/tetrahedron.h"
 
 namespace pba::ragdoll {
@@ -131,10 +132,8 @@ class ParticleRagdoll {
     std::array<std::array<Real, 8>, 4> cornerWeights{};
     collision::Shape shape;  // the box, for the narrow phase
   };
-  struct Stick {
-    int a = 0, b = 0;
-    Real rest = 0.0;
-  };
+  // A stick is RAG-1's input (stick_fast_path.h).
+  using Stick = ragdoll::Stick;
   struct PointPair {  // one joint point, embedded in both bones
     Weights inA{}, inB{};
   };

@@ -11,8 +11,7 @@
 namespace pba::ragdoll {
 
 void ParticleRagdoll::relax() {
-  for (int sweep = 0; sweep < settings_.stickSweeps; ++sweep)
-    for (const Stick& s : sticks_) projectStick(x_[s.a], x_[s.b], w_[s.a], w_[s.b], s.rest);  // RAG-1
+  relaxSticksFast(sticks_, x_, w_, settings_.stickSweeps);  // RAG-1, through its fast path (stick_fast_path.h)
 }
 
 void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {
