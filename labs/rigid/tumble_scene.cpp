@@ -61,7 +61,7 @@ class TumbleScene final : public app::Scene {
 
   nlohmann::json metrics() const override {
     const Mat3 inertia =
-        rigid::worldInertiaTensor(rigid::boxInertiaTensor(box_.mass, box_.halfExtents), box_.orientation);
+        rigid::boxInertiaTensor(box_.mass, box_.halfExtents, box_.orientation);
     const Vec3 l = inertia * box_.angularVelocity;
     Real impulse = 0.0;
     for (const rigid::TumbleContact& c : contacts_) impulse += c.normalImpulse;

@@ -22,10 +22,10 @@ AxisAngle analyticSingleJoint(const Vec3& boneDirection, const Vec3& toTarget);
 /// takes the effector's direction onto the target's direction.
 Quat ccdJointUpdate(const Vec3& pivot, const Vec3& effector, const Vec3& target);
 
-/// IK-3 (jacobian.cpp): Jacobian column of a 1-DOF rotational joint (IK slides): ∂e/∂φ = a × (e − r).
-Vec3 rotationalColumn(const Vec3& worldAxis, const Vec3& pivot, const Vec3& effector);
+/// IK-3 (jacobian.h, jacobian.cpp): one joint's columns of the Jacobian, for hinge, ball and prismatic
+/// DOFs: jointJacobianColumns.
 
-/// IK-4 (jacobian_solvers.cpp): the damped least-squares step Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe.
+/// IK-4 (jacobian_solvers.cpp): the damped least-squares step (Workbook §2.6).
 std::vector<Real> dampedLeastSquaresStep(const Matrix& J, const std::vector<Real>& error, Real lambda);
 
 /// IK-5 (fabrik_passes.cpp): FABRIK's two passes on a chain of points p₀ … pₙ₋₁ with segment lengths

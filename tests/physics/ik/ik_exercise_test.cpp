@@ -73,9 +73,35 @@ TEST(IK_2_CcdJointUpdate, DegenerateCasesGiveUnitQuaternions) {
   EXPECT_VEC3_NEAR(ccdJointUpdate(p, x, -2.0 * x) * x, -x, 1e-15);
 }
 
-TEST(IK_3_JacobianColumn, IsTheAxisCrossTheLever) {
-  EXPECT_VEC3_NEAR(rotationalColumn(Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(3, 0, 0)), Vec3(0, 2, 0), 1e-15);
-  EXPECT_VEC3_NEAR(rotationalColumn(Vec3(1, 0, 0), Vec3(0.0), Vec3(0, 1, 0)), Vec3(0, 0, 1), 1e-15);
+// Closed forms by geometry: a point 2 m from a z hinge moves at 2 m/s per rad along +y (right-hand
+// rule); a prismatic DOF moves every point at 1 m/s along its axis; a ball joint at zero angles turns
+// about R_pre's x, y and z.
+TEST(IK_3_JacobianColumn, GivesTheCircleVelocityOfEachDofType) {
+  Joint hinge;
+  hinge.type = JointType::Hinge;
+  hinge.axis = Vec3(0, 0, 1);
+  const Frame atX{Vec3(1, 0, 0), Quat(1, 0, 0, 0), Quat(1, 0, 0, 0)};
+  const JointColumns h = jointJacobianColumns(hinge, Pose{}, atX, Vec3(3, 0, 0));
+  EXPECT_VEC3_NEAR(h.column[0], Vec3(0, 2, 0), 1e-15);
+  EXPECT_VEC3_NEAR(h.axis[0], Vec3(0, 0, 1), 1e-15);
+  // The same hinge with its frame turned a quarter turn about x: the axis is world −y.
+  const Frame turned{Vec3(0.0), glm::angleAxis(0.5 * kPi, Vec3(1, 0, 0)), glm::angleAxis(0.5 * kPi, Vec3(1, 0, 0))};
+  const JointColumns t = jointJacobianColumns(hinge, Pose{}, turned, Vec3(1, 0, 0));
+  EXPECT_VEC3_NEAR(t.axis[0], Vec3(0, -1, 0), 1e-15);
+  EXPECT_VEC3_NEAR(t.column[0], Vec3(0, 0, 1), 1e-15);
+  Joint slider = hinge;
+  slider.type = JointType::Prismatic;
+  const JointColumns p = jointJacobianColumns(slider, Pose{}, turned, Vec3(5, 4, 3));
+  EXPECT_VEC3_NEAR(p.column[0], Vec3(0, -1, 0), 1e-15);
+  Skeleton s;
+  Joint ball;
+  ball.type = JointType::Ball;
+  ASSERT_TRUE(s.add(ball).ok());
+  const Pose rest = s.restPose();
+  const JointColumns b = jointJacobianColumns(s.joint(0), rest, Frame{}, Vec3(0, 1, 0));
+  EXPECT_VEC3_NEAR(b.column[0], Vec3(0, 0, 1), 1e-15);  // x̂ × ŷ
+  EXPECT_VEC3_NEAR(b.column[1], Vec3(0.0), 1e-15);      // on the y axis
+  EXPECT_VEC3_NEAR(b.column[2], Vec3(-1, 0, 0), 1e-15);  // ẑ × ŷ
 }
 
 // Every DOF type on one tree, with a position and a 6-DOF effector: analytic J vs central finite
