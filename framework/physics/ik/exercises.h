@@ -35,6 +35,14 @@ void fabrikBackward(std::vector<Vec3>& points, const std::vector<Real>& lengths,
 /// Forward: p₀ = base, then each later point moves toward its predecessor.
 void fabrikForward(std::vector<Vec3>& points, const std::vector<Real>& lengths, const Vec3& base);
 
+/// IK-7 (jacobian_solvers.cpp): the Jacobian-transpose step: its direction over the DOFs and its length α
+/// (Buss 2004 §4); α = 0 at a stationary point.
+struct TransposeStep {
+  std::vector<Real> direction;
+  Real alpha = 0.0;
+};
+TransposeStep jacobianTransposeStep(const Matrix& J, const std::vector<Real>& error);
+
 /// IK-6 (limits.cpp): clamps joint j of `pose` into its limits (Workbook §2.7; IK slides "Joint limits").
 void clampJointToLimits(const Skeleton& skeleton, Pose& pose, int j);
 
