@@ -108,13 +108,11 @@ void sortAndSweep([[maybe_unused]] const std::vector<Aabb>& boxes, [[maybe_unuse
     order[j] = id;
   }
   for (std::size_t i = 0; i < order.size(); ++i) {
-    const Aabb& a = boxes[order[i]];
-    const Real end = a.max[axis];
-    for (std::size_t j = i + 1; j < order.size(); ++j) {
-      const Aabb& b = boxes[order[j]];
-      if (b.min[axis] > end) break;
-      if (isStatic[order[i]] && isStatic[order[j]]) continue;
-      if (overlaps(a, b)) pairs.emplace_back(order[i], order[j]);
+    const int first = order[i];
+    for (std::size_t j = i + 1; j < order.size() && boxes[order[j]].min[axis] <= boxes[first].max[axis]; ++j) {
+      const int second = order[j];
+      if (!(isStatic[first] && isStatic[second]) && overlaps(boxes[first], boxes[second]))
+        pairs.emplace_back(first, second);
     }
   }
   // END SOLUTION

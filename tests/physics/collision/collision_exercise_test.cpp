@@ -112,7 +112,9 @@ TEST(COLL_3_SortAndSweep, FindsExactlyTheOverlappingPairsOfBruteForce) {
       SCOPED_TRACE(::testing::Message() << "call " << call << " axis " << axis);
       EXPECT_EQ(found.size(), pairs.size()) << "a pair reported twice";
       EXPECT_EQ(found, expected);
-      EXPECT_TRUE(expected.count({0, 1}));
+      if (call == 0) {
+        EXPECT_TRUE(found.count({0, 1})) << "boxes touching at a corner overlap";
+      }
       ASSERT_EQ(order.size(), boxes.size());
       for (std::size_t i = 1; i < order.size(); ++i)
         EXPECT_LE(boxes[order[i - 1]].min[axis], boxes[order[i]].min[axis]);
