@@ -26,7 +26,8 @@ class TumbleScene final : public app::Scene {
   }
 
   std::string description() const override {
-    return "A box falls corner-first: each corner below the ground gets the course's collision impulse with restitution "
+    return "A box falls corner-first: each corner below the ground gets the course's collision impulse with "
+           "restitution "
            "and a friction impulse ≤ μj (exercises RIGID-1 to RIGID-4).";
   }
 
