@@ -22,7 +22,7 @@ void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacob
   };
   params
       .choiceEnum("jacobian", &options.jacobian, jacobianSourceNames(),
-                  "Where the Jacobian methods take J from: analytic (IK-3's columns a x (e - r)) or differences "
+                  "Where the Jacobian methods take J from: analytic (IK-3's columns of each joint) or differences "
                   "(central differences of forward kinematics: 2 FK per column, slower, independent of IK-3).")
       .shownWhen(jacobian);
   params

@@ -13,8 +13,7 @@ class SingleJointScene final : public IkScene {
     params_.real("length", &length_, 0.2, 2.0, "m", "Bone length. Typical 1 m.").needsReset();
   }
   std::string description() const override {
-    return "One joint turns its bone toward the goal in a single step: axis = bone x goal, angle from the dot product "
-           "(IK-1).";
+    return "One joint turns its bone toward the goal in a single step, by the smallest rotation (IK-1).";
   }
 
  protected:

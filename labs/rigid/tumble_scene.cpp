@@ -26,8 +26,9 @@ class TumbleScene final : public app::Scene {
   }
 
   std::string description() const override {
-    return "A box falls corner-first: each corner below the ground gets the course's impulse j = −(1+e)v_rel/(…) and a "
-           "friction impulse ≤ μj (exercises RIGID-1 to RIGID-4).";
+    return "A box falls corner-first: each corner below the ground gets the course's collision impulse with "
+           "restitution "
+           "and a friction impulse ≤ μj (exercises RIGID-1 to RIGID-4).";
   }
 
   void reset() override {
@@ -60,8 +61,7 @@ class TumbleScene final : public app::Scene {
   }
 
   nlohmann::json metrics() const override {
-    const Mat3 inertia =
-        rigid::worldInertiaTensor(rigid::boxInertiaTensor(box_.mass, box_.halfExtents), box_.orientation);
+    const Mat3 inertia = rigid::boxInertiaTensor(box_.mass, box_.halfExtents, box_.orientation);
     const Vec3 l = inertia * box_.angularVelocity;
     Real impulse = 0.0;
     for (const rigid::TumbleContact& c : contacts_) impulse += c.normalImpulse;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "physics/collision/exercises.h"
+
 namespace pba::collision {
 
 std::vector<std::string> broadPhaseNames() { return {"tree", "sap", "brute-force"}; }
@@ -120,28 +122,16 @@ void BroadPhase::pairsFromSweep(std::vector<std::pair<int, int>>& pairs) {
         sum2 / static_cast<Real>(dynamicCount) - (sum * sum) / static_cast<Real>(dynamicCount * dynamicCount);
     axis_ = variance.x >= variance.y ? (variance.x >= variance.z ? 0 : 2) : (variance.y >= variance.z ? 1 : 2);
   }
-  const int k = axis_;
-  // Insertion sort: nearly linear when the order changed little since the last step.
-  for (std::size_t i = 1; i < sorted_.size(); ++i) {
-    const int id = sorted_[i];
-    const Real key = proxies_[id].fat.min[k];
-    std::size_t j = i;
-    while (j > 0 && proxies_[sorted_[j - 1]].fat.min[k] > key) {
-      sorted_[j] = sorted_[j - 1];
-      --j;
-    }
-    sorted_[j] = id;
+  // The sort and the sweep are the exercise COLL-3, on the fat boxes indexed by proxy id.
+  sweepBoxes_.resize(proxies_.size());
+  sweepStatic_.resize(proxies_.size());
+  for (int id : sorted_) {
+    sweepBoxes_[id] = proxies_[id].fat;
+    sweepStatic_[id] = proxies_[id].isStatic ? 1 : 0;
   }
-  for (std::size_t i = 0; i < sorted_.size(); ++i) {
-    const Proxy& a = proxies_[sorted_[i]];
-    const Real end = a.fat.max[k];
-    for (std::size_t j = i + 1; j < sorted_.size(); ++j) {
-      const Proxy& b = proxies_[sorted_[j]];
-      if (b.fat.min[k] > end) break;
-      if (a.isStatic && b.isStatic) continue;
-      if (overlaps(a.fat, b.fat)) pairs.emplace_back(a.userData, b.userData);
-    }
-  }
+  sweepPairs_.clear();
+  sortAndSweep(sweepBoxes_, sweepStatic_, axis_, sorted_, sweepPairs_);
+  for (const auto& [a, b] : sweepPairs_) pairs.emplace_back(proxies_[a].userData, proxies_[b].userData);
 }
 
 void BroadPhase::pairsBruteForce(std::vector<std::pair<int, int>>& pairs) const {

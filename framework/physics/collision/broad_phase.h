@@ -87,6 +87,9 @@ class BroadPhase {
   std::vector<std::pair<int, int>> treePairs_;                // tree: overlapping proxy ids (a < b), sorted
   std::vector<std::pair<int, int>> freshPairs_;               // tree: scratch
   int axis_ = 0;
+  std::vector<Aabb> sweepBoxes_;                 // sweep and prune: fat boxes by proxy id (COLL-3's input)
+  std::vector<char> sweepStatic_;                // sweep and prune: static flags by proxy id
+  std::vector<std::pair<int, int>> sweepPairs_;  // sweep and prune: overlapping proxy ids
 };
 
 }  // namespace pba::collision

@@ -15,6 +15,7 @@
 #include <limits>
 #include <vector>
 
+#include "physics/collision/exercises.h"
 #include "physics/collision/narrow_phase.h"
 #include "physics/collision/polytope_contact.h"
 
@@ -30,44 +31,36 @@ constexpr Real kAxisTolerance = 5e-4;  // [m] (a tenth of Box2D's linear slop)
 
 }  // namespace
 
-// The fifteen axes are measured in A's frame through C = R_Aᵀ R_B (c_ij = a_i·b_j) and t = R_Aᵀ d
-// (Ericson §4.4.1; Gottschalk's OBB test). The extent of a box along a unit axis L is Σ_k h_k |L·axis_k|:
-//   face a_i:  s = |t_i| − hA_i − Σ_j hB_j |c_ij|;     face b_j:  s = |b_j·d| − hB_j − Σ_i hA_i |c_ij|;
-//   edge a_i × b_j (length ℓ = |a_i × b_j|, (i, i₁, i₂) and (j, j₁, j₂) cyclic):
-//     s ℓ = |t_i₂ c_i₁j − t_i₁ c_i₂j| − (hA_i₁ |c_i₂j| + hA_i₂ |c_i₁j|) − (hB_j₁ |c_ij₂| + hB_j₂ |c_ij₁|).
+// The fifteen candidate axes of two boxes (Ericson §4.4.1; Gottschalk's OBB test): A's three face
+// normals, B's three, and the nine cross products of an edge of A with an edge of B. The gap on each is
+// the exercise COLL-2 (collision/exercises.h: obbSeparationOnAxis); parallel edge pairs give no axis
+// (the face axes cover them).
 Manifold collideBoxes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
   const Mat3 ra = glm::mat3_cast(pa.rotation), rb = glm::mat3_cast(pb.rotation);
   const Vec3& ha = a.halfExtents;
   const Vec3& hb = b.halfExtents;
   const Vec3 d = pb.position - pa.position;
+  const Obb boxA{pa.position, pa.rotation, ha}, boxB{pb.position, pb.rotation, hb};
   Manifold none;
-  Real c[3][3], ac[3][3];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) c[i][j] = glm::dot(ra[i], rb[j]), ac[i][j] = std::abs(c[i][j]);
-  const Vec3 t(glm::dot(ra[0], d), glm::dot(ra[1], d), glm::dot(ra[2], d));
-  // Face axes of A and of B.
   Real sepA = -std::numeric_limits<Real>::max(), sepB = sepA, sepE = sepA;
   int faceA = 0, faceB = 0, edgeI = 0, edgeJ = 0;
   for (int i = 0; i < 3; ++i) {
-    const Real s = std::abs(t[i]) - ha[i] - (hb[0] * ac[i][0] + hb[1] * ac[i][1] + hb[2] * ac[i][2]);
+    const Real s = obbSeparationOnAxis(boxA, boxB, ra[i]);
     if (s > margin) return none;
-    if (s > sepA) sepA = s, faceA = 2 * i + (t[i] >= 0.0 ? 0 : 1);
+    if (s > sepA) sepA = s, faceA = 2 * i + (glm::dot(ra[i], d) >= 0.0 ? 0 : 1);
   }
   for (int j = 0; j < 3; ++j) {
     const Real tb = -glm::dot(rb[j], d);  // along B's axis, toward A
-    const Real s = std::abs(tb) - hb[j] - (ha[0] * ac[0][j] + ha[1] * ac[1][j] + ha[2] * ac[2][j]);
+    const Real s = obbSeparationOnAxis(boxA, boxB, rb[j]);
     if (s > margin) return none;
     if (s > sepB) sepB = s, faceB = 2 * j + (tb >= 0.0 ? 0 : 1);
   }
   for (int i = 0; i < 3; ++i) {
-    const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
     for (int j = 0; j < 3; ++j) {
-      const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-      const Real len = glm::length(glm::cross(ra[i], rb[j]));
+      const Vec3 edgeCross = glm::cross(ra[i], rb[j]);
+      const Real len = glm::length(edgeCross);
       if (len < 1e-6) continue;  // parallel edges: covered by the face axes
-      const Real gap = std::abs(t[i2] * c[i1][j] - t[i1] * c[i2][j]);
-      const Real extents = ha[i1] * ac[i2][j] + ha[i2] * ac[i1][j] + hb[j1] * ac[i][j2] + hb[j2] * ac[i][j1];
-      const Real s = (gap - extents) / len;
+      const Real s = obbSeparationOnAxis(boxA, boxB, edgeCross / len);
       if (s > margin) return none;
       if (s > sepE) sepE = s, edgeI = i, edgeJ = j;
     }

@@ -22,10 +22,10 @@ AxisAngle analyticSingleJoint(const Vec3& boneDirection, const Vec3& toTarget);
 /// takes the effector's direction onto the target's direction.
 Quat ccdJointUpdate(const Vec3& pivot, const Vec3& effector, const Vec3& target);
 
-/// IK-3 (jacobian.cpp): Jacobian column of a 1-DOF rotational joint (IK slides): ∂e/∂φ = a × (e − r).
-Vec3 rotationalColumn(const Vec3& worldAxis, const Vec3& pivot, const Vec3& effector);
+/// IK-3 (jacobian.h, jacobian.cpp): one joint's columns of the Jacobian, for hinge, ball and prismatic
+/// DOFs: jointJacobianColumns.
 
-/// IK-4 (jacobian_solvers.cpp): the damped least-squares step Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe.
+/// IK-4 (jacobian_solvers.cpp): the damped least-squares step (Workbook §2.6).
 std::vector<Real> dampedLeastSquaresStep(const Matrix& J, const std::vector<Real>& error, Real lambda);
 
 /// IK-5 (fabrik_passes.cpp): FABRIK's two passes on a chain of points p₀ … pₙ₋₁ with segment lengths
@@ -34,6 +34,14 @@ std::vector<Real> dampedLeastSquaresStep(const Matrix& J, const std::vector<Real
 void fabrikBackward(std::vector<Vec3>& points, const std::vector<Real>& lengths, const Vec3& target);
 /// Forward: p₀ = base, then each later point moves toward its predecessor.
 void fabrikForward(std::vector<Vec3>& points, const std::vector<Real>& lengths, const Vec3& base);
+
+/// IK-7 (jacobian_solvers.cpp): the Jacobian-transpose step: its direction over the DOFs and its length α
+/// (Buss 2004 §4); α = 0 at a stationary point.
+struct TransposeStep {
+  std::vector<Real> direction;
+  Real alpha = 0.0;
+};
+TransposeStep jacobianTransposeStep(const Matrix& J, const std::vector<Real>& error);
 
 /// IK-6 (limits.cpp): clamps joint j of `pose` into its limits (Workbook §2.7; IK slides "Joint limits").
 void clampJointToLimits(const Skeleton& skeleton, Pose& pose, int j);

@@ -5,57 +5,46 @@
 
 namespace pba::ik {
 
-// ***** IK-3: a Jacobian column of a rotational joint (Workbook §2.5; IK slides, "Columns") *****
-// Inputs in world axes: the joint's unit axis, its pivot (a point of the axis) [m], the effector's
-// position [m]. The column is the velocity of the effector [m/s] when this joint alone turns at
-// 1 rad/s, all others held: metres per radian.
-// (1) Which point is moving: the effector where it is NOW, not where it should go (the Workbook's
-//     formula has a typo there; the IK slides have it right). Describe it from the pivot.
-// (2) A point turning about an axis moves on a circle about that axis: work out its velocity's direction
-//     (tangent to the circle, by the right-hand rule about the axis) and its size (the radius of the
-//     circle times the angular speed).
-// Check: the column is perpendicular to the axis and to the lever; it is zero when the effector lies on
-// the axis; doubling the distance from the axis doubles it; it matches a finite difference of the
-// effector's position over a small turn (numericalJacobian in jacobian.h).
+// ***** IK-3: one joint's columns of the Jacobian (Workbook §2.5; IK slides, "Columns" and "3-DOF
+// joints") *****
+// Inputs: the joint (its type, and for a hinge or prismatic joint its unit axis in the frame R_pre), the
+// pose (a ball joint's three XYZ Euler angles start at pose.dofs[joint.firstDof]), the joint's frame from
+// forward kinematics (pivot [m] and R_pre, both world) and the effector's position e [m], world.
+// Output, for each of the joint's scalar DOFs k (hinge, prismatic: 1; ball: 3; others: none): its axis
+// in world axes (unit) and its column ∂e/∂θ_k, the velocity of e [m/s] when that DOF alone changes at
+// one unit per second (1 rad/s, or 1 m/s for a prismatic joint), every other DOF held. jacobian() walks
+// each effector's chain to the root and writes these columns (and, for a 6-DOF effector, the axes).
+// (1) World axes. A hinge's or a prismatic joint's axis is given in the frame R_pre: bring it to world
+//     axes. A ball joint turns by R_pre Rx(θ₀) Ry(θ₁) Rz(θ₂): each angle turns about its own axis AFTER
+//     the rotations to its left have been applied; work out which partial product carries x̂, ŷ and ẑ.
+// (2) Rotational columns: the effector turns on a circle about the axis through the pivot. Describe it
+//     from the pivot where it is NOW (not where it should go; the Workbook's formula has a typo there),
+//     then work out its velocity's direction (right-hand rule) and size (radius times angular speed).
+// (3) A prismatic DOF slides the whole subtree: how fast does e move, and in which direction?
+// Check: a rotational column is perpendicular to its axis and zero when e lies on the axis; a ball
+// joint's first axis does not depend on its angles; the columns match central finite differences of
+// forward kinematics (numericalJacobian below) for every DOF type.
 // *****
-Vec3 rotationalColumn([[maybe_unused]] const Vec3& worldAxis, [[maybe_unused]] const Vec3& pivot,
-                      [[maybe_unused]] const Vec3& effector) {
+JointColumns jointJacobianColumns(const Joint& joint, const Pose& pose, const Frame& frame, const Vec3& effector) {
   // BEGIN SOLUTION
-  return glm::cross(worldAxis, effector - pivot);
-  // END SOLUTION
-  // STUB: return exercises::notImplemented("IK-3", Vec3(0.0));
-}
-
-namespace {
-// The world axes of joint j's scalar DOFs from its frame; returns how many (0–3).
-//   hinge, prismatic: R_pre a.
-//   ball, R = R_pre Rx(θ₀) Ry(θ₁) Rz(θ₂): x: R_pre x̂; y: (R_pre Rx) ŷ; z: (R_pre Rx Ry) ẑ. The partial
-//   products are shared between the three axes (two half-angle sincos and two quaternion products
-//   per joint, not three of each).
-int dofWorldAxes(const Joint& joint, const Pose& pose, const Frame& f, Vec3 axes[3],
-                 const EulerHalfAngles* half = nullptr) {
+  JointColumns out;
+  const Vec3 lever = effector - frame.position;
   if (joint.type == JointType::Hinge || joint.type == JointType::Prismatic) {
-    axes[0] = f.pre * joint.axis;
-    return 1;
+    out.axis[0] = frame.pre * joint.axis;
+    out.column[0] = joint.type == JointType::Hinge ? glm::cross(out.axis[0], lever) : out.axis[0];
+    return out;
   }
-  if (joint.type != JointType::Ball) return 0;
+  if (joint.type != JointType::Ball) return out;
   const Real* d = pose.dofs.data() + joint.firstDof;
-  // Rx(θ₀) = (cos ½θ₀, sin ½θ₀ x̂), Ry(θ₁) = (cos ½θ₁, sin ½θ₁ ŷ): from forward kinematics when it has them.
-  const bool cached = half && half->angle0 == d[0] && half->angle1 == d[1];
-  const Quat rx = cached ? Quat(half->c0, half->s0, 0.0, 0.0) : glm::angleAxis(d[0], Vec3(1, 0, 0));
-  const Quat ry = cached ? Quat(half->c1, 0.0, half->s1, 0.0) : glm::angleAxis(d[1], Vec3(0, 1, 0));
-  const Quat qx = f.pre * rx;
-  const Quat qxy = qx * ry;
-  axes[0] = f.pre * Vec3(1, 0, 0);
-  axes[1] = qx * Vec3(0, 1, 0);
-  axes[2] = qxy * Vec3(0, 0, 1);
-  return 3;
-}
-}  // namespace
-
-Vec3 dofWorldAxis(const Joint& joint, const Pose& pose, const Frame& f, int k) {
-  Vec3 axes[3];
-  return k < dofWorldAxes(joint, pose, f, axes) ? axes[k] : Vec3(0.0);
+  const Quat qx = frame.pre * glm::angleAxis(d[0], Vec3(1, 0, 0));
+  const Quat qxy = qx * glm::angleAxis(d[1], Vec3(0, 1, 0));
+  out.axis[0] = frame.pre * Vec3(1, 0, 0);
+  out.axis[1] = qx * Vec3(0, 1, 0);
+  out.axis[2] = qxy * Vec3(0, 0, 1);
+  for (int k = 0; k < 3; ++k) out.column[k] = glm::cross(out.axis[k], lever);
+  return out;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("IK-3", JointColumns{}, joint, pose, frame, effector);
 }
 
 JacobianLayout planJacobian(const Skeleton& s, const Pose&, const std::vector<Effector>& effectors,
@@ -85,20 +74,18 @@ JacobianLayout planJacobian(const Skeleton& s, const Pose&, const std::vector<Ef
 }
 
 namespace {
-// Writes effector k's rows of column `col`: a rotation about world axis a at pivot r (rotational) or a
-// translation along a, for the effector point p.
-void writeColumn(Matrix& J, int col, int row, bool oriented, const Vec3& a, const Vec3& r, bool rotational,
-                 const Vec3& p, Real scale) {
-  const Vec3 v = rotational ? rotationalColumn(a, r, p) : a;
-  for (int i = 0; i < 3; ++i) J(row + i, col) = v[i];
+// Writes effector k's rows of column `col` from a DOF's world axis and its position column; a
+// rotational DOF also fills the orientation rows of a 6-DOF effector.
+void writeColumn(Matrix& J, int col, int row, bool oriented, bool rotational, const Vec3& axis, const Vec3& column,
+                 Real scale) {
+  for (int i = 0; i < 3; ++i) J(row + i, col) = column[i];
   if (oriented && rotational)
-    for (int i = 0; i < 3; ++i) J(row + 3 + i, col) = scale * a[i];
+    for (int i = 0; i < 3; ++i) J(row + 3 + i, col) = scale * axis[i];
 }
 }  // namespace
 
 void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
-              const std::vector<Frame>& frames, const JacobianLayout& L, Real scale, Matrix& J,
-              const EulerHalfAngles* half) {
+              const std::vector<Frame>& frames, const JacobianLayout& L, Real scale, Matrix& J) {
   J.rows = L.rows;
   J.cols = L.cols;
   // Entries on no effector's path stay 0. One position effector whose path holds every DOF (a chain)
@@ -120,18 +107,22 @@ void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& 
     const Vec3 p = effectorPosition(e, frames);
     for (int j = e.joint; j >= 0; j = s.joint(j).parent) {
       const Joint& joint = s.joint(j);
-      const Frame& f = frames[static_cast<size_t>(j)];
-      Vec3 axes[3];
-      const int count = dofWorldAxes(joint, pose, f, axes, half ? half + j : nullptr);
-      for (int d = 0; d < count; ++d)
-        writeColumn(J, joint.firstDof + d, row, oriented, axes[d], f.position, joint.type != JointType::Prismatic, p,
+      const JointColumns c = jointJacobianColumns(joint, pose, frames[static_cast<size_t>(j)], p);  // IK-3
+      for (int d = 0; d < dofCount(joint.type); ++d)
+        writeColumn(J, joint.firstDof + d, row, oriented, joint.type != JointType::Prismatic, c.axis[d], c.column[d],
                     scale);
     }
+    // A free joint's column turns about its chosen world axis through its pivot: the column of a hinge
+    // with that axis and no pre-rotation.
     for (size_t q = 0; q < L.freeJoints.size(); ++q) {
       const int j = L.freeJoints[q];
-      if (isAncestorOrSelf(s, j, e.joint))
-        writeColumn(J, s.dofCount() + static_cast<int>(q), row, oriented, L.freeAxes[q],
-                    frames[static_cast<size_t>(j)].position, true, p, scale);
+      if (!isAncestorOrSelf(s, j, e.joint)) continue;
+      Joint hinge;
+      hinge.type = JointType::Hinge;
+      hinge.axis = L.freeAxes[q];
+      const Frame pivot{frames[static_cast<size_t>(j)].position, Quat(1, 0, 0, 0), Quat(1, 0, 0, 0)};
+      const JointColumns c = jointJacobianColumns(hinge, pose, pivot, p);  // IK-3
+      writeColumn(J, s.dofCount() + static_cast<int>(q), row, oriented, true, c.axis[0], c.column[0], scale);
     }
   }
 }
@@ -185,6 +176,6 @@ Matrix numericalJacobian(const Skeleton& s, const Pose& pose, const std::vector<
 }
 
 // Start-up probe: tells the lab whether IK-3 is still a stub.
-PBA_EXERCISE_PROBE(rotationalColumn(Vec3(0.0, 0.0, 1.0), Vec3(0.0), Vec3(1.0, 0.0, 0.0)));
+PBA_EXERCISE_PROBE(jointJacobianColumns(Joint{}, Pose{}, Frame{}, Vec3(1.0, 0.0, 0.0)));
 
 }  // namespace pba::ik

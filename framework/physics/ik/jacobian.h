@@ -4,11 +4,9 @@
 // s [m/rad] so that metres and radians share one error norm). Columns ("variables"): every scalar
 // DOF in Pose::dofs order, then one column per Free joint, about its "best axis" of the moment
 // a = unit(Σ (e − r) × (g − e)) (IK slides, quaternion joint), remembered to apply the step.
-//   hinge:        ∂e/∂φ = a' × (e − r')           orientation rows: s a'
-//   ball (XYZ):   three hinge columns; the world axis of x is R_pre x̂, of y is R_pre Rx ŷ, of z is
-//                 R_pre Rx Ry ẑ (each axis carries the rotations applied before it)
-//   prismatic:    ∂e/∂d = a'                        orientation rows: 0
-// A column is zero for effectors not below the joint.
+// Each joint's position columns and DOF axes are the exercise IK-3 (jointJacobianColumns); the
+// orientation rows of a rotational DOF are s times its world axis, of a prismatic one zero. A column is
+// zero for effectors not below the joint.
 #include <vector>
 
 #include "physics/ik/effector.h"
@@ -25,8 +23,14 @@ struct JacobianLayout {
   std::vector<Vec3> freeAxes;      ///< world axis of each free-joint column (unit or zero)
 };
 
-/// World axis of scalar DOF k (0–2) of joint j for rotational DOFs, or the translation axis.
-Vec3 dofWorldAxis(const Joint& joint, const Pose& pose, const Frame& frame, int k);
+/// IK-3 (jacobian.cpp): what one joint contributes to the Jacobian of an effector at world point e.
+struct JointColumns {
+  Vec3 axis[3] = {Vec3(0.0), Vec3(0.0), Vec3(0.0)};    ///< world axis (unit) of each scalar DOF
+  Vec3 column[3] = {Vec3(0.0), Vec3(0.0), Vec3(0.0)};  ///< ∂e/∂θ_k [m/rad] (rotational) or [m/m] (prismatic)
+};
+/// The joint's DOF axes and position columns (hinge and prismatic: entry 0; ball: entries 0–2; other
+/// types: none); `frame` is the joint's frame from forward kinematics.
+JointColumns jointJacobianColumns(const Joint& joint, const Pose& pose, const Frame& frame, const Vec3& effector);
 
 /// Plans rows and columns and picks the free joints' axes for the current pose.
 JacobianLayout planJacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
@@ -34,12 +38,10 @@ JacobianLayout planJacobian(const Skeleton& s, const Pose& pose, const std::vect
 /// The analytic Jacobian (effector weights not applied).
 Matrix jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
                 const std::vector<Frame>& frames, const JacobianLayout& layout, Real orientationScale);
-/// The same into J, reusing its storage (the solvers call it every iteration). `half`, when given:
-/// per joint, the half angles of a ball joint's θ₀ and θ₁ from forward kinematics; an entry whose
-/// angles equal the pose's saves the axes their sin and cos (the result is the same to the bit).
+/// The same into J, reusing its storage (the solvers call it every iteration). Every column comes from
+/// IK-3 (jointJacobianColumns), walking each effector's chain to the root.
 void jacobian(const Skeleton& s, const Pose& pose, const std::vector<Effector>& effectors,
-              const std::vector<Frame>& frames, const JacobianLayout& layout, Real orientationScale, Matrix& J,
-              const EulerHalfAngles* half = nullptr);
+              const std::vector<Frame>& frames, const JacobianLayout& layout, Real orientationScale, Matrix& J);
 /// Central finite differences of the same quantities, step h (JacobianSource::CentralDifferences and
 /// tests: a reference independent of IK-3): position rows
 /// (e(θ+h) − e(θ−h)) / 2h, orientation rows s · rotvec(E(θ+h) E(θ−h)⁻¹) / 2h.

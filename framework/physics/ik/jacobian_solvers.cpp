@@ -1,11 +1,11 @@
 // Jacobian IK methods (Workbook §2.5, Algorithm 2; IK slides; Buss 2004 "Introduction to inverse
 // kinematics with Jacobian transpose, pseudoinverse and damped least squares methods"; Buss & Kim 2005).
 // Each step linearises ė = J θ̇ at the current pose and solves J Δθ ≈ Δe, as the sources state it:
-//   JT     Δθ = α Jᵀ r, r the full (weighted) error: the steepest-descent direction of
-//          f(θ) = ½ Σ wₖ² |gₖ − eₖ(θ)|², with Buss's (2004 §4) α = ⟨r, J Jᵀ r⟩ / |J Jᵀ r|².
+//   JT     the exercise IK-7: steepest descent of f(θ) = ½ Σ wₖ² |gₖ − eₖ(θ)|² on the full (weighted)
+//          error, with the step length of Buss 2004 §4.
 //   pinv   Δθ = J⁺ Δe = Σ_{σᵢ > c σ_max} σᵢ⁻¹ (uᵢ·Δe) vᵢ  (SVD; c = singularCutoff drops near-singular
 //          directions, which would otherwise give huge steps: IK slides "Degenerate cases").
-//   DLS    Δθ = Jᵀ (J Jᵀ + λ² I)⁻¹ Δe = Σ σᵢ/(σᵢ² + λ²) (uᵢ·Δe) vᵢ: minimises |J Δθ − Δe|² + λ² |Δθ|².
+//   DLS    the exercise IK-4: minimises |J Δθ − Δe|² + λ² |Δθ|² (Buss 2004 §5).
 //   SDLS   Buss & Kim 2005 §4: each singular direction gets its own clamp γᵢ = min(1, Nᵢ/Mᵢ) γ_max,
 //          Nᵢ = Σₖ |uᵢ,ₖ| (effector blocks), Mᵢ = σᵢ⁻¹ Σⱼ |vⱼᵢ| Σₖ |J_kj| — the ratio of the motion the
 //          step asks for to the motion the joints would produce; the sum is clamped to γ_max = π/4.
@@ -56,6 +56,38 @@ std::vector<Real> dampedLeastSquaresStep([[maybe_unused]] const Matrix& J,
 // Start-up probe: tells the lab whether IK-4 is still a stub.
 PBA_EXERCISE_PROBE(dampedLeastSquaresStep(Matrix(1, 1), std::vector<Real>{0.0}, 0.1));
 
+// ***** IK-7: the Jacobian-transpose step and its length (Workbook §2.5; IK slides, "Jacobian
+// transpose"; Buss 2004 §4) *****
+// Inputs: J (rows: effector coordinates [m, or scaled rad], columns: DOFs) and the full error r (rows
+// entries: goal minus effector, weighted). Output: the step's direction (J.cols entries) and its length
+// α ≥ 0 [1]; the solver moves the DOFs by α times the direction.
+// (1) The direction: the steepest-descent direction of ½|r|² over the DOFs, written with J
+//     (multiplyTransposed). It needs no inverse of anything.
+// (2) The length: to first order, moving by α times the direction changes the effectors by α times J
+//     times the direction (multiply). Choose the α that brings the linearised error closest to the goal
+//     (a least-squares problem in one unknown: set the derivative of the squared error to zero).
+// (3) A zero direction (r = 0, or r orthogonal to every column) is a stationary point: return α = 0 so
+//     that the solver stops. If the predicted change comes out zero, take α = 1.
+// Check: α is positive whenever the direction is not zero; along the direction no other α leaves a
+// smaller linearised error; for J the identity the step with its α is r itself.
+// *****
+TransposeStep jacobianTransposeStep(const Matrix& J, const std::vector<Real>& error) {
+  // BEGIN SOLUTION
+  TransposeStep out;
+  out.direction = multiplyTransposed(J, error);
+  const Real gg = dot(out.direction, out.direction);
+  if (!(gg > 0.0)) return out;
+  const std::vector<Real> jjr = multiply(J, out.direction);
+  const Real denom = dot(jjr, jjr);
+  out.alpha = denom > 0.0 ? dot(error, jjr) / denom : 1.0;
+  return out;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("IK-7", TransposeStep{}, J, error);
+}
+
+// Start-up probe: tells the lab whether IK-7 is still a stub.
+PBA_EXERCISE_PROBE(jacobianTransposeStep(Matrix(1, 1), std::vector<Real>{0.0}));
+
 namespace detail {
 namespace {
 
@@ -76,7 +108,13 @@ class JacobianMethod final : public Method {
     // α: 1 for pinv, DLS and SDLS; Buss's step length for JT. slope: ∇f·Δ for JT's Armijo test, 0
     // (ask only for decrease) for the others, whose step is not a multiple of the gradient.
     Real alpha = 1.0, slope = 0.0;
-    if (kind_ == SolverKind::JacobianTranspose && !transposeStepLength(J, sys.residual, &alpha, &slope)) return;
+    if (kind_ == SolverKind::JacobianTranspose) {
+      // IK-7's length on the final J; ∇f·(Jᵀ r) = −|Jᵀ r|² for the Armijo test. α = 0: stationary.
+      const TransposeStep t = jacobianTransposeStep(J, sys.residual);
+      if (!(t.alpha > 0.0)) return;
+      alpha = t.alpha;
+      slope = -dot(t.direction, t.direction);
+    }
     const Real largest = alpha * maxAbs(delta);
     if (c.options.maxJointStep > 0.0 && largest > c.options.maxJointStep) alpha *= c.options.maxJointStep / largest;
     if (c.options.jacobianLineSearch) {
@@ -97,7 +135,8 @@ class JacobianMethod final : public Method {
     std::vector<Real> dy;
     switch (kind_) {
       case SolverKind::JacobianTranspose:
-        dy = multiplyTransposed(J, full);
+        dy = jacobianTransposeStep(J, full).direction;  // IK-7
+        dy.resize(static_cast<size_t>(J.cols), 0.0);    // a stub's step is empty: no move
         break;
       case SolverKind::DampedLeastSquares:
         dy = dampedLeastSquaresStep(J, clamped, c.options.damping);
@@ -170,19 +209,6 @@ class JacobianMethod final : public Method {
       any = true;
     }
     return any;
-  }
-
-  // Buss 2004 §4: α = ⟨r, J Jᵀ r⟩ / |J Jᵀ r|², the minimiser of the linear model along Jᵀ r (J = J̃,
-  // r the full weighted error); *slope = ∇f·(Jᵀ r) = −|Jᵀ r|². False when Jᵀ r = 0 (stationary).
-  static bool transposeStepLength(const Matrix& J, const std::vector<Real>& full, Real* alpha, Real* slope) {
-    const std::vector<Real> g = multiplyTransposed(J, full);
-    const Real gg = dot(g, g);
-    if (!(gg > 0.0)) return false;
-    const std::vector<Real> jjr = multiply(J, g);
-    const Real denom = dot(jjr, jjr);
-    *alpha = denom > 0.0 ? dot(full, jjr) / denom : 1.0;
-    *slope = -gg;
-    return true;
   }
 
   // The line-search option (ours, SolveOptions::jacobianLineSearch): pose + α·delta, α halved until

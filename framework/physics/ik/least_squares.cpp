@@ -20,7 +20,7 @@ void leastSquaresSystem(const Context& c, LeastSquaresSystem& sys) {
   const Skeleton& s = c.skeleton;
   sys.layout = planJacobian(s, c.pose, c.effectors, c.frames, c.orientationScale);
   if (c.options.jacobian == JacobianSource::Analytic)
-    jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale, sys.J, c.half.data());
+    jacobian(s, c.pose, c.effectors, c.frames, sys.layout, c.orientationScale, sys.J);
   else
     sys.J = numericalJacobian(s, c.pose, c.effectors, sys.layout, c.orientationScale, kJacobianStep);
   Matrix& J = sys.J;

@@ -7,17 +7,21 @@
 
 namespace pba::rigid {
 
-// ***** RIGID-1: Box inertia tensor and its world transform (Baraff & Witkin 2001, "Rigid Body
+// ***** RIGID-1: The inertia tensor of a box in world axes (Baraff & Witkin 2001, "Rigid Body
 // Dynamics I", §2.9–2.10) *****
-// Inputs: the mass [kg] and the half extents h [m] (the full sides are twice as long). Output: the
-// inertia tensor [kg·m²] about the centre of mass, in the box's own axes.
-// (1) Work out from the integral of Baraff & Witkin §2.9 (or its table of solids) which entries a box
-//     centred on its own axes has, and which of the three sides each one depends on.
-// (2) Return it as a Mat3 (glm is column-major).
-// Check: a cube's tensor is a multiple of the identity; stretching the box along x leaves I_xx alone
-// and raises the other two; the tensor scales with the mass and with the square of the size.
+// Inputs: the mass [kg], the half extents h [m] (the full sides are twice as long) and the orientation q
+// (body axes → world axes). Output: the inertia tensor [kg·m²] about the centre of mass that maps an
+// angular velocity in WORLD axes to the angular momentum in world axes.
+// (1) In the box's own axes: work out from the integral of B&W §2.9 (or its table of solids) which
+//     entries the tensor of a box centred on its axes has, and which of the three sides each depends on.
+// (2) Into world axes: the body tensor expects an ω written in body axes. Chain the changes of frame
+//     that take a world ω into the body frame, apply the body tensor, and bring the result back; write
+//     the chain as one matrix (glm is column-major).
+// Check: a cube's tensor is a multiple of the identity in any orientation; stretching the box along its
+// x axis leaves I_xx alone and raises the other two (q the identity); the tensor is symmetric and keeps
+// its trace when q turns; L computed in world axes equals L computed in body axes and rotated.
 // *****
-Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents) {
+Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents, const Quat& q) {
   // BEGIN SOLUTION
   const Vec3 side = 2.0 * halfExtents;
   const Vec3 s2 = side * side;
@@ -25,42 +29,37 @@ Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents) {
   inertia[0][0] = mass / 12.0 * (s2.y + s2.z);
   inertia[1][1] = mass / 12.0 * (s2.z + s2.x);
   inertia[2][2] = mass / 12.0 * (s2.x + s2.y);
-  return inertia;
-  // END SOLUTION
-  // STUB: return exercises::notImplemented("RIGID-1", Mat3(mass), halfExtents);
-}
-
-// ***** RIGID-1 (continued): the world-space tensor *****
-// Inputs: the tensor in body axes and the orientation q (body axes → world axes). Output: the tensor that
-// maps an angular velocity in WORLD axes to the angular momentum in world axes.
-// (1) Think of what the body tensor expects: an ω expressed in body axes. Chain the changes of frame
-//     that take a world ω into the body frame, apply the body tensor, and bring the result back.
-// Check: the world tensor is symmetric with the body tensor's eigenvalues; for q the identity it is the
-// body tensor; L computed either way (in world axes, or in body axes and rotated) agrees.
-// *****
-Mat3 worldInertiaTensor(const Mat3& bodyInertia, const Quat& q) {
-  // BEGIN SOLUTION
   const Mat3 r = glm::mat3_cast(q);
-  return r * bodyInertia * glm::transpose(r);
+  return r * inertia * glm::transpose(r);
   // END SOLUTION
-  // STUB: return exercises::notImplemented("RIGID-1", bodyInertia, q);
+  // STUB: return exercises::notImplemented("RIGID-1", Mat3(mass), halfExtents, q);
 }
 
-// ***** RIGID-2: Quaternion integration of the orientation (Baraff & Witkin 2001, §4.2) *****
-// Inputs: the orientation q (unit, body → world), the angular velocity ω [rad/s] in WORLD axes, the step
-// h [s]. Output: the orientation after one explicit Euler step, of unit length.
-// (1) Find in B&W §4.2 the time derivative of q for a world-axes ω: what ω becomes as a quaternion, the
-//     factor in front, and on which side of q it multiplies (the side is fixed by the frame of ω).
-// (2) Take one explicit Euler step of the four components, then bring q back to unit length: the step
-//     leaves the unit sphere.
-// Check: ω = 0 leaves q unchanged; a small step about z turns a body's x axis towards +y by ω h to
-// first order; the result has unit length.
+// ***** RIGID-2: Updating the orientation over one step (Baraff & Witkin 2001, §4.2; Catto, "Numerical
+// Methods", GDC 2015) *****
+// Inputs: the orientation q (unit, body → world), the angular velocity ω [rad/s] in WORLD axes, held
+// constant over the step, and the step h [s]. Output: the orientation after the step, of unit length.
+// The rigid world and the `tumble` scene move every body's orientation with this function.
+// (1) Over the step the body turns about one fixed world axis. Work out that axis (a unit vector) and
+//     the angle [rad] it turns through.
+// (2) Build the unit quaternion of that turn from the half angle (B&W's appendix on quaternions).
+// (3) Apply it to q: ω is in world axes, so decide on which side of q it multiplies. Bring the product
+//     back to unit length (rounding drifts it over many steps).
+// (4) A body that does not turn (ω = 0, or an angle too small to define an axis) must keep q exactly;
+//     for tiny angles find a form of the vector part that needs no division by |ω|.
+// Check: ω = 0 leaves q unchanged; N steps of h turn a body by exactly N h |ω| about ω's axis; a small
+// step about z turns the body's x axis towards +y; B&W's derivative ½ ω q is the first-order term.
 // *****
 Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h) {
   // BEGIN SOLUTION
-  const Quat w(0.0, omega.x, omega.y, omega.z);
-  const Quat dq = 0.5 * h * (w * q);
-  return glm::normalize(q + dq);
+  const Real speed = glm::length(omega);
+  const Real angle = speed * h;
+  if (angle < 1e-300) return q;
+  // Half-angle form; for tiny angles sin(x/2)/x → 1/2 keeps the axis well defined.
+  const Real half = 0.5 * angle;
+  const Real s = angle > 1e-8 ? std::sin(half) / speed : 0.5 * h;
+  const Quat dq(std::cos(half), s * omega.x, s * omega.y, s * omega.z);
+  return glm::normalize(dq * q);
   // END SOLUTION
   // STUB: return exercises::notImplemented("RIGID-2", q, omega, h);
 }
@@ -124,8 +123,7 @@ Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& poi
 }
 
 // Start-up probes: tell the lab which exercises are still stubs.
-PBA_EXERCISE_PROBE(boxInertiaTensor(1.0, Vec3(0.5)));
-PBA_EXERCISE_PROBE(worldInertiaTensor(Mat3(1.0), Quat(1, 0, 0, 0)));
+PBA_EXERCISE_PROBE(boxInertiaTensor(1.0, Vec3(0.5), Quat(1, 0, 0, 0)));
 PBA_EXERCISE_PROBE(integrateOrientation(Quat(1, 0, 0, 0), Vec3(0.0, 1.0, 0.0), 0.01));
 PBA_EXERCISE_PROBE(collisionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(0.0, -1.0, 0.0), Vec3(0.0)},
                                     ImpulseBody{}, Vec3(0.0), kUp, 0.5));

@@ -1,8 +1,9 @@
 #pragma once
 // The rigid-body exercises (docs/architecture.md, "Exercises") and the course's single-impulse collision response built from
-// them (the `tumble` scene). The world's solver (world.h) does not use these: it reaches the same
-// physics by its own routes (Mirtich's integrals, the exponential map, sequential impulses), so that each
-// exercise is graded alone.
+// them (the `tumble` scene). The world's solver (world.h) moves every orientation with RIGID-2 and
+// finds box contacts through COLL-2 (collision/exercises.h); for inertia and impulses it has its own
+// general routes (Mirtich's integrals of any hull, sequential impulses with accumulated clamping), so
+// RIGID-1, -3 and -4 run in the `tumble` scene.
 //
 // Conventions of this file (Baraff & Witkin 2001, "Rigid Body Dynamics II", §8): a contact between
 // bodies A and B at world point p with unit normal n pointing from B toward A; arms r = p − x; the
@@ -13,14 +14,13 @@
 namespace pba::rigid {
 
 // RIGID-1
-/// Inertia tensor of a solid box of mass m [kg] and half extents h [m] about its centre, body axes
-/// [kg·m²].
-Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents);
-/// The tensor in world axes for orientation q (body axes → world axes).
-Mat3 worldInertiaTensor(const Mat3& bodyInertia, const Quat& q);
+/// Inertia tensor [kg·m²] of a solid box of mass m [kg] and half extents h [m] about its centre, in
+/// world axes for the orientation q (body axes → world axes).
+Mat3 boxInertiaTensor(Real mass, const Vec3& halfExtents, const Quat& q);
 
 // RIGID-2
-/// One explicit Euler step of the orientation under ω in world axes [rad/s], renormalised.
+/// The orientation after a step h [s] under a constant angular velocity ω in world axes [rad/s]: the
+/// exact turn over the step, renormalised. The rigid world's integrator calls it for every body.
 Quat integrateOrientation(const Quat& q, const Vec3& omega, Real h);
 
 /// What the impulse formulas need of a body.

@@ -6,16 +6,6 @@
 
 namespace pba::rigid {
 
-Quat rotateByAngularVelocity(const Quat& q, const Vec3& omega, Real h) {
-  const Real angle = glm::length(omega) * h;
-  if (angle < 1e-300) return q;
-  // Half-angle form; for tiny angles sin(x/2)/x → 1/2 keeps the axis well defined.
-  const Real half = 0.5 * angle;
-  const Real s = angle > 1e-8 ? std::sin(half) / glm::length(omega) : 0.5 * h;
-  const Quat dq(std::cos(half), s * omega.x, s * omega.y, s * omega.z);
-  return glm::normalize(dq * q);
-}
-
 Vec3 gyroscopicImplicitStep(const Quat& q, const Mat3& inertia, const Vec3& omega, Real h) {
   const Vec3 wb = glm::conjugate(q) * omega;
   const Vec3 iw = inertia * wb;

@@ -6,9 +6,7 @@
 
 namespace pba::rigid {
 
-/// The exact rotation of q by a constant world angular velocity ω over h: q ← exp(½ h ω) q, i.e. a
-/// rotation by |ω|h about ω/|ω| applied on the left (world axes), then renormalised.
-Quat rotateByAngularVelocity(const Quat& q, const Vec3& omega, Real h);
+// The orientation's own update over a step is the exercise RIGID-2 (exercises.h: integrateOrientation).
 
 /// One backward-Euler Newton step of Euler's equation in the body frame (Catto GDC 2015):
 ///   f(ω₂) = I(ω₂ − ω₁) + h ω₂ × Iω₂ = 0,  J = I + h([ω₁]× I − [Iω₁]×),  ω₂ = ω₁ − J⁻¹ f(ω₁).

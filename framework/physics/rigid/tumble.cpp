@@ -15,7 +15,7 @@ Mat3 safeInverse(const Mat3& m) {
 void tumbleStep(TumbleBox& box, const TumbleSettings& s, Real h, std::vector<TumbleContact>& contacts) {
   contacts.clear();
   box.velocity += h * s.gravity;
-  const Mat3 inertia = worldInertiaTensor(boxInertiaTensor(box.mass, box.halfExtents), box.orientation);
+  const Mat3 inertia = boxInertiaTensor(box.mass, box.halfExtents, box.orientation);
   ImpulseBody a{1.0 / box.mass, safeInverse(inertia), box.position, box.velocity, box.angularVelocity};
   const ImpulseBody ground{};
   const Vec3 n = kUp;
@@ -58,7 +58,7 @@ void tumbleStep(TumbleBox& box, const TumbleSettings& s, Real h, std::vector<Tum
 }
 
 Real tumbleEnergy(const TumbleBox& box, const TumbleSettings& s) {
-  const Mat3 inertia = worldInertiaTensor(boxInertiaTensor(box.mass, box.halfExtents), box.orientation);
+  const Mat3 inertia = boxInertiaTensor(box.mass, box.halfExtents, box.orientation);
   return 0.5 * box.mass * glm::dot(box.velocity, box.velocity) +
          0.5 * glm::dot(box.angularVelocity, inertia * box.angularVelocity) -
          box.mass * glm::dot(s.gravity, box.position);

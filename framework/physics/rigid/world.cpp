@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 
+#include "physics/rigid/exercises.h"
 #include "physics/rigid/integrate.h"
 
 namespace pba::rigid {
@@ -210,7 +211,7 @@ void World::solve(Real dt) {
       if (s.gyroscopic == GyroscopicMode::Midpoint && !kinematic && !bodies_[i].isotropic) {
         midpointFreeRotation(sb.q, sb.w, bodies_[i].inertiaBody, bodies_[i].inverseInertiaBody, h);
       } else {
-        sb.q = rotateByAngularVelocity(sb.q, sb.w, h);
+        sb.q = integrateOrientation(sb.q, sb.w, h);  // RIGID-2
       }
     }
     for (int it = 0; it < s.relaxIterations; ++it) {

@@ -1,7 +1,10 @@
-// Exercise tests of COLL-1 and COLL-2, against reference-only code: GJK/EPA on the same spheres
-// (physics/collision/gjk.h), the plane's closed form, and the projections of all eight corners of each box.
+// Exercise tests of COLL-1 to COLL-3, against reference-only code: GJK/EPA on the same spheres
+// (physics/collision/gjk.h), the plane's closed form, the projections of all eight corners of each box,
+// and for the sort and sweep every pair tested with overlaps() (brute force).
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include <gtest/gtest.h>
 
@@ -76,6 +79,50 @@ TEST(COLL_2_BoxSeparatingAxis, MatchesTheGapBetweenTheCornersProjections) {
     interval(b, bLo, bHi);
     const Real gap = std::max(bLo - aHi, aLo - bHi);
     EXPECT_NEAR(obbSeparationOnAxis(a, b, axis), gap, 1e-9) << "seed 52, trial " << trial;
+  }
+}
+
+// Random boxes on three axes, some static: the pairs equal brute force's, each once, none of two statics;
+// `order` comes back sorted by the lower bound; a second call after small moves finds brute force's pairs
+// again from the previous order.
+TEST(COLL_3_SortAndSweep, FindsExactlyTheOverlappingPairsOfBruteForce) {
+  std::mt19937_64 rng(53);
+  std::uniform_real_distribution<Real> u(0.0, 10.0), size(0.2, 1.5), jitter(-0.3, 0.3);
+  std::vector<Aabb> boxes(120);
+  std::vector<char> isStatic(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Vec3 lo(u(rng), u(rng), u(rng));
+    boxes[i] = {lo, lo + Vec3(size(rng), size(rng), size(rng))};
+    isStatic[i] = i % 7 == 0 ? 1 : 0;
+  }
+  boxes[1] = {boxes[0].max, boxes[0].max + Vec3(1.0)};  // touching at one corner: overlapping
+  std::vector<int> order(boxes.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(order.size() - 1 - i);
+  for (int call = 0; call < 3; ++call) {
+    for (int axis = 0; axis < 3; ++axis) {
+      std::set<std::pair<int, int>> expected;
+      for (std::size_t i = 0; i < boxes.size(); ++i)
+        for (std::size_t j = i + 1; j < boxes.size(); ++j)
+          if (overlaps(boxes[i], boxes[j]) && !(isStatic[i] && isStatic[j]))
+            expected.emplace(static_cast<int>(i), static_cast<int>(j));
+      std::vector<std::pair<int, int>> pairs;
+      sortAndSweep(boxes, isStatic, axis, order, pairs);
+      std::set<std::pair<int, int>> found;
+      for (auto [a, b] : pairs) found.emplace(std::min(a, b), std::max(a, b));
+      SCOPED_TRACE(::testing::Message() << "call " << call << " axis " << axis);
+      EXPECT_EQ(found.size(), pairs.size()) << "a pair reported twice";
+      EXPECT_EQ(found, expected);
+      if (call == 0) {
+        EXPECT_TRUE(found.count({0, 1})) << "boxes touching at a corner overlap";
+      }
+      ASSERT_EQ(order.size(), boxes.size());
+      for (std::size_t i = 1; i < order.size(); ++i)
+        EXPECT_LE(boxes[order[i - 1]].min[axis], boxes[order[i]].min[axis]);
+    }
+    for (Aabb& b : boxes) {
+      const Vec3 d(jitter(rng), jitter(rng), jitter(rng));
+      b = {b.min + d, b.max + d};
+    }
   }
 }
 

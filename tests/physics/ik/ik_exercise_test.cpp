@@ -73,9 +73,35 @@ TEST(IK_2_CcdJointUpdate, DegenerateCasesGiveUnitQuaternions) {
   EXPECT_VEC3_NEAR(ccdJointUpdate(p, x, -2.0 * x) * x, -x, 1e-15);
 }
 
-TEST(IK_3_JacobianColumn, IsTheAxisCrossTheLever) {
-  EXPECT_VEC3_NEAR(rotationalColumn(Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(3, 0, 0)), Vec3(0, 2, 0), 1e-15);
-  EXPECT_VEC3_NEAR(rotationalColumn(Vec3(1, 0, 0), Vec3(0.0), Vec3(0, 1, 0)), Vec3(0, 0, 1), 1e-15);
+// Closed forms by geometry: a point 2 m from a z hinge moves at 2 m/s per rad along +y (right-hand
+// rule); a prismatic DOF moves every point at 1 m/s along its axis; a ball joint at zero angles turns
+// about R_pre's x, y and z.
+TEST(IK_3_JacobianColumn, GivesTheCircleVelocityOfEachDofType) {
+  Joint hinge;
+  hinge.type = JointType::Hinge;
+  hinge.axis = Vec3(0, 0, 1);
+  const Frame atX{Vec3(1, 0, 0), Quat(1, 0, 0, 0), Quat(1, 0, 0, 0)};
+  const JointColumns h = jointJacobianColumns(hinge, Pose{}, atX, Vec3(3, 0, 0));
+  EXPECT_VEC3_NEAR(h.column[0], Vec3(0, 2, 0), 1e-15);
+  EXPECT_VEC3_NEAR(h.axis[0], Vec3(0, 0, 1), 1e-15);
+  // The same hinge with its frame turned a quarter turn about x: the axis is world −y.
+  const Frame turned{Vec3(0.0), glm::angleAxis(0.5 * kPi, Vec3(1, 0, 0)), glm::angleAxis(0.5 * kPi, Vec3(1, 0, 0))};
+  const JointColumns t = jointJacobianColumns(hinge, Pose{}, turned, Vec3(1, 0, 0));
+  EXPECT_VEC3_NEAR(t.axis[0], Vec3(0, -1, 0), 1e-15);
+  EXPECT_VEC3_NEAR(t.column[0], Vec3(0, 0, 1), 1e-15);
+  Joint slider = hinge;
+  slider.type = JointType::Prismatic;
+  const JointColumns p = jointJacobianColumns(slider, Pose{}, turned, Vec3(5, 4, 3));
+  EXPECT_VEC3_NEAR(p.column[0], Vec3(0, -1, 0), 1e-15);
+  Skeleton s;
+  Joint ball;
+  ball.type = JointType::Ball;
+  ASSERT_TRUE(s.add(ball).ok());
+  const Pose rest = s.restPose();
+  const JointColumns b = jointJacobianColumns(s.joint(0), rest, Frame{}, Vec3(0, 1, 0));
+  EXPECT_VEC3_NEAR(b.column[0], Vec3(0, 0, 1), 1e-15);   // x̂ × ŷ
+  EXPECT_VEC3_NEAR(b.column[1], Vec3(0.0), 1e-15);       // on the y axis
+  EXPECT_VEC3_NEAR(b.column[2], Vec3(-1, 0, 0), 1e-15);  // ẑ × ŷ
 }
 
 // Every DOF type on one tree, with a position and a 6-DOF effector: analytic J vs central finite
@@ -160,6 +186,49 @@ TEST(IK_4_DampedLeastSquaresStep, IsFiniteForASingularJacobian) {
   EXPECT_NEAR(step[1], 1.0 / 2.01, 1e-12);
   // λ = 0 on the same J: J Jᵀ is singular and no step is defined; step (3) returns zeros.
   for (Real x : dampedLeastSquaresStep(J, {1.0, 1.0, 0.0}, 0.0)) EXPECT_EQ(x, 0.0);
+}
+
+// IK-7 against Eigen: the direction is Jᵀ r (Eigen's product), and α minimises the linearised error
+// φ(α) = |r − α J d|² along it: φ is a parabola, so its central difference at α vanishes and every other
+// α on either side gives a larger φ.
+TEST(IK_7_JacobianTransposeStep, IsSteepestDescentWithTheBestLengthAlongIt) {
+  std::mt19937_64 rng(77);
+  std::normal_distribution<Real> n(0.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const int rows = 3 + trial % 4, cols = 2 + trial % 7;
+    Matrix J(rows, cols);
+    Eigen::MatrixXd je(rows, cols);
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) je(r, c) = J(r, c) = n(rng);
+    std::vector<Real> error(static_cast<size_t>(rows));
+    Eigen::VectorXd re(rows);
+    for (int r = 0; r < rows; ++r) re(r) = error[static_cast<size_t>(r)] = n(rng);
+    const TransposeStep t = jacobianTransposeStep(J, error);
+    const Eigen::VectorXd d = je.transpose() * re;
+    ASSERT_EQ(t.direction.size(), static_cast<size_t>(cols));
+    for (int c = 0; c < cols; ++c) EXPECT_NEAR(t.direction[static_cast<size_t>(c)], d(c), 1e-12);
+    auto phi = [&](Real a) { return (re - a * (je * d)).squaredNorm(); };
+    EXPECT_GT(t.alpha, 0.0);
+    const Real da = 1e-4 * t.alpha;
+    EXPECT_NEAR((phi(t.alpha + da) - phi(t.alpha - da)) / (2.0 * da), 0.0, 1e-8 * (1.0 + phi(0.0)));
+    EXPECT_LT(phi(t.alpha), phi(0.9 * t.alpha));
+    EXPECT_LT(phi(t.alpha), phi(1.1 * t.alpha));
+  }
+}
+
+TEST(IK_7_JacobianTransposeStep, IdentityGivesTheErrorAndAStationaryPointGivesNoLength) {
+  Matrix I(3, 3);
+  for (int k = 0; k < 3; ++k) I(k, k) = 1.0;
+  const TransposeStep t = jacobianTransposeStep(I, {0.3, -0.2, 0.5});
+  EXPECT_NEAR(t.alpha, 1.0, 1e-15);
+  EXPECT_NEAR(t.direction[1], -0.2, 1e-15);
+  // r orthogonal to every column: no descent direction, α = 0 (the solver stops).
+  Matrix J(3, 2);
+  J(0, 0) = 1.0;
+  J(1, 1) = 2.0;
+  const TransposeStep s = jacobianTransposeStep(J, {0.0, 0.0, 1.0});
+  EXPECT_EQ(s.alpha, 0.0);
+  for (Real x : s.direction) EXPECT_EQ(x, 0.0);
 }
 
 TEST(IK_5_FabrikPasses, KeepTheSegmentLengthsAndPinTheEnds) {

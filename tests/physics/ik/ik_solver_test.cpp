@@ -3,11 +3,12 @@
 // is solved, whatever the state of the others. Hence:
 //   IK_1  the analytic solver (IK-1's single-joint rotation in its ball and free joints),
 //   IK_2  CCD (IK-2's joint update),
-//   IK_3  the Jacobian methods that are not an exercise themselves (JT, pinv, SDLS, L-BFGS) on
+//   IK_3  the Jacobian methods that are not an exercise themselves (pinv, SDLS, L-BFGS) on
 //         IK-3's analytic columns,
 //   IK_4  DLS (IK-4's step) on the central-difference Jacobian (JacobianSource::CentralDifferences),
 //         so that IK-3's columns play no part,
 //   IK_5  FABRIK (IK-5's passes),
+//   IK_7  the Jacobian transpose (IK-7's step and length) on the central-difference Jacobian,
 // all with joint limits off (IK-6's clamp is its own exercise: ik_limits_test.cpp) and the methods as
 // published (no restarts, no step clamp, no line search of the Jacobian methods).
 //
@@ -161,11 +162,18 @@ TEST(IK_4_DampedLeastSquaresSolver, ReachesRandomReachableTargets) {
   expectRandomTargets(chain(JointType::Hinge), o, 0.99, "10 hinges", kFdTargets);
 }
 
+// ---- IK-7: the Jacobian transpose on the central-difference Jacobian -----------------------------
+
+TEST(IK_7_JacobianTransposeSolver, ReachesRandomReachableTargets) {
+  const SolveOptions o = unlimited(SolverKind::JacobianTranspose, JacobianSource::CentralDifferences);
+  expectRandomTargets(chain(JointType::Ball), o, 0.99, "10 ball joints", kFdTargets);
+  expectRandomTargets(chain(JointType::Hinge), o, 0.99, "10 hinges", kFdTargets);
+}
+
 // ---- IK-3: the other Jacobian methods on IK-3's columns ------------------------------------------
 
 TEST(IK_3_JacobianMethods, ReachRandomReachableTargets) {
-  for (SolverKind kind :
-       {SolverKind::JacobianTranspose, SolverKind::PseudoInverse, SolverKind::SelectivelyDamped, SolverKind::Lbfgs}) {
+  for (SolverKind kind : {SolverKind::PseudoInverse, SolverKind::SelectivelyDamped, SolverKind::Lbfgs}) {
     expectRandomTargets(chain(JointType::Ball), unlimited(kind), 0.99, "10 ball joints");
     expectRandomTargets(chain(JointType::Hinge), unlimited(kind), 0.99, "10 hinges");
   }
@@ -232,8 +240,8 @@ void expectSingularPosesHandled(TaggedMethod m) {
 constexpr TaggedMethod kCcd{SolverKind::Ccd, JacobianSource::Analytic};
 constexpr TaggedMethod kFabrik{SolverKind::Fabrik, JacobianSource::Analytic};
 constexpr TaggedMethod kDls{SolverKind::DampedLeastSquares, JacobianSource::CentralDifferences};
-constexpr TaggedMethod kIk3Methods[] = {{SolverKind::JacobianTranspose, JacobianSource::Analytic},
-                                        {SolverKind::PseudoInverse, JacobianSource::Analytic},
+constexpr TaggedMethod kTranspose{SolverKind::JacobianTranspose, JacobianSource::CentralDifferences};
+constexpr TaggedMethod kIk3Methods[] = {{SolverKind::PseudoInverse, JacobianSource::Analytic},
                                         {SolverKind::SelectivelyDamped, JacobianSource::Analytic},
                                         {SolverKind::GradientDescent, JacobianSource::Analytic},
                                         {SolverKind::Lbfgs, JacobianSource::Analytic}};
@@ -241,6 +249,9 @@ constexpr TaggedMethod kIk3Methods[] = {{SolverKind::JacobianTranspose, Jacobian
 TEST(IK_2_CcdSolver, StretchesTowardUnreachableTargetsAndComesBack) { expectStretchAndReturn(kCcd); }
 TEST(IK_5_FabrikSolver, StretchesTowardUnreachableTargetsAndComesBack) { expectStretchAndReturn(kFabrik); }
 TEST(IK_4_DampedLeastSquaresSolver, StretchesTowardUnreachableTargetsAndComesBack) { expectStretchAndReturn(kDls); }
+TEST(IK_7_JacobianTransposeSolver, StretchesTowardUnreachableTargetsAndComesBack) {
+  expectStretchAndReturn(kTranspose);
+}
 TEST(IK_3_JacobianMethods, StretchTowardUnreachableTargetsAndComeBack) {
   for (const TaggedMethod& m : kIk3Methods) expectStretchAndReturn(m);
 }
@@ -248,6 +259,9 @@ TEST(IK_3_JacobianMethods, StretchTowardUnreachableTargetsAndComeBack) {
 TEST(IK_2_CcdSolver, SingularPosesGiveFiniteResultsAndAClearStatus) { expectSingularPosesHandled(kCcd); }
 TEST(IK_5_FabrikSolver, SingularPosesGiveFiniteResultsAndAClearStatus) { expectSingularPosesHandled(kFabrik); }
 TEST(IK_4_DampedLeastSquaresSolver, SingularPosesGiveFiniteResultsAndAClearStatus) { expectSingularPosesHandled(kDls); }
+TEST(IK_7_JacobianTransposeSolver, SingularPosesGiveFiniteResultsAndAClearStatus) {
+  expectSingularPosesHandled(kTranspose);
+}
 TEST(IK_3_JacobianMethods, SingularPosesGiveFiniteResultsAndAClearStatus) {
   for (const TaggedMethod& m : kIk3Methods) expectSingularPosesHandled(m);
 }
