@@ -126,8 +126,7 @@ Vec3 springBallForce(const SpringDesc& d, const BallState& s) {
   // STUB: return exercises::notImplemented("HELLO-3", Vec3(0.0), d, s);
 }
 
-BallState symplecticEulerStep(const BallState& state, const Vec3& acceleration,
-                              Real h) {
+BallState symplecticEulerStep(const BallState& state, const Vec3& acceleration, Real h) {
   // BEGIN SOLUTION
   BallState next;
   next.velocity = state.velocity + h * acceleration;

@@ -87,7 +87,8 @@ TEST(HELLO_4_SymplecticEuler, ConstantAccelerationMatchesTheSummedRecurrence) {
     for (int n = 1; n <= 50; ++n) {
       s = symplecticEulerStep(s, a, h);
       const BallState expected = symplecticClosedForm(s0, a, h, n);
-      worst = std::max({worst, glm::length(s.position - expected.position), glm::length(s.velocity - expected.velocity)});
+      worst =
+          std::max({worst, glm::length(s.position - expected.position), glm::length(s.velocity - expected.velocity)});
     }
     // 50 steps of O(10) values: rounding well under 1e-12.
     EXPECT_LT(worst, 1e-12) << "h " << h;
@@ -135,9 +136,9 @@ TEST(HELLO_5_SpringEnergy, GrowsByTheKineticEnergyAndHasTheForceAsMinusItsGradie
   const Real l = 2.2;
   const Vec3 x = desc.anchor - Vec3(0.0, l, 0.0);
   const Real step = 1e-6;
-  const Real dEdy =
-      (springEnergy(desc, {x + Vec3(0.0, step, 0.0), Vec3(0.0)}) - springEnergy(desc, {x - Vec3(0.0, step, 0.0), Vec3(0.0)})) /
-      (2.0 * step);
+  const Real dEdy = (springEnergy(desc, {x + Vec3(0.0, step, 0.0), Vec3(0.0)}) -
+                     springEnergy(desc, {x - Vec3(0.0, step, 0.0), Vec3(0.0)})) /
+                    (2.0 * step);
   EXPECT_NEAR(dEdy, desc.mass * desc.gravity - desc.stiffness * (l - desc.restLength), 1e-6);
   // Stretch and compression by the same amount store the same elastic energy (gravity off).
   desc.gravity = 0.0;
