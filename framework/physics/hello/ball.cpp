@@ -108,12 +108,9 @@ Status validate(const SpringDesc& d) {
   return Status::success();
 }
 
-namespace {
-constexpr Real kMinSpringLength = 1e-12;  // [m] a shorter spring has no direction
-}
-
 Vec3 springBallForce(const SpringDesc& d, const BallState& s) {
   // BEGIN SOLUTION
+  constexpr Real kMinSpringLength = 1e-12;  // [m] a shorter spring has no direction
   const Vec3 weight(0.0, -d.mass * d.gravity, 0.0);
   const Vec3 drag = -d.drag * s.velocity;
   const Vec3 fromAnchor = s.position - d.anchor;
