@@ -31,6 +31,12 @@ if [[ -x "$build/bin/pba-hello" ]]; then
   echo "wrote docs/images/hello-lecture.png"
   count=$((count + 1))
 fi
+# The spring ball after 8 s, its energy plot decayed (HELLO-5's figure in the workbook).
+if [[ -x "$build/bin/pba-hello" ]]; then
+  "${run[@]}" "$build/bin/pba-hello" --scene spring --frames 480 --screenshot "$root/docs/images/hello-spring-energy.png" >/dev/null
+  echo "wrote docs/images/hello-spring-energy.png"
+  count=$((count + 1))
+fi
 # The Jacobian view of the IK lab (heat map and singular values), for the workbook.
 if [[ -x "$build/bin/pba-ik" ]]; then
   "${run[@]}" "$build/bin/pba-ik" --scene tree --set solver=dls --frames 150 --screenshot "$root/docs/images/ik-jacobian.png" >/dev/null

@@ -1,13 +1,12 @@
 // Hello lab, scene "spring": a ball hanging from a damped spring (Lobb notes, damped spring force).
-// Drag the ball with the left mouse button, let go and watch the oscillation decay. A preview of the
-// particles lab: the force is PART-4's damped spring, the step PART-2's symplectic Euler.
+// Drag the ball with the left mouse button, let go and watch the oscillation decay. The force is HELLO-3,
+// the step HELLO-4's symplectic Euler, the plotted energy HELLO-5.
 #include <cmath>
 #include <cstdio>
 
 #include "app/scene_registry.h"
 #include "physics/core/basis.h"
 #include "physics/hello/ball.h"
-#include "physics/ode/integrators.h"
 
 namespace {
 using namespace pba;
@@ -40,10 +39,7 @@ class SpringScene final : public app::Scene {
   }
   void step(Real dt) override {
     if (dragging_) return;
-    ball_.setDesc(desc_);
-    ball_.setBall(state_);
-    ode::symplecticEulerStep(ball_, dt, work_);
-    state_ = ball_.ball();
+    state_ = hello::symplecticEulerStep(state_, hello::springBallForce(desc_, state_) / desc_.mass, dt);
   }
   void draw(DebugDraw& d) const override {
     d.box(desc_.anchor + Vec3(0, 0.06, 0), Vec3(0.3, 0.06, 0.3), Quat(1, 0, 0, 0), colors::kGrey);
@@ -106,8 +102,6 @@ class SpringScene final : public app::Scene {
 
   hello::SpringDesc desc_;
   hello::BallState state_;
-  hello::SpringBallSystem ball_;  // state_ as an ODE system, for the step
-  ode::Workspace work_;
   bool dragging_ = false;
 };
 

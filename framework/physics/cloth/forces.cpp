@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/exercises/not_implemented.h"
+#include "physics/springs/spring_network.h"
 
 namespace pba::cloth {
 namespace {
@@ -26,13 +27,10 @@ void accumulateSpringForces(std::span<const Link> springs, const ClothMaterial& 
   const std::array<Real, kLinkKinds> k = springStiffness(m);
   const Real kd = withDamping ? m.springDamping : 0.0;
   for (const Link& s : springs) {
-    const Vec3 r = x[s.j] - x[s.i];
-    const Real l = glm::length(r);
-    if (l < kMinLength) continue;
-    const Vec3 n = r / l;
-    const Real magnitude = k[index(s.kind)] * (l - s.restLength) + kd * glm::dot(n, v[s.j] - v[s.i]);
-    f[s.i] += magnitude * n;
-    f[s.j] -= magnitude * n;
+    // PART-4, the particles lab's damped spring: the cloth holds no copy of it.
+    const Vec3 fi = springs::dampedSpringForce(x[s.i], x[s.j], v[s.i], v[s.j], k[index(s.kind)], s.restLength, kd);
+    f[s.i] += fi;
+    f[s.j] -= fi;
   }
 }
 

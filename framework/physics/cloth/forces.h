@@ -37,7 +37,8 @@ std::array<Real, kLinkKinds> springStiffness(const ClothMaterial& m);
 /// XPBD compliance [m/N] of the distance constraints of each LinkKind (Bend: the distance bending links).
 std::array<Real, kLinkKinds> constraintCompliance(const ClothMaterial& m);
 
-/// Adds the springs' forces [N] to f. With `withDamping` false only the elastic part k (l − L) n.
+/// Adds the springs' forces [N] to f, each through PART-4 (springs::dampedSpringForce). With `withDamping`
+/// false only the elastic part (the spring damping passed as 0).
 void accumulateSpringForces(std::span<const Link> springs, const ClothMaterial& m, std::span<const Vec3> x,
                             std::span<const Vec3> v, bool withDamping, std::span<Vec3> f);
 /// Σ ½ k (l − L)² over the springs [J].

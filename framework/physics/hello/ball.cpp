@@ -6,7 +6,6 @@
 #include "physics/core/validate.h"
 #include "physics/exercises/not_implemented.h"
 #include "physics/particles/collision.h"
-#include "physics/springs/spring_network.h"
 
 namespace pba::hello {
 
@@ -110,38 +109,28 @@ Status validate(const SpringDesc& d) {
 }
 
 Vec3 springBallForce(const SpringDesc& d, const BallState& s) {
-  const Vec3 spring =
-      springs::dampedSpringForce(s.position, d.anchor, s.velocity, Vec3(0.0), d.stiffness, d.restLength, d.damping);
-  return spring + Vec3(0.0, -d.mass * d.gravity, 0.0) - d.drag * s.velocity;
+  // BEGIN SOLUTION
+  constexpr Real kMinSpringLength = 1e-12;  // [m] a shorter spring has no direction
+  const Vec3 weight(0.0, -d.mass * d.gravity, 0.0);
+  const Vec3 drag = -d.drag * s.velocity;
+  const Vec3 fromAnchor = s.position - d.anchor;
+  const Real length = glm::length(fromAnchor);
+  if (length < kMinSpringLength) return weight + drag;
+  const Vec3 axis = fromAnchor / length;
+  const Real tension = d.stiffness * (length - d.restLength) + d.damping * glm::dot(axis, s.velocity);
+  return weight + drag - tension * axis;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("HELLO-3", Vec3(0.0), d, s);
 }
 
-SpringBallSystem::SpringBallSystem(const SpringDesc& desc, const BallState& state)
-    : OwnedStateSystem(std::vector<Real>(3), std::vector<Real>(3), std::vector<Real>(3)) {
-  setDesc(desc);
-  setBall(state);
-}
-
-void SpringBallSystem::setDesc(const SpringDesc& desc) {
-  desc_ = desc;
-  std::fill(w_.begin(), w_.end(), 1.0 / desc_.mass);
-}
-
-BallState SpringBallSystem::ball() const {
-  return {Vec3(positions()[0], positions()[1], positions()[2]),
-          Vec3(velocities()[0], velocities()[1], velocities()[2])};
-}
-
-void SpringBallSystem::setBall(const BallState& state) {
-  for (int k = 0; k < 3; ++k) {
-    positions()[static_cast<std::size_t>(k)] = state.position[k];
-    velocities()[static_cast<std::size_t>(k)] = state.velocity[k];
-  }
-  stateChanged();
-}
-
-void SpringBallSystem::force(Real, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const {
-  const Vec3 f = springBallForce(desc_, BallState{Vec3(q[0], q[1], q[2]), Vec3(v[0], v[1], v[2])});
-  for (int k = 0; k < 3; ++k) out[static_cast<std::size_t>(k)] = f[k];
+BallState symplecticEulerStep(const BallState& state, const Vec3& acceleration, Real h) {
+  // BEGIN SOLUTION
+  BallState next;
+  next.velocity = state.velocity + h * acceleration;
+  next.position = state.position + h * next.velocity;
+  return next;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("HELLO-4", state, acceleration, h);
 }
 
 Real springExtension(const SpringDesc& d, const BallState& s) {
@@ -149,10 +138,20 @@ Real springExtension(const SpringDesc& d, const BallState& s) {
 }
 
 Real springEnergy(const SpringDesc& d, const BallState& s) {
-  const Real e = springExtension(d, s);
-  return 0.5 * d.mass * glm::dot(s.velocity, s.velocity) + 0.5 * d.stiffness * e * e +
-         d.mass * d.gravity * (s.position.y - d.anchor.y);
+  // BEGIN SOLUTION
+  const Real stretch = springExtension(d, s);
+  const Real kinetic = 0.5 * d.mass * glm::dot(s.velocity, s.velocity);
+  const Real elastic = 0.5 * d.stiffness * stretch * stretch;
+  const Real gravitational = d.mass * d.gravity * (s.position.y - d.anchor.y);
+  return kinetic + elastic + gravitational;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("HELLO-5", Real(0.0), d, s);
 }
+
+// Start-up probes: tell the lab whether HELLO-3, HELLO-4 and HELLO-5 are still stubs.
+PBA_EXERCISE_PROBE(springBallForce(SpringDesc{}, BallState{}));
+PBA_EXERCISE_PROBE(symplecticEulerStep(BallState{}, Vec3(0.0), 0.01));
+PBA_EXERCISE_PROBE(springEnergy(SpringDesc{}, BallState{}));
 
 BallState springEquilibrium(const SpringDesc& d) {
   // k (l − L) = m g  ⇒  l = L + m g / k, straight below the anchor.

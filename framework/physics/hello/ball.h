@@ -5,15 +5,13 @@
 // Equations of motion (Lobb notes, "Particle" and "Damping"):
 //   m dv/dt = m g − c v            linear (viscous) air drag, c [N·s/m]
 // The ground contact is the particles lab's contact model (particles/collision.h): approach speed at the
-// contact time, resting contact below a resting speed, HELLO-2 as the bounce. The spring ball is a
-// preview of the particles lab: the damped spring force of PART-4 (springs/spring_network.h) stepped by
-// PART-2's symplectic Euler (ode/integrators.h).
+// contact time, resting contact below a resting speed, HELLO-2 as the bounce. The spring ball runs on
+// chapter 0 alone: its force is HELLO-3, its step HELLO-4 (symplectic Euler) and its energy HELLO-5.
 #include <optional>
 #include <string>
 
 #include "physics/core/result.h"
 #include "physics/core/types.h"
-#include "physics/ode/ode_system.h"
 
 namespace pba::hello {
 
@@ -112,29 +110,49 @@ struct SpringDesc {
 
 Status validate(const SpringDesc& desc);
 
-/// Total force on the spring ball: the damped spring of PART-4 (springs::dampedSpringForce, the anchor at
-/// rest) + gravity + drag [N].
+// ***** HELLO-3: the forces on the spring ball (Lobb notes, "Damped spring"; Workbook §6.5) *****
+// Inputs: the spring and the ball (SpringDesc: anchor [m], stiffness k [N/m], rest length L [m], damping
+// along the spring [N·s/m], air drag [N·s/m], mass [kg], gravity [m/s²] along −y) and the ball's state
+// (centre [m], velocity [m/s], world frame; the anchor does not move). Output: the total force on the
+// ball [N], world frame.
+// (1) Find the spring's current length and the unit direction along it. Which way does a stretched
+//     spring pull the ball: towards the anchor or away from it? What must happen when the ball sits on
+//     the anchor and the direction is undefined?
+// (2) The elastic part is proportional to how far the length is from the rest length.
+// (3) The spring's damping resists only the rate at which the length changes: which part of the
+//     velocity is that? Motion across the spring must not be damped by it.
+// (4) Add the weight and the air drag (it opposes the whole velocity).
+// Check: at the equilibrium of springEquilibrium() at rest the total force is zero; without spring
+// damping the force is minus the gradient of the spring and gravity potentials, minus the drag.
+// *****
 Vec3 springBallForce(const SpringDesc& desc, const BallState& state);
 
-/// The spring ball as a second-order system (3 coordinates), so that the ODE layer's integrators step it:
-/// the scene uses symplectic Euler (PART-2, Lobb's "simple loop"), stable for the spring at the lab's
-/// step sizes, unlike explicit Euler.
-class SpringBallSystem final : public ode::OwnedStateSystem {
- public:
-  explicit SpringBallSystem(const SpringDesc& desc = {}, const BallState& state = {});
-  const SpringDesc& desc() const { return desc_; }
-  /// Changes the spring or the ball (the scene's sliders, between steps); the state stays.
-  void setDesc(const SpringDesc& desc);
-  BallState ball() const;
-  void setBall(const BallState& state);
-  void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
+// ***** HELLO-4: the symplectic Euler step (Lobb notes, "simple loop"; Workbook §6.6) *****
+// Inputs: the ball's state at time t (position [m], velocity [m/s]), the acceleration a(t) [m/s²] taken
+// at that state and the step h [s]. Output: the state at t + h.
+// (1) This method changes the velocity first: with which acceleration?
+// (2) Then it moves the position: with the velocity of the start or of the end of the step? Compare
+//     with HELLO-1, which makes the other choice.
+// Check: on an undamped spring the energy oscillates in a narrow band and does not drift, while
+// explicit Euler's grows by a fixed factor every step; with constant a the position after n steps
+// is ahead of the exact parabola by an error proportional to h.
+// *****
+BallState symplecticEulerStep(const BallState& state, const Vec3& acceleration, Real h);
 
- private:
-  SpringDesc desc_;
-};
-
-/// Extension |d| − L [m] and total energy (kinetic + spring + gravity, gravity measured from the anchor) [J].
+/// Extension |d| − L [m]: the spring's length minus its rest length.
 Real springExtension(const SpringDesc& desc, const BallState& state);
+
+// ***** HELLO-5: the spring ball's energy (Workbook §6.5, §6.6) *****
+// Inputs: the spring (SpringDesc) and the ball's state (centre [m], velocity [m/s], world frame). Output:
+// the total mechanical energy [J].
+// (1) The energy of motion of the ball.
+// (2) The energy stored in the spring: it depends only on how far the length is from the rest length,
+//     and is the same for a stretch and a compression of the same size (springExtension helps).
+// (3) The gravitational energy, measured from the anchor's height (so it is negative below the anchor).
+// (4) Their sum. Damping and drag store no energy: they only take it away.
+// Check: the energy's gradient with respect to the position is minus the spring and gravity force; on
+// an exact undamped oscillation the energy stays constant.
+// *****
 Real springEnergy(const SpringDesc& desc, const BallState& state);
 
 /// Static equilibrium: the ball hanging straight below the anchor at rest.

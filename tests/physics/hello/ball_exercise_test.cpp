@@ -1,7 +1,7 @@
 // Exercise tests of the hello lab. Suite names carry the exercise tag (HELLO_1_…, HELLO_2_…) so that
 // ./pba grade can run them per exercise; each depends on its own exercise only (the HELLO-2 tests fly the
-// ball exactly, not with HELLO-1). Expected values come from closed forms computed here. The last suite
-// is PART-4's: the spring ball's force.
+// ball exactly, not with HELLO-1). Expected values come from closed forms computed here. The spring
+// ball's exercises (HELLO-3..5) are in spring_ball_exercise_test.cpp.
 #include <cmath>
 #include <vector>
 
@@ -179,31 +179,6 @@ TEST(HELLO_2_GroundBounce, ADroppedBallBouncesAsOftenAsTheClosedFormSaysThenRest
     EXPECT_EQ(glm::length(s.velocity), 0.0);
     EXPECT_NEAR(heightAboveGround(desc, s), 0.0, 1e-12);
   }
-}
-
-TEST(PART_4_HelloSpring, TheBallFeelsMinusTheGradientOfTheSpringAndGravityPotentialsAndTheDrag) {
-  // U(x) = k (|x − a| − L)²/2 + m g y; without spring damping F = −∇U − c v. Central differences of U,
-  // step 1e-6 m: truncation O(k step²), rounding O(1e-16 U/step) ≈ 1e-9 N.
-  SpringDesc desc;
-  desc.damping = 0.0;
-  const BallState s{{0.3, 1.2, -0.4}, {0.5, -0.2, 0.1}};
-  auto potential = [&](const Vec3& x) {
-    const Real e = glm::length(x - desc.anchor) - desc.restLength;
-    return 0.5 * desc.stiffness * e * e + desc.mass * desc.gravity * x.y;
-  };
-  const Real step = 1e-6;
-  Vec3 gradient(0.0);
-  for (int i = 0; i < 3; ++i) {
-    Vec3 dx(0.0);
-    dx[i] = step;
-    gradient[i] = (potential(s.position + dx) - potential(s.position - dx)) / (2 * step);
-  }
-  EXPECT_VEC3_NEAR(springBallForce(desc, s), -gradient - desc.drag * s.velocity, 1e-7);
-  // And the system the scene steps reports the same force.
-  const SpringBallSystem ball(desc, s);
-  std::vector<Real> f(3);
-  ball.force(0.0, ball.positions(), ball.velocities(), f);
-  EXPECT_VEC3_NEAR(Vec3(f[0], f[1], f[2]), springBallForce(desc, s), 0.0);
 }
 
 }  // namespace
