@@ -46,7 +46,9 @@ student="$(cd "$student" && pwd)"
 work="${work:-$root/build/mark/$(basename "$student")}"
 jobs="${PBA_JOBS:-2}"
 build_s="${PBA_MARK_BUILD_S:-1200}" test_s="${PBA_MARK_TEST_S:-600}" run_s="${PBA_MARK_RUN_S:-120}"
-cache="${PBA_MARK_CCACHE_DIR:-$root/build/ccache}"
+# The compiler cache of this repository's release build (its PBA_CCACHE_DIR), unless one is given.
+cache="${PBA_MARK_CCACHE_DIR:-$(sed -n 's/^PBA_CCACHE_DIR:PATH=//p' "$root/build/release/CMakeCache.txt" 2>/dev/null)}"
+cache="${cache:-$root/build/ccache}"
 
 rm -rf "$work" && mkdir -p "$work" || { echo "mark: cannot create $work" >&2; exit 1; }
 work="$(cd "$work" && pwd)"

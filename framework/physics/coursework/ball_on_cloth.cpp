@@ -55,7 +55,7 @@ Result<BallOnCloth> buildBallOnCloth(const BallOnClothDesc& desc) {
   return scene;
 }
 
-void stepBallOnCloth(BallOnCloth& scene, Real h) {
+void stepBallOnCloth([[maybe_unused]] BallOnCloth& scene, [[maybe_unused]] Real h) {
   // BEGIN SOLUTION
   cloth::Cloth& c = scene.cloth;
   Ball& ball = scene.ball;

@@ -2,6 +2,7 @@
 // check the same behaviour with other gaits, proportions and goals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include "physics/coursework/walker.h"
@@ -49,6 +50,10 @@ TEST(CW1_1_FootOffset, CycleIsContinuousAndPeriodic) {
     last = o;
   }
   EXPECT_VEC3_NEAR(footOffset(kGait, 1.3), footOffset(kGait, 0.3), 1e-12);
+  // Over the cycle the foot ranges over the ground the body covers while it is planted, stride·dutyFactor.
+  Real lo = 1e9, hi = -1e9;
+  for (int k = 0; k < 1000; ++k) lo = std::min(lo, footOffset(kGait, k * 1e-3).x), hi = std::max(hi, footOffset(kGait, k * 1e-3).x);
+  EXPECT_NEAR(hi - lo, kGait.stride * kGait.dutyFactor, 1e-3);
 }
 
 const Vec3 kShoulder{0.0, 1.45, -0.19};
@@ -103,6 +108,10 @@ TEST(CW1_Walker, BonesKeepTheirLengthsAndStanceFeetStayPut) {
     }
     previousStance = stance;
     previousLeft = p.feet[0];
+    if (frame == 155) {  // t = 1.3 s: the reach is complete, and the goal is in reach of the walking body
+      SCOPED_TRACE("the reach at 1.3 s");
+      EXPECT_VEC3_NEAR(p.hands[1], desc.reachGoal, 1e-3);
+    }
   }
 }
 
@@ -113,6 +122,9 @@ TEST(CW1_Walker, RightHandArrivesAtAGoalInReach) {
   WalkerState state;
   for (int frame = 0; frame < 240; ++frame) stepWalker(desc, state, 1.0 / 120.0);  // 2 s > start + duration
   EXPECT_VEC3_NEAR(state.pose.hands[1], desc.reachGoal, 1e-3);
+  // Standing at the start of the cycle: the left foot planted ahead of its hip, the right one behind.
+  EXPECT_GT(state.pose.feet[0].x - state.pose.pelvis.x, 0.1);
+  EXPECT_LT(state.pose.feet[1].x - state.pose.pelvis.x, -0.05);
 }
 
 }  // namespace

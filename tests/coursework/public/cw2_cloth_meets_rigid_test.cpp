@@ -19,10 +19,14 @@ TEST(CW2_1_BallContact, PenetratingParticleEndsOnTheSphereAndMomentumIsKept) {
   EXPECT_LT(glm::dot(k.ball, xp - xb), 0.0);
 }
 
-TEST(CW2_1_BallContact, OutsidePointIsLeftAlone) {
-  const BallContact k = ballParticleContact(Vec3(0.3, 0.0, 0.0), 1.0, Vec3(0.0), 1.0, 0.2);
-  EXPECT_VEC3_NEAR(k.particle, Vec3(0.0), 0.0);
-  EXPECT_VEC3_NEAR(k.ball, Vec3(0.0), 0.0);
+TEST(CW2_1_BallContact, OnlyPointsInsideAreMoved) {
+  const BallContact outside = ballParticleContact(Vec3(0.3, 0.0, 0.0), 1.0, Vec3(0.0), 1.0, 0.2);
+  EXPECT_VEC3_NEAR(outside.particle, Vec3(0.0), 0.0);
+  EXPECT_VEC3_NEAR(outside.ball, Vec3(0.0), 0.0);
+  // Just inside, equal masses: each moves half of the 0.01 m overlap.
+  const BallContact inside = ballParticleContact(Vec3(0.19, 0.0, 0.0), 1.0, Vec3(0.0), 1.0, 0.2);
+  EXPECT_VEC3_NEAR(inside.particle, Vec3(0.005, 0.0, 0.0), 1e-12);
+  EXPECT_VEC3_NEAR(inside.ball, Vec3(-0.005, 0.0, 0.0), 1e-12);
 }
 
 TEST(CW2_1_BallContact, ImmovableBallMovesOnlyTheParticle) {
