@@ -42,7 +42,7 @@ for path, tag in (("framework/physics/coursework/walker.cpp", "CW1-2"),
                   ("framework/physics/coursework/ball_on_cloth.cpp", "CW2-2")):
     full = f"{sys.argv[1]}/{path}"
     text = open(full, encoding="utf-8").read()
-    block = re.compile(r"[ \t]*// BEGIN SOLUTION\n.*?// END SOLUTION\n([ \t]*)// STUB: ([^\n]*\"" + tag + r"\"[^\n]*)\n", re.S)
+    block = re.compile(r"[ \t]*// BEGIN SOLUTION\n(?:(?!// BEGIN SOLUTION).)*?// END SOLUTION\n([ \t]*)// STUB: ([^\n]*\"" + tag + r"\"[^\n]*)\n", re.S)
     text, n = block.subn(lambda m: m.group(1) + m.group(2) + "\n", text)
     assert n == 1, f"{path}: no solution block of {tag}"
     open(full, "w", encoding="utf-8").write(text)
