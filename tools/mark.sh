@@ -9,7 +9,8 @@
 #  3. Runs the coursework tests (label coursework) and the budget measurer of each coursework marked.
 #  4. Prints one row per criterion; writes the automatic ones to the CSV (coursework,criterion,weight,
 #     score,max) and lists the criteria a person marks as left to mark.
-# Every step has a time limit (PBA_MARK_BUILD_S, PBA_MARK_TEST_S, PBA_MARK_RUN_S): a tree that does not
+# Every step has a time limit (PBA_MARK_BUILD_S, PBA_MARK_TEST_S for all the tests, PBA_MARK_TEST_EACH_S,
+# PBA_MARK_RUN_S): a tree that does not
 # compile, crashes or hangs scores 0 on what it could not run, with a line naming the log.
 # Scores: a tests criterion earns weight × passed / tests matched; a budget criterion earns its weight when
 # the median frame time is within the budget, half within twice the budget, else 0, and 0 when the run
@@ -45,7 +46,8 @@ fi
 student="$(cd "$student" && pwd)"
 work="${work:-$root/build/mark/$(basename "$student")}"
 jobs="${PBA_JOBS:-2}"
-build_s="${PBA_MARK_BUILD_S:-1200}" test_s="${PBA_MARK_TEST_S:-600}" run_s="${PBA_MARK_RUN_S:-120}"
+build_s="${PBA_MARK_BUILD_S:-1200}" test_s="${PBA_MARK_TEST_S:-1200}" run_s="${PBA_MARK_RUN_S:-120}"
+test_each_s="${PBA_MARK_TEST_EACH_S:-60}"  # one test; the slowest takes about a second here
 # The compiler cache of this repository's release build (its PBA_CCACHE_DIR), unless one is given.
 cache="${PBA_MARK_CCACHE_DIR:-$(sed -n 's/^PBA_CCACHE_DIR:PATH=//p' "$root/build/release/CMakeCache.txt" 2>/dev/null)}"
 cache="${cache:-$root/build/ccache}"
@@ -77,21 +79,21 @@ if ! configure; then
   built=0
   echo "mark: FAILED: the tree does not configure (or took over ${build_s} s); every automatic criterion scores 0; log: $work/configure.log"
 elif ! build; then
-  if [[ $? != 124 ]] && grep -q 'Werror' "$work/build.log" && configure -DPBA_WARNINGS_AS_ERRORS=OFF && build; then
+  if [[ $? != 124 ]] && grep -q '\[-Werror=' "$work/build.log" && configure -DPBA_WARNINGS_AS_ERRORS=OFF && build; then
     echo "mark: note: the tree builds only without -Werror (warnings in $work/build.log)"
   else
     built=0
     echo "mark: FAILED: the coursework does not build (or took over ${build_s} s); every automatic criterion scores 0; log: $work/build.log"
-    grep -m 5 -E 'error' "$work/build.log" | sed 's/^/  /'
+    grep -m 5 -E ': (fatal )?error' "$work/build.log" | sed 's/^/  /'
   fi
 fi
 : >"$work/passed.txt"
 : >"$work/listed.txt"
 if [[ $built == 1 ]]; then
-  # The test list: ctest -N; the results: one line per test. A test over its TIMEOUT (120 s) fails.
+  # The test list: ctest -N; the results: one line per test. A test over its time limit fails.
   ctest --test-dir "$tree/build/release" -N -L '^coursework$' 2>/dev/null |
     sed -nE 's/^ *Test +#[0-9]+: ([^ ]+).*/\1/p' >"$work/listed.txt"
-  timeout "$test_s" ctest --test-dir "$tree/build/release" -L '^coursework$' -j "$jobs" --timeout 120 \
+  timeout "$test_s" ctest --test-dir "$tree/build/release" -L '^coursework$' -j "$jobs" --timeout "$test_each_s" \
     >"$work/tests.log" 2>&1
   status=$?
   [[ $status == 124 ]] && echo "mark: FAILED: the tests ran over ${test_s} s and were stopped; log: $work/tests.log"

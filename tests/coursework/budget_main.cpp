@@ -43,11 +43,19 @@ int main(int argc, char** argv) {
   int coursework = 0, frames = 600;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--coursework" && i + 1 < argc) coursework = std::atoi(argv[++i]);
-    else if (a == "--frames" && i + 1 < argc) frames = std::atoi(argv[++i]);
-    else { std::fprintf(stderr, "pba_coursework_budget: unknown argument '%s'\n", a.c_str()); return 2; }
+    if (a == "--coursework" && i + 1 < argc)
+      coursework = std::atoi(argv[++i]);
+    else if (a == "--frames" && i + 1 < argc)
+      frames = std::atoi(argv[++i]);
+    else {
+      std::fprintf(stderr, "pba_coursework_budget: unknown argument '%s'\n", a.c_str());
+      return 2;
+    }
   }
-  if (frames < 1) { std::fprintf(stderr, "pba_coursework_budget: --frames must be at least 1\n"); return 2; }
+  if (frames < 1) {
+    std::fprintf(stderr, "pba_coursework_budget: --frames must be at least 1\n");
+    return 2;
+  }
   bool ok = true;
   std::vector<double> ms;
   if (coursework == 1) {
@@ -61,7 +69,10 @@ int main(int argc, char** argv) {
       for (int side = 0; side < 2; ++side) ok = ok && finite(s.pose.feet[side]) && finite(s.pose.hands[side]);
   } else if (coursework == 2) {
     auto built = pba::coursework::buildBallOnCloth({});
-    if (!built) { std::fprintf(stderr, "pba_coursework_budget: %s\n", built.error().c_str()); return 1; }
+    if (!built) {
+      std::fprintf(stderr, "pba_coursework_budget: %s\n", built.error().c_str());
+      return 1;
+    }
     auto& scene = built.value();
     ms = timeFrames(frames, [&] {
       for (int sub = 0; sub < 4; ++sub) pba::coursework::stepBallOnCloth(scene, 1.0 / 240.0);
@@ -73,9 +84,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::string stubs;
-  for (const auto& tag : pba::exercises::notImplementedTagsUsed()) stubs += (stubs.empty() ? "\"" : ", \"") + tag + "\"";
-  std::printf("{\"coursework\": %d, \"frames\": %d, \"frame_ms\": {\"median\": %.6f, \"p95\": %.6f}, "
-              "\"finite\": %s, \"not_implemented\": [%s]}\n",
-              coursework, frames, percentile(ms, 0.5), percentile(ms, 0.95), ok ? "true" : "false", stubs.c_str());
+  for (const auto& tag : pba::exercises::notImplementedTagsUsed())
+    stubs += (stubs.empty() ? "\"" : ", \"") + tag + "\"";
+  std::printf(
+      "{\"coursework\": %d, \"frames\": %d, \"frame_ms\": {\"median\": %.6f, \"p95\": %.6f}, "
+      "\"finite\": %s, \"not_implemented\": [%s]}\n",
+      coursework, frames, percentile(ms, 0.5), percentile(ms, 0.95), ok ? "true" : "false", stubs.c_str());
   return 0;
 }

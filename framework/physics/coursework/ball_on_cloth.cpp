@@ -8,8 +8,8 @@
 
 namespace pba::coursework {
 
-BallContact ballParticleContact(const Vec3& particle, Real particleInverseMass, const Vec3& ball,
-                                Real ballInverseMass, Real radius) {
+BallContact ballParticleContact(const Vec3& particle, Real particleInverseMass, const Vec3& ball, Real ballInverseMass,
+                                Real radius) {
   // BEGIN SOLUTION
   // C = |x_p − x_b| − r ≥ 0; ∇_p C = n̂, ∇_b C = −n̂ with n̂ = (x_p − x_b)/|x_p − x_b|.
   const Vec3 d = particle - ball;

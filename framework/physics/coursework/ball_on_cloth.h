@@ -13,10 +13,10 @@ namespace pba::coursework {
 
 /// A solid ball [SI]: the rigid object of the coursework (no rotation: contacts are frictionless).
 struct Ball {
-  Vec3 position{0.0};     ///< [m] centre
-  Vec3 velocity{0.0};     ///< [m/s]
-  Real radius = 0.2;      ///< [m]
-  Real inverseMass = 2.0; ///< [1/kg]; 0 holds the ball where it is (a kinematic obstacle)
+  Vec3 position{0.0};      ///< [m] centre
+  Vec3 velocity{0.0};      ///< [m/s]
+  Real radius = 0.2;       ///< [m]
+  Real inverseMass = 2.0;  ///< [1/kg]; 0 holds the ball where it is (a kinematic obstacle)
 };
 
 /// The two corrections of one ball–particle contact [m].
@@ -38,23 +38,23 @@ struct BallContact {
 // Check: afterwards |x_p − x_b| = r; the momentum of the pair is unchanged (Δx_p / w_p + Δx_b / w_b = 0);
 // a point outside the sphere is left alone; with w_b = 0 only the particle moves.
 // *****
-BallContact ballParticleContact(const Vec3& particle, Real particleInverseMass, const Vec3& ball,
-                                Real ballInverseMass, Real radius);
+BallContact ballParticleContact(const Vec3& particle, Real particleInverseMass, const Vec3& ball, Real ballInverseMass,
+                                Real radius);
 
 /// The trampoline and the ball, with their defaults.
 struct BallOnClothDesc {
-  int resolution = 24;        ///< particles along each side of the square cloth, ≥ 2
-  Real size = 1.6;            ///< [m] side of the square, centred on (0, clothHeight, 0), horizontal
-  Real clothHeight = 1.0;     ///< [m]
-  Real massPerArea = 0.3;     ///< [kg/m²]
+  int resolution = 24;            ///< particles along each side of the square cloth, ≥ 2
+  Real size = 1.6;                ///< [m] side of the square, centred on (0, clothHeight, 0), horizontal
+  Real clothHeight = 1.0;         ///< [m]
+  Real massPerArea = 0.3;         ///< [kg/m²]
   Real stretchCompliance = 1e-6;  ///< α [m/N] of every distance constraint (0: inextensible)
-  Real ballRadius = 0.2;      ///< [m]
-  Real ballMass = 1.0;        ///< [kg] > 0
+  Real ballRadius = 0.2;          ///< [m]
+  Real ballMass = 1.0;            ///< [kg] > 0
   Vec3 ballStart{0.0, 1.8, 0.0};  ///< [m]
-  Vec3 ballVelocity{0.0};     ///< [m/s] initial
-  Real margin = 0.01;         ///< [m] added to the ball's radius for contacts
-  int iterations = 8;         ///< constraint sweeps per substep, ≥ 1
-  Real damping = 1.5;         ///< [1/s] linear damping rate of every velocity (air drag), ≥ 0
+  Vec3 ballVelocity{0.0};         ///< [m/s] initial
+  Real margin = 0.01;             ///< [m] added to the ball's radius for contacts
+  int iterations = 8;             ///< constraint sweeps per substep, ≥ 1
+  Real damping = 1.5;             ///< [1/s] linear damping rate of every velocity (air drag), ≥ 0
   Vec3 gravity{0.0, -9.81, 0.0};  ///< [m/s²]
 };
 
@@ -65,10 +65,10 @@ struct BallOnCloth {
   Vec3 gravity{0.0, -9.81, 0.0};  ///< [m/s²]
   Real margin = 0.01;             ///< [m]
   int iterations = 8;
-  Real damping = 1.5;             ///< [1/s]
-  Real time = 0.0;                ///< [s]
-  std::vector<Vec3> previous;     ///< scratch: positions at the start of a step
-  std::vector<Real> lambda;       ///< scratch: one XPBD multiplier per distance constraint
+  Real damping = 1.5;          ///< [1/s]
+  Real time = 0.0;             ///< [s]
+  std::vector<Vec3> previous;  ///< scratch: positions at the start of a step
+  std::vector<Real> lambda;    ///< scratch: one XPBD multiplier per distance constraint
 };
 
 /// Builds the scene; errors name the field ("resolution: must be at least 2").

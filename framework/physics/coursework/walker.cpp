@@ -14,8 +14,8 @@ Vec3 footOffset(const GaitDesc& gait, Real phase) {
   // The body covers stride·β during stance; the planted foot falls back by as much relative to it.
   const Real half = 0.5 * gait.stride * beta;
   if (u < beta) return {half - gait.stride * u, 0.0, 0.0};
-  const Real s = (u - beta) / (1.0 - beta);       // swing progress in [0, 1)
-  const Real eased = s * s * (3.0 - 2.0 * s);     // monotone, zero slope at both ends
+  const Real s = (u - beta) / (1.0 - beta);    // swing progress in [0, 1)
+  const Real eased = s * s * (3.0 - 2.0 * s);  // monotone, zero slope at both ends
   return {-half + 2.0 * half * eased, gait.stepHeight * std::sin(kPi * s), 0.0};
   // END SOLUTION
   // STUB: return exercises::notImplemented("CW1-1", Vec3(0.0), gait, phase);

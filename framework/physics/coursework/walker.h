@@ -52,17 +52,17 @@ Vec3 reachTarget(const Vec3& shoulder, Real reach, const Vec3& animatedHand, con
 /// The character's proportions, the gait and the reach, with their defaults (an adult of 1.75 m).
 struct WalkerDesc {
   GaitDesc gait;
-  Real hipHeight = 0.88;      ///< [m] pelvis height above the ground while walking
-  Real hipHalfWidth = 0.1;    ///< [m] from the pelvis centre to each hip joint (along z)
-  Real thigh = 0.46;          ///< [m] hip to knee
-  Real shin = 0.45;           ///< [m] knee to ankle
-  Real shoulderHeight = 1.45; ///< [m] above the ground
-  Real shoulderHalfWidth = 0.19;  ///< [m]
-  Real upperArm = 0.3;        ///< [m]
-  Real forearm = 0.28;        ///< [m]
+  Real hipHeight = 0.88;            ///< [m] pelvis height above the ground while walking
+  Real hipHalfWidth = 0.1;          ///< [m] from the pelvis centre to each hip joint (along z)
+  Real thigh = 0.46;                ///< [m] hip to knee
+  Real shin = 0.45;                 ///< [m] knee to ankle
+  Real shoulderHeight = 1.45;       ///< [m] above the ground
+  Real shoulderHalfWidth = 0.19;    ///< [m]
+  Real upperArm = 0.3;              ///< [m]
+  Real forearm = 0.28;              ///< [m]
   Vec3 reachGoal{1.5, 1.1, -0.45};  ///< [m] world point the right hand reaches for
-  Real reachStart = 0.5;      ///< [s] when the reach begins
-  Real reachDuration = 0.8;   ///< [s] from no reach to full reach (> 0)
+  Real reachStart = 0.5;            ///< [s] when the reach begins
+  Real reachDuration = 0.8;         ///< [s] from no reach to full reach (> 0)
 };
 
 /// The pose, world positions [m]. Index 0 is the left side (+z), 1 the right (−z).

@@ -16,7 +16,9 @@ namespace {
 using Rng = std::mt19937_64;
 using pba::test::uniform;
 
-Vec3 randomVec3(Rng& rng, Real lo, Real hi) { return {uniform(rng, lo, hi), uniform(rng, lo, hi), uniform(rng, lo, hi)}; }
+Vec3 randomVec3(Rng& rng, Real lo, Real hi) {
+  return {uniform(rng, lo, hi), uniform(rng, lo, hi), uniform(rng, lo, hi)};
+}
 
 GaitDesc randomGait(Rng& rng) {
   GaitDesc g;
@@ -62,7 +64,8 @@ TEST(CW1_1_FootOffsetHeldOut, SwingNeverMovesBackwardOverTheGround) {
     // Over one swing the foot covers a whole stride of ground (it was still for the rest of the cycle).
     const Real end = 1.0 - 1e-9;
     EXPECT_NEAR(g.stride * end + footOffset(g, end).x - (g.stride * g.dutyFactor + footOffset(g, g.dutyFactor).x),
-                g.stride, 1e-6) << "seed 7, trial " << trial;
+                g.stride, 1e-6)
+        << "seed 7, trial " << trial;
   }
 }
 

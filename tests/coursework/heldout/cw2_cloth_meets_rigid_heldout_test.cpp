@@ -29,7 +29,7 @@ TEST(CW2_1_BallContactHeldOut, RandomContactsLandOnTheSphereAndKeepMomentum) {
 TEST(CW2_1_BallContactHeldOut, DegenerateInputsMoveNothingButAGenuineContactDoes) {
   const BallContact genuine = ballParticleContact(Vec3(0.0, 0.0, 0.1), 1.0, Vec3(0.0), 0.0, 0.2);
   EXPECT_VEC3_NEAR(genuine.particle, Vec3(0.0, 0.0, 0.1), 1e-12);
-  for (const BallContact& k : {ballParticleContact(Vec3(0.0), 1.0, Vec3(0.0), 1.0, 0.2),    // at the centre
+  for (const BallContact& k : {ballParticleContact(Vec3(0.0), 1.0, Vec3(0.0), 1.0, 0.2),           // at the centre
                                ballParticleContact(Vec3(0.1, 0, 0), 0.0, Vec3(0.0), 0.0, 0.2)}) {  // both fixed
     EXPECT_TRUE(std::isfinite(k.particle.x) && std::isfinite(k.ball.x));
     EXPECT_VEC3_NEAR(k.particle, Vec3(0.0), 0.0);
@@ -89,7 +89,7 @@ TEST(CW2_2_CoupledStepHeldOut, FastBallStaysFiniteAndNeverEndsDeepInside) {
   }
   EXPECT_GT(deepestBallPenetration(scene), -0.01);
   EXPECT_LT(scene.ball.position.y, desc.ballStart.y - 0.5);  // it came down onto the cloth
-  EXPECT_LT(glm::length(scene.ball.velocity), 8.0);           // and the cloth took speed off it
+  EXPECT_LT(glm::length(scene.ball.velocity), 8.0);          // and the cloth took speed off it
 }
 
 }  // namespace

@@ -52,7 +52,8 @@ TEST(CW1_1_FootOffset, CycleIsContinuousAndPeriodic) {
   EXPECT_VEC3_NEAR(footOffset(kGait, 1.3), footOffset(kGait, 0.3), 1e-12);
   // Over the cycle the foot ranges over the ground the body covers while it is planted, stride·dutyFactor.
   Real lo = 1e9, hi = -1e9;
-  for (int k = 0; k < 1000; ++k) lo = std::min(lo, footOffset(kGait, k * 1e-3).x), hi = std::max(hi, footOffset(kGait, k * 1e-3).x);
+  for (int k = 0; k < 1000; ++k)
+    lo = std::min(lo, footOffset(kGait, k * 1e-3).x), hi = std::max(hi, footOffset(kGait, k * 1e-3).x);
   EXPECT_NEAR(hi - lo, kGait.stride * kGait.dutyFactor, 1e-3);
 }
 
