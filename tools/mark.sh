@@ -52,6 +52,9 @@ test_each_s="${PBA_MARK_TEST_EACH_S:-60}"  # one test; the slowest takes about a
 cache="${PBA_MARK_CCACHE_DIR:-$(sed -n 's/^PBA_CCACHE_DIR:PATH=//p' "$root/build/release/CMakeCache.txt" 2>/dev/null)}"
 cache="${cache:-$root/build/ccache}"
 
+# The work folder is emptied first: never one that holds the student's tree or this repository.
+work_abs="$(realpath -m "$work")"
+[[ "$student/" != "$work_abs/"* && "$root/" != "$work_abs/"* ]] || die2 "--work $work holds $student or $root"
 rm -rf "$work" && mkdir -p "$work" || { echo "mark: cannot create $work" >&2; exit 1; }
 work="$(cd "$work" && pwd)"
 tree="$work/tree"
