@@ -31,7 +31,7 @@ work="$(cd "$work" && pwd)"
 [[ -f "$build/lib/libpba_physics.so" ]] ||
   { echo "FAIL: $build/lib/libpba_physics.so not found (configure with PBA_PHYSICS_SHARED=ON, the default)"; exit 1; }
 # Tests that only this repository has (the checks of the exercise machinery itself, the house style).
-not_in_handout='^(exercises\.(student-release|catalog|golden-tolerance)|repository\.(formatted|builds-with-clang14))$'
+not_in_handout='^(exercises\.(student-release|catalog|golden-tolerance)|coursework\.mark|repository\.(formatted|builds-with-clang14))$'
 # The nested ctest runs read this build's test lists from a copy, so that their logs (Testing/) stay out
 # of the build's own; the tests themselves run as registered (this check is RUN_SERIAL: nothing runs beside).
 tests_dir="$work/ctest"
@@ -75,7 +75,7 @@ if [[ -n "$passed_exercise_tests" ]]; then
 fi
 echo "ok: all $total exercise tests fail against the stubs"
 echo "== every other test must pass"
-ctest --test-dir "$tests_dir" -E "$tags|$not_in_handout" -LE "^(ui|lab-screenshots)$" --output-on-failure -j "$jobs" ||
+ctest --test-dir "$tests_dir" -E "$tags|$not_in_handout" -LE "^(ui|lab-screenshots|coursework)$" --output-on-failure -j "$jobs" ||
   { echo "FAIL: non-exercise tests fail in the student release"; exit 1; }
 echo "== ./pba grade must report failures"
 if bash "$work/release/tools/grade.sh" "$tests_dir" "$work/release/resources/exercises.tsv" >"$work/grade.log"; then
@@ -84,6 +84,24 @@ fi
 echo "ok: grade reports $(grep -c ' FAIL ' "$work/grade.log") failing exercises"
 echo "== no solution's lines in the release"
 python3 "$src/tools/check_solution_leaks.py" "$src" "$work/release"
+
+echo "== the courseworks: held-out tests left out, public tests do not pass against the starter"
+[[ ! -e "$work/release/tests/coursework/heldout" ]] || { echo "FAIL: tests/coursework/heldout is in the release"; exit 1; }
+mapfile -t heldout_suites < <(grep -ohE 'TEST(_F)?\((CW[0-9]+_[A-Za-z0-9_]*HeldOut)' "$src"/tests/coursework/heldout/*.cpp |
+  sed -E 's/.*\(//' | sort -u)
+[[ ${#heldout_suites[@]} -gt 0 ]] || { echo "FAIL: no held-out coursework suites found in $src/tests/coursework/heldout"; exit 1; }
+# A test of a held-out suite, anywhere in the release (the rubric may name the suites; no file defines one).
+for suite in "${heldout_suites[@]}"; do
+  if grep -rqE "TEST(_F)?\\($suite," "$work/release"; then echo "FAIL: a test of the held-out suite $suite is in the release"; exit 1; fi
+done
+echo "ok: ${#heldout_suites[@]} held-out suites, none of their tests (nor their folder) in the release"
+set +e
+coursework_log="$(ctest --test-dir "$tests_dir" -L coursework-public --no-tests=error -j "$jobs" 2>&1)"
+set -e
+if grep -qE 'Test +#[0-9]+: .* Passed' <<<"$coursework_log"; then
+  echo "FAIL: these coursework tests pass against the starter:"; grep -E 'Test +#[0-9]+: .* Passed' <<<"$coursework_log"; exit 1
+fi
+echo "ok: no public coursework test passes against the starter"
 
 echo "student release check: ok"
 [[ "${PBA_CHECK_ISOLATION:-1}" == 0 ]] && exit 0

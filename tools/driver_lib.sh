@@ -157,6 +157,12 @@ pba_cmd_grade() {
   bash "$ROOT/tools/grade.sh" "$ROOT/build/$PBA_PRESET" "$ROOT/resources/exercises.tsv" "${PBA_ARGS[@]}"
 }
 
+# ./pba mark STUDENT_TREE [--coursework N] [--csv FILE]: marks a student's coursework (tools/mark.sh).
+pba_cmd_mark() {
+  [[ $# -ge 1 ]] || pba_die "usage: ./pba mark STUDENT_TREE [--coursework N] [--csv FILE]" 2
+  bash "$ROOT/tools/mark.sh" "$ROOT" "$@"
+}
+
 pba_cmd_student_release() {
   [[ $# -eq 1 ]] || pba_die "usage: ./pba student-release DIR" 2
   bash "$ROOT/tools/student_release.sh" "$ROOT" "$1"
