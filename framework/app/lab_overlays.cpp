@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "app/exercise_catalog.h"
 #include "app/lab_ui.h"
 #include "physics/exercises/not_implemented.h"
 
@@ -132,9 +133,8 @@ void banners(LabSession& session, const UiState& ui) {
   ImVec4 colour = kAlertRed;
   if (const auto& guard = session.runner().guardMessage()) {
     text = *guard;
-  } else if (const auto stubs = exercises::notImplementedTags(); !stubs.empty()) {
-    for (const std::string& tag : stubs) text += (text.empty() ? "" : ", ") + tag;
-    text += " not implemented: this lab runs with a stub. Complete the starred TODO block, then ./pba grade.";
+  } else if (!session.exercises().empty()) {
+    text = stubBannerText(stubbedExercises(session.exercises(), exercises::notImplementedTags()));
     colour = kWarnOrange;
   }
   if (text.empty()) return;

@@ -23,14 +23,16 @@ constexpr float kWidgetWidthInFonts = 11.5f;  // slider width in font heights: l
 constexpr float kWidgetShare = 0.56f;         // at most this share of the panel's width (lecture mode)
 // Shares of the window's width the panel and the overlay column may take: in lecture mode both stay
 // narrow columns, so that the scene keeps most of a 1280×720 projector image.
-constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.27f;
+constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.22f;
+constexpr float kStripWidthInFonts = 2.2f;  // the collapsed panel (key C)
+constexpr float kMinWidgetShare = 0.40f;    // widgets keep at least this share of the panel for their labels' sake
 constexpr float kOverlayShare = 0.34f, kLectureOverlayShare = 0.26f;
 
 // Key, action: the help overlay's table (the same bindings in every lab, docs/architecture.md §3).
 const char* const kKeys[][2] = {
     {"Space / P", "pause or resume"},
     {"O", "single step (hold to repeat)"},
-    {",  .", "rewind one frame / forward one frame (the timeline strip scrubs)"},
+    {",  .", "one simulation step back / forward, Shift: one second (the timeline strip scrubs)"},
     {"R", "reset the scene"},
     {"[  ]", "previous / next scene"},
     {"1 - 9", "scene presets"},
@@ -39,6 +41,8 @@ const char* const kKeys[][2] = {
     {"F9", "start / stop recording (MP4 with ffmpeg, else PNG files; 60 frames/s of simulated time)"},
     {"L", "lecture mode (large fonts, high contrast)"},
     {"Tab", "hide or show the panels"},
+    {"C", "collapse the control panel to a strip / show it"},
+    {"M", "hide / show the plots"},
     {"F", "frame the scene"},
     {"Arrow keys", "nudge the target (IK goal) in the view plane"},
     {"PageUp / PageDown, Shift + Up / Down", "nudge the target away from / toward the camera"},
@@ -62,7 +66,26 @@ void helpMarker(const std::string& text) {
   }
 }
 
-void parameterWidgets(LabSession& session) {
+/// After a widget and its "(?)": records `label` in ui.clippedLabels when the row ran past the panel's
+/// right edge (ImGui cuts it off there: "solver_subste").
+void noteIfClipped(UiState& ui, const std::string& label) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x > right + 0.5f) ui.clippedLabels.push_back(label);
+}
+
+/// The widgets' width in the panel: what the longest label of this panel (with its "(?)") leaves, at most
+/// the width that reads well, at least kMinWidgetShare of the panel.
+float widgetWidth(const Scene& scene) {
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float label = ImGui::CalcTextSize("steps per dt").x;
+  for (const Param& p : scene.params().all())
+    if (!p.shown || p.shown()) label = std::max(label, ImGui::CalcTextSize((p.unit.empty() ? p.name : p.name + " [" + p.unit + "]").c_str()).x);
+  const float room = label + 2.0f * style.ItemInnerSpacing.x + style.ItemSpacing.x + ImGui::CalcTextSize("(?)").x;
+  return std::clamp(avail - room, kMinWidgetShare * avail, ImGui::GetFontSize() * kWidgetWidthInFonts);
+}
+
+void parameterWidgets(LabSession& session, UiState& ui) {
   // In an A/B run the panel edits the side chosen under Simulation; a parameter where B differs from A
   // has its name in B's colour.
   Scene& scene = session.editedRunner().scene();
@@ -92,6 +115,7 @@ void parameterWidgets(LabSession& session) {
         resetNeeded = resetNeeded || p.needsReset;
       }
       helpMarker(p.tooltip + "\nPress Enter to apply.");
+      noteIfClipped(ui, label);
       ImGui::PopID();
       continue;
     }
@@ -136,6 +160,7 @@ void parameterWidgets(LabSession& session) {
         break;  // handled above
     }
     helpMarker(p.tooltip + (p.needsReset ? "\nTakes effect on reset." : ""));
+    noteIfClipped(ui, label);
     // Sliders clamp to the declared range, so the value is always valid: slider extremes are safe.
     if (changed) {
       p.set(std::clamp(value, p.min, p.max));
@@ -186,7 +211,7 @@ void compareControls(LabSession& session) {
   if (ImGui::Button("End A/B")) session.endCompare();
 }
 
-void simulationControls(LabSession& session) {
+void simulationControls(LabSession& session, UiState& ui) {
   SceneRunner& runner = session.editedRunner();
   if (ImGui::Button(runner.paused() ? "Run (Space)" : "Pause (Space)")) session.togglePause();
   sameLineIfFits("Step (O)");
@@ -201,16 +226,22 @@ void simulationControls(LabSession& session) {
                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     runner.setDt(dt, /*keepAcrossScenes=*/false);
   helpMarker("Fixed time step of the simulation. Smaller is more accurate and more stable, and costs more.");
+  noteIfClipped(ui, "dt [s]");
   int substeps = runner.substeps();
-  if (ImGui::SliderInt("substeps", &substeps, 1, kMaxSubsteps, "%d", ImGuiSliderFlags_AlwaysClamp))
+  // Named apart from a solver's own "substeps" parameter (the cloth's, the ragdoll's): one name per control.
+  if (ImGui::SliderInt("steps per dt", &substeps, 1, kMaxSubsteps, "%d", ImGuiSliderFlags_AlwaysClamp))
     runner.setSubsteps(substeps);
-  helpMarker("Each step is split into this many substeps of dt / substeps.");
+  helpMarker(
+      "The runner takes this many steps of dt / N for each step dt, for any scene (--substeps N on the command "
+      "line). A solver's own substeps, where the scene has them, are a parameter of the scene below.");
+  noteIfClipped(ui, "steps per dt");
   double scale = runner.timeScale();
   const double lo = kMinTimeScale, hi = kMaxTimeScale;
   if (ImGui::SliderScalar("time scale", ImGuiDataType_Double, &scale, &lo, &hi, "%.2fx",
                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     runner.setTimeScale(scale);
   helpMarker("Slow motion below 1, fast forward above 1. The physics step dt does not change.");
+  noteIfClipped(ui, "time scale");
   ImGui::Text("t = %.3f s   steps = %lld", runner.simTime(), static_cast<long long>(runner.steps()));
 }
 
@@ -314,12 +345,23 @@ void mainPanel(LabSession& session, UiState& ui) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), cond);
   ImGui::SetNextWindowSize(ImVec2(panelWidthPixels(ui) - 8.0f, ImGui::GetIO().DisplaySize.y - 16), cond);
   const std::string title = "pba-" + session.lab() + "###panel";
+  if (ui.panelCollapsed) {  // a strip at the left edge: one button brings the panel back
+    ImGui::Begin(title.c_str(), nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar |
+                     ImGuiWindowFlags_NoCollapse);
+    if (ImGui::ArrowButton("##expand", ImGuiDir_Right)) ui.request(UiChange::TogglePanel);
+    noteWidget(ui, "expand_button");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the control panel (C)");
+    ImGui::End();
+    return;
+  }
   if (!ImGui::Begin(title.c_str())) {
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(
-      std::min(ImGui::GetFontSize() * kWidgetWidthInFonts, kWidgetShare * ImGui::GetContentRegionAvail().x));
+  ImGui::PushItemWidth(ui.lecture ? widgetWidth(session.editedRunner().scene())
+                                  : std::min(ImGui::GetFontSize() * kWidgetWidthInFonts,
+                                             kWidgetShare * ImGui::GetContentRegionAvail().x));
   const auto& list = scenes();
   const int current = session.sceneIndex();
   if (ImGui::BeginCombo("scene", session.runner().sceneName().c_str())) {
@@ -341,9 +383,9 @@ void mainPanel(LabSession& session, UiState& ui) {
     if (i > 0) sameLineIfFits(label.c_str());
     if (ImGui::SmallButton(label.c_str())) session.applyPreset(static_cast<int>(i));
   }
-  if (header(ui, "Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session);
+  if (header(ui, "Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session, ui);
   if (header(ui, "Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-    parameterWidgets(session);
+    parameterWidgets(session, ui);
     session.runner().scene().ui();
   }
   if (header(ui, "Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
@@ -353,6 +395,10 @@ void mainPanel(LabSession& session, UiState& ui) {
     bool lecture = ui.lecture;  // the mode changes between frames, never inside this one
     if (ImGui::Checkbox("lecture mode (L)", &lecture)) ui.request(UiChange::ToggleLecture);
     noteWidget(ui, "lecture_checkbox");
+    if (ImGui::Button("Collapse panel (C)")) ui.request(UiChange::TogglePanel);
+    sameLineIfFits("Plots (M)");
+    bool plots = ui.showPlots;
+    if (ImGui::Checkbox("Plots (M)", &plots)) ui.request(UiChange::TogglePlots);
     if (ImGui::Button("Frame scene (F)")) ui.frameRequested = true;
     sameLineIfFits("Screenshot (F12)");
     if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
@@ -399,6 +445,7 @@ void helpOverlay(UiState& ui) {
 }  // namespace
 
 float panelWidthPixels(const UiState& ui) {
+  if (ui.panelCollapsed) return kStripWidthInFonts * ImGui::GetFontSize() + 8.0f;
   const float share = ui.lecture ? kLecturePanelShare : kPanelShare;
   return std::min(kPanelWidth * ImGui::GetFontSize() / 16.0f, share * ImGui::GetIO().DisplaySize.x) + 8.0f;
 }
@@ -417,6 +464,14 @@ void UiState::applyPending() {
         break;
       case UiChange::ToggleHideUi:
         hideUi = !hideUi;
+        break;
+      case UiChange::TogglePanel:
+        panelCollapsed = !panelCollapsed;
+        relayout = true;
+        frameRequested = true;  // the scene takes the width the panel gave up (or gives it back)
+        break;
+      case UiChange::TogglePlots:
+        showPlots = !showPlots;
         break;
     }
   }
@@ -438,6 +493,7 @@ LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, floa
 
 void drawLabUi(LabSession& session, UiState& ui) {
   ui.widgets.clear();
+  ui.clippedLabels.clear();
   detail::banners(session, ui);
   detail::noticeWindow(ui);
   if (ui.noticeFrames > 0) --ui.noticeFrames;
@@ -455,7 +511,7 @@ void drawLabUi(LabSession& session, UiState& ui) {
   const bool overlay = session.runner().scene().wantsOverlay();
   if (!ui.hideUi) {
     mainPanel(session, ui);
-    plotsTop = detail::plotPanel(session, ui, &plotsLeft);
+    if (ui.showPlots) plotsTop = detail::plotPanel(session, ui, &plotsLeft);
     const float timelineRight = overlay ? std::min(plotsLeft, columnLeft) : plotsLeft;
     timelineTop = detail::timelineStrip(session, ui, legendLeft, timelineRight - 8.0f);
   }

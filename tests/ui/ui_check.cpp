@@ -6,6 +6,9 @@
 // pinhole camera model for a drag, the camera's rotate speed and zoom factor for orbit and wheel.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <sys/wait.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -141,8 +144,8 @@ void checkRewind(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
-// A demo script (--demo): the first step's scene, camera and notes window; PageDown / PageUp (xdotool
-// Next / Prior) move between this lab's steps; N hides the notes; PageDown onto another lab's step closes
+// A demo script (--demo): the first step's scene and camera, no notes on screen until N; PageDown / PageUp
+// (xdotool Next / Prior) move between this lab's steps; N hides the notes again; PageDown onto another lab's step closes
 // the window with exit 0 and leaves that step's number in the --demo-next file for ./pba demo.
 void checkDemo(const std::string& exe, const std::string& work) {
   const std::vector<std::string> list = listScenes(exe);
@@ -164,8 +167,11 @@ void checkDemo(const std::string& exe, const std::string& work) {
              .dump(2);
   fs::remove(next);
   LabWindow w(exe, {"--demo", script, "--demo-next", next}, work);
-  const json first = w.waitFor([&](const json& s) { return s["scene"] == list[0] && hasWindow(s, "Step 1 of 3"); },
-                               "step 1 with its notes window");
+  const json first = w.waitFor([&](const json& s) { return s["scene"] == list[0]; }, "step 1");
+  // The speaker notes go to the terminal; on the projector only behind N.
+  expect(!hasWindow(w.frames(2), "Step 1 of 3"), "the speaker notes are on screen before N");
+  w.key("n");
+  w.waitFor([&](const json& s) { return hasWindow(s, "Step 1 of 3"); }, "N to show the notes");
   expect(first["lecture"] == true, "a demo does not start in lecture mode");
   expect(near(first["camera"]["distance"].get<double>(), 7.5, 1e-4) &&
              near(vecAt(first["camera"]["target"], 1), 1.0, 1e-4),
@@ -265,6 +271,38 @@ void checkScreenshot(const std::string& exe, const std::string& work) {
       lab.waitFor([](const json& st) { return st["notice"].get<std::string>().empty(); }, "the notice to go", 10.0);
   expect(gone["frame"].get<double>() > shownAt, "the notice vanished at once");
   expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
+/// Width and height of a PNG file from its IHDR chunk (bytes 16–23, big-endian); (0, 0) if it is none.
+std::pair<long, long> pngSize(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char b[24] = {};
+  if (!in.read(reinterpret_cast<char*>(b), 24) || std::string(reinterpret_cast<char*>(b) + 12, 4) != "IHDR")
+    return {0, 0};
+  auto be = [&](int at) { return (long{b[at]} << 24) | (long{b[at + 1]} << 16) | (long{b[at + 2]} << 8) | b[at + 3]; };
+  return {be(16), be(20)};
+}
+
+// --screenshot at --size WxH writes an image of exactly that size (the display's: 1280×720 or
+// 1920×1080), in lecture mode too; a bad size is one line on stderr and exit code 2, with no image.
+void checkScreenshotSize(const std::string& exe, const std::string& work) {
+  const auto [w, h] = displaySize();
+  const std::string size = std::to_string(w) + "x" + std::to_string(h);
+  const fs::path png = fs::path(work) / ("cli-" + size + ".png"), err = fs::path(work) / "stderr.txt";
+  const std::string base = "'" + exe + "' --frames 2 --screenshot '" + png.string() + "'";
+  const int rc = std::system((base + " --lecture --size " + size + " 2>'" + err.string() + "'").c_str());
+  expect(rc == 0, "--screenshot --size " + size + " failed (status " + std::to_string(rc) + ")");
+  const auto [pw, ph] = pngSize(png);
+  expect(pw == w && ph == h, png.string() + " is " + std::to_string(pw) + "x" + std::to_string(ph) + ", not " + size);
+  fs::remove(png);
+  const int bad = std::system((base + " --size 1920by1080 2>'" + err.string() + "'").c_str());
+  expect(WIFEXITED(bad) && WEXITSTATUS(bad) == 2, "--size 1920by1080 did not exit with status 2");
+  std::ifstream in(err);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  expect(message.find("--size") != std::string::npos && message.find('\n') == message.size() - 1,
+         "--size 1920by1080: expected one line naming --size, got '" + message + "'");
+  expect(!fs::exists(png), "a bad --size still wrote " + png.string());
+  std::cout << "screenshot " << pw << "x" << ph << "; bad size: " << message;
 }
 
 // F9 starts a recording (MP4 with ffmpeg, else PNG files) and F9 stops it: every recorded frame is
@@ -588,6 +626,7 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
     expect(free >= 0.4 * view.area(), list[index] + ": the windows leave the scene less than 40 % of the screen");
     expect(covered <= kMaxCovered * picture.area(),
            list[index] + ": windows cover more than a third of the scene's picture");
+    expect(s["clipped_labels"].empty(), list[index] + ": labels cut off by the panel: " + s["clipped_labels"].dump());
     if (keep) {
       lab.key("F12");
       lab.waitFor(
@@ -600,6 +639,45 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
+double panelWidthOf(const json& s) {
+  for (const auto& [name, r] : windows(s))
+    if (name.find("###panel") != std::string::npos) return r.width();
+  return 0.0;
+}
+
+// Lecture mode: C collapses the control panel to a strip and the framing gives the scene the width; M hides
+// and shows the plots; the strip's button and C bring the panel back.
+void checkPanelStrip(const std::string& exe, const std::string& work) {
+  LabWindow lab(exe, {"--lecture"}, work);
+  pause(lab);
+  const json before = lab.frames(3);
+  const double wide = panelWidthOf(before), font = before["font_px"];
+  const double view = vecAt(before["viewport"], 0);
+  lab.key("c");
+  lab.waitFor([](const json& s) { return s["panel_collapsed"] == true; }, "C to collapse the panel");
+  const json framed = lab.frames(3);
+  const double narrow = panelWidthOf(framed);
+  std::printf("panel %.0f px, strip %.0f px of %.0f px\n", wide, narrow, view);
+  expect(narrow > 0 && narrow <= 3.0 * font + 16.0, "the collapsed panel is " + std::to_string(narrow) + " px wide");
+  expect(narrow < 0.05 * view, "the strip takes more than 5 % of the width");
+  const Rect pictureBefore = Rect::fromJson(before["scene_rect"]), pictureAfter = Rect::fromJson(framed["scene_rect"]);
+  expect(pictureAfter.x0 < pictureBefore.x0, "the scene did not move into the room the panel gave up");
+  const bool hadPlots = hasWindow(before, "Plots");
+  lab.key("m");
+  lab.waitFor([](const json& s) { return s["plots_shown"] == false && !hasWindow(s, "Plots"); }, "M to hide the plots");
+  lab.key("m");
+  lab.waitFor([&](const json& s) { return s["plots_shown"] == true && hasWindow(s, "Plots") == hadPlots; },
+              "M to show the plots");
+  lab.clickWidget("expand_button", "");
+  lab.waitFor([&](const json& s) { return s["panel_collapsed"] == false && panelWidthOf(s) > 2 * narrow; },
+              "the strip's button to bring the panel back");
+  lab.key("c");
+  lab.waitFor([](const json& s) { return s["panel_collapsed"] == true; }, "C to collapse the panel again");
+  lab.key("c");
+  lab.waitFor([](const json& s) { return s["panel_collapsed"] == false; }, "C to bring the panel back");
+  expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
 const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"step", checkStep},
                                               {"reset", checkReset},
@@ -609,6 +687,7 @@ const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"presets", checkPresets},
                                               {"help", checkHelp},
                                               {"screenshot", checkScreenshot},
+                                              {"screenshot-size", checkScreenshotSize},
                                               {"record", checkRecord},
                                               {"lecture", checkLecture},
                                               {"tab", checkTab},
@@ -616,7 +695,8 @@ const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"drag", checkDrag},
                                               {"orbit-zoom", checkOrbitAndZoom},
                                               {"bad-scene-file", checkBadSceneFile},
-                                              {"lecture-layout", checkLectureLayout}};
+                                              {"lecture-layout", checkLectureLayout},
+                                              {"panel-strip", checkPanelStrip}};
 
 }  // namespace
 }  // namespace pba::uitest
