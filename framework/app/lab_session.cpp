@@ -249,6 +249,7 @@ void LabSession::stepBy(std::int64_t delta) {
     scrubTo(i);
     for (std::int64_t k = runner_.steps(); k < target; ++k) runner_.singleStep();
     historySteps_ = runner_.steps();  // between two kept frames: not a frame of its own
+    if (runner_.steps() != history_.at(i).state.steps) plots_.record(runner_.simTime(), runner_.scene().metrics());
   }
   message_ = "Step " + std::to_string(runner_.steps()) + ", t = " + formatFixed(runner_.simTime(), 3) +
              " s: , and . step by one step, Shift by a second; Space runs on from here";

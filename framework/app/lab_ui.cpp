@@ -1,6 +1,7 @@
 #include "app/lab_ui.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -25,7 +26,6 @@ constexpr float kWidgetShare = 0.56f;         // at most this share of the panel
 // narrow columns, so that the scene keeps most of a 1280×720 projector image.
 constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.22f;
 constexpr float kStripWidthInFonts = 2.2f;  // the collapsed panel (key C)
-constexpr float kMinWidgetShare = 0.40f;    // widgets keep at least this share of the panel for their labels' sake
 constexpr float kOverlayShare = 0.34f, kLectureOverlayShare = 0.26f;
 
 // Key, action: the help overlay's table (the same bindings in every lab, docs/architecture.md §3).
@@ -73,16 +73,22 @@ void noteIfClipped(UiState& ui, const std::string& label) {
   if (ImGui::GetItemRectMax().x > right + 0.5f) ui.clippedLabels.push_back(label);
 }
 
-/// The widgets' width in the panel: what the longest label of this panel (with its "(?)") leaves, at most
-/// the width that reads well, at least kMinWidgetShare of the panel.
-float widgetWidth(const Scene& scene) {
-  const float avail = ImGui::GetContentRegionAvail().x;
-  const ImGuiStyle& style = ImGui::GetStyle();
-  float label = ImGui::CalcTextSize("steps per dt").x;
-  for (const Param& p : scene.params().all())
-    if (!p.shown || p.shown()) label = std::max(label, ImGui::CalcTextSize((p.unit.empty() ? p.name : p.name + " [" + p.unit + "]").c_str()).x);
-  const float room = label + 2.0f * style.ItemInnerSpacing.x + style.ItemSpacing.x + ImGui::CalcTextSize("(?)").x;
-  return std::clamp(avail - room, kMinWidgetShare * avail, ImGui::GetFontSize() * kWidgetWidthInFonts);
+/// Lecture mode puts a widget's label and its "(?)" on a line of their own above a widget as wide as the
+/// panel, so that a narrow panel never cuts a label off ("solver_subste"). Returns the widget's ImGui
+/// label: `label` itself inline, hidden ("##label") under a label line. Call helpAfter after the widget.
+std::string labelLine(UiState& ui, const std::string& label, const std::string& help, bool above) {
+  if (!above) return label;
+  ImGui::TextUnformatted(label.c_str());
+  helpMarker(help);
+  noteIfClipped(ui, label);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  return "##" + label;
+}
+/// The "(?)" after an inline widget (labelLine drew it already for a label line).
+void helpAfter(UiState& ui, const std::string& label, const std::string& help, bool above) {
+  if (above) return;
+  helpMarker(help);
+  noteIfClipped(ui, label);
 }
 
 void parameterWidgets(LabSession& session, UiState& ui) {
@@ -106,45 +112,50 @@ void parameterWidgets(LabSession& session, UiState& ui) {
         if (on) ImGui::PopStyleColor();
       }
     } pop{differs};
+    // A checkbox keeps its label beside it in every mode.
+    const bool above = ui.lecture && p.kind != ParamKind::Flag;
     if (p.kind == ParamKind::Text) {
       // Applied on Enter, so that a half-typed path is never loaded.
+      const std::string help = p.tooltip + "\nPress Enter to apply.";
+      const std::string id = labelLine(ui, label, help, above);
       char buffer[2048];  // long enough for a list of every joint name of a character
       std::snprintf(buffer, sizeof buffer, "%s", p.getText().c_str());
-      if (ImGui::InputText(label.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      if (ImGui::InputText(id.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
         p.setText(buffer);
         resetNeeded = resetNeeded || p.needsReset;
       }
-      helpMarker(p.tooltip + "\nPress Enter to apply.");
-      noteIfClipped(ui, label);
+      helpAfter(ui, label, help, above);
       ImGui::PopID();
       continue;
     }
+    const std::string help = p.tooltip + (p.needsReset ? "\nTakes effect on reset." : "");
+    const std::string id = labelLine(ui, label, help, above);
     bool changed = false;
     double value = p.get();
     switch (p.kind) {
       case ParamKind::Real: {
         const ImGuiSliderFlags flags =
             (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
-        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max, "%.4g", flags);
+        changed = ImGui::SliderScalar(id.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max, "%.4g", flags);
         break;
       }
       case ParamKind::Integer: {
         int v = static_cast<int>(value), lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
-        changed = ImGui::SliderInt(label.c_str(), &v, lo, hi, "%d",
+        changed = ImGui::SliderInt(id.c_str(), &v, lo, hi, "%d",
                                    ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
         value = v;
         break;
       }
       case ParamKind::Flag: {
         bool v = value != 0.0;
-        changed = ImGui::Checkbox(label.c_str(), &v);
+        changed = ImGui::Checkbox(id.c_str(), &v);
         value = v ? 1.0 : 0.0;
         break;
       }
       case ParamKind::Choice: {
         int v = static_cast<int>(value);
         const std::string& current = p.choices.at(static_cast<size_t>(v));
-        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+        if (ImGui::BeginCombo(id.c_str(), current.c_str())) {
           for (size_t i = 0; i < p.choices.size(); ++i) {
             if (ImGui::Selectable(p.choices[i].c_str(), static_cast<int>(i) == v)) {
               v = static_cast<int>(i);
@@ -159,8 +170,7 @@ void parameterWidgets(LabSession& session, UiState& ui) {
       case ParamKind::Text:
         break;  // handled above
     }
-    helpMarker(p.tooltip + (p.needsReset ? "\nTakes effect on reset." : ""));
-    noteIfClipped(ui, label);
+    helpAfter(ui, label, help, above);
     // Sliders clamp to the declared range, so the value is always valid: slider extremes are safe.
     if (changed) {
       p.set(std::clamp(value, p.min, p.max));
@@ -222,26 +232,29 @@ void simulationControls(LabSession& session, UiState& ui) {
 
   double dt = runner.dt();
   const double dtMin = kMinDt * 10, dtMax = kMaxDt;
-  if (ImGui::SliderScalar("dt [s]", ImGuiDataType_Double, &dt, &dtMin, &dtMax, "%.5f",
-                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+  const bool above = ui.lecture;
+  const std::string dtHelp =
+      "Fixed time step of the simulation. Smaller is more accurate and more stable, and costs more.";
+  if (ImGui::SliderScalar(labelLine(ui, "dt [s]", dtHelp, above).c_str(), ImGuiDataType_Double, &dt, &dtMin, &dtMax,
+                          "%.5f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     runner.setDt(dt, /*keepAcrossScenes=*/false);
-  helpMarker("Fixed time step of the simulation. Smaller is more accurate and more stable, and costs more.");
-  noteIfClipped(ui, "dt [s]");
+  helpAfter(ui, "dt [s]", dtHelp, above);
   int substeps = runner.substeps();
   // Named apart from a solver's own "substeps" parameter (the cloth's, the ragdoll's): one name per control.
-  if (ImGui::SliderInt("steps per dt", &substeps, 1, kMaxSubsteps, "%d", ImGuiSliderFlags_AlwaysClamp))
-    runner.setSubsteps(substeps);
-  helpMarker(
+  const std::string stepsHelp =
       "The runner takes this many steps of dt / N for each step dt, for any scene (--substeps N on the command "
-      "line). A solver's own substeps, where the scene has them, are a parameter of the scene below.");
-  noteIfClipped(ui, "steps per dt");
+      "line). A solver's own substeps, where the scene has them, are a parameter of the scene below.";
+  if (ImGui::SliderInt(labelLine(ui, "steps per dt", stepsHelp, above).c_str(), &substeps, 1, kMaxSubsteps, "%d",
+                       ImGuiSliderFlags_AlwaysClamp))
+    runner.setSubsteps(substeps);
+  helpAfter(ui, "steps per dt", stepsHelp, above);
   double scale = runner.timeScale();
   const double lo = kMinTimeScale, hi = kMaxTimeScale;
-  if (ImGui::SliderScalar("time scale", ImGuiDataType_Double, &scale, &lo, &hi, "%.2fx",
-                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+  const std::string scaleHelp = "Slow motion below 1, fast forward above 1. The physics step dt does not change.";
+  if (ImGui::SliderScalar(labelLine(ui, "time scale", scaleHelp, above).c_str(), ImGuiDataType_Double, &scale, &lo,
+                          &hi, "%.2fx", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     runner.setTimeScale(scale);
-  helpMarker("Slow motion below 1, fast forward above 1. The physics step dt does not change.");
-  noteIfClipped(ui, "time scale");
+  helpAfter(ui, "time scale", scaleHelp, above);
   ImGui::Text("t = %.3f s   steps = %lld", runner.simTime(), static_cast<long long>(runner.steps()));
 }
 
@@ -359,9 +372,8 @@ void mainPanel(LabSession& session, UiState& ui) {
     ImGui::End();
     return;
   }
-  ImGui::PushItemWidth(ui.lecture ? widgetWidth(session.editedRunner().scene())
-                                  : std::min(ImGui::GetFontSize() * kWidgetWidthInFonts,
-                                             kWidgetShare * ImGui::GetContentRegionAvail().x));
+  ImGui::PushItemWidth(
+      std::min(ImGui::GetFontSize() * kWidgetWidthInFonts, kWidgetShare * ImGui::GetContentRegionAvail().x));
   const auto& list = scenes();
   const int current = session.sceneIndex();
   if (ImGui::BeginCombo("scene", session.runner().sceneName().c_str())) {

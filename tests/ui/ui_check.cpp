@@ -102,9 +102,9 @@ void checkScenes(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
-// Rewind: , steps one frame back through the rewind history and . one forward; the clock, the step count
-// and the plots go back with the state (each plotted series ends at the metric of the frame shown, one
-// sample per frame up to it); dragging the timeline strip to its left end shows the state at reset; Space
+// Rewind: , steps one simulation step back and . one forward, Shift+, one second back, the history kept; the
+// clock, the step count and the plots go back with the state (each plotted series ends at the metric of the
+// state shown, one sample per frame up to it and one for a state between frames); dragging the timeline strip to its left end shows the state at reset; Space
 // runs on from there and the later frames are discarded.
 void checkRewind(const std::string& exe, const std::string& work) {
   LabWindow lab(exe, {}, work);
@@ -113,23 +113,32 @@ void checkRewind(const std::string& exe, const std::string& work) {
   const json held = lab.frames(2);
   const long frames = held["history"]["frames"], newest = held["history"]["cursor"];
   expect(newest == frames - 1, "paused, the timeline is not at the newest frame");
+  // , and . move by one simulation step (a frame holds several), Shift by one second.
+  const long s0 = held["steps"];
   for (long k = 1; k <= 3; ++k) {
     lab.key("comma");
-    lab.waitFor([&](const json& s) { return s["history"]["cursor"].get<long>() == newest - k; },
-                ", to step back to frame " + std::to_string(newest - k));
+    lab.waitFor([&](const json& s) { return s["steps"].get<long>() == s0 - k; },
+                ", to step back to step " + std::to_string(s0 - k));
   }
   const json back = lab.frames(2);
-  expect(back["steps"].get<long>() < held["steps"].get<long>(), "the step count did not go back");
   expect(back["sim_time_s"].get<double>() < held["sim_time_s"].get<double>(), "the clock did not go back");
   expect(back["history"]["frames"].get<long>() == frames, "stepping back changed the history's length");
+  const long cursor = back["history"]["cursor"];
   for (const auto& [name, plot] : back["plots"].items()) {
     expect(plot["last"] == back["metrics"][name], "plot " + name + " ends at " + plot["last"].dump() +
-                                                      ", the frame shown has " + back["metrics"][name].dump());
-    expect(plot["samples"].get<long>() == std::min<long>(newest - 3 + 1, 600),
-           "plot " + name + " has " + plot["samples"].dump() + " samples for frame " + std::to_string(newest - 3));
+                                                      ", the state shown has " + back["metrics"][name].dump());
+    const long samples = plot["samples"];
+    expect(samples == std::min<long>(cursor + 1, 600) || samples == std::min<long>(cursor + 2, 600),
+           "plot " + name + " has " + std::to_string(samples) + " samples at frame " + std::to_string(cursor));
   }
   lab.key("period");
-  lab.waitFor([&](const json& s) { return s["history"]["cursor"].get<long>() == newest - 2; }, ". to step forward");
+  lab.waitFor([&](const json& s) { return s["steps"].get<long>() == s0 - 2; }, ". to step forward one step");
+  const double t1 = lab.frames(1)["sim_time_s"];
+  lab.key("shift+comma");
+  const json second = lab.waitFor([&](const json& s) { return s["steps"].get<long>() < s0 - 3; }, "Shift+, to go back");
+  // round(1 s / dt) steps of dt: one second within a step (dt ≤ 20 ms in every scene).
+  expect(std::abs(t1 - second["sim_time_s"].get<double>() - 1.0) < 0.02 || second["steps"] == 0,
+         "Shift+, went back " + std::to_string(t1 - second["sim_time_s"].get<double>()) + " s, not one second");
   const Rect bar = Rect::fromJson(lab.frames(1)["widgets"]["timeline"]);
   const double y = 0.5 * (bar.y0 + bar.y1);
   lab.drag(1, bar.x1 - 4, y, bar.x0 - 40, y);
