@@ -54,8 +54,8 @@ const char* const kKeys[][2] = {
     {"Wheel", "zoom"},
 };
 
-void helpMarker(const std::string& text) {
-  ImGui::SameLine();
+/// A "(?)" whose tooltip is `text`, at the cursor.
+void helpMark(const std::string& text) {
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
@@ -66,6 +66,12 @@ void helpMarker(const std::string& text) {
   }
 }
 
+/// A "(?)" on the line of the item before.
+void helpMarker(const std::string& text) {
+  ImGui::SameLine();
+  helpMark(text);
+}
+
 /// After a widget and its "(?)": records `label` in ui.clippedLabels when the row ran past the panel's
 /// right edge (ImGui cuts it off there: "solver_subste").
 void noteIfClipped(UiState& ui, const std::string& label) {
@@ -73,13 +79,14 @@ void noteIfClipped(UiState& ui, const std::string& label) {
   if (ImGui::GetItemRectMax().x > right + 0.5f) ui.clippedLabels.push_back(label);
 }
 
-/// Lecture mode puts a widget's label and its "(?)" on a line of their own above a widget as wide as the
-/// panel, so that a narrow panel never cuts a label off ("solver_subste"). Returns the widget's ImGui
+/// Lecture mode puts a widget's "(?)" and its label (wrapped when longer than the panel) on a line of their
+/// own above a widget as wide as the panel, so that a narrow panel never cuts a label off ("solver_subste"). Returns the widget's ImGui
 /// label: `label` itself inline, hidden ("##label") under a label line. Call helpAfter after the widget.
 std::string labelLine(UiState& ui, const std::string& label, const std::string& help, bool above) {
   if (!above) return label;
-  ImGui::TextUnformatted(label.c_str());
-  helpMarker(help);
+  helpMark(help);  // first, so that a label wrapped onto two lines keeps it in view
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s", label.c_str());
   noteIfClipped(ui, label);
   ImGui::SetNextItemWidth(-FLT_MIN);
   return "##" + label;
@@ -112,8 +119,9 @@ void parameterWidgets(LabSession& session, UiState& ui) {
         if (on) ImGui::PopStyleColor();
       }
     } pop{differs};
-    // A checkbox keeps its label beside it in every mode.
+    // A checkbox keeps its label beside it (wrapped in lecture mode, its "(?)" first).
     const bool above = ui.lecture && p.kind != ParamKind::Flag;
+    const bool wrappedFlag = ui.lecture && p.kind == ParamKind::Flag;
     if (p.kind == ParamKind::Text) {
       // Applied on Enter, so that a half-typed path is never loaded.
       const std::string help = p.tooltip + "\nPress Enter to apply.";
@@ -148,7 +156,16 @@ void parameterWidgets(LabSession& session, UiState& ui) {
       }
       case ParamKind::Flag: {
         bool v = value != 0.0;
-        changed = ImGui::Checkbox(id.c_str(), &v);
+        if (wrappedFlag) {
+          helpMark(help);
+          ImGui::SameLine();
+          changed = ImGui::Checkbox(("##" + label).c_str(), &v);
+          ImGui::SameLine();
+          ImGui::TextWrapped("%s", label.c_str());
+          noteIfClipped(ui, label);
+        } else {
+          changed = ImGui::Checkbox(id.c_str(), &v);
+        }
         value = v ? 1.0 : 0.0;
         break;
       }
@@ -170,7 +187,7 @@ void parameterWidgets(LabSession& session, UiState& ui) {
       case ParamKind::Text:
         break;  // handled above
     }
-    helpAfter(ui, label, help, above);
+    helpAfter(ui, label, help, above || wrappedFlag);
     // Sliders clamp to the declared range, so the value is always valid: slider extremes are safe.
     if (changed) {
       p.set(std::clamp(value, p.min, p.max));
