@@ -427,6 +427,11 @@ void checkFrame(const std::string& exe, const std::string& work) {
   expect(lowest > 0.0, "the eye went below the ground (y = " + std::to_string(lowest) + " m)");
   lab.wheel(-25);  // far away
   lab.frames(2);
+  // Paused at its reset state (R keeps a pause of the user's), so that F frames what stays on screen: in the
+  // hand-out the stubbed hanging cloth falls through the floor without end, below where a camera may look.
+  pause(lab);
+  lab.key("r");
+  lab.waitFor([](const json& st) { return st["steps"] == 0 && st["paused"] == true; }, "R to reset, paused");
   lab.key("f");
   const long at = lab.status()["frame"];
   const json s = lab.waitFor([at](const json& st) { return st["frame"].get<long>() > at + 2; }, "F to frame");
