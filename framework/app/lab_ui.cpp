@@ -409,8 +409,17 @@ void mainPanel(LabSession& session, UiState& ui) {
   const std::vector<Preset> presets = session.runner().scene().presets();
   for (size_t i = 0; i < presets.size() && i < 9; ++i) {
     const std::string label = std::to_string(i + 1) + " " + presets[i].name;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    // A preset name wider than the panel: its number as the button, the name wrapped beside it.
+    if (ImGui::CalcTextSize(label.c_str()).x + 2.0f * style.FramePadding.x > ImGui::GetContentRegionAvail().x) {
+      if (ImGui::SmallButton((std::to_string(i + 1) + "##preset").c_str())) session.applyPreset(static_cast<int>(i));
+      ImGui::SameLine();
+      ImGui::TextWrapped("%s", presets[i].name.c_str());
+      continue;
+    }
     if (i > 0) sameLineIfFits(label.c_str());
     if (ImGui::SmallButton(label.c_str())) session.applyPreset(static_cast<int>(i));
+    noteIfClipped(ui, label);
   }
   if (header(ui, "Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session, ui);
   if (header(ui, "Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
