@@ -29,6 +29,24 @@ Result<double> parsePositive(const std::string& option, const std::string& text)
   return v;
 }
 
+/// "1920x1080" → (1920, 1080) within the window bounds of command_line.h.
+Result<std::pair<int, int>> parseSize(const std::string& text) {
+  const Error bad{"--size: expected WIDTHxHEIGHT in pixels, " + std::to_string(kMinWindowWidth) + "-" +
+                  std::to_string(kMaxWindowSide) + " by " + std::to_string(kMinWindowHeight) + "-" +
+                  std::to_string(kMaxWindowSide) + " (e.g. 1920x1080), got '" + shownText(text) + "'"};
+  const auto x = text.find_first_of("xX");
+  if (x == std::string::npos) return bad;
+  auto side = [](const std::string& t, int min) -> std::optional<int> {
+    if (t.empty() || t.find_first_not_of("0123456789") != std::string::npos || t.size() > 5) return std::nullopt;
+    const int v = std::atoi(t.c_str());
+    if (v < min || v > kMaxWindowSide) return std::nullopt;
+    return v;
+  };
+  const auto w = side(text.substr(0, x), kMinWindowWidth), h = side(text.substr(x + 1), kMinWindowHeight);
+  if (!w || !h) return bad;
+  return std::make_pair(*w, *h);
+}
+
 const LabFlag* findLabFlag(const std::string& flag) {
   for (const LabFlag& f : labFlags())
     if (f.flag == flag) return &f;
@@ -109,6 +127,11 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
       if (!(s = next(o.record))) return Error{s.error()};
       if (!graphics::recordFormatOf(o.record))
         return Error{"--record: expected FILE.mp4, FILE.gif or DIR/ (PNG files), got '" + shownText(o.record) + "'"};
+    } else if (arg == "--size") {
+      if (!(s = next(v))) return Error{s.error()};
+      auto r = parseSize(v);
+      if (!r) return Error{r.error()};
+      o.size = r.value();
     } else if (arg == "--record-ui") {
       if (!(s = next(v))) return Error{s.error()};
       if (v != "on" && v != "off") return Error{"--record-ui: expected on or off, got '" + shownText(v) + "'"};
@@ -203,6 +226,7 @@ Result<LabOptions> parseCommandLine(int argc, const char* const* argv) {
     return Error{"--screenshot needs a window: drop --headless (use xvfb-run without a display)"};
   if (o.headless && !o.record.empty())
     return Error{"--record needs a window: drop --headless (use xvfb-run without a display)"};
+  if (o.headless && o.size) return Error{"--size sets the window's size: drop --headless"};
   if (!o.record.empty() && !o.screenshot.empty()) return Error{"--record and --screenshot: give one or the other"};
   if (o.checkRewind && !o.headless) return Error{"--check-rewind runs headless: add --headless"};
   if (o.checkRewind && o.compare) return Error{"--check-rewind and --compare: give one or the other"};
@@ -239,6 +263,8 @@ std::string usage(const std::string& lab) {
       "  --record FILE.mp4|FILE.gif|DIR/\n"
       "                          record --frames (default 300) or --seconds of simulated time at 60\n"
       "                          frames/s, then exit: MP4 and GIF through ffmpeg, PNG files into DIR/\n"
+      "  --size WxH              the window's size in pixels, e.g. 1920x1080 (default 1280x720 for\n"
+      "                          --screenshot and --record, else the size the lab saved)\n"
       "  --record-ui on|off      the panels in the recording, or the scene alone (default off)\n"
       "  --metrics FILE|-        write the run's metrics as one JSON object (- = standard output)\n"
       "  --pose-json FILE        when the run ends, write the world position [m] of every joint of the\n"

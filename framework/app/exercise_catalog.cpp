@@ -1,5 +1,6 @@
 #include "app/exercise_catalog.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -27,6 +28,22 @@ std::vector<ExerciseInfo> loadExercises(const std::string& path, const std::stri
     }
   }
   return out;
+}
+
+std::vector<std::string> stubbedExercises(const std::vector<ExerciseInfo>& labExercises,
+                                          const std::vector<std::string>& stubs) {
+  std::vector<std::string> out;
+  for (const ExerciseInfo& e : labExercises)
+    if (std::find(stubs.begin(), stubs.end(), e.tag) != stubs.end()) out.push_back(e.tag);
+  return out;
+}
+
+std::string stubBannerText(const std::vector<std::string>& tags, size_t shown) {
+  if (tags.empty()) return {};
+  std::string text;
+  for (size_t i = 0; i < std::min(shown, tags.size()); ++i) text += (i ? ", " : "") + tags[i];
+  if (tags.size() > shown) text += " and " + std::to_string(tags.size() - shown) + " more";
+  return text + " not implemented (stubs run): see Exercises in the panel, then ./pba grade";
 }
 
 }  // namespace pba::app

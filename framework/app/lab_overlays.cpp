@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "app/exercise_catalog.h"
 #include "app/lab_ui.h"
 #include "physics/exercises/not_implemented.h"
 
@@ -59,8 +60,9 @@ void plotSeries(const std::string& name, const std::vector<double>& series, cons
   draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text),
                 caption.substr(0, split).c_str());
   if (split != std::string::npos)
+    // The range in the text colour in lecture mode: the disabled grey was too faint on a projector.
     draw->AddText(ImGui::GetFont(), 0.8f * font, ImVec2(o.x + pad, o.y + 0.5f * pad + font),
-                  ImGui::GetColorU32(ImGuiCol_TextDisabled), caption.substr(split + 2).c_str());
+                  ImGui::GetColorU32(lecture ? ImGuiCol_Text : ImGuiCol_TextDisabled), caption.substr(split + 2).c_str());
   ImGui::Dummy(size);
 }
 
@@ -132,9 +134,8 @@ void banners(LabSession& session, const UiState& ui) {
   ImVec4 colour = kAlertRed;
   if (const auto& guard = session.runner().guardMessage()) {
     text = *guard;
-  } else if (const auto stubs = exercises::notImplementedTags(); !stubs.empty()) {
-    for (const std::string& tag : stubs) text += (text.empty() ? "" : ", ") + tag;
-    text += " not implemented: this lab runs with a stub. Complete the starred TODO block, then ./pba grade.";
+  } else if (!session.exercises().empty()) {
+    text = stubBannerText(stubbedExercises(session.exercises(), exercises::notImplementedTags()));
     colour = kWarnOrange;
   }
   if (text.empty()) return;

@@ -1,5 +1,9 @@
 #include "app/lab_session.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
 #include "app/compare_run.h"
 #include "app/scene_file.h"
 #include "app/scene_registry.h"
@@ -37,10 +41,17 @@ void LabSession::singleStep() {
 }
 
 void LabSession::reset() {
+  // The guard's pause ends with the reset it asks for (R, as its banner says): the scene runs again. A
+  // pause of the user's own stays.
+  const bool guardPaused = runner_.guardMessage() || (partner_ && partner_->guardMessage());
   runner_.reset();
   if (partner_) partner_->reset();
+  if (guardPaused) {
+    runner_.setPaused(false);
+    if (partner_) partner_->setPaused(false);
+  }
   restartHistory();
-  message_ = "Reset";
+  message_ = guardPaused ? "Reset: running again" : "Reset";
 }
 
 int LabSession::sceneIndex() const { return app::sceneIndex(runner_.sceneName()); }
@@ -213,6 +224,35 @@ void LabSession::stepForward() {
     return;
   }
   singleStep();
+}
+
+std::int64_t LabSession::stepsPerSecond() const {
+  return std::max<std::int64_t>(1, std::llround(1.0 / runner_.dt()));
+}
+
+void LabSession::stepBy(std::int64_t delta) {
+  if (delta == 0 || history_.empty()) return;
+  if (partner_) {
+    for (std::int64_t k = 0; k < std::abs(delta); ++k) delta < 0 ? stepBack() : stepForward();
+    return;
+  }
+  const std::int64_t newest = history_.at(history_.size() - 1).state.steps;
+  const std::int64_t target = std::max<std::int64_t>(history_.at(0).state.steps, runner_.steps() + delta);
+  if (target >= newest) {  // at or past the newest frame: restore it, then new steps
+    if (runner_.steps() != newest || !history_.atNewest()) scrubTo(history_.size() - 1);
+    runner_.setPaused(true);
+    for (std::int64_t k = runner_.steps(); k < target; ++k) runner_.singleStep();
+    afterFrame();
+  } else {
+    std::size_t i = history_.size() - 1;
+    while (i > 0 && history_.at(i).state.steps > target) --i;
+    scrubTo(i);
+    for (std::int64_t k = runner_.steps(); k < target; ++k) runner_.singleStep();
+    historySteps_ = runner_.steps();  // between two kept frames: not a frame of its own
+    if (runner_.steps() != history_.at(i).state.steps) plots_.record(runner_.simTime(), runner_.scene().metrics());
+  }
+  message_ = "Step " + std::to_string(runner_.steps()) + ", t = " + formatFixed(runner_.simTime(), 3) +
+             " s: , and . step by one step, Shift by a second; Space runs on from here";
 }
 
 bool LabSession::takeFrameRequest() {

@@ -61,6 +61,14 @@ class LabSession {
   void stepBack();
   /// One frame forward: the next frame of the history, or a new step when at the newest one.
   void stepForward();
+  /// Keys , and . (Shift: a second's worth, stepsPerSecond()): moves the shown state by `delta` simulation
+  /// steps. The history keeps one snapshot per displayed frame, so a step between two frames is reached by
+  /// restoring the frame at or before it and stepping on (deterministic: the same state as the run had);
+  /// the history is kept. Past the newest frame it takes new steps. An A/B run moves by frames (its two
+  /// sides take different numbers of steps per frame).
+  void stepBy(std::int64_t delta);
+  /// Fixed steps in one second of simulated time at the current dt (at least 1).
+  std::int64_t stepsPerSecond() const;
   const RewindHistory& history() const { return history_; }
 
   /// A/B runs (compare_run.h): B steps with A (pause, step, reset, presets, scene switches, drags and

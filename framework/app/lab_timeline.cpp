@@ -1,6 +1,7 @@
 // The rewind timeline strip along the bottom of the view (docs/architecture.md §3, "Rewind"): a slider
 // over the frames of the rewind history, the time shown, and the history's length and memory against
-// its bounds. Dragging it scrubs (LabSession::scrubTo); keys , and . step one frame.
+// its bounds, and how long it holds for this scene. Dragging it scrubs (LabSession::scrubTo); keys , and .
+// step one simulation step (LabSession::stepBy).
 #include <algorithm>
 #include <cstdio>
 
@@ -23,7 +24,8 @@ float timelineStrip(LabSession& session, UiState& ui, float left, float right) {
                    ImGuiWindowFlags_NoNav | ImGuiWindowFlags_AlwaysAutoResize);
   const SceneRunner& runner = session.runner();
   char info[160];
-  std::snprintf(info, sizeof info, "%.1f s, %.0f of %.0f MB", history.seconds(),
+  // What the strip holds for this scene when full (a large state holds less: the bound is in bytes).
+  std::snprintf(info, sizeof info, "%.1f of %.1f s, %.0f of %.0f MB", history.seconds(), history.capacitySeconds(),
                 static_cast<double>(history.bytes()) / (1 << 20), static_cast<double>(history.maxBytes()) / (1 << 20));
   const float infoWidth = ImGui::CalcTextSize(info).x + ImGui::GetStyle().ItemSpacing.x;
   int index = static_cast<int>(history.cursor());
@@ -37,9 +39,10 @@ float timelineStrip(LabSession& session, UiState& ui, float left, float right) {
   ui.widgets["timeline"] = LabelBox{lo.x, lo.y, hi.x, hi.y};
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "Rewind: drag to go back in time (keys , and . step one frame). Space runs on from the frame shown;\n"
-        "the later frames are then discarded. The history keeps the last %zu frames or %.0f MB, whichever is less.",
-        history.maxFrames(), static_cast<double>(history.maxBytes()) / (1 << 20));
+        "Rewind: drag to go back in time (keys , and . step one simulation step, Shift one second). Space runs\n"
+        "on from the state shown; the later frames are then discarded. The history keeps the last %zu frames or\n"
+        "%.0f MB, whichever is less: %.1f s of this scene.",
+        history.maxFrames(), static_cast<double>(history.maxBytes()) / (1 << 20), history.capacitySeconds());
   ImGui::SameLine();
   ImGui::TextDisabled("%s", info);
   const float top = ImGui::GetWindowPos().y;

@@ -1,6 +1,7 @@
 #include "app/lab_ui.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 
@@ -23,14 +24,15 @@ constexpr float kWidgetWidthInFonts = 11.5f;  // slider width in font heights: l
 constexpr float kWidgetShare = 0.56f;         // at most this share of the panel's width (lecture mode)
 // Shares of the window's width the panel and the overlay column may take: in lecture mode both stay
 // narrow columns, so that the scene keeps most of a 1280×720 projector image.
-constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.27f;
+constexpr float kPanelShare = 0.40f, kLecturePanelShare = 0.22f;
+constexpr float kStripWidthInFonts = 2.2f;  // the collapsed panel (key C)
 constexpr float kOverlayShare = 0.34f, kLectureOverlayShare = 0.26f;
 
 // Key, action: the help overlay's table (the same bindings in every lab, docs/architecture.md §3).
 const char* const kKeys[][2] = {
     {"Space / P", "pause or resume"},
     {"O", "single step (hold to repeat)"},
-    {",  .", "rewind one frame / forward one frame (the timeline strip scrubs)"},
+    {",  .", "one simulation step back / forward, Shift: one second (the timeline strip scrubs)"},
     {"R", "reset the scene"},
     {"[  ]", "previous / next scene"},
     {"1 - 9", "scene presets"},
@@ -39,6 +41,8 @@ const char* const kKeys[][2] = {
     {"F9", "start / stop recording (MP4 with ffmpeg, else PNG files; 60 frames/s of simulated time)"},
     {"L", "lecture mode (large fonts, high contrast)"},
     {"Tab", "hide or show the panels"},
+    {"C", "collapse the control panel to a strip / show it"},
+    {"M", "hide / show the plots"},
     {"F", "frame the scene"},
     {"Arrow keys", "nudge the target (IK goal) in the view plane"},
     {"PageUp / PageDown, Shift + Up / Down", "nudge the target away from / toward the camera"},
@@ -50,8 +54,8 @@ const char* const kKeys[][2] = {
     {"Wheel", "zoom"},
 };
 
-void helpMarker(const std::string& text) {
-  ImGui::SameLine();
+/// A "(?)" whose tooltip is `text`, at the cursor.
+void helpMark(const std::string& text) {
   ImGui::TextDisabled("(?)");
   if (ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
@@ -62,7 +66,39 @@ void helpMarker(const std::string& text) {
   }
 }
 
-void parameterWidgets(LabSession& session) {
+/// A "(?)" on the line of the item before.
+void helpMarker(const std::string& text) {
+  ImGui::SameLine();
+  helpMark(text);
+}
+
+/// After a widget and its "(?)": records `label` in ui.clippedLabels when the row ran past the panel's
+/// right edge (ImGui cuts it off there: "solver_subste").
+void noteIfClipped(UiState& ui, const std::string& label) {
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x > right + 0.5f) ui.clippedLabels.push_back(label);
+}
+
+/// Lecture mode puts a widget's "(?)" and its label (wrapped when longer than the panel) on a line of their
+/// own above a widget as wide as the panel, so that a narrow panel never cuts a label off ("solver_subste"). Returns the widget's ImGui
+/// label: `label` itself inline, hidden ("##label") under a label line. Call helpAfter after the widget.
+std::string labelLine(UiState& ui, const std::string& label, const std::string& help, bool above) {
+  if (!above) return label;
+  helpMark(help);  // first, so that a label wrapped onto two lines keeps it in view
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s", label.c_str());
+  noteIfClipped(ui, label);
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  return "##" + label;
+}
+/// The "(?)" after an inline widget (labelLine drew it already for a label line).
+void helpAfter(UiState& ui, const std::string& label, const std::string& help, bool above) {
+  if (above) return;
+  helpMarker(help);
+  noteIfClipped(ui, label);
+}
+
+void parameterWidgets(LabSession& session, UiState& ui) {
   // In an A/B run the panel edits the side chosen under Simulation; a parameter where B differs from A
   // has its name in B's colour.
   Scene& scene = session.editedRunner().scene();
@@ -83,44 +119,60 @@ void parameterWidgets(LabSession& session) {
         if (on) ImGui::PopStyleColor();
       }
     } pop{differs};
+    // A checkbox keeps its label beside it (wrapped in lecture mode, its "(?)" first).
+    const bool above = ui.lecture && p.kind != ParamKind::Flag;
+    const bool wrappedFlag = ui.lecture && p.kind == ParamKind::Flag;
     if (p.kind == ParamKind::Text) {
       // Applied on Enter, so that a half-typed path is never loaded.
+      const std::string help = p.tooltip + "\nPress Enter to apply.";
+      const std::string id = labelLine(ui, label, help, above);
       char buffer[2048];  // long enough for a list of every joint name of a character
       std::snprintf(buffer, sizeof buffer, "%s", p.getText().c_str());
-      if (ImGui::InputText(label.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
+      if (ImGui::InputText(id.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue)) {
         p.setText(buffer);
         resetNeeded = resetNeeded || p.needsReset;
       }
-      helpMarker(p.tooltip + "\nPress Enter to apply.");
+      helpAfter(ui, label, help, above);
       ImGui::PopID();
       continue;
     }
+    const std::string help = p.tooltip + (p.needsReset ? "\nTakes effect on reset." : "");
+    const std::string id = labelLine(ui, label, help, above);
     bool changed = false;
     double value = p.get();
     switch (p.kind) {
       case ParamKind::Real: {
         const ImGuiSliderFlags flags =
             (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0) | ImGuiSliderFlags_AlwaysClamp;
-        changed = ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max, "%.4g", flags);
+        changed = ImGui::SliderScalar(id.c_str(), ImGuiDataType_Double, &value, &p.min, &p.max, "%.4g", flags);
         break;
       }
       case ParamKind::Integer: {
         int v = static_cast<int>(value), lo = static_cast<int>(p.min), hi = static_cast<int>(p.max);
-        changed = ImGui::SliderInt(label.c_str(), &v, lo, hi, "%d",
+        changed = ImGui::SliderInt(id.c_str(), &v, lo, hi, "%d",
                                    ImGuiSliderFlags_AlwaysClamp | (p.logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
         value = v;
         break;
       }
       case ParamKind::Flag: {
         bool v = value != 0.0;
-        changed = ImGui::Checkbox(label.c_str(), &v);
+        if (wrappedFlag) {
+          helpMark(help);
+          ImGui::SameLine();
+          changed = ImGui::Checkbox(("##" + label).c_str(), &v);
+          ImGui::SameLine();
+          ImGui::TextWrapped("%s", label.c_str());
+          noteIfClipped(ui, label);
+        } else {
+          changed = ImGui::Checkbox(id.c_str(), &v);
+        }
         value = v ? 1.0 : 0.0;
         break;
       }
       case ParamKind::Choice: {
         int v = static_cast<int>(value);
         const std::string& current = p.choices.at(static_cast<size_t>(v));
-        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+        if (ImGui::BeginCombo(id.c_str(), current.c_str())) {
           for (size_t i = 0; i < p.choices.size(); ++i) {
             if (ImGui::Selectable(p.choices[i].c_str(), static_cast<int>(i) == v)) {
               v = static_cast<int>(i);
@@ -135,7 +187,7 @@ void parameterWidgets(LabSession& session) {
       case ParamKind::Text:
         break;  // handled above
     }
-    helpMarker(p.tooltip + (p.needsReset ? "\nTakes effect on reset." : ""));
+    helpAfter(ui, label, help, above || wrappedFlag);
     // Sliders clamp to the declared range, so the value is always valid: slider extremes are safe.
     if (changed) {
       p.set(std::clamp(value, p.min, p.max));
@@ -186,7 +238,7 @@ void compareControls(LabSession& session) {
   if (ImGui::Button("End A/B")) session.endCompare();
 }
 
-void simulationControls(LabSession& session) {
+void simulationControls(LabSession& session, UiState& ui) {
   SceneRunner& runner = session.editedRunner();
   if (ImGui::Button(runner.paused() ? "Run (Space)" : "Pause (Space)")) session.togglePause();
   sameLineIfFits("Step (O)");
@@ -197,20 +249,29 @@ void simulationControls(LabSession& session) {
 
   double dt = runner.dt();
   const double dtMin = kMinDt * 10, dtMax = kMaxDt;
-  if (ImGui::SliderScalar("dt [s]", ImGuiDataType_Double, &dt, &dtMin, &dtMax, "%.5f",
-                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+  const bool above = ui.lecture;
+  const std::string dtHelp =
+      "Fixed time step of the simulation. Smaller is more accurate and more stable, and costs more.";
+  if (ImGui::SliderScalar(labelLine(ui, "dt [s]", dtHelp, above).c_str(), ImGuiDataType_Double, &dt, &dtMin, &dtMax,
+                          "%.5f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     runner.setDt(dt, /*keepAcrossScenes=*/false);
-  helpMarker("Fixed time step of the simulation. Smaller is more accurate and more stable, and costs more.");
+  helpAfter(ui, "dt [s]", dtHelp, above);
   int substeps = runner.substeps();
-  if (ImGui::SliderInt("substeps", &substeps, 1, kMaxSubsteps, "%d", ImGuiSliderFlags_AlwaysClamp))
+  // Named apart from a solver's own "substeps" parameter (the cloth's, the ragdoll's): one name per control.
+  const std::string stepsHelp =
+      "The runner takes this many steps of dt / N for each step dt, for any scene (--substeps N on the command "
+      "line). A solver's own substeps, where the scene has them, are a parameter of the scene below.";
+  if (ImGui::SliderInt(labelLine(ui, "steps per dt", stepsHelp, above).c_str(), &substeps, 1, kMaxSubsteps, "%d",
+                       ImGuiSliderFlags_AlwaysClamp))
     runner.setSubsteps(substeps);
-  helpMarker("Each step is split into this many substeps of dt / substeps.");
+  helpAfter(ui, "steps per dt", stepsHelp, above);
   double scale = runner.timeScale();
   const double lo = kMinTimeScale, hi = kMaxTimeScale;
-  if (ImGui::SliderScalar("time scale", ImGuiDataType_Double, &scale, &lo, &hi, "%.2fx",
-                          ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+  const std::string scaleHelp = "Slow motion below 1, fast forward above 1. The physics step dt does not change.";
+  if (ImGui::SliderScalar(labelLine(ui, "time scale", scaleHelp, above).c_str(), ImGuiDataType_Double, &scale, &lo,
+                          &hi, "%.2fx", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     runner.setTimeScale(scale);
-  helpMarker("Slow motion below 1, fast forward above 1. The physics step dt does not change.");
+  helpAfter(ui, "time scale", scaleHelp, above);
   ImGui::Text("t = %.3f s   steps = %lld", runner.simTime(), static_cast<long long>(runner.steps()));
 }
 
@@ -314,6 +375,16 @@ void mainPanel(LabSession& session, UiState& ui) {
   ImGui::SetNextWindowPos(ImVec2(8, 8), cond);
   ImGui::SetNextWindowSize(ImVec2(panelWidthPixels(ui) - 8.0f, ImGui::GetIO().DisplaySize.y - 16), cond);
   const std::string title = "pba-" + session.lab() + "###panel";
+  if (ui.panelCollapsed) {  // a strip at the left edge: one button brings the panel back
+    ImGui::Begin(title.c_str(), nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar |
+                     ImGuiWindowFlags_NoCollapse);
+    if (ImGui::ArrowButton("##expand", ImGuiDir_Right)) ui.request(UiChange::TogglePanel);
+    noteWidget(ui, "expand_button");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the control panel (C)");
+    ImGui::End();
+    return;
+  }
   if (!ImGui::Begin(title.c_str())) {
     ImGui::End();
     return;
@@ -338,12 +409,21 @@ void mainPanel(LabSession& session, UiState& ui) {
   const std::vector<Preset> presets = session.runner().scene().presets();
   for (size_t i = 0; i < presets.size() && i < 9; ++i) {
     const std::string label = std::to_string(i + 1) + " " + presets[i].name;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    // A preset name wider than the panel: its number as the button, the name wrapped beside it.
+    if (ImGui::CalcTextSize(label.c_str()).x + 2.0f * style.FramePadding.x > ImGui::GetContentRegionAvail().x) {
+      if (ImGui::SmallButton((std::to_string(i + 1) + "##preset").c_str())) session.applyPreset(static_cast<int>(i));
+      ImGui::SameLine();
+      ImGui::TextWrapped("%s", presets[i].name.c_str());
+      continue;
+    }
     if (i > 0) sameLineIfFits(label.c_str());
     if (ImGui::SmallButton(label.c_str())) session.applyPreset(static_cast<int>(i));
+    noteIfClipped(ui, label);
   }
-  if (header(ui, "Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session);
+  if (header(ui, "Simulation", ImGuiTreeNodeFlags_DefaultOpen)) simulationControls(session, ui);
   if (header(ui, "Parameters", ImGuiTreeNodeFlags_DefaultOpen)) {
-    parameterWidgets(session);
+    parameterWidgets(session, ui);
     session.runner().scene().ui();
   }
   if (header(ui, "Metrics", ImGuiTreeNodeFlags_DefaultOpen)) metricsTable(session, ui);
@@ -353,6 +433,10 @@ void mainPanel(LabSession& session, UiState& ui) {
     bool lecture = ui.lecture;  // the mode changes between frames, never inside this one
     if (ImGui::Checkbox("lecture mode (L)", &lecture)) ui.request(UiChange::ToggleLecture);
     noteWidget(ui, "lecture_checkbox");
+    if (ImGui::Button("Collapse panel (C)")) ui.request(UiChange::TogglePanel);
+    sameLineIfFits("Plots (M)");
+    bool plots = ui.showPlots;
+    if (ImGui::Checkbox("Plots (M)", &plots)) ui.request(UiChange::TogglePlots);
     if (ImGui::Button("Frame scene (F)")) ui.frameRequested = true;
     sameLineIfFits("Screenshot (F12)");
     if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
@@ -399,6 +483,7 @@ void helpOverlay(UiState& ui) {
 }  // namespace
 
 float panelWidthPixels(const UiState& ui) {
+  if (ui.panelCollapsed) return kStripWidthInFonts * ImGui::GetFontSize() + 8.0f;
   const float share = ui.lecture ? kLecturePanelShare : kPanelShare;
   return std::min(kPanelWidth * ImGui::GetFontSize() / 16.0f, share * ImGui::GetIO().DisplaySize.x) + 8.0f;
 }
@@ -417,6 +502,14 @@ void UiState::applyPending() {
         break;
       case UiChange::ToggleHideUi:
         hideUi = !hideUi;
+        break;
+      case UiChange::TogglePanel:
+        panelCollapsed = !panelCollapsed;
+        relayout = true;
+        frameRequested = true;  // the scene takes the width the panel gave up (or gives it back)
+        break;
+      case UiChange::TogglePlots:
+        showPlots = !showPlots;
         break;
     }
   }
@@ -438,6 +531,7 @@ LabelBox placeLabel(float anchorX, float anchorY, float textW, float textH, floa
 
 void drawLabUi(LabSession& session, UiState& ui) {
   ui.widgets.clear();
+  ui.clippedLabels.clear();
   detail::banners(session, ui);
   detail::noticeWindow(ui);
   if (ui.noticeFrames > 0) --ui.noticeFrames;
@@ -455,7 +549,7 @@ void drawLabUi(LabSession& session, UiState& ui) {
   const bool overlay = session.runner().scene().wantsOverlay();
   if (!ui.hideUi) {
     mainPanel(session, ui);
-    plotsTop = detail::plotPanel(session, ui, &plotsLeft);
+    if (ui.showPlots) plotsTop = detail::plotPanel(session, ui, &plotsLeft);
     const float timelineRight = overlay ? std::min(plotsLeft, columnLeft) : plotsLeft;
     timelineTop = detail::timelineStrip(session, ui, legendLeft, timelineRight - 8.0f);
   }

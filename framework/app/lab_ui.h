@@ -15,7 +15,9 @@ namespace pba::app {
 /// A change of the window's mode. Keys and widgets only ask for it during a frame; UiState::applyPending
 /// carries it out between frames, so no frame is built under two readings of a mode (issue 15: L
 /// inside a frame unbalanced the lecture font's push and pop and aborted every lab).
-enum class UiChange { ToggleLecture, ToggleHideUi };
+/// TogglePanel (C): the control panel collapses to a strip at the left edge and back; TogglePlots (M): the
+/// plot window hides and shows.
+enum class UiChange { ToggleLecture, ToggleHideUi, TogglePanel, TogglePlots };
 
 /// A rectangle of the window [pixels, y down].
 struct LabelBox {
@@ -30,7 +32,12 @@ struct UiState {
   bool recordRequested = false;   ///< F9 or the Record button: start or stop a recording
   bool demoActive = false;        ///< playing a demo script: PageDown / PageUp move through its steps
   int demoMove = 0;               ///< steps asked for this frame (PageDown +1, PageUp −1)
-  bool showNotes = true;          ///< the demo's speaker notes window (key N)
+  bool panelCollapsed = false;    ///< the control panel is a strip (key C): the scene takes the width
+  bool showPlots = true;          ///< the plot window (key M)
+  /// Labels of the panel's widgets that did not fit in it this frame (the UI status reports them; a
+  /// lecture-layout test requires none).
+  std::vector<std::string> clippedLabels;
+  bool showNotes = false;         ///< the demo's speaker notes window (key N; the terminal has them always)
   std::string recording;          ///< while recording: "REC 3.2 s (192 frames)", else empty
   double recordingFraction = -1;  ///< share done of a recording with an end (--record), else negative
   bool frameRequested = false;

@@ -1,5 +1,7 @@
 #include "app/rewind_history.h"
 
+#include <algorithm>
+
 namespace pba::app {
 
 void RewindHistory::push(Frame frame) {
@@ -27,6 +29,14 @@ void RewindHistory::clear() {
 
 double RewindHistory::seconds() const {
   return frames_.empty() ? 0.0 : frames_.back().state.simTime - frames_.front().state.simTime;
+}
+
+double RewindHistory::capacitySeconds() const {
+  if (frames_.size() < 2) return 0.0;
+  const double count = static_cast<double>(frames_.size());
+  const double frameBytes = static_cast<double>(bytes_) / count;
+  const double framesHeld = std::min(static_cast<double>(maxFrames_), static_cast<double>(maxBytes_) / frameBytes);
+  return std::max(framesHeld, 1.0) * seconds() / (count - 1.0);
 }
 
 }  // namespace pba::app

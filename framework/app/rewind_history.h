@@ -50,6 +50,10 @@ class RewindHistory {
   std::size_t maxFrames() const { return maxFrames_; }
   /// Simulated time the history spans [s].
   double seconds() const;
+  /// Simulated time [s] the history holds when full, for the scene in it: the frame bound or the byte
+  /// bound over the mean bytes of a frame, whichever allows fewer frames, times the mean simulated time of
+  /// a frame. It scales inversely with the state's size. 0 with fewer than two frames (nothing to measure).
+  double capacitySeconds() const;
 
  private:
   std::size_t maxBytes_;

@@ -205,8 +205,10 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
   graphics::WindowDesc desc;
   desc.samples = multisamplesFromEnvironment(desc.samples);
   desc.title = "PBA Labs - " + lab;
-  desc.width = capture ? 1280 : session.settings().windowWidth;
-  desc.height = capture ? 720 : session.settings().windowHeight;
+  const auto [defaultWidth, defaultHeight] =
+      capture ? std::pair{1280, 720} : std::pair{session.settings().windowWidth, session.settings().windowHeight};
+  desc.width = options.size ? options.size->first : defaultWidth;
+  desc.height = options.size ? options.size->second : defaultHeight;
   desc.vsync = !capture;
   std::string error;
   std::unique_ptr<graphics::Window> window = graphics::Window::create(desc, &error);

@@ -79,7 +79,8 @@ void WindowDemo::notesWindow(const UiState& ui, float right) const {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float width = notesWidth();
   ImGui::SetNextWindowPos(ImVec2(right - 8.0f, 8.0f), ImGuiCond_Always, ImVec2(1, 0));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, display.y * 0.45f));
+  // As tall as the notes need (a cap clipped the last line of long notes), within the window.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, display.y - 16.0f));
   ImGui::SetNextWindowBgAlpha(0.9f);
   const std::string title =
       "Step " + std::to_string(index_ + 1) + " of " + std::to_string(script_.steps.size()) + "##notes";

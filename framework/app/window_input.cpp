@@ -68,11 +68,10 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
       case GLFW_KEY_O:
         session.singleStep();
         break;  // held: repeats
-      case GLFW_KEY_COMMA:
-        session.stepBack();
-        break;  // held: repeats
+      case GLFW_KEY_COMMA:  // one simulation step back (Shift: one second); held: repeats
       case GLFW_KEY_PERIOD:
-        session.stepForward();
+        session.stepBy((key == GLFW_KEY_COMMA ? -1 : 1) *
+                       ((mods & GLFW_MOD_SHIFT) != 0 ? session.stepsPerSecond() : std::int64_t{1}));
         break;
       case GLFW_KEY_R:
         session.reset();
@@ -102,6 +101,12 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
         break;
       case GLFW_KEY_F:
         ui.frameRequested = true;
+        break;
+      case GLFW_KEY_C:
+        ui.request(UiChange::TogglePanel);
+        break;
+      case GLFW_KEY_M:
+        ui.request(UiChange::TogglePlots);
         break;
       default:
         if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) session.applyPreset(key - GLFW_KEY_1);

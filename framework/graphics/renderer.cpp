@@ -44,8 +44,10 @@ struct GridColors {
 };
 constexpr GridColors kGridColors{
     {0.90f, 0.905f, 0.91f}, {0.78f, 0.79f, 0.81f}, {0.60f, 0.62f, 0.66f}, {0.85f, 0.45f, 0.42f}, {0.42f, 0.56f, 0.86f}};
+// The grid and its axes stay quieter than the physics: light greys, and axes only tinted (the saturated
+// red and blue axes were the strongest lines on a projected screen, and red is for danger).
 constexpr GridColors kLectureGridColors{
-    {0.95f, 0.955f, 0.96f}, {0.62f, 0.63f, 0.66f}, {0.36f, 0.38f, 0.42f}, {0.80f, 0.22f, 0.18f}, {0.16f, 0.36f, 0.80f}};
+    {0.95f, 0.955f, 0.96f}, {0.80f, 0.81f, 0.83f}, {0.66f, 0.68f, 0.71f}, {0.85f, 0.66f, 0.64f}, {0.64f, 0.71f, 0.85f}};
 // Lecture mode's background: nearly white, barely graded, so the scene's colours carry the picture.
 constexpr glm::vec3 kLectureBackgroundTop{0.90f, 0.93f, 0.96f};
 constexpr glm::vec3 kLectureBackgroundBottom{1.0f, 1.0f, 1.0f};

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <deque>
 #include <memory>
+#include <string>
 
 #include "app/scene_registry.h"
 #include "common.h"
@@ -104,8 +105,10 @@ class OscillatorScene final : public app::Scene {
       const ode::HarmonicOscillator& s = methods_[i].system;
       d.sphere(c + onPanel({s.positions()[0], s.velocities()[0]}), 0.07, color);
       d.sphere(c + onPanel({s.exactPosition(time_), s.exactVelocity(time_)}), 0.05, colors::kGrey);
-      const Color labelColor = selected(i) ? colors::kRed : colors::kDark;
-      d.text(c + (kPhaseLimit + 0.15) * kUp - kPhaseLimit * right(), ode::integratorName(methods_[i].integrator.kind()),
+      // The selected method is highlighted, not alarmed: red means danger (the guard, a violated limit).
+      const Color labelColor = selected(i) ? colors::kBlue : colors::kDark;
+      const std::string name(ode::integratorName(methods_[i].integrator.kind()));
+      d.text(c + (kPhaseLimit + 0.15) * kUp - kPhaseLimit * right(), selected(i) ? name + "  (selected)" : name,
              labelColor);
       char energy[48];
       std::snprintf(energy, sizeof energy, "E/E0 = %.3g", s.energy() / 0.5);

@@ -64,5 +64,21 @@ TEST(CommandLineFlags, FramesAndSecondsAreBounded) {
   EXPECT_FALSE(parseArgs({"--seconds", "0"}).ok());
 }
 
+TEST(CommandLineFlags, SizeIsWidthByHeightWithinTheWindowBounds) {
+  const Result<LabOptions> full = parseArgs({"--size", "1920x1080", "--screenshot", "a.png"});
+  ASSERT_TRUE(full.ok()) << full.error();
+  EXPECT_EQ(full.value().size, std::make_pair(1920, 1080));
+  EXPECT_EQ(parseArgs({"--size=320x240"}).value().size, std::make_pair(320, 240));
+  EXPECT_FALSE(parseArgs({}).value().size.has_value());
+  for (const char* bad : {"1920", "1920x", "x1080", "1920x1080x1", "-1920x1080", "319x240", "320x239", "8193x1080",
+                          "1920 x 1080", "1e3x1080", "99999999999x1080"}) {
+    const Result<LabOptions> r = parseArgs({"--size", bad});
+    ASSERT_FALSE(r.ok()) << bad;
+    EXPECT_EQ(r.error().rfind("--size: expected WIDTHxHEIGHT in pixels", 0), 0u) << r.error();
+    EXPECT_NE(r.error().find(std::string("'") + bad + "'"), std::string::npos) << r.error();
+  }
+  EXPECT_EQ(parseArgs({"--size", "1920x1080", "--headless"}).error(), "--size sets the window's size: drop --headless");
+}
+
 }  // namespace
 }  // namespace pba::app

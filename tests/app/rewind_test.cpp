@@ -89,6 +89,21 @@ RunnerSnapshot stateAt(double t) {
   return s;
 }
 
+TEST(RewindHistory, CapacityIsTheTighterBoundTimesTheTimeOfAFrame) {
+  RewindHistory none;
+  EXPECT_EQ(none.capacitySeconds(), 0.0);
+  RewindHistory byFrames(std::size_t(1) << 30, 5);  // 5 frames of 0.5 s
+  for (int i = 0; i < 3; ++i) byFrames.push(stateAt(0.5 * i), {{"i", i}});
+  EXPECT_NEAR(byFrames.capacitySeconds(), 5 * 0.5, 1e-12);
+  // Frames of equal size (measured on an unbounded history): a byte bound of ten frames holds ten.
+  RewindHistory unbounded(std::size_t(1) << 30, 1000);
+  for (int i = 0; i < 3; ++i) unbounded.push(stateAt(0.25 * i), {{"i", i}});
+  const std::size_t frameBytes = unbounded.bytes() / 3;
+  RewindHistory byBytes(10 * frameBytes, 1000);
+  for (int i = 0; i < 3; ++i) byBytes.push(stateAt(0.25 * i), {{"i", i}});
+  EXPECT_NEAR(byBytes.capacitySeconds(), 10 * 0.25, 1e-9);
+}
+
 TEST(RewindHistory, KeepsAtMostItsFrameCountDroppingTheOldest) {
   RewindHistory h(std::size_t(1) << 30, 5);
   for (int i = 0; i < 8; ++i) h.push(stateAt(i), {{"i", i}});
@@ -166,6 +181,66 @@ TEST(LabSessionRewind, StepForwardAtTheNewestFrameTakesANewStep) {
   EXPECT_EQ(session.history().size(), 2u);
   session.reset();
   EXPECT_EQ(session.history().size(), 1u);
+}
+
+TEST(LabSessionRewind, CommaAndPeriodMoveBySimulationStepsAndKeepTheHistory) {
+  SceneRunner runner;
+  ASSERT_TRUE(runner.load("constant", 1).ok());
+  LabSession session("test", runner, 1);
+  const Real dt = runner.dt(), v = testing::constantVelocitySceneOf(runner).speed;
+  for (int i = 0; i < 5; ++i) {
+    runner.advanceFrame(kDisplayFrame);
+    session.afterFrame();
+  }
+  const std::int64_t n = runner.steps();
+  ASSERT_GT(n, 5) << "the test needs frames of more than one step";
+  ASSERT_EQ(session.history().size(), 6u);
+  auto x = [&] { return testing::constantVelocitySceneOf(runner).x; };
+  session.stepBy(-1);  // between two kept frames
+  EXPECT_EQ(runner.steps(), n - 1);
+  EXPECT_NEAR(x(), static_cast<Real>(n - 1) * v * dt, 1e-12);  // x = steps · v · dt
+  EXPECT_TRUE(runner.paused());
+  EXPECT_EQ(session.history().size(), 6u);
+  session.stepBy(-3);
+  EXPECT_EQ(runner.steps(), n - 4);
+  EXPECT_NEAR(x(), static_cast<Real>(n - 4) * v * dt, 1e-12);
+  session.stepBy(+4);  // back at the newest frame
+  EXPECT_EQ(runner.steps(), n);
+  EXPECT_EQ(session.history().size(), 6u);
+  session.stepBy(+1);  // a new step
+  EXPECT_EQ(runner.steps(), n + 1);
+  EXPECT_EQ(session.history().size(), 7u);
+  // Shift: one second's worth of steps, clamped at the oldest frame.
+  EXPECT_EQ(session.stepsPerSecond(), std::llround(1.0 / dt));
+  session.stepBy(-session.stepsPerSecond());
+  EXPECT_EQ(runner.steps(), 0);
+  EXPECT_EQ(x(), 0.0);
+  session.stepBy(session.stepsPerSecond());
+  EXPECT_EQ(runner.steps(), session.stepsPerSecond());
+  EXPECT_NEAR(x(), static_cast<Real>(session.stepsPerSecond()) * v * dt, 1e-12);
+}
+
+TEST(LabSessionReset, ResetAfterTheGuardPausedTheSceneRunsItAgainAndAUserPauseStays) {
+  SceneRunner runner;
+  ASSERT_TRUE(runner.load("constant", 1).ok());
+  LabSession session("test", runner, 1);
+  testing::constantVelocitySceneOf(runner).poison = true;
+  runner.advanceFrame(kDisplayFrame);
+  ASSERT_TRUE(runner.guardMessage().has_value());
+  ASSERT_TRUE(runner.paused());
+  testing::constantVelocitySceneOf(runner).poison = false;
+  session.reset();
+  EXPECT_FALSE(runner.guardMessage().has_value());
+  EXPECT_FALSE(runner.paused()) << "R after the guard's pause must also run the scene";
+  const std::int64_t steps = runner.steps();
+  runner.advanceFrame(kDisplayFrame);
+  EXPECT_GT(runner.steps(), steps);
+  // Paused by the user, R resets and stays paused.
+  session.togglePause();
+  ASSERT_TRUE(runner.paused());
+  session.reset();
+  EXPECT_TRUE(runner.paused());
+  EXPECT_EQ(runner.steps(), 0);
 }
 
 }  // namespace

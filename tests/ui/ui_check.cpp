@@ -6,6 +6,9 @@
 // pinhole camera model for a drag, the camera's rotate speed and zoom factor for orbit and wheel.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <sys/wait.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -99,9 +102,9 @@ void checkScenes(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
-// Rewind: , steps one frame back through the rewind history and . one forward; the clock, the step count
-// and the plots go back with the state (each plotted series ends at the metric of the frame shown, one
-// sample per frame up to it); dragging the timeline strip to its left end shows the state at reset; Space
+// Rewind: , steps one simulation step back and . one forward, Shift+, one second back, the history kept; the
+// clock, the step count and the plots go back with the state (each plotted series ends at the metric of the
+// state shown, one sample per frame up to it and one for a state between frames); dragging the timeline strip to its left end shows the state at reset; Space
 // runs on from there and the later frames are discarded.
 void checkRewind(const std::string& exe, const std::string& work) {
   LabWindow lab(exe, {}, work);
@@ -110,23 +113,32 @@ void checkRewind(const std::string& exe, const std::string& work) {
   const json held = lab.frames(2);
   const long frames = held["history"]["frames"], newest = held["history"]["cursor"];
   expect(newest == frames - 1, "paused, the timeline is not at the newest frame");
+  // , and . move by one simulation step (a frame holds several), Shift by one second.
+  const long s0 = held["steps"];
   for (long k = 1; k <= 3; ++k) {
     lab.key("comma");
-    lab.waitFor([&](const json& s) { return s["history"]["cursor"].get<long>() == newest - k; },
-                ", to step back to frame " + std::to_string(newest - k));
+    lab.waitFor([&](const json& s) { return s["steps"].get<long>() == s0 - k; },
+                ", to step back to step " + std::to_string(s0 - k));
   }
   const json back = lab.frames(2);
-  expect(back["steps"].get<long>() < held["steps"].get<long>(), "the step count did not go back");
   expect(back["sim_time_s"].get<double>() < held["sim_time_s"].get<double>(), "the clock did not go back");
   expect(back["history"]["frames"].get<long>() == frames, "stepping back changed the history's length");
+  const long cursor = back["history"]["cursor"];
   for (const auto& [name, plot] : back["plots"].items()) {
     expect(plot["last"] == back["metrics"][name], "plot " + name + " ends at " + plot["last"].dump() +
-                                                      ", the frame shown has " + back["metrics"][name].dump());
-    expect(plot["samples"].get<long>() == std::min<long>(newest - 3 + 1, 600),
-           "plot " + name + " has " + plot["samples"].dump() + " samples for frame " + std::to_string(newest - 3));
+                                                      ", the state shown has " + back["metrics"][name].dump());
+    const long samples = plot["samples"];
+    expect(samples == std::min<long>(cursor + 1, 600) || samples == std::min<long>(cursor + 2, 600),
+           "plot " + name + " has " + std::to_string(samples) + " samples at frame " + std::to_string(cursor));
   }
   lab.key("period");
-  lab.waitFor([&](const json& s) { return s["history"]["cursor"].get<long>() == newest - 2; }, ". to step forward");
+  lab.waitFor([&](const json& s) { return s["steps"].get<long>() == s0 - 2; }, ". to step forward one step");
+  const double t1 = lab.frames(1)["sim_time_s"];
+  lab.key("shift+comma");
+  const json second = lab.waitFor([&](const json& s) { return s["steps"].get<long>() < s0 - 3; }, "Shift+, to go back");
+  // round(1 s / dt) steps of dt: one second within a step (dt ≤ 20 ms in every scene).
+  expect(std::abs(t1 - second["sim_time_s"].get<double>() - 1.0) < 0.02 || second["steps"] == 0,
+         "Shift+, went back " + std::to_string(t1 - second["sim_time_s"].get<double>()) + " s, not one second");
   const Rect bar = Rect::fromJson(lab.frames(1)["widgets"]["timeline"]);
   const double y = 0.5 * (bar.y0 + bar.y1);
   lab.drag(1, bar.x1 - 4, y, bar.x0 - 40, y);
@@ -141,8 +153,8 @@ void checkRewind(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
-// A demo script (--demo): the first step's scene, camera and notes window; PageDown / PageUp (xdotool
-// Next / Prior) move between this lab's steps; N hides the notes; PageDown onto another lab's step closes
+// A demo script (--demo): the first step's scene and camera, no notes on screen until N; PageDown / PageUp
+// (xdotool Next / Prior) move between this lab's steps; N hides the notes again; PageDown onto another lab's step closes
 // the window with exit 0 and leaves that step's number in the --demo-next file for ./pba demo.
 void checkDemo(const std::string& exe, const std::string& work) {
   const std::vector<std::string> list = listScenes(exe);
@@ -164,8 +176,11 @@ void checkDemo(const std::string& exe, const std::string& work) {
              .dump(2);
   fs::remove(next);
   LabWindow w(exe, {"--demo", script, "--demo-next", next}, work);
-  const json first = w.waitFor([&](const json& s) { return s["scene"] == list[0] && hasWindow(s, "Step 1 of 3"); },
-                               "step 1 with its notes window");
+  const json first = w.waitFor([&](const json& s) { return s["scene"] == list[0]; }, "step 1");
+  // The speaker notes go to the terminal; on the projector only behind N.
+  expect(!hasWindow(w.frames(2), "Step 1 of 3"), "the speaker notes are on screen before N");
+  w.key("n");
+  w.waitFor([&](const json& s) { return hasWindow(s, "Step 1 of 3"); }, "N to show the notes");
   expect(first["lecture"] == true, "a demo does not start in lecture mode");
   expect(near(first["camera"]["distance"].get<double>(), 7.5, 1e-4) &&
              near(vecAt(first["camera"]["target"], 1), 1.0, 1e-4),
@@ -265,6 +280,38 @@ void checkScreenshot(const std::string& exe, const std::string& work) {
       lab.waitFor([](const json& st) { return st["notice"].get<std::string>().empty(); }, "the notice to go", 10.0);
   expect(gone["frame"].get<double>() > shownAt, "the notice vanished at once");
   expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
+/// Width and height of a PNG file from its IHDR chunk (bytes 16–23, big-endian); (0, 0) if it is none.
+std::pair<long, long> pngSize(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  unsigned char b[24] = {};
+  if (!in.read(reinterpret_cast<char*>(b), 24) || std::string(reinterpret_cast<char*>(b) + 12, 4) != "IHDR")
+    return {0, 0};
+  auto be = [&](int at) { return (long{b[at]} << 24) | (long{b[at + 1]} << 16) | (long{b[at + 2]} << 8) | b[at + 3]; };
+  return {be(16), be(20)};
+}
+
+// --screenshot at --size WxH writes an image of exactly that size (the display's: 1280×720 or
+// 1920×1080), in lecture mode too; a bad size is one line on stderr and exit code 2, with no image.
+void checkScreenshotSize(const std::string& exe, const std::string& work) {
+  const auto [w, h] = displaySize();
+  const std::string size = std::to_string(w) + "x" + std::to_string(h);
+  const fs::path png = fs::path(work) / ("cli-" + size + ".png"), err = fs::path(work) / "stderr.txt";
+  const std::string base = "'" + exe + "' --frames 2 --screenshot '" + png.string() + "'";
+  const int rc = std::system((base + " --lecture --size " + size + " 2>'" + err.string() + "'").c_str());
+  expect(rc == 0, "--screenshot --size " + size + " failed (status " + std::to_string(rc) + ")");
+  const auto [pw, ph] = pngSize(png);
+  expect(pw == w && ph == h, png.string() + " is " + std::to_string(pw) + "x" + std::to_string(ph) + ", not " + size);
+  fs::remove(png);
+  const int bad = std::system((base + " --size 1920by1080 2>'" + err.string() + "'").c_str());
+  expect(WIFEXITED(bad) && WEXITSTATUS(bad) == 2, "--size 1920by1080 did not exit with status 2");
+  std::ifstream in(err);
+  const std::string message((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  expect(message.find("--size") != std::string::npos && message.find('\n') == message.size() - 1,
+         "--size 1920by1080: expected one line naming --size, got '" + message + "'");
+  expect(!fs::exists(png), "a bad --size still wrote " + png.string());
+  std::cout << "screenshot " << pw << "x" << ph << "; bad size: " << message;
 }
 
 // F9 starts a recording (MP4 with ffmpeg, else PNG files) and F9 stops it: every recorded frame is
@@ -390,7 +437,8 @@ void checkFrame(const std::string& exe, const std::string& work) {
   expect(!s["scene_rect"].is_null(), "after F nothing of the scene is in front of the camera");
   const Rect scene = Rect::fromJson(s["scene_rect"]);
   const Rect view{0, 0, vecAt(s["viewport"], 0), vecAt(s["viewport"], 1)};
-  expect(scene.intersect(view).area() > 0.5 * scene.area(), "after F the scene is mostly off screen");
+  expect(scene.intersect(view).area() > 0.5 * scene.area(),
+         "after F the scene is mostly off screen: its picture " + s["scene_rect"].dump() + " in " + s["viewport"].dump());
   expect(scene.area() > 0.02 * view.area(), "after F the scene is a speck");
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
@@ -588,6 +636,7 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
     expect(free >= 0.4 * view.area(), list[index] + ": the windows leave the scene less than 40 % of the screen");
     expect(covered <= kMaxCovered * picture.area(),
            list[index] + ": windows cover more than a third of the scene's picture");
+    expect(s["clipped_labels"].empty(), list[index] + ": labels cut off by the panel: " + s["clipped_labels"].dump());
     if (keep) {
       lab.key("F12");
       lab.waitFor(
@@ -600,6 +649,45 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
+double panelWidthOf(const json& s) {
+  for (const auto& [name, r] : windows(s))
+    if (name.find("###panel") != std::string::npos) return r.width();
+  return 0.0;
+}
+
+// Lecture mode: C collapses the control panel to a strip and the framing gives the scene the width; M hides
+// and shows the plots; the strip's button and C bring the panel back.
+void checkPanelStrip(const std::string& exe, const std::string& work) {
+  LabWindow lab(exe, {"--lecture"}, work);
+  pause(lab);
+  const json before = lab.frames(3);
+  const double wide = panelWidthOf(before), font = before["font_px"];
+  const double view = vecAt(before["viewport"], 0);
+  lab.key("c");
+  lab.waitFor([](const json& s) { return s["panel_collapsed"] == true; }, "C to collapse the panel");
+  const json framed = lab.frames(3);
+  const double narrow = panelWidthOf(framed);
+  std::printf("panel %.0f px, strip %.0f px of %.0f px\n", wide, narrow, view);
+  expect(narrow > 0 && narrow <= 3.0 * font + 16.0, "the collapsed panel is " + std::to_string(narrow) + " px wide");
+  expect(narrow < 0.05 * view, "the strip takes more than 5 % of the width");
+  const Rect pictureBefore = Rect::fromJson(before["scene_rect"]), pictureAfter = Rect::fromJson(framed["scene_rect"]);
+  expect(pictureAfter.x0 < pictureBefore.x0, "the scene did not move into the room the panel gave up");
+  const bool hadPlots = hasWindow(before, "Plots");
+  lab.key("m");
+  lab.waitFor([](const json& s) { return s["plots_shown"] == false && !hasWindow(s, "Plots"); }, "M to hide the plots");
+  lab.key("m");
+  lab.waitFor([&](const json& s) { return s["plots_shown"] == true && hasWindow(s, "Plots") == hadPlots; },
+              "M to show the plots");
+  lab.clickWidget("expand_button", "");
+  lab.waitFor([&](const json& s) { return s["panel_collapsed"] == false && panelWidthOf(s) > 2 * narrow; },
+              "the strip's button to bring the panel back");
+  lab.key("c");
+  lab.waitFor([](const json& s) { return s["panel_collapsed"] == true; }, "C to collapse the panel again");
+  lab.key("c");
+  lab.waitFor([](const json& s) { return s["panel_collapsed"] == false; }, "C to bring the panel back");
+  expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
 const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"step", checkStep},
                                               {"reset", checkReset},
@@ -609,6 +697,7 @@ const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"presets", checkPresets},
                                               {"help", checkHelp},
                                               {"screenshot", checkScreenshot},
+                                              {"screenshot-size", checkScreenshotSize},
                                               {"record", checkRecord},
                                               {"lecture", checkLecture},
                                               {"tab", checkTab},
@@ -616,7 +705,8 @@ const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"drag", checkDrag},
                                               {"orbit-zoom", checkOrbitAndZoom},
                                               {"bad-scene-file", checkBadSceneFile},
-                                              {"lecture-layout", checkLectureLayout}};
+                                              {"lecture-layout", checkLectureLayout},
+                                              {"panel-strip", checkPanelStrip}};
 
 }  // namespace
 }  // namespace pba::uitest

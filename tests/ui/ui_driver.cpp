@@ -61,6 +61,12 @@ Rect Rect::fromJson(const json& j) {
   return Rect{j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>(), j.at(3).get<double>()};
 }
 
+std::pair<int, int> displaySize() {
+  int w = 1280, h = 720;
+  std::istringstream(run("xdotool getdisplaygeometry 2>/dev/null")) >> w >> h;
+  return {w, h};
+}
+
 void expect(bool condition, const std::string& message) {
   if (!condition) throw CheckFailed(message);
 }
@@ -72,8 +78,7 @@ LabWindow::LabWindow(std::string exe, std::vector<std::string> args, std::string
   const std::filesystem::path settings = std::filesystem::path(work_) / "config" / "pba-labs" / lab / "settings.json";
   std::filesystem::create_directories(settings.parent_path());
   if (!std::filesystem::exists(settings)) {
-    int w = 1280, h = 720;
-    std::istringstream(run("xdotool getdisplaygeometry 2>/dev/null")) >> w >> h;
+    const auto [w, h] = displaySize();
     std::ofstream(settings) << json{{"window_width", w}, {"window_height", h}}.dump() << '\n';
   }
   std::filesystem::remove(statusPath_);

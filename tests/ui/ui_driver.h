@@ -8,6 +8,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -86,5 +87,7 @@ std::pair<double, double> freePoint(const json& status);
 /// True when (x, y) is inside the window and at least `margin` pixels from every panel and edge.
 bool isFree(const json& status, double x, double y, double margin);
 void expect(bool condition, const std::string& message);
+/// The X display's size [px] (xdotool getdisplaygeometry; 1280×720 when it cannot tell).
+std::pair<int, int> displaySize();
 
 }  // namespace pba::uitest
