@@ -73,6 +73,7 @@ class ClothScene : public app::Scene {
   Real gravity_ = kStandardGravity;           ///< [m/s²]
   Real friction_ = 0.4;                       ///< μ of the colliders
   SpringLayout layout_ = SpringLayout::Grid;  ///< of the grid scenes' springs
+  bool stableExplicit_ = true;                ///< explicit: substeps of at most half the stability limit
   // Display
   Pattern pattern_ = Pattern::Checker;
   bool strainColors_ = false, wireframe_ = false, showLinks_ = false;
