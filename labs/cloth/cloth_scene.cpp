@@ -172,6 +172,20 @@ void ClothScene::step(Real dt) {
   }
 }
 
+std::optional<Real> ClothScene::energyGainBound(Real reference) const {
+  const std::optional<Real> slack = Scene::energyGainBound(reference);
+  const Real v = driveSpeed();
+  if (v <= 0.0 || cloth_.size() == 0) return slack;
+  Real mass = 0.0;
+  Vec3 lo = cloth_.restPosition.front(), hi = lo;
+  for (std::size_t i = 0; i < cloth_.size(); ++i) {
+    if (cloth_.inverseMass[i] > 0.0) mass += 1.0 / cloth_.inverseMass[i];
+    lo = glm::min(lo, cloth_.restPosition[i]);
+    hi = glm::max(hi, cloth_.restPosition[i]);
+  }
+  return *slack + 2.0 * mass * v * v + mass * gravity_ * glm::length(hi - lo);
+}
+
 std::optional<std::string> ClothScene::divergedState() const {
   if (!stats_.diverged) return std::nullopt;
   return "the " + std::string(solverName(settings_.kind)) + " solver diverged (a particle passed " +
