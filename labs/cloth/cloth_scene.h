@@ -79,6 +79,7 @@ class ClothScene : public app::Scene {
   Real friction_ = 0.4;                       ///< μ of the colliders
   SpringLayout layout_ = SpringLayout::Grid;  ///< of the grid scenes' springs
   bool stableExplicit_ = true;                ///< explicit: substeps of at most half the stability limit
+  bool longRange_ = true;                     ///< PBD/XPBD: long range attachments to the pins
   // Display
   Pattern pattern_ = Pattern::Checker;
   bool strainColors_ = false, wireframe_ = false, showLinks_ = false;

@@ -73,6 +73,13 @@ struct ClothSolverSettings {
   /// needed (at most kMaxStableSubsteps). 0: exactly `substeps`, the published method, which grows without
   /// bound above the limit. The lab turns it on so that switching to explicit keeps the scene running.
   Real explicitLimitFraction = 0.0;
+  /// PBD/XPBD: long range attachments (Kim, Chentanez & Müller 2012): after the constraint sweeps, every free
+  /// particle farther from a pinned particle than their rest distance is moved back onto that distance
+  /// (unilateral). One sweep of Gauss–Seidel cannot carry a hanging cloth's weight up to its pins, so the
+  /// edges at the pins stretch by tens of per cent; these bound that stretch. The rest distance is the
+  /// straight one, the geodesic of a flat cloth (shorter than it for a curved rest shape). Not with tearing
+  /// (a tear changes the geodesics). false: the published PBD/XPBD.
+  bool longRangeAttachments = false;
 };
 /// The most substeps explicitLimitFraction may ask for in one step (k = 10⁶ N/m at 60 steps/s needs ~2,000).
 inline constexpr int kMaxStableSubsteps = 4000;
@@ -124,6 +131,7 @@ class ClothSolver {
   void positionBasedSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
                             const ClothSolverSettings& s, Real h, Real t, Real pinFraction, ClothStepStats& stats);
   void solveConstraints(Cloth& cloth, const ClothSolverSettings& s, Real h);
+  void attachToPins(Cloth& cloth) const;
   void endSubstep(Cloth& cloth, std::span<const Collider> colliders, const ClothSolverSettings& s, Real h,
                   bool velocityLevel, ClothStepStats& stats);
   /// Where pin k is due at `fraction` of the step: on the straight path from where it began the step
