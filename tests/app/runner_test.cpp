@@ -94,7 +94,7 @@ TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
 
 TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   SceneRunner r;
-  ASSERT_TRUE(r.load("constant", 1).ok());  // energy 0.5 J at reset
+  ASSERT_TRUE(r.load("constant", 1).ok());            // energy 0.5 J at reset
   testing::constantVelocitySceneOf(r).driven = true;  // no gain bound: only the factor of |E| at reset
   testing::constantVelocitySceneOf(r).energyBoost =
       0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine

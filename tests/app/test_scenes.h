@@ -59,7 +59,7 @@ class ConstantVelocityScene final : public Scene {
   int stepsTaken = 0;
   bool poison = false;
   Real energyBoost = 0.0;
-  bool driven = false;  ///< states no energy gain bound (only the runaway factor applies)
+  bool driven = false;    ///< states no energy gain bound (only the runaway factor applies)
   bool diverged = false;  ///< the solver says it diverged, with a finite state
 };
 
