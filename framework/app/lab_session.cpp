@@ -98,6 +98,7 @@ void LabSession::drag(int handle, const Vec3& target) {
   for (SceneRunner* r : {&runner_, partner_.get()}) {
     if (!r) continue;
     r->scene().drag(handle, target);
+    r->noteInput();
     if (r->paused()) r->scene().refresh();
   }
 }
@@ -106,6 +107,7 @@ void LabSession::release(int handle) {
   for (SceneRunner* r : {&runner_, partner_.get()}) {
     if (!r) continue;
     r->scene().release(handle);
+    r->noteInput();
     if (r->paused()) r->scene().refresh();
   }
 }
@@ -113,9 +115,12 @@ void LabSession::release(int handle) {
 bool LabSession::nudge(NudgeDirection direction, const Vec3& right, const Vec3& up, const Vec3& forward, Real sceneSize,
                        bool fine) {
   if (!nudgeScene(runner_.scene(), direction, right, up, forward, sceneSize, fine)) return false;
+  runner_.noteInput();
   if (runner_.paused()) runner_.scene().refresh();
-  if (partner_ && nudgeScene(partner_->scene(), direction, right, up, forward, sceneSize, fine) && partner_->paused())
-    partner_->scene().refresh();
+  if (partner_ && nudgeScene(partner_->scene(), direction, right, up, forward, sceneSize, fine)) {
+    partner_->noteInput();
+    if (partner_->paused()) partner_->scene().refresh();
+  }
   return true;
 }
 

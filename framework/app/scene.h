@@ -16,6 +16,11 @@
 
 namespace pba::app {
 
+/// The share of |energy| a passive scene's energy may rise by before the guard pauses it (Scene::energyGainBound).
+inline constexpr Real kPassiveEnergySlack = 0.05;
+/// [J] The smallest energy scale of the guard (a scene at rest at zero energy still gets a bound).
+inline constexpr Real kMinEnergyScale = 1e-3;
+
 using Ray = pba::Ray;  ///< e.g. from the cursor through the scene
 
 /// What a scene reports when a ray hits one of its draggable objects.
@@ -107,6 +112,12 @@ class Scene {
   virtual std::optional<std::string> divergedState() const { return std::nullopt; }
   /// Total energy [J] for the runaway guard, when the scene has one.
   virtual std::optional<Real> energy() const { return std::nullopt; }
+  /// How much energy [J] the scene may gain over `reference`, its energy() at reset or at the user's last
+  /// input (drag, nudge, scene key, parameter edit), before the guard pauses it (issue 35). A passive scene
+  /// never gains energy: the default allows only a numerical slack of kPassiveEnergySlack of |reference|
+  /// (at least 1 mJ), which integrators' bounded energy oscillation stays within. A scene driven by a motor,
+  /// wind or an emitter states its own bound; nullopt leaves only the runaway factor of |E| at reset.
+  virtual std::optional<Real> energyGainBound(Real reference) const;
   /// Metrics plotted over time when the user has not chosen any (e.g. {"energy_J"}).
   virtual std::vector<std::string> defaultPlots() const { return {}; }
   /// Keys 1–9.

@@ -37,7 +37,24 @@ void SceneRunner::reset() {
   guardMessage_.reset();
   frameStats_.clear();
   const std::optional<Real> e = scene_->energy();
-  energyScale_ = e ? std::max(std::abs(*e), 1e-3) : 0.0;
+  energyScale_ = e ? std::max(std::abs(*e), kMinEnergyScale) : 0.0;
+  rebaseEnergy();
+}
+
+void SceneRunner::noteInput() {
+  if (scene_) rebaseEnergy();
+}
+
+void SceneRunner::rebaseEnergy() {
+  energyReference_ = scene_->energy();
+  paramValues_ = paramValues();
+}
+
+std::vector<double> SceneRunner::paramValues() const {
+  std::vector<double> values;
+  for (const Param& p : scene_->params().all())
+    if (p.get) values.push_back(p.get());
+  return values;
 }
 
 std::size_t RunnerSnapshot::bytes() const {
@@ -50,6 +67,8 @@ RunnerSnapshot SceneRunner::snapshot() const {
   s.simTime = simTime_;
   s.accumulator = accumulator_;
   s.energyScale = energyScale_;
+  s.energyReference = energyReference_;
+  s.paramValues = paramValues_;
   s.steps = steps_;
   s.finite = finite_;
   s.guardMessage = guardMessage_;
@@ -61,6 +80,8 @@ bool SceneRunner::restore(const RunnerSnapshot& s) {
   simTime_ = s.simTime;
   accumulator_ = s.accumulator;
   energyScale_ = s.energyScale;
+  energyReference_ = s.energyReference;
+  paramValues_ = s.paramValues;
   steps_ = s.steps;
   finite_ = s.finite;
   guardMessage_ = s.guardMessage;
@@ -112,16 +133,24 @@ void SceneRunner::checkGuard() {
                     "integrator, then press R to reset.";
     return;
   }
-  if (energyScale_ > 0.0) {
-    const std::optional<Real> e = scene_->energy();
-    if (e && std::abs(*e) > kRunawayEnergyFactor * energyScale_) {
-      paused_ = true;
-      guardMessage_ = "Paused: energy grew from " + formatTime(energyScale_) + " J to " + formatTime(*e) +
-                      " J by t = " + formatTime(simTime_) +
-                      " s (runaway). Try a smaller time step (dt), more substeps, more damping or a more stable "
-                      "integrator, then press R to reset.";
-    }
+  if (energyScale_ <= 0.0) return;
+  const std::optional<Real> e = scene_->energy();
+  if (!e) return;
+  // A parameter edited between steps (panel, file, soak) changes the energy by itself: count from here.
+  if (energyReference_ && paramValues() != paramValues_) rebaseEnergy();
+  Real from = energyScale_;
+  bool runaway = std::abs(*e) > kRunawayEnergyFactor * energyScale_;
+  if (!runaway && energyReference_) {
+    const std::optional<Real> bound = scene_->energyGainBound(*energyReference_);
+    runaway = bound && *e > *energyReference_ + *bound;
+    from = *energyReference_;
   }
+  if (!runaway) return;
+  paused_ = true;
+  guardMessage_ = "Paused: energy grew from " + formatTime(from) + " J to " + formatTime(*e) +
+                  " J by t = " + formatTime(simTime_) +
+                  " s (runaway). Try a smaller time step (dt), more substeps, more damping or a more stable "
+                  "integrator, then press R to reset.";
 }
 
 void SceneRunner::advanceFrame(Real frameSeconds, int maxSteps) {

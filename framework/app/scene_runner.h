@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/scene.h"
 #include "app/step_stats.h"
@@ -30,6 +31,8 @@ struct RunnerSnapshot {
   Real simTime = 0.0;
   Real accumulator = 0.0;
   Real energyScale = 0.0;
+  std::optional<Real> energyReference;
+  std::vector<double> paramValues;
   std::int64_t steps = 0;
   bool finite = true;
   std::optional<std::string> guardMessage;
@@ -85,11 +88,18 @@ class SceneRunner {
   const std::optional<std::string>& guardMessage() const { return guardMessage_; }
   /// False once any step produced a non-finite state (stays false until reset).
   bool finite() const { return finite_; }
+  /// The user put energy in (a drag, a nudge, a scene key): the energy bound starts again from the
+  /// scene's energy now. Parameter edits are noticed by the runner itself.
+  void noteInput();
 
  private:
   /// Runs one fixed step (as `substeps` sub-steps) and the guard; false when the guard tripped.
   bool stepOnce();
   void checkGuard();
+  /// Sets the energy the bound counts from to the scene's energy now (reset, input, parameter edits).
+  void rebaseEnergy();
+  /// The scene's numeric parameter values, to notice edits between steps.
+  std::vector<double> paramValues() const;
 
   std::unique_ptr<Scene> scene_;
   std::string sceneName_;
@@ -102,6 +112,8 @@ class SceneRunner {
   Real simTime_ = 0.0;
   std::int64_t steps_ = 0;
   Real energyScale_ = 0.0;
+  std::optional<Real> energyReference_;  ///< [J] energy at reset or the user's last input
+  std::vector<double> paramValues_;      ///< at the last rebase
   bool finite_ = true;
   StepStats frameStats_;
   std::optional<std::string> guardMessage_;

@@ -110,8 +110,9 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
         break;
       default:
         if (key >= GLFW_KEY_1 && key <= GLFW_KEY_9) session.applyPreset(key - GLFW_KEY_1);
-        if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z)  // a scene's own key (PBA_REGISTER_LAB_KEY)
-          session.runner().scene().keyPressed(static_cast<char>('A' + (key - GLFW_KEY_A)));
+        if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z &&  // a scene's own key (PBA_REGISTER_LAB_KEY)
+            session.runner().scene().keyPressed(static_cast<char>('A' + (key - GLFW_KEY_A))))
+          session.runner().noteInput();  // it may throw or push: the energy bound counts from here
         break;
     }
   }

@@ -28,8 +28,9 @@ class SplinesScene final : public AnimScene {
     params_.flag("show_hermite", &show_[1], "Draw the Hermite (cardinal) curve (purple).");
     params_.flag("show_natural_cubic", &show_[2], "Draw the natural cubic spline (green).");
     params_.flag("show_linear", &show_[3], "Draw the piecewise-linear curve (grey).");
-    params_.real("arrow_scale", &arrowScale_, 0.01, 1.0, "s",
-                 "Velocity arrows are v × this, acceleration arrows a × this². Typical 0.25 s.");
+    params_.real("arrow_scale", &arrowScale_, 0.01, 1.0, "s", "Velocity arrows are v × this. Typical 0.25 s.");
+    params_.real("acceleration_scale", &accelerationScale_, 0.001, 0.1, "s²",
+                 "Acceleration arrows are a × this. Typical 0.01 s² (the kinks at the knots reach 50 m/s²).");
   }
   std::string description() const override {
     return "Four interpolants through the same draggable knots; the ball's blue and red arrows are the chosen curve's "
@@ -62,7 +63,7 @@ class SplinesScene final : public AnimScene {
     }
     d.sphere(ball_, 0.13, colors::kYellow);
     d.arrow(ball_, ball_ + arrowScale_ * velocity_, colors::kBlue);
-    d.arrow(ball_, ball_ + arrowScale_ * arrowScale_ * acceleration_, colors::kRed);
+    d.arrow(ball_, ball_ + accelerationScale_ * acceleration_, colors::kRed);
     d.text(ball_ + Vec3(0.0, 0.25, 0.0), std::string("t = ") + std::to_string(time()).substr(0, 4) + " s",
            colors::kDark);
   }
@@ -167,7 +168,8 @@ class SplinesScene final : public AnimScene {
   Real tension_ = 0.5;
   bool uniform_ = false;
   bool show_[4] = {true, true, true, true};
-  Real arrowScale_ = 0.25;
+  Real arrowScale_ = 0.25;         // [s]
+  Real accelerationScale_ = 0.01;  // [s²] a tenth of arrow_scale²: the curves stay the largest thing drawn
   Vec3 ball_{0.0}, velocity_{0.0}, acceleration_{0.0};
 };
 

@@ -108,9 +108,8 @@ void ClothScene::drawCloth(DebugDraw& d, const Cloth& c, const Color& base) cons
     }
     groups[static_cast<std::size_t>(g)].insert(groups[static_cast<std::size_t>(g)].end(), t.begin(), t.end());
   }
-  // Sand squares: light enough to show the folds' shading, dark enough to stand off the nearly white
-  // floor of lecture mode (ecru squares blended into it and the bottom row looked torn).
-  if (pattern_ == Pattern::Checker) tint[1] = Color{0.78f, 0.66f, 0.46f, base.a};
+  // Slate squares: dark against the white floor, so that a square on it never reads as a hole in the cloth.
+  if (pattern_ == Pattern::Checker) tint[1] = Color{0.22f, 0.26f, 0.34f, base.a};
   for (std::size_t g = 0; g < groups.size(); ++g) {
     if (!groups[g].empty()) d.triangles(c.position, normals, groups[g], strainColors_ ? kStrainColors[g] : tint[g]);
   }

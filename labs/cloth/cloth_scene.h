@@ -30,6 +30,9 @@ class ClothScene : public app::Scene {
   std::optional<std::string> nonFiniteState() const override { return describeNonFinite(cloth_); }
   std::optional<std::string> divergedState() const override;
   std::optional<Real> energy() const override { return clothEnergy(cloth_, env_, settings_.kind, settings_.bending); }
+  /// Passive scenes keep the guard's slack; a driven one may also gain the kinetic energy of its cloth at twice
+  /// driveSpeed() and the work of lifting it by its own size.
+  std::optional<Real> energyGainBound(Real reference) const override;
   std::vector<std::string> defaultPlots() const override { return {"energy_J", "max_strain"}; }
   std::vector<app::Preset> presets() const override;
   std::optional<app::PickHit> pick(const app::Ray& ray) const override;
@@ -53,6 +56,8 @@ class ClothScene : public app::Scene {
   /// Applies the live parameters (stiffness, compliance, damping, gravity, thickness) to the material,
   /// the environment and the solver settings.
   void applyParams();
+  /// [m/s] How fast what drives the cloth moves (wind, moving pins, a pushing collider); 0: a passive scene.
+  virtual Real driveSpeed() const { return 0.0; }
   /// Draws one cloth (its pattern, strain colours or plain), with an optional tint.
   void drawCloth(DebugDraw& d, const Cloth& c, const Color& base) const;
   void drawColliders(DebugDraw& d) const;
@@ -73,6 +78,8 @@ class ClothScene : public app::Scene {
   Real gravity_ = kStandardGravity;           ///< [m/s²]
   Real friction_ = 0.4;                       ///< μ of the colliders
   SpringLayout layout_ = SpringLayout::Grid;  ///< of the grid scenes' springs
+  bool stableExplicit_ = true;                ///< explicit: substeps of at most half the stability limit
+  bool longRange_ = true;                     ///< PBD/XPBD: long range attachments to the pins
   // Display
   Pattern pattern_ = Pattern::Checker;
   bool strainColors_ = false, wireframe_ = false, showLinks_ = false;

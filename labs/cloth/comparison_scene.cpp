@@ -32,7 +32,7 @@ class ComparisonScene final : public ClothScene {
       cloths_[k].material = material_;
       if (s.kind == ClothSolverKind::Explicit) {
         // As many substeps as symplectic Euler needs: half the stability bound 2/ω_max.
-        s.substeps = std::max(1, static_cast<int>(std::ceil(dt / (0.5 * explicitStabilityLimit(cloths_[k])))));
+        s.substeps = stableExplicitSubsteps(cloths_[k], dt, 0.5);
       } else if (s.kind == ClothSolverKind::Implicit) {
         s.substeps = 1;
       } else if (s.kind == ClothSolverKind::Pbd) {
@@ -60,7 +60,7 @@ class ComparisonScene final : public ClothScene {
       j[name + "_max_strain"] = edgeStrain(cloths_[k]).max;
       j[name + "_energy_J"] = clothEnergy(cloths_[k], env_, kAllClothSolvers[k]);
     }
-    j["explicit_substeps"] = static_cast<int>(std::ceil((1.0 / 60.0) / (0.5 * explicitStabilityLimit(cloths_[0]))));
+    j["explicit_substeps"] = stableExplicitSubsteps(cloths_[0], 1.0 / 60.0, 0.5);
     j["implicit_cg_iterations"] = stats_[1].cgIterations;
     j["step_ms"] = ms_[0] + ms_[1] + ms_[2] + ms_[3];
     particles::SpatialHash hash;

@@ -64,6 +64,9 @@ class CurtainScene final : public ClothScene {
               colors::kDark);
   }
 
+  /// The rings' fastest speed along the rail, |d span/dt| at a quarter period.
+  Real driveSpeed() const override { return kPi * kWidth * (1.0 - openFraction_) / period_; }
+
  private:
   Real period_ = 6.0, openFraction_ = 0.25;
 };

@@ -63,6 +63,8 @@ class FlagScene final : public ClothScene {
     d.arrow(Vec3(-1.6, 2.7, 0.0), Vec3(-1.6 + 0.06 * windSpeed_, 2.7, 0.0), colors::kTeal);
   }
 
+  Real driveSpeed() const override { return windSpeed_ + gust_; }
+
  private:
   Real windSpeed_ = 8.0, gust_ = 3.0;
 };

@@ -102,6 +102,8 @@ void RagdollScene::start(const ragdoll::RagdollDesc& desc, Real half) {
   particleRest_ = constraintRest_ = Rest{};
   particleMs_ = constraintMs_ = 0.0;
   dragStarted_ = false;
+  stepped_ = false;
+  startEnergy_ = *energy();
 }
 
 void RagdollScene::updateRest(Rest& rest, Real kinetic, Real dt) const {
@@ -116,6 +118,7 @@ void RagdollScene::step(Real dt) {
   constraint_.world().settings() = constraintSettings_.world;
   auto start = std::chrono::steady_clock::now();
   particle_.step(dt);
+  stepped_ = true;
   particleMs_ = msSince(start);
   start = std::chrono::steady_clock::now();
   constraint_.step(dt);
@@ -182,7 +185,16 @@ std::optional<std::string> RagdollScene::nonFiniteState() const {
 std::optional<Real> RagdollScene::energy() const {
   const ragdoll::ParticleStats p = particle_.stats();
   const ragdoll::ConstraintStats c = constraint_.stats();
-  return p.kineticEnergy + p.potentialEnergy + c.kineticEnergy + c.potentialEnergy;
+  // Before its first step the particle ragdoll's velocities are implicit in nothing yet (Verlet); both
+  // ragdolls start with the description's velocities and the same mass distribution, so the constraint
+  // ragdoll's kinetic energy is also the particle ragdoll's.
+  const Real particleKinetic = stepped_ ? p.kineticEnergy : c.kineticEnergy;
+  return particleKinetic + p.potentialEnergy + c.kineticEnergy + c.potentialEnergy;
+}
+
+std::optional<Real> RagdollScene::energyGainBound(Real reference) const {
+  const Real base = std::max(startEnergy_, reference);
+  return base + app::kPassiveEnergySlack * std::max(std::abs(base), app::kMinEnergyScale) - reference;
 }
 
 std::vector<app::Preset> RagdollScene::presets() const {

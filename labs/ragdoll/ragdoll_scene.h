@@ -24,6 +24,9 @@ class RagdollScene : public app::Scene {
   nlohmann::json metrics() const override;
   std::optional<std::string> nonFiniteState() const override;
   std::optional<Real> energy() const override;
+  /// Passive from the last start (reset, or the IK scene's switch, which brings the IK motion's energy):
+  /// the guard's slack over the larger of the energy then and at the user's last input.
+  std::optional<Real> energyGainBound(Real reference) const override;
   Real defaultDt() const override { return 1.0 / 60.0; }
   std::vector<std::string> defaultPlots() const override {
     return {"particle_kinetic_energy_J", "constraint_kinetic_energy_J"};
@@ -81,6 +84,8 @@ class RagdollScene : public app::Scene {
   Rest particleRest_, constraintRest_;
   Real particleMs_ = 0.0, constraintMs_ = 0.0;
   bool dragStarted_ = false;
+  bool stepped_ = false;    ///< a step since start() (the particle ragdoll's velocities exist only then)
+  Real startEnergy_ = 0.0;  ///< [J] energy() at start()
 };
 
 }  // namespace pba::lab

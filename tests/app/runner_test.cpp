@@ -94,7 +94,8 @@ TEST(SceneRunner, NonFiniteStatePausesWithAMessageNamingItAndWhatToTry) {
 
 TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   SceneRunner r;
-  ASSERT_TRUE(r.load("constant", 1).ok());  // energy 0.5 J at reset
+  ASSERT_TRUE(r.load("constant", 1).ok());            // energy 0.5 J at reset
+  testing::constantVelocitySceneOf(r).driven = true;  // no gain bound: only the factor of |E| at reset
   testing::constantVelocitySceneOf(r).energyBoost =
       0.5 * kRunawayEnergyFactor - 1.0;  // |E| = 49.5 J < 100 × 0.5 J: fine
   r.advanceFrame(0.1);
@@ -104,6 +105,51 @@ TEST(SceneRunner, RunawayEnergyPausesTheScene) {
   EXPECT_TRUE(r.paused());
   ASSERT_TRUE(r.guardMessage().has_value());
   EXPECT_NE(r.guardMessage()->find("runaway"), std::string::npos);
+}
+
+// Issue 35: a passive scene may not gain energy; the bound counts from reset or the user's last input.
+TEST(SceneRunner, APassiveSceneThatGainsMoreThanTheSlackIsPausedAsARunaway) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());  // energy 0.5 J at reset, 1 m/s
+  const Real e0 = 0.5;
+  testing::constantVelocitySceneOf(r).energyBoost = 0.9 * kPassiveEnergySlack * e0;  // within the slack
+  r.advanceFrame(0.1);
+  EXPECT_FALSE(r.paused());
+  testing::constantVelocitySceneOf(r).energyBoost = 1.1 * kPassiveEnergySlack * e0;  // 0.5 % of E0 past it
+  r.advanceFrame(0.1);
+  EXPECT_TRUE(r.paused());
+  ASSERT_TRUE(r.guardMessage().has_value());
+  EXPECT_NE(r.guardMessage()->find("runaway"), std::string::npos);
+  EXPECT_NE(r.guardMessage()->find("press R to reset"), std::string::npos);
+  EXPECT_TRUE(r.finite());
+  r.reset();  // the boost stays: the reference is now the boosted energy, so no pause
+  r.setPaused(false);
+  r.advanceFrame(0.1);
+  EXPECT_FALSE(r.paused());
+}
+
+TEST(SceneRunner, TheEnergyBoundCountsFromTheUsersLastInput) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  testing::constantVelocitySceneOf(r).energyBoost = 10.0;  // a drag threw the point
+  r.noteInput();
+  r.advanceFrame(0.1);
+  EXPECT_FALSE(r.paused()) << "energy the user put in is not a runaway";
+  testing::constantVelocitySceneOf(r).energyBoost = 11.0;  // then it gains on its own: 1 J of 10.5 J
+  r.advanceFrame(0.1);
+  EXPECT_TRUE(r.paused());
+}
+
+TEST(SceneRunner, AParameterEditMovesTheEnergyBoundWithoutAPause) {
+  SceneRunner r;
+  ASSERT_TRUE(r.load("constant", 1).ok());
+  r.advanceFrame(0.1);
+  testing::constantVelocitySceneOf(r).speed = 3.0;  // parameter 'speed' edited: 4.5 J, not a runaway
+  r.advanceFrame(0.1);
+  EXPECT_FALSE(r.paused());
+  testing::constantVelocitySceneOf(r).energyBoost = 0.5;  // 5 J: 11 % more than at the edit
+  r.advanceFrame(0.1);
+  EXPECT_TRUE(r.paused());
 }
 
 TEST(SceneRunner, ASolverThatSaysItDivergedPausesTheSceneWhileItsStateIsFinite) {

@@ -41,6 +41,9 @@ class ConstantVelocityScene final : public Scene {
     return std::nullopt;
   }
   std::optional<Real> energy() const override { return 0.5 * speed * speed + energyBoost; }
+  std::optional<Real> energyGainBound(Real reference) const override {
+    return driven ? std::nullopt : Scene::energyGainBound(reference);
+  }
   std::optional<std::string> divergedState() const override {
     return diverged ? std::optional<std::string>("the test solver diverged") : std::nullopt;
   }
@@ -56,6 +59,7 @@ class ConstantVelocityScene final : public Scene {
   int stepsTaken = 0;
   bool poison = false;
   Real energyBoost = 0.0;
+  bool driven = false;    ///< states no energy gain bound (only the runaway factor applies)
   bool diverged = false;  ///< the solver says it diverged, with a finite state
 };
 

@@ -44,11 +44,27 @@ void ClothSolver::positionBasedSubstep(Cloth& cloth, const ClothEnvironment& env
   movePins(cloth, pinFraction);
   collideAll(colliders, cloth.position, previous_, cloth.inverseMass, 0.5 * cloth.material.thickness, h, {}, 0.0);
   solveConstraints(cloth, s, h);
+  if (s.longRangeAttachments && !s.tearing.enabled) attachToPins(cloth);
   endSubstep(cloth, colliders, s, h, false, stats);
   const Real damping = std::exp(-env.massDamping * h);
   for (std::size_t i = 0; i < n; ++i) {
     cloth.velocity[i] = (cloth.position[i] - previous_[i]) / h;
     if (cloth.inverseMass[i] != 0.0) cloth.velocity[i] *= damping;
+  }
+}
+
+void ClothSolver::attachToPins(Cloth& cloth) const {
+  // Kim et al. 2012 §4: C(x) = |x − p| − d ≤ 0 with the pin p fixed, so only x moves, straight to the sphere.
+  for (const Pin& pin : cloth.pins) {
+    const Vec3 p = cloth.position[pin.particle];
+    const Vec3 pRest = cloth.restPosition[pin.particle];
+    for (std::size_t i = 0; i < cloth.size(); ++i) {
+      if (cloth.inverseMass[i] == 0.0) continue;
+      const Vec3 r = cloth.position[i] - p;
+      const Real d = glm::length(cloth.restPosition[i] - pRest);
+      const Real l2 = glm::dot(r, r);
+      if (l2 > d * d) cloth.position[i] = p + (d / std::sqrt(l2)) * r;
+    }
   }
 }
 

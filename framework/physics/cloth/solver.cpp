@@ -53,6 +53,8 @@ Status validate(const ClothSolverSettings& s) {
   if (s.implicit.maxHalvings < 0 || s.implicit.maxHalvings > 20)
     return Error{"maxHalvings: must be in [0, 20], got " + std::to_string(s.implicit.maxHalvings)};
   if (!(s.divergedSpeed >= 0.0)) return Error{"divergedSpeed: must be ≥ 0 (0 = no check)"};
+  if (!(s.explicitLimitFraction >= 0.0 && s.explicitLimitFraction <= 1.0))
+    return Error{"explicitLimitFraction: must be in [0, 1] (0 = the substeps asked)"};
   return Status::success();
 }
 
@@ -91,6 +93,11 @@ Real explicitStabilityLimit(const Cloth& cloth) {
   return omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<Real>::infinity();
 }
 
+int stableExplicitSubsteps(const Cloth& cloth, Real dt, Real fraction) {
+  const Real needed = std::ceil(dt / (fraction * explicitStabilityLimit(cloth)));
+  return needed >= kMaxStableSubsteps ? kMaxStableSubsteps : std::max(1, static_cast<int>(needed));
+}
+
 void ClothSolver::reset() {
   implicit_ = ImplicitWorkspace{};
   self_ = SelfCollision{};
@@ -124,7 +131,10 @@ bool diverged(std::span<const Vec3> velocity, Real limit) {
 ClothStepStats ClothSolver::step(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
                                  const ClothSolverSettings& s, Real dt, Real t) {
   ClothStepStats stats;
-  const int n = std::max(1, s.substeps);
+  int n = std::max(1, s.substeps);
+  if (s.kind == ClothSolverKind::Explicit && s.explicitLimitFraction > 0.0)
+    n = std::max(n, stableExplicitSubsteps(cloth, dt, s.explicitLimitFraction));
+  stats.substepsPlanned = n;
   const Real h = dt / n;
   if (diverged(cloth.velocity, s.divergedSpeed)) {
     stats.diverged = true;  // nothing to gain from stepping a blown-up state; the lab's guard pauses

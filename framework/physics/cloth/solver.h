@@ -68,7 +68,21 @@ struct ClothSolverSettings {
   /// search of a frame grows with the speeds; one frame of the ribbon took 80 s) until the lab's guard
   /// pauses. 0 turns the check off. No cloth in the labs comes near it (a free fall from 10 m: 14 m/s).
   Real divergedSpeed = 1000.0;
+  /// Explicit only (ours, not part of symplectic Euler): when > 0, each substep is at most this fraction
+  /// of the stability limit 2/ω_max (explicitStabilityLimit), taking more substeps than `substeps` where
+  /// needed (at most kMaxStableSubsteps). 0: exactly `substeps`, the published method, which grows without
+  /// bound above the limit. The lab turns it on so that switching to explicit keeps the scene running.
+  Real explicitLimitFraction = 0.0;
+  /// PBD/XPBD: long range attachments (Kim, Chentanez & Müller 2012): after the constraint sweeps, every free
+  /// particle farther from a pinned particle than their rest distance is moved back onto that distance
+  /// (unilateral). One sweep of Gauss–Seidel cannot carry a hanging cloth's weight up to its pins, so the
+  /// edges at the pins stretch by tens of per cent; these bound that stretch. The rest distance is the
+  /// straight one, the geodesic of a flat cloth (shorter than it for a curved rest shape). Not with tearing
+  /// (a tear changes the geodesics). false: the published PBD/XPBD.
+  bool longRangeAttachments = false;
 };
+/// The most substeps explicitLimitFraction may ask for in one step (k = 10⁶ N/m at 60 steps/s needs ~2,000).
+inline constexpr int kMaxStableSubsteps = 4000;
 Status validate(const ClothSolverSettings& s);
 
 struct ClothStepStats {
@@ -78,7 +92,8 @@ struct ClothStepStats {
   std::size_t contacts = 0;      ///< particle–collider contacts in the last (sub)step
   std::size_t selfContacts = 0;  ///< self-collision pairs separated in the last (sub)step
   std::size_t tears = 0;         ///< vertex splits this step
-  int substepsTaken = 0;         ///< substeps done this step (fewer than asked when it diverged)
+  int substepsPlanned = 0;       ///< substeps this step was split into (explicitLimitFraction may add some)
+  int substepsTaken = 0;         ///< substeps done this step (fewer than planned when it diverged)
   bool diverged = false;         ///< a particle passed ClothSolverSettings::divergedSpeed (or is not finite)
   int implicitRetries = 0;       ///< implicit steps discarded by the step control and retried at half size
 };
@@ -97,6 +112,9 @@ Real clothEnergy(const Cloth& cloth, const ClothEnvironment& env, ClothSolverKin
 /// Upper bound of the highest angular frequency of the spring network (Gershgorin: ω² ≤ max_i Σ 2k/m_i)
 /// and the explicit stability limit 2/ω it implies [s].
 Real explicitStabilityLimit(const Cloth& cloth);
+/// Substeps that split dt into steps of at most `fraction` of explicitStabilityLimit (at least 1, at most
+/// kMaxStableSubsteps).
+int stableExplicitSubsteps(const Cloth& cloth, Real dt, Real fraction);
 
 class ClothSolver {
  public:
@@ -113,6 +131,7 @@ class ClothSolver {
   void positionBasedSubstep(Cloth& cloth, const ClothEnvironment& env, std::span<const Collider> colliders,
                             const ClothSolverSettings& s, Real h, Real t, Real pinFraction, ClothStepStats& stats);
   void solveConstraints(Cloth& cloth, const ClothSolverSettings& s, Real h);
+  void attachToPins(Cloth& cloth) const;
   void endSubstep(Cloth& cloth, std::span<const Collider> colliders, const ClothSolverSettings& s, Real h,
                   bool velocityLevel, ClothStepStats& stats);
   /// Where pin k is due at `fraction` of the step: on the straight path from where it began the step
