@@ -24,6 +24,7 @@
 #include "graphics/model.h"
 #include "graphics/skinning.h"
 #include "physics/animation/skeleton.h"
+#include "wuson_skin_fixture.h"
 
 namespace {
 
@@ -230,65 +231,38 @@ TEST(MocapImport, FileWithoutAnimationOrUnreadableIsAnErrorNamingTheFile) {
 }  // namespace
 
 // The mocap scene's skin (app/character_skin.h): the file's mesh posed by the lab's own route (clip →
-// forward kinematics → joint frames → skinning matrices) against a route written here from the file:
-// Assimp's node transforms sampled at the same time by the graphics import (graphics::sampleAnimation),
-// multiplied down the node tree, and each vertex blended by hand, v' = Σ wᵢ (G_bᵢ · offset_bᵢ) v, then
-// scaled like the lab's character. Debian assimp-testmodels' Wuson (X/Testwuson.X): a skinned mesh of
-// 40 nodes with a 30-frame animation.
-TEST(ANIM_3_MocapSkin, WusonMeshFollowsAnIndependentLinearBlendOfTheFilesAnimation) {
-  const std::string path = PBA_TEST_RESOURCE_DIR "/models/Testwuson.X";
-  ASSERT_TRUE(std::ifstream(path).good()) << path << " missing: install assimp-testmodels (./pba installs it)";
-  const pba::Result<lab::ImportedClip> imported = lab::importClip(path, 1.7);
+// forward kinematics → joint frames → skinning matrices) against recorded vertex positions of the Wuson
+// (wuson_skin_fixture.h, which says where they come from), scaled like the lab's character.
+TEST(ANIM_3_MocapSkin, WusonMeshFollowsTheRecordedSkinOfTheFilesAnimation) {
+  namespace fixture = pba::test::wuson_skin;
+  ASSERT_TRUE(std::ifstream(fixture::path()).good()) << fixture::path() << " missing";
+  const pba::Result<lab::ImportedClip> imported = lab::importClip(fixture::path(), 1.7);
   ASSERT_TRUE(imported.ok()) << imported.error();
   const lab::ImportedClip& c = imported.value();
   ASSERT_TRUE(c.skin.model) << "the Wuson has a mesh";
-  const pba::graphics::Model& model = *c.skin.model;
-  ASSERT_FALSE(model.animations.empty());
-  Real largestMove = 0.0, worst = 0.0;
-  std::vector<Vec3> first;
-  int checked = 0;
-  for (int s = 0; s < 6; ++s) {
-    const Real t = c.clip.duration * s / 5.0;
+  Real worst = 0.0, largestMove = 0.0;
+  std::vector<std::vector<pba::app::SkinSurface>> bySample;
+  for (int s = 0; s < fixture::kSamples; ++s) {
     an::Pose pose;
-    an::samplePose(c.skeleton, c.clip, t, pose);
-    const std::vector<pba::app::SkinSurface> lab = pba::app::poseSkin(c.skin, an::forwardKinematics(c.skeleton, pose));
-    // The reference: Assimp's pose of the nodes, blended here.
-    const std::vector<glm::mat4> local =
-        pba::graphics::sampleAnimation(model, model.animations[0], static_cast<float>(t), /*loop=*/false);
-    std::vector<glm::dmat4> global(model.nodes.size());
-    for (size_t n = 0; n < model.nodes.size(); ++n) {
-      const int p = model.nodes[n].parent;
-      global[n] = p < 0 ? glm::dmat4(local[n]) : global[static_cast<size_t>(p)] * glm::dmat4(local[n]);
-    }
-    std::vector<Vec3> all;
-    for (const pba::app::SkinSurface& surface : lab) {
-      const pba::graphics::ModelMesh& mesh = model.meshes[surface.mesh];
-      ASSERT_TRUE(mesh.skinned());
-      ASSERT_EQ(surface.positions.size(), mesh.positions.size());
-      for (size_t v = 0; v < mesh.positions.size(); ++v) {
-        glm::dvec4 blended(0.0);
-        for (int k = 0; k < 4; ++k) {
-          const double w = mesh.boneWeights[v][k];
-          if (w == 0.0) continue;
-          const pba::graphics::ModelBone& bone = model.bones[static_cast<size_t>(mesh.boneIds[v][k])];
-          blended += w * (global[static_cast<size_t>(bone.node)] * glm::dmat4(bone.offset) *
-                          glm::dvec4(glm::dvec3(mesh.positions[v]), 1.0));
-        }
-        const Vec3 expected = c.scale * Vec3(blended);
-        worst = std::max(worst, glm::length(surface.positions[v] - expected));
-        all.push_back(surface.positions[v]);
-        ++checked;
-      }
-    }
-    if (s == 0) first = all;
-    for (size_t v = 0; v < all.size() && v < first.size(); ++v)
-      largestMove = std::max(largestMove, glm::length(all[v] - first[v]));
+    an::samplePose(c.skeleton, c.clip, fixture::sampleTime(c.clip.duration, s), pose);
+    bySample.push_back(pba::app::poseSkin(c.skin, an::forwardKinematics(c.skeleton, pose)));
+  }
+  auto vertexOf = [&](int sample, size_t mesh, size_t vertex) -> const Vec3* {
+    for (const pba::app::SkinSurface& surface : bySample[static_cast<size_t>(sample)])
+      if (surface.mesh == mesh && vertex < surface.positions.size()) return &surface.positions[vertex];
+    return nullptr;
+  };
+  for (const fixture::RecordedVertex& r : fixture::kVertices) {
+    const Vec3* p = vertexOf(r.sample, r.mesh, r.vertex);
+    ASSERT_NE(p, nullptr) << "no vertex " << r.vertex << " of mesh " << r.mesh;
+    worst = std::max(worst, glm::length(*p - c.scale * r.position));
+    largestMove = std::max(largestMove, glm::length(*p - *vertexOf(0, r.mesh, r.vertex)));
   }
   // Float vertices, bone matrices and keys (relative error 6e-8) on a 1.7 m character: micrometres.
-  EXPECT_LT(worst, 1e-5) << "largest vertex difference [m] over " << checked << " vertex poses";
+  EXPECT_LT(worst, 1e-5) << "largest distance from the recorded vertices [m]";
   // The clip moves the mesh (the Wuson walks its legs): centimetres, not a still picture.
   EXPECT_GT(largestMove, 0.02) << "largest vertex displacement from the first sample [m]";
-  std::cout << "worst " << worst << " m, largest move " << largestMove << " m, " << checked << " vertex poses\n";
+  std::cout << "worst " << worst << " m, largest move " << largestMove << " m\n";
 }
 
 // The double-precision BVH reader builds the skeleton Assimp's nodes give (bvh_import.h): the same joint
