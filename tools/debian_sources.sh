@@ -131,3 +131,95 @@ build_deps() {
   done
   say "dependency prefixes ($built built, $((${#DEPS[@]} - built)) cached): $CACHE ($(du -sch "${PREFIXES[@]}" | tail -n1 | cut -f1))"
 }
+
+# ---------------------------------------------------------------------------------------------------
+# Build recipes shared by the platforms. Each builds SOURCE-TREE into PREFIX (BUILD-DIR for its
+# objects) through the caller's cross_cmake SOURCE BUILD PREFIX [CMAKE ARGS...], with DEP_CC, DEP_AR
+# and DEP_CFLAGS (optional) for zlib, which is compiled directly.
+build_zlib() { # zlib (libz.a) and its contrib/minizip (libminizip.a + minizip.pc), compiled directly:
+  # Debian's source has no win32/ makefile, and zlib's CMake names its Windows libraries zlib*.
+  local src="$1" prefix="$2" bld="$3" f
+  mkdir -p "$prefix/include/minizip" "$prefix/lib/pkgconfig" "$bld/z" "$bld/minizip"
+  for f in adler32 compress crc32 deflate gzclose gzlib gzread gzwrite inflate infback inftrees inffast \
+    trees uncompr zutil; do
+    nice -n 5 "$DEP_CC" -O2 ${DEP_CFLAGS:-} -I"$src" -c "$src/$f.c" -o "$bld/z/$f.o"
+  done
+  "$DEP_AR" rcs "$prefix/lib/libz.a" "$bld"/z/*.o
+  cp "$src/zlib.h" "$src/zconf.h" "$prefix/include/"
+  local win32=()
+  [[ "$DEP_CC" == *mingw* ]] && win32=(iowin32) # minizip's Win32 file functions
+  for f in ioapi unzip zip "${win32[@]}"; do
+    nice -n 5 "$DEP_CC" -O2 ${DEP_CFLAGS:-} -I"$prefix/include" -c "$src/contrib/minizip/$f.c" -o "$bld/minizip/$f.o"
+    cp "$src/contrib/minizip/$f.h" "$prefix/include/minizip/"
+  done
+  cp "$src/contrib/minizip/crypt.h" "$prefix/include/minizip/"
+  "$DEP_AR" rcs "$prefix/lib/libminizip.a" "$bld"/minizip/*.o
+  cat >"$prefix/lib/pkgconfig/minizip.pc" <<PC
+prefix=$prefix
+libdir=\${prefix}/lib
+includedir=\${prefix}/include
+Name: minizip
+Description: zip and unzip on top of zlib (zlib's contrib/minizip)
+Version: 1.2
+Libs: -L\${libdir} -lminizip -lz
+Cflags: -I\${includedir}/minizip -I\${includedir}
+PC
+}
+
+build_utfcpp() { # header-only: utf8.h and utf8/ as Debian installs them (include/utf8cpp)
+  local src="$1" prefix="$2"
+  mkdir -p "$prefix/include/utf8cpp"
+  if [[ -d "$src/source" ]]; then
+    cp -r "$src/source/." "$prefix/include/utf8cpp/"
+  else # the binary package's headers (fetch_source's fallback for header-only packages)
+    cp -r "$src/usr/include/utf8cpp/." "$prefix/include/utf8cpp/"
+  fi
+}
+
+build_libstb() { # header-only: include/stb/*.h as Debian installs them, and no .pc file (as vcpkg):
+  # the project then compiles the implementations itself
+  local src="$1" prefix="$2"
+  mkdir -p "$prefix/include/stb"
+  cp "$src"/*.h "$prefix/include/stb/"
+}
+
+build_glm() { cross_cmake "$1" "$3" "$2" -DGLM_TEST_ENABLE=OFF -DBUILD_TESTING=OFF; }
+
+build_eigen3() {
+  cross_cmake "$1" "$3" "$2" -DBUILD_TESTING=OFF -DEIGEN_BUILD_DOC=OFF -DEIGEN_BUILD_PKGCONFIG=ON \
+    -DCMAKE_Fortran_COMPILER=NOTFOUND -DEIGEN_TEST_NOQT=ON
+}
+
+build_nlohmann_json3() { cross_cmake "$1" "$3" "$2" -DJSON_BuildTests=OFF -DJSON_Install=ON; }
+
+# Assimp: the importers in ASSIMP_IMPORTERS (the caller's: what its labs, presets and tests read); no
+# exporters, tools, tests or samples.
+# Debian's source leaves out zlib, minizip, utf8cpp and stb: they come from their own prefixes. Its
+# patch that links Debian's libdraco is taken back (Draco, glTF's mesh compression, stays off).
+build_assimp() {
+  local src="$1" prefix="$2" bld="$3" imp flags=() inc=""
+  if [[ -f "$src/debian/patches/use-system-libdraco.patch" ]]; then
+    patch -d "$src" -R -p1 -s <"$src/debian/patches/use-system-libdraco.patch" || die "assimp: cannot revert use-system-libdraco.patch"
+  fi
+  for imp in "${ASSIMP_IMPORTERS[@]}"; do flags+=("-DASSIMP_BUILD_${imp}_IMPORTER=ON"); done
+  for imp in "${PREFIXES[@]}"; do
+    [[ -d "$imp/include/utf8cpp" ]] && inc+=" -I$imp/include/utf8cpp"
+    [[ -d "$imp/include/stb" ]] && inc+=" -I$imp/include"
+  done
+  cross_cmake "$src" "$bld" "$prefix" -DASSIMP_BUILD_ALL_IMPORTERS_BY_DEFAULT=OFF "${flags[@]}" \
+    -DASSIMP_NO_EXPORT=ON -DASSIMP_BUILD_ALL_EXPORTERS_BY_DEFAULT=OFF -DASSIMP_BUILD_TESTS=OFF \
+    -DASSIMP_BUILD_ASSIMP_TOOLS=OFF -DASSIMP_BUILD_SAMPLES=OFF -DASSIMP_BUILD_DOCS=OFF \
+    -DASSIMP_BUILD_ZLIB=OFF -DASSIMP_BUILD_DRACO=OFF -DASSIMP_WARNINGS_AS_ERRORS=OFF \
+    -DASSIMP_INSTALL_PDB=OFF -DASSIMP_BUILD_ASSIMP_VIEW=OFF -DCMAKE_CXX_FLAGS="$inc" -DCMAKE_C_FLAGS="$inc"
+  # assimp exports minizip and z as bare names (pkg-config's), which a consumer's linker cannot find:
+  # name the archives of the zlib prefix instead.
+  local zlib targets
+  for zlib in "${PREFIXES[@]}"; do [[ -f "$zlib/lib/libminizip.a" ]] && break; done
+  targets="$(find "$prefix/lib/cmake" -name assimpTargets.cmake)"
+  grep -q ';minizip;z"' "$targets" || die "assimp: no bare minizip;z in $targets"
+  sed -i "s|;minizip;z\"|;$zlib/lib/libminizip.a;$zlib/lib/libz.a\"|" "$targets"
+}
+
+build_imgui() {
+  cross_cmake "$ROOT/cmake/cross/imgui" "$3" "$2" -DIMGUI_SOURCE_DIR="$1"
+}

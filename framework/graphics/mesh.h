@@ -5,7 +5,7 @@
 
 #include "graphics/mesh_data.h"
 
-#include <GL/glew.h>
+#include "graphics/gl.h"
 #include <glm/glm.hpp>
 
 #include <vector>

@@ -1,7 +1,7 @@
 // Screenshots with glReadPixels + stb_image_write; image statistics with stb_image.
 #include "graphics/screenshot.h"
 
-#include <GL/glew.h>
+#include "graphics/gl.h"
 #include <stb_image.h>
 #include <stb_image_write.h>
 

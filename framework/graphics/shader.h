@@ -4,7 +4,7 @@
 // logs are rewritten from the driver's `0:12(3): error: ...` to `path/to/file.frag:12: error: ...`.
 #pragma once
 
-#include <GL/glew.h>
+#include "graphics/gl.h"
 #include <glm/glm.hpp>
 
 #include <memory>

@@ -2,7 +2,7 @@
 // scene bounds (and to their shadows on the ground plane y = 0), sampled with hardware comparison.
 #pragma once
 
-#include <GL/glew.h>
+#include "graphics/gl.h"
 #include <glm/glm.hpp>
 
 namespace pba::graphics {
