@@ -19,6 +19,8 @@ SITE="$ROOT/build/web"
 # Debian's Emscripten runs its JavaScript tools with the system's node, whose modules (acorn) live in
 # /usr/share/nodejs; a node from another source does not look there by itself.
 export NODE_PATH="${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs"
+# Debian's Emscripten was packaged for Debian's python3 (another python3 may come first on the PATH).
+[[ -x /usr/bin/python3 ]] && export EMSDK_PYTHON="${EMSDK_PYTHON:-/usr/bin/python3}"
 
 deps_only=0
 labs=()
@@ -82,9 +84,9 @@ recipe_hash() { # recipe_hash FUNCTION
     [[ "$1" == build_assimp ]] && echo "${ASSIMP_IMPORTERS[*]} ${PREFIXES[*]}"; true; } | sha256sum | cut -c1-16
 }
 
-# The labs of cmake/web/labs.tsv (lab, default scene, second scene, description), or those named.
+# The labs of cmake/web/labs.tsv (lab, default scene, second scene, a parameter, description), or those named.
 LABS_TSV="$ROOT/cmake/web/labs.tsv"
-all_labs() { awk -F'\t' '!/^#/ && NF >= 4 { print $1 }' "$LABS_TSV"; }
+all_labs() { awk -F'\t' '!/^#/ && NF >= 5 { print $1 }' "$LABS_TSV"; }
 
 build_project() {
   local prefixes targets=() lab
@@ -98,7 +100,7 @@ build_project() {
 
 # build/web/: each page with its files, the screenshots of the docs, and index.html listing the labs.
 make_site() {
-  local lab ext scene second text
+  local lab ext scene second set text
   mkdir -p "$SITE/images"
   for lab in "${labs[@]}"; do
     for ext in html js wasm data; do cp "$BUILD/bin/pba-$lab.$ext" "$SITE/"; done
@@ -125,7 +127,7 @@ setup: <code>pba-cloth.html?scene=flag&amp;set=wind=8</code> picks the scene and
 <code>&amp;lecture=1</code> starts in lecture mode.</p>
 <div class="labs">
 HTML
-    while IFS=$'\t' read -r lab scene second text; do
+    while IFS=$'\t' read -r lab scene second set text; do
       [[ "$lab" == \#* || -z "$text" ]] && continue
       [[ -f "$SITE/pba-$lab.html" ]] || continue
       if [[ -f "$ROOT/docs/images/$lab-$scene.png" ]]; then

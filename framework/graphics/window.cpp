@@ -62,7 +62,9 @@ GLFWwindow* openWindow(const WindowDesc& desc, int samples) {
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_VISIBLE, desc.visible ? GLFW_TRUE : GLFW_FALSE);
   glfwWindowHint(GLFW_SAMPLES, samples);
+#if GLFW_VERSION_MAJOR > 3 || GLFW_VERSION_MINOR >= 3  // Emscripten's GLFW is 3.2 (the page scales itself)
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+#endif
   return glfwCreateWindow(desc.width, desc.height, desc.title.c_str(), nullptr, nullptr);
 }
 
@@ -112,7 +114,9 @@ glm::ivec2 Window::windowSize() const {
 
 glm::vec2 Window::contentScale() const {
   glm::vec2 scale(1.0f);
+#if GLFW_VERSION_MAJOR > 3 || GLFW_VERSION_MINOR >= 3
   glfwGetWindowContentScale(window_, &scale.x, &scale.y);
+#endif
   return scale;
 }
 
