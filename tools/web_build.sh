@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# tools/web_build.sh [--deps-only] [LAB...]: `./pba web`.
+# tools/web_build.sh [--deps-only | --physics-tests] [LAB...]: `./pba web`.
 # Builds the labs for the browser (WebAssembly + WebGL2) with the system's Emscripten (Debian's
 # `emscripten` package): the dependencies once, from Debian's own source packages, into a cache outside
 # the clone (tools/debian_sources.sh, as `./pba cross windows` does); then the project with the
 # `web` preset, one page per lab (build/web/pba-LAB.html with its .js, .wasm and .data), and an
 # index.html listing the labs. No Emscripten port is used (ports are downloaded).
-#   --deps-only  stop after the dependency prefixes
+#   --deps-only      stop after the dependency prefixes
+#   --physics-tests  instead of the pages, build the physics unit tests with emcc (build/web-tests) and
+#                    run them in node
 # Environment: PBA_WEB_CACHE (default ${XDG_CACHE_HOME:-~/.cache}/pba-labs/emscripten), PBA_JOBS,
 # PBA_NO_INSTALL=1 (no apt-get install of the host tools).
 set -euo pipefail
@@ -23,12 +25,14 @@ export NODE_PATH="${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs"
 [[ -x /usr/bin/python3 ]] && export EMSDK_PYTHON="${EMSDK_PYTHON:-/usr/bin/python3}"
 
 deps_only=0
+physics_tests=0
 labs=()
 for arg in "$@"; do
   case "$arg" in
     --deps-only) deps_only=1 ;;
-    -h | --help) sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    -*) echo "usage: ./pba web [--deps-only] [LAB...]" >&2; exit 2 ;;
+    --physics-tests) physics_tests=1 ;;
+    -h | --help) sed -n '2,12p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "usage: ./pba web [--deps-only | --physics-tests] [LAB...]" >&2; exit 2 ;;
     *) labs+=("$arg") ;;
   esac
 done
@@ -67,6 +71,9 @@ cross_cmake() { # cross_cmake SOURCE BUILD PREFIX [CMAKE ARGS...]
   cmake --install "$bld" >"$bld.install.log" 2>&1 || { tail -n 20 "$bld.install.log" >&2; die "install failed: $src"; }
 }
 
+# GoogleTest for the physics suite in node: no threads in this build.
+build_googletest() { cross_cmake "$1" "$3" "$2" -DBUILD_GMOCK=OFF -DINSTALL_GTEST=ON -Dgtest_disable_pthreads=ON; }
+
 DEPS=(
   "zlib zlib1g-dev build_zlib"
   "utfcpp libutfcpp-dev build_utfcpp headers"
@@ -76,6 +83,7 @@ DEPS=(
   "nlohmann-json3 nlohmann-json3-dev build_nlohmann_json3"
   "assimp libassimp-dev build_assimp"
   "imgui libimgui-dev build_imgui"
+  "googletest googletest build_googletest"
 )
 
 recipe_hash() { # recipe_hash FUNCTION
@@ -141,6 +149,20 @@ HTML
   } >"$SITE/index.html"
 }
 
+# The physics suite in node: its own build folder, tests on, GoogleTest from its prefix.
+physics_tests() {
+  local prefixes bld="$ROOT/build/web-tests"
+  prefixes="$(IFS=';'; echo "${PREFIXES[*]}")"
+  cmake -S "$ROOT" -B "$bld" -G Ninja -DCMAKE_TOOLCHAIN_FILE="$TOOLCHAIN" -DCMAKE_BUILD_TYPE=Release \
+    -DPBA_WEB_PREFIX_PATH="$prefixes" -DPBA_BUILD_BENCH=OFF -DPBA_CCACHE=OFF -DPBA_BUILD_TESTS=ON \
+    -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST >"$bld.configure.log" 2>&1 ||
+    { tail -n 40 "$bld.configure.log" >&2; die "configure failed (log $bld.configure.log)"; }
+  nice -n 5 cmake --build "$bld" -j "$JOBS" --target pba_physics_tests >"$bld.build.log" 2>&1 ||
+    { grep -E 'error|undefined' "$bld.build.log" | head -n 30 >&2; die "build failed (log $bld.build.log)"; }
+  (cd "$bld/tests" && node --no-experimental-fetch pba_physics_tests.js --gtest_brief=1) ||
+    die "the physics tests failed in node"
+}
+
 main() {
   local t0=$SECONDS lab
   [[ ${#labs[@]} -gt 0 ]] || mapfile -t labs < <(all_labs)
@@ -151,6 +173,10 @@ main() {
   WORK="$(mktemp -d "${TMPDIR:-/tmp}/pba-web.XXXXXX")"
   step "dependencies (Emscripten, Debian sources)" build_deps
   [[ $deps_only == 1 ]] && return 0
+  if [[ $physics_tests == 1 ]]; then
+    step "physics tests in node" physics_tests
+    return 0
+  fi
   step "pages (${labs[*]})" build_project
   step "site" make_site
   say "total: $((SECONDS - t0)) s; pages in $SITE (./pba web --serve)"
