@@ -8,7 +8,7 @@
 #   --deps-only      stop after the dependency prefixes
 #   --physics-tests  instead of the pages, build the physics unit tests with emcc (build/web-tests) and
 #                    run them in node
-# Environment: PBA_WEB_CACHE (default ${XDG_CACHE_HOME:-~/.cache}/pba-labs/emscripten), PBA_JOBS,
+# Environment: PBA_WEB_LABS (the labs when none is named), PBA_WEB_CACHE (default ${XDG_CACHE_HOME:-~/.cache}/pba-labs/emscripten), PBA_JOBS,
 # PBA_NO_INSTALL=1 (no apt-get install of the host tools).
 set -euo pipefail
 
@@ -165,6 +165,7 @@ physics_tests() {
 
 main() {
   local t0=$SECONDS lab
+  [[ ${#labs[@]} -gt 0 || -z "${PBA_WEB_LABS:-}" ]] || read -r -a labs <<<"$PBA_WEB_LABS"
   [[ ${#labs[@]} -gt 0 ]] || mapfile -t labs < <(all_labs)
   for lab in "${labs[@]}"; do
     grep -q "^$lab"$'\t' "$LABS_TSV" || { echo "web: no lab '$lab' in cmake/web/labs.tsv" >&2; exit 2; }

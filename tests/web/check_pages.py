@@ -2,7 +2,7 @@
 """The labs' web pages in headless Chromium (the `web` ctest label, tests/web/CMakeLists.txt).
 
 check_pages.py SITE OUT [LAB...]: serves SITE (build/web) on a free loopback port, and for each lab of
-cmake/web/labs.tsv (or those named) opens its default scene and its second scene, the latter with a
+cmake/web/labs.tsv (or those named, or those of $PBA_WEB_LABS) opens its default scene and its second scene, the latter with a
 parameter set through the URL query. Chromium is driven through the DevTools protocol on a pipe
 (--remote-debugging-pipe), so nothing but the standard library is needed. For each page it waits until
 the lab has drawn REPORT frames, then checks that
@@ -194,7 +194,7 @@ def main():
     if len(sys.argv) < 3:
         print(__doc__, file=sys.stderr)
         return 2
-    site, out, wanted = sys.argv[1], sys.argv[2], sys.argv[3:]
+    site, out, wanted = sys.argv[1], sys.argv[2], sys.argv[3:] or os.environ.get("PBA_WEB_LABS", "").split()
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     rows = []
     with open(os.path.join(root, "cmake", "web", "labs.tsv"), encoding="utf-8") as f:
