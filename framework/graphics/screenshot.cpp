@@ -1,9 +1,9 @@
 // Screenshots with glReadPixels + stb_image_write; image statistics with stb_image.
 #include "graphics/screenshot.h"
 
-#include "graphics/gl.h"
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include "graphics/gl.h"
 
 #include <cerrno>
 #include <cmath>
@@ -24,7 +24,7 @@ namespace {
 EM_JS(void, offerDownload, (const char* path), {
   var name = UTF8ToString(path);
   var link = document.createElement('a');
-  link.href = URL.createObjectURL(new Blob([FS.readFile(name)], {type : 'image/png'}));
+  link.href = URL.createObjectURL(new Blob([FS.readFile(name)]));
   link.download = name.split('/').pop();
   link.click();
 });

@@ -177,8 +177,7 @@ std::unique_ptr<ShaderProgram> ShaderProgram::loadFiles(const std::string& verte
     GLenum type;
     const std::string* path;
   };
-  const Stage stages[] = {
-      {GL_VERTEX_SHADER, &vertexPath}, {GL_FRAGMENT_SHADER, &fragmentPath}};
+  const Stage stages[] = {{GL_VERTEX_SHADER, &vertexPath}, {GL_FRAGMENT_SHADER, &fragmentPath}};
   std::vector<GLuint> shaders;
   auto cleanup = [&] {
     for (GLuint s : shaders) glDeleteShader(s);

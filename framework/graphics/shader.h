@@ -4,8 +4,8 @@
 // logs are rewritten from the driver's `0:12(3): error: ...` to `path/to/file.frag:12: error: ...`.
 #pragma once
 
-#include "graphics/gl.h"
 #include <glm/glm.hpp>
+#include "graphics/gl.h"
 
 #include <memory>
 #include <string>

@@ -125,7 +125,7 @@ void Window::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, clos
 #ifdef __EMSCRIPTEN__
 // In the browser a frame is shown when the program gives control back to the page: the lab's loop
 // waits here for the next animation frame (ASYNCIFY unwinds and rewinds the stack around the wait).
-EM_ASYNC_JS(void, waitForAnimationFrame, (), { await new Promise(resolve => requestAnimationFrame(resolve)); });
+EM_ASYNC_JS(void, waitForAnimationFrame, (), { await new Promise(resolve = > requestAnimationFrame(resolve)); });
 #endif
 
 void Window::swapBuffers() {
