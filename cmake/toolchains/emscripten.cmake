@@ -29,9 +29,3 @@ set(ENV{PKG_CONFIG_PATH} "")
 # Exceptions are part of the labs' error handling (Result types aside, the JSON parser throws).
 string(APPEND CMAKE_CXX_FLAGS_INIT " -fexceptions")
 string(APPEND CMAKE_EXE_LINKER_FLAGS_INIT " -fexceptions")
-# Programs run at build or test time (the test list of gtest_discover_tests, ctest) run in node. Node 18
-# and later have fetch(), which Emscripten 3.1.6's loader then tries on a file path: turn it off.
-find_program(PBA_NODE node)
-if(PBA_NODE)
-  set(CMAKE_CROSSCOMPILING_EMULATOR "${PBA_NODE};--no-experimental-fetch" CACHE STRING "" FORCE)
-endif()
