@@ -28,7 +28,7 @@ endfunction()
 function(pba_web_page target)
   set(web "${CMAKE_SOURCE_DIR}/cmake/web")
   set_target_properties(${target} PROPERTIES SUFFIX ".html")
-  target_link_options(${target} PRIVATE -fexceptions -sASYNCIFY -sASYNCIFY_STACK_SIZE=131072 -sALLOW_MEMORY_GROWTH=1
+  target_link_options(${target} PRIVATE -fexceptions -sASYNCIFY "-sASYNCIFY_IMPORTS=['waitForAnimationFrame']" -sASYNCIFY_STACK_SIZE=131072 -sALLOW_MEMORY_GROWTH=1
     -sINITIAL_MEMORY=67108864 -sMINIFY_HTML=0 -sEXPORTED_RUNTIME_METHODS=ccall,FS
     "--preload-file=${PBA_RESOURCE_DIR}@/resources" "--exclude-file=*/licenses/*"
     "--shell-file=${web}/shell.html" "--pre-js=${web}/query.js")

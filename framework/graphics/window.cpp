@@ -124,8 +124,11 @@ bool Window::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW
 void Window::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }
 #ifdef __EMSCRIPTEN__
 // In the browser a frame is shown when the program gives control back to the page: the lab's loop
-// waits here for the next animation frame (ASYNCIFY unwinds and rewinds the stack around the wait).
-EM_ASYNC_JS(void, waitForAnimationFrame, (), { await new Promise(resolve = > requestAnimationFrame(resolve)); });
+// waits here for the next animation frame (ASYNCIFY unwinds and rewinds the stack around the wait; the
+// function is listed in ASYNCIFY_IMPORTS, cmake/PbaLab.cmake).
+// ES5 JavaScript inside EM_JS: clang-format would split an arrow function's `=>`.
+EM_JS(void, waitForAnimationFrame, (),
+      { Asyncify.handleSleep(function(wakeUp) { requestAnimationFrame(function() { wakeUp(); }); }); });
 #endif
 
 void Window::swapBuffers() {
