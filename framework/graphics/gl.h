@@ -13,6 +13,13 @@
 
 namespace pba::graphics {
 
+/// The #version line for Dear ImGui's OpenGL3 backend (its shaders come in one variant per version).
+#ifdef __EMSCRIPTEN__
+inline constexpr const char* kImGuiGlslVersion = "#version 300 es";
+#else
+inline constexpr const char* kImGuiGlslVersion = "#version 330 core";
+#endif
+
 /// Loads the GL entry points for the current context (GLEW on the desktop; nothing to load in the
 /// browser) and turns multisampling on where the context has samples. false + *error on failure.
 bool loadGlFunctions(int samples, std::string* error);

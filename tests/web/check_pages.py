@@ -26,7 +26,7 @@ import zlib
 
 CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
                   "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                  "--no-first-run", "--window-size=1280,720", "--remote-debugging-pipe"]
+                  "--no-first-run", "--window-size=1280,720", "--hide-scrollbars", "--remote-debugging-pipe"]
 REPORT_FRAMES = 60
 PAGE_TIMEOUT_S = 240  # a page that never reaches its frames (a hang) fails instead of blocking ctest
 
