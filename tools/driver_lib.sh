@@ -370,6 +370,18 @@ pba_cmd_soak() {
 }
 
 # ./pba cross windows [--tests-only]: the Windows build proved here (tools/cross_windows.sh).
+# ./pba web [LAB...]: the labs as web pages (tools/web_build.sh); ./pba web --serve [PORT]: serves them.
+pba_cmd_web() {
+  if [[ "${1:-}" == --serve ]]; then
+    local port="${2:-8000}"
+    [[ -f "$ROOT/build/web/index.html" ]] || pba_die "no build/web/index.html: run ./pba web first" 1
+    [[ "$port" =~ ^[0-9]+$ ]] || pba_die "web --serve: the port must be a number, not '$port'" 2
+    echo "Serving build/web at http://127.0.0.1:$port/ (Ctrl+C stops)"
+    exec python3 -m http.server "$port" --bind 127.0.0.1 --directory "$ROOT/build/web"
+  fi
+  bash "$ROOT/tools/web_build.sh" "$@"
+}
+
 pba_cmd_cross() {
   case "${1:-}" in
     windows) shift; bash "$ROOT/tools/cross_windows.sh" "$@" ;;

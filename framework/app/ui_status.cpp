@@ -111,7 +111,10 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
                {"params", b->scene().params().toJson()},
                {"metrics", b->scene().metrics()},
                {"editing_b", session.editingB()}};
+  const StepSummary physics = runner.frameStats().summary();  // physics time per frame, recent frames
   return {{"frame", f.frame},
+          {"physics_ms", {{"median", physics.median}, {"p95", physics.p95}}},
+          {"frame_ms", ui.frameMs},
           {"history", history},
           {"compare", compare},
           {"plots", plots},

@@ -32,6 +32,7 @@
 #include "app/window_input.h"
 #include "app/window_recording.h"
 #include "graphics/debug_renderer.h"
+#include "graphics/gl.h"
 #include "graphics/renderer.h"
 #include "graphics/screenshot.h"
 #include "graphics/window.h"
@@ -64,7 +65,7 @@ struct ImGuiContextGuard {
     ImGui::CreateContext();
     if (!useIni) ImGui::GetIO().IniFilename = nullptr;
     ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 330 core");
+    ImGui_ImplOpenGL3_Init(graphics::kImGuiGlslVersion);
   }
   ~ImGuiContextGuard() {
     ImGui_ImplOpenGL3_Shutdown();

@@ -6,9 +6,11 @@
 namespace pba::graphics {
 namespace {
 
-void attribute(GLuint index, GLint size, GLsizei stride, std::size_t offset) {
+// A per-instance float attribute: each segment or dot is one instance of a 4-vertex strip.
+void instanceAttribute(GLuint index, GLint size, GLsizei stride, std::size_t offset) {
   glEnableVertexAttribArray(index);
   glVertexAttribPointer(index, size, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offset));
+  glVertexAttribDivisor(index, 1);
 }
 
 template <typename T>
@@ -29,15 +31,19 @@ std::unique_ptr<LineRenderer> LineRenderer::create(const std::string& shaderDir,
   glGenBuffers(1, &r->lineVbo_);
   glBindVertexArray(r->lineVao_);
   glBindBuffer(GL_ARRAY_BUFFER, r->lineVbo_);
-  attribute(0, 3, sizeof(LineVertex), offsetof(LineVertex, position));
-  attribute(1, 4, sizeof(LineVertex), offsetof(LineVertex, color));
+  // A segment is two consecutive LineVertex records: start (locations 0, 1) and end (2, 3).
+  constexpr auto segment = static_cast<GLsizei>(2 * sizeof(LineVertex));
+  instanceAttribute(0, 3, segment, offsetof(LineVertex, position));
+  instanceAttribute(1, 4, segment, offsetof(LineVertex, color));
+  instanceAttribute(2, 3, segment, sizeof(LineVertex) + offsetof(LineVertex, position));
+  instanceAttribute(3, 4, segment, sizeof(LineVertex) + offsetof(LineVertex, color));
   glGenVertexArrays(1, &r->pointVao_);
   glGenBuffers(1, &r->pointVbo_);
   glBindVertexArray(r->pointVao_);
   glBindBuffer(GL_ARRAY_BUFFER, r->pointVbo_);
-  attribute(0, 3, sizeof(PointVertex), offsetof(PointVertex, position));
-  attribute(1, 4, sizeof(PointVertex), offsetof(PointVertex, color));
-  attribute(2, 1, sizeof(PointVertex), offsetof(PointVertex, size));
+  instanceAttribute(0, 3, sizeof(PointVertex), offsetof(PointVertex, position));
+  instanceAttribute(1, 4, sizeof(PointVertex), offsetof(PointVertex, color));
+  instanceAttribute(2, 1, sizeof(PointVertex), offsetof(PointVertex, size));
   glBindVertexArray(0);
   return r;
 }
@@ -72,7 +78,7 @@ void LineRenderer::draw(const glm::mat4& viewProj, const glm::vec2& viewport, fl
     lineShader_->set("uWidth", lineWidthPx);
     glBindVertexArray(lineVao_);
     stream(lineVbo_, lines_);
-    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(lines_.size()));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(lines_.size() / 2));
   }
   if (!points_.empty()) {
     pointShader_->use();
@@ -81,7 +87,7 @@ void LineRenderer::draw(const glm::mat4& viewProj, const glm::vec2& viewport, fl
     pointShader_->set("uSizeScale", pointScale);
     glBindVertexArray(pointVao_);
     stream(pointVbo_, points_);
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points_.size()));
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, static_cast<GLsizei>(points_.size()));
   }
   glBindVertexArray(0);
 }

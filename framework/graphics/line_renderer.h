@@ -1,5 +1,6 @@
-// LineRenderer: batches of thick anti-aliased lines (line.vert/geom/frag: each segment is expanded to
-// a screen-space quad, width in pixels) and screen-sized dots (point.*), one draw call each.
+// LineRenderer: batches of thick anti-aliased lines (line.vert/frag: each segment is one instance of a
+// screen-space quad, width in pixels) and screen-sized dots (point.*), one instanced draw call each. No
+// geometry shader, so the same code runs on OpenGL 3.3 and WebGL2.
 #pragma once
 
 #include "graphics/shader.h"

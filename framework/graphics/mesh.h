@@ -5,8 +5,8 @@
 
 #include "graphics/mesh_data.h"
 
-#include <GL/glew.h>
 #include <glm/glm.hpp>
+#include "graphics/gl.h"
 
 #include <vector>
 

@@ -83,7 +83,7 @@ std::unique_ptr<Renderer> Renderer::create(const std::string& shaderDir, std::st
                               {&r->gridShader_, "grid.vert", "grid.frag"},
                               {&r->backgroundShader_, "background.vert", "background.frag"}};
   for (const Program& p : programs) {
-    *p.target = ShaderProgram::loadFiles(dir + p.vert, dir + p.frag, "", error);
+    *p.target = ShaderProgram::loadFiles(dir + p.vert, dir + p.frag, error);
     if (!*p.target) return nullptr;
   }
   r->lines_ = LineRenderer::create(shaderDir, error);

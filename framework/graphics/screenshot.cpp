@@ -1,9 +1,9 @@
 // Screenshots with glReadPixels + stb_image_write; image statistics with stb_image.
 #include "graphics/screenshot.h"
 
-#include <GL/glew.h>
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include "graphics/gl.h"
 
 #include <cerrno>
 #include <cmath>
@@ -12,7 +12,27 @@
 #include <unordered_set>
 #include <vector>
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
+
 namespace pba::graphics {
+namespace {
+
+#ifdef __EMSCRIPTEN__
+// In the browser the PNG lands in the page's in-memory file system: hand it to the user as a download.
+EM_JS(void, offerDownload, (const char* path), {
+  var name = UTF8ToString(path);
+  var link = document.createElement('a');
+  link.href = URL.createObjectURL(new Blob([FS.readFile(name)]));
+  link.download = name.split('/').pop();
+  link.click();
+});
+#else
+void offerDownload(const char*) {}
+#endif
+
+}  // namespace
 
 bool readFramebuffer(int width, int height, std::vector<unsigned char>& rgb, std::string* error) {
   if (width <= 0 || height <= 0) {
@@ -53,6 +73,7 @@ bool saveScreenshot(const std::string& path, int width, int height, std::string*
     if (error) *error = path + ": cannot write PNG" + (errno ? std::string(" (") + std::strerror(errno) + ")" : "");
     return false;
   }
+  offerDownload(path.c_str());
   return true;
 }
 

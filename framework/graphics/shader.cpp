@@ -54,6 +54,11 @@ bool expand(const std::string& path, int depth, std::vector<std::string>& files,
   const int fileIndex = static_cast<int>(files.size());
   files.push_back(path);
   if (depth > 0) *out += lineDirective(fileIndex, 1);  // included files have no #version
+  // The top file gets the platform's #version header unless it names its own.
+  if (depth == 0 && text.find("#version") == std::string::npos) {
+    *out += shaderHeader();
+    *out += lineDirective(fileIndex, 1);
+  }
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   std::istringstream lines(text);
   std::string line;
@@ -111,6 +116,19 @@ GLuint compile(GLenum stage, const std::string& path, std::string* error) {
 
 }  // namespace
 
+const char* shaderHeader() {
+#ifdef __EMSCRIPTEN__
+  // WebGL2: GLSL ES 3.00 has no default float precision in fragment shaders and lowp samplers.
+  return "#version 300 es\n"
+         "precision highp float;\n"
+         "precision highp int;\n"
+         "precision highp sampler2D;\n"
+         "precision highp sampler2DShadow;\n";
+#else
+  return "#version 330 core\n";
+#endif
+}
+
 bool preprocessShaderFile(const std::string& path, std::vector<std::string>& files, std::string* source,
                           std::string* error) {
   source->clear();
@@ -150,24 +168,21 @@ std::string mapShaderLog(const std::string& log, const std::vector<std::string>&
 std::unique_ptr<ShaderProgram> ShaderProgram::load(const std::string& dir, const std::string& name,
                                                    std::string* error) {
   const std::string base = (std::filesystem::path(dir) / name).string();
-  const std::string geometry = std::filesystem::exists(base + ".geom") ? base + ".geom" : "";
-  return loadFiles(base + ".vert", base + ".frag", geometry, error);
+  return loadFiles(base + ".vert", base + ".frag", error);
 }
 
 std::unique_ptr<ShaderProgram> ShaderProgram::loadFiles(const std::string& vertexPath, const std::string& fragmentPath,
-                                                        const std::string& geometryPath, std::string* error) {
+                                                        std::string* error) {
   struct Stage {
     GLenum type;
     const std::string* path;
   };
-  const Stage stages[] = {
-      {GL_VERTEX_SHADER, &vertexPath}, {GL_GEOMETRY_SHADER, &geometryPath}, {GL_FRAGMENT_SHADER, &fragmentPath}};
+  const Stage stages[] = {{GL_VERTEX_SHADER, &vertexPath}, {GL_FRAGMENT_SHADER, &fragmentPath}};
   std::vector<GLuint> shaders;
   auto cleanup = [&] {
     for (GLuint s : shaders) glDeleteShader(s);
   };
   for (const Stage& stage : stages) {
-    if (stage.path->empty()) continue;
     const GLuint shader = compile(stage.type, *stage.path, error);
     if (!shader) {
       cleanup();

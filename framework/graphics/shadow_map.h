@@ -2,8 +2,8 @@
 // scene bounds (and to their shadows on the ground plane y = 0), sampled with hardware comparison.
 #pragma once
 
-#include <GL/glew.h>
 #include <glm/glm.hpp>
+#include "graphics/gl.h"
 
 namespace pba::graphics {
 

@@ -6,7 +6,7 @@
 
 #include "graphics/model.h"
 
-#include <GL/glew.h>
+#include "graphics/gl.h"
 
 namespace pba::graphics {
 

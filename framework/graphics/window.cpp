@@ -1,10 +1,15 @@
 // Window: GLFW initialisation (reference counted), OpenGL 3.3 core forward-compatible context, GLEW.
 #include "graphics/window.h"
 
-#include <GL/glew.h>
+#include "graphics/gl.h"
+
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
+
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
 
 namespace pba::graphics {
 namespace {
@@ -18,9 +23,9 @@ void onGlfwError(int code, const char* description) {
 
 // Only an X11 or Wayland desktop announces itself in the environment: there, no DISPLAY means no
 // window can open, and saying so is clearer than GLFW's error. Windows and macOS always have a desktop
-// session when a program can run at all, so GLFW alone decides there.
+// session when a program can run at all, and a browser page has its canvas, so GLFW alone decides there.
 bool hasDisplay() {
-#if defined(_WIN32) || defined(__APPLE__)
+#if defined(_WIN32) || defined(__APPLE__) || defined(__EMSCRIPTEN__)
   return true;
 #else
   const char* x11 = std::getenv("DISPLAY");
@@ -57,7 +62,9 @@ GLFWwindow* openWindow(const WindowDesc& desc, int samples) {
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_VISIBLE, desc.visible ? GLFW_TRUE : GLFW_FALSE);
   glfwWindowHint(GLFW_SAMPLES, samples);
+#if GLFW_VERSION_MAJOR > 3 || GLFW_VERSION_MINOR >= 3  // Emscripten's GLFW is 3.2 (the page scales itself)
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+#endif
   return glfwCreateWindow(desc.width, desc.height, desc.title.c_str(), nullptr, nullptr);
 }
 
@@ -78,21 +85,11 @@ std::unique_ptr<Window> Window::create(const WindowDesc& desc, std::string* erro
     return nullptr;
   }
   glfwMakeContextCurrent(window->window_);
-  glewExperimental = GL_TRUE;
-  const GLenum glewStatus = glewInit();
-  // GLEW 2.x may return GLEW_ERROR_NO_GLX_DISPLAY on EGL/Wayland contexts although GL works.
-  if (glewStatus != GLEW_OK && glGenVertexArrays == nullptr) {
-    if (error)
-      *error = std::string("cannot load OpenGL functions (GLEW): ") +
-               reinterpret_cast<const char*>(glewGetErrorString(glewStatus));
-    return nullptr;
-  }
-  while (glGetError() != GL_NO_ERROR) {}  // glewInit leaves a GL_INVALID_ENUM behind in core profiles
   glfwSwapInterval(desc.vsync ? 1 : 0);
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   window->samples_ = samples;
-  if (samples > 0) glEnable(GL_MULTISAMPLE);
+  if (!loadGlFunctions(samples, error)) return nullptr;
   return window;
 }
 
@@ -117,13 +114,29 @@ glm::ivec2 Window::windowSize() const {
 
 glm::vec2 Window::contentScale() const {
   glm::vec2 scale(1.0f);
+#if GLFW_VERSION_MAJOR > 3 || GLFW_VERSION_MINOR >= 3
   glfwGetWindowContentScale(window_, &scale.x, &scale.y);
+#endif
   return scale;
 }
 
 bool Window::shouldClose() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 void Window::setShouldClose(bool close) { glfwSetWindowShouldClose(window_, close ? GLFW_TRUE : GLFW_FALSE); }
-void Window::swapBuffers() { glfwSwapBuffers(window_); }
+#ifdef __EMSCRIPTEN__
+// In the browser a frame is shown when the program gives control back to the page: the lab's loop
+// waits here for the next animation frame (ASYNCIFY unwinds and rewinds the stack around the wait; the
+// function is listed in ASYNCIFY_IMPORTS, cmake/PbaLab.cmake).
+// ES5 JavaScript inside EM_JS: clang-format would split an arrow function's `=>`.
+EM_JS(void, waitForAnimationFrame, (),
+      { Asyncify.handleSleep(function(wakeUp) { requestAnimationFrame(function() { wakeUp(); }); }); });
+#endif
+
+void Window::swapBuffers() {
+  glfwSwapBuffers(window_);
+#ifdef __EMSCRIPTEN__
+  waitForAnimationFrame();
+#endif
+}
 void Window::pollEvents() { glfwPollEvents(); }
 void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 void Window::makeCurrent() { glfwMakeContextCurrent(window_); }

@@ -1,4 +1,3 @@
-#version 330 core
 // Soft vertical gradient, light enough for a projector.
 in float vHeight;
 uniform vec3 uTop;     // sRGB

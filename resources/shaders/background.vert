@@ -1,4 +1,3 @@
-#version 330 core
 // Full-screen triangle (no vertex buffer): gl_VertexID 0..2.
 out float vHeight;  // 0 at the bottom of the screen, 1 at the top
 void main() {

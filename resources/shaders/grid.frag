@@ -1,4 +1,3 @@
-#version 330 core
 // Procedural ground grid: 1 m minor and 5 m major lines, anti-aliased with screen-space derivatives,
 // minor lines fading where they would alias, the whole ground fading into the background with
 // distance; lit and shadowed like any surface.

@@ -1,4 +1,3 @@
-#version 330 core
 // Ground quad on y = 0 centred under the camera target; the grid itself is procedural (grid.frag).
 layout(location = 0) in vec3 aPosition;  // unit plane, x,z in [-1,1]
 uniform vec2 uCenter;   // world x,z, m

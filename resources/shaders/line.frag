@@ -1,11 +1,12 @@
-#version 330 core
-// Thick lines, stage 3: anti-aliased edge from the distance to the centre line.
-in vec4 gColor;
-noperspective in float gAcross;
+// Thick lines: anti-aliased edge from the distance to the centre line.
+in vec4 vColor;
+in float vAcrossW;
+in float vW;
 uniform float uWidth;
 out vec4 fragColor;
 void main() {
-  float coverage = clamp(0.5 * uWidth + 0.5 - abs(gAcross), 0.0, 1.0);
+  float across = vAcrossW / vW;
+  float coverage = clamp(0.5 * uWidth + 0.5 - abs(across), 0.0, 1.0);
   if (coverage <= 0.0) discard;
-  fragColor = vec4(gColor.rgb, gColor.a * coverage);
+  fragColor = vec4(vColor.rgb, vColor.a * coverage);
 }

@@ -1,4 +1,3 @@
-#version 330 core
 // Lit surface: Blinn-Phong + hemisphere ambient + PCF shadows (lighting.glsl), sRGB output.
 #include "lighting.glsl"
 

@@ -1,4 +1,3 @@
-#version 330 core
 // Instanced lit primitives: per-vertex position/normal, per-instance model matrix and colour.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;

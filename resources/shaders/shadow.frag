@@ -1,3 +1,2 @@
-#version 330 core
 // Shadow depth pass: depth only.
 void main() {}

@@ -1,4 +1,3 @@
-#version 330 core
 // Shadow depth pass for instanced primitives (same attribute layout as lit.vert).
 layout(location = 0) in vec3 aPosition;
 layout(location = 2) in mat4 aModel;

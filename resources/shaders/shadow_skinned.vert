@@ -1,4 +1,3 @@
-#version 330 core
 // Shadow depth pass for skinned meshes (same skinning as skinned.vert).
 layout(location = 0) in vec3 aPosition;
 layout(location = 2) in ivec4 aBoneIds;

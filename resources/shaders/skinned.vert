@@ -1,4 +1,3 @@
-#version 330 core
 // Linear blend skinning: v' = sum_k w_k * Bones[id_k] * v, then the model matrix. Shares lit.frag.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;

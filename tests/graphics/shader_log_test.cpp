@@ -33,6 +33,11 @@ TEST(ShaderLog, IncludesExpandWithLineDirectivesNamingTheirFile) {
   EXPECT_NE(source.find("float f()"), std::string::npos);
   EXPECT_NE(source.find("#line 100001"), std::string::npos);
   EXPECT_EQ(source.rfind("#version 330 core", 0), 0u) << "#version must stay first";
+  // A file without #version gets the platform's header first, and its own lines keep their numbers.
+  std::ofstream(dir / "plain.frag") << "void main() {}\n";
+  ASSERT_TRUE(gfx::preprocessShaderFile((dir / "plain.frag").string(), files, &source, &error)) << error;
+  EXPECT_EQ(source.rfind(gfx::shaderHeader(), 0), 0u);
+  EXPECT_NE(source.find("#line 1\nvoid main()"), std::string::npos);
   EXPECT_FALSE(gfx::preprocessShaderFile((dir / "absent.frag").string(), files, &source, &error));
   EXPECT_NE(error.find("absent.frag"), std::string::npos);
   std::filesystem::remove_all(dir);
