@@ -10,6 +10,7 @@
 #include <string>
 
 #include "physics/core/format.h"
+#include "physics/exercises/not_implemented.h"
 
 #include "physics/ode/integrators.h"
 
@@ -28,8 +29,21 @@ constexpr Real b1 = 35.0 / 384, b3 = 500.0 / 1113, b4 = 125.0 / 192, b5 = -2187.
 constexpr Real e1 = 71.0 / 57600, e3 = -71.0 / 16695, e4 = 71.0 / 1920, e5 = -17253.0 / 339200, e6 = 22.0 / 525,
                e7 = -1.0 / 40;
 
-constexpr Real kSafety = 0.9, kMinFactor = 0.2, kMaxFactor = 5.0;
+constexpr Real kMinFactor = 0.2;  // the most a retry shrinks a substep (PART-8's bound, used for non-finite ones)
 }  // namespace
+
+StepDecision controlStep([[maybe_unused]] Real error, [[maybe_unused]] Real d,
+                         [[maybe_unused]] const AdaptiveSettings& settings) {
+  // BEGIN SOLUTION
+  constexpr Real kSafety = 0.9, kMaxFactor = 5.0;
+  const Real allowed = settings.tolerance * d;  // error per unit step
+  const bool accept = error <= allowed || d <= settings.minStep;
+  // Local error ∝ d⁵, so error per unit step ∝ d⁴: exponent 1/4.
+  const Real factor = error > 0.0 ? kSafety * std::pow(allowed / error, 0.25) : kMaxFactor;
+  return {accept, std::max(settings.minStep, d * std::clamp(factor, kMinFactor, kMaxFactor))};
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("PART-8", StepDecision{true, d}, error, settings);  // fixed steps
+}
 
 Status validate(const AdaptiveSettings& s) {
   if (!(std::isfinite(s.tolerance) && s.tolerance > 0.0)) {
@@ -105,12 +119,9 @@ void adaptiveStep(OdeSystem& system, Real h, const AdaptiveSettings& settings, A
       delta = std::max(settings.minStep, kMinFactor * d);
       continue;
     }
-    const Real allowed = settings.tolerance * d;  // error per unit step
-    const bool accept = errorNorm <= allowed || d <= settings.minStep;
-    // Local error ∝ d⁵, so error per unit step ∝ d⁴: exponent 1/4.
-    const Real factor = errorNorm > 0.0 ? kSafety * std::pow(allowed / errorNorm, 0.25) : kMaxFactor;
-    const Real proposal = std::max(settings.minStep, d * std::clamp(factor, kMinFactor, kMaxFactor));
-    if (accept) {
+    const StepDecision decision = controlStep(errorNorm, d, settings);
+    const Real proposal = decision.next;
+    if (decision.accept) {
       ++st.accepted;
       t = last ? end : t + d;
       s.swap(y);

@@ -1,7 +1,6 @@
-// Generic explicit methods on any OdeSystem: explicit Euler, midpoint (RK2), RK4 (Lobb notes, "ODE view").
-#include <algorithm>
+// Generic explicit methods on any OdeSystem: explicit Euler and RK4 (Lobb notes, "ODE view"). Midpoint (RK2,
+// PART-7) works on the split s = (q, v) in place: second_order_methods.cpp.
 #include <cstddef>
-#include <span>
 
 #include "physics/exercises/not_implemented.h"
 #include "physics/ode/integrators.h"
@@ -21,22 +20,6 @@ void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w)
   endGenericStep(system, w, t + h);
   // END SOLUTION
   // STUB: exercises::markNotImplemented("PART-1");  // the state and the time stay where they are
-}
-
-namespace {
-// out = s + c k, component by component.
-void addScaled(std::span<Real> out, std::span<const Real> s, Real c, std::span<const Real> k) {
-  std::transform(s.begin(), s.end(), k.begin(), out.begin(), [c](Real si, Real ki) { return si + c * ki; });
-}
-}  // namespace
-
-void midpointStep(OdeSystem& system, Real h, Workspace& w) {
-  Workspace::fit(system.stateSize(), {&w.k1, &w.k2, &w.tmp});
-  const Real start = beginGenericStep(system, w);
-  addScaled(w.tmp, w.s, 0.5 * h, w.k1);             // s + Δs/2
-  system.derivative(start + 0.5 * h, w.tmp, w.k2);  // g_mid
-  addScaled(w.s, w.s, h, w.k2);
-  endGenericStep(system, w, start + h);
 }
 
 void rk4Step(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {

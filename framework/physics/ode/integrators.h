@@ -5,12 +5,12 @@
 //   name               order  kind                       source
 //   euler              1      explicit                   Lobb notes, Euler            (PART-1)
 //   symplectic-euler   1      semi-implicit, symplectic  Lobb "simple loop"; CMU asst4 (PART-2)
-//   midpoint           2      explicit RK2               Lobb notes, Midpoint
+//   midpoint           2      explicit RK2               Lobb notes, Midpoint         (PART-7)
 //   rk4                4      explicit RK4               Lobb notes, RK4              (PART-3)
 //   verlet             2      position Verlet, symplectic Ragdoll paper §Verlet (Jakobsen) (PART-6)
 //   velocity-verlet    2      symplectic                 Swope et al. 1982
 //   implicit-euler     1      linearised backward Euler  Baraff & Witkin 1998 eq. 16–18, CG
-//   adaptive           5(4)   embedded RK (Dormand–Prince 1980) with error control (Lobb "adaptive")
+//   adaptive           5(4)   embedded RK (Dormand–Prince 1980) with error control (Lobb "adaptive", PART-8)
 //
 // Stability on the undamped oscillator ẍ = −ω²x (amplification of the energy per step, z = ωh):
 //   euler 1 + z² (always grows) · symplectic Euler bounded for z < 2 · midpoint 1 + z⁴/4 ·
@@ -87,13 +87,6 @@ struct Workspace {
 // *****
 void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
 
-/// Midpoint / RK2 (Lobb notes): Δs = h f(s, t); s += h f(s + Δs/2, t + h/2).
-void midpointStep(OdeSystem& system, Real h, Workspace& w);
-/// The same method on the split s = (q, v), f = (v, a), in place (second_order_methods.cpp): the same
-/// numbers as the generic form (its derivative of a SecondOrderSystem is (v, a)), without copying the
-/// state out and back or the velocities into the slopes. Integrator uses this one.
-void midpointStep(SecondOrderSystem& system, Real h, Workspace& w);
-
 // ***** PART-3: classical Runge–Kutta 4 (Lobb notes, RK4) *****
 // One step of length h [s] of ds/dt = f(s, t) on the system's whole state (as PART-1).
 // (1) Four slopes, each taken at a trial state built from the previous slope: at the start of the step,
@@ -120,6 +113,20 @@ void rk4Step(OdeSystem& system, Real h, Workspace& w);
 // Check: on a spring the energy stays bounded over thousands of steps; first order in h.
 // *****
 void symplecticEulerStep(SecondOrderSystem& system, Real h, Workspace& w);
+
+// ***** PART-7: midpoint, second-order Runge–Kutta (Lobb notes, "ODE view": Midpoint (RK2)) *****
+// One step of length h [s] of a second-order system, in place on its arrays: positions q [m], velocities
+// v [m/s]; the state is s = (q, v) and its derivative f = (v, a), a = M⁻¹ F [m/s²] (acceleration()).
+// (1) Get the slope at the start of the step (startInPlace() gives it, as for PART-2).
+// (2) Build the trial state at the middle of the step from that slope, both its positions and its
+//     velocities (two scratch arrays of the workspace, sized with Workspace::fit), and work out its time.
+// (3) Get the acceleration at that trial state and time: together with the trial velocities it is the
+//     slope at the middle.
+// (4) Move the whole state over the full step along the middle slope; then finishInPlace().
+// Check: exact under a constant acceleration (the parabola) and under one linear in t; on the oscillator
+// ẍ = −ω²x one step multiplies the energy by 1 + z⁴/4 (z = ωh); halving h divides the error by 4.
+// *****
+void midpointStep(SecondOrderSystem& system, Real h, Workspace& w);
 
 /// Velocity Verlet: q += h v + h²a/2; v_half = v + h a/2; v = v_half + h a(q_new, v_half)/2.
 /// Forces that depend on v see the half-step velocity (exact for position-only forces).
@@ -187,12 +194,37 @@ struct AdaptiveState {
   long nonFiniteRejections = 0;  ///< running total of substeps rejected for a NaN or ±∞ error estimate
   Real shortfall = 0.0;  ///< [s] of the last call's interval left undone (0 = reached its end; see adaptiveStep)
 };
+/// What the step-size controller decides about one substep: keep it or not, and the size of the next try.
+struct StepDecision {
+  bool accept = true;
+  Real next = 0.0;  ///< [s] the size of the next substep (after an accepted one) or of the retry
+};
+
+// ***** PART-8: the adaptive step-size controller (Lobb notes, "ODE view": Adaptive step size) *****
+// adaptiveStep() has just taken a trial substep of size d [s] and estimated its local error `error` (a
+// dimensionless max-norm, relative to max(1, |s_i|)) from the embedded pair: the notes' idea of comparing
+// two solutions of different order over the same interval. Decide whether to keep the substep and propose
+// the next size.
+// (1) The bound is on the error per unit step: work out the error allowed for a substep of size d from
+//     settings.tolerance [1/s]. Keep the substep when its error is within it; a substep at (or below)
+//     settings.minStep is kept whatever its error (nothing smaller will be tried).
+// (2) Work out how the error per unit step scales with d (the kept solution is 5th order: its local error
+//     goes as d⁵), and from that the factor that would bring this substep's error exactly to the bound.
+// (3) Be cautious: multiply that factor by a safety of 0.9, and never shrink by more than 5× nor grow by
+//     more than 5× in one decision (an error of exactly 0 means: grow as much as allowed).
+// (4) The proposal is d times the factor, never below settings.minStep.
+// Check: an error exactly at the bound is kept and the next size is 0.9 d; a huge error is rejected and
+// retried at d/5; an error below the bound grows the step. Tightening the tolerance 10⁴× makes ~10× more
+// substeps (work out why from step (2)).
+// *****
+StepDecision controlStep(Real error, Real d, const AdaptiveSettings& settings);
+
 /// Advances h with as many Dormand–Prince 5(4) substeps as the error control needs
 /// (Dormand & Prince 1980; Hairer, Nørsett & Wanner, Solving ODEs I, §II.5). The embedded 4th-order
 /// solution estimates the local error e of each substep; a substep of size δ is accepted when
-/// e ≤ tolerance·δ ("error per unit step", so the global error stays ≲ tolerance × duration), and the
-/// next size is δ·clamp(0.9 (tolerance·δ/e)^(1/4), 0.2, 5). The notes' step doubling is the same idea
-/// with two half steps in place of the embedded pair.
+/// controlStep() (PART-8) accepts it and proposes the next size ("error per unit step", so the global
+/// error stays ≲ tolerance × duration). The notes' step doubling is the same idea with two half steps in
+/// place of the embedded pair.
 /// A substep whose error estimate is not finite (NaN or ±∞ in a stage) is rejected and retried at a fifth
 /// of its size; it is never committed. The call ends early, with the state and the system's time at the
 /// last accepted substep and `state.shortfall` = the time left, when maxSubsteps substeps were spent or

@@ -1,6 +1,8 @@
-// Methods that use the split s = (q, v): symplectic Euler and velocity Verlet (position Verlet, which also
-// does, is in position_verlet.cpp). They update the system's own arrays in place (no state copies).
+// Methods that use the split s = (q, v): symplectic Euler (PART-2), velocity Verlet and midpoint (PART-7)
+// (position Verlet, which also does, is in position_verlet.cpp). They update the system's own arrays in
+// place (no state copies).
 #include <cstddef>
+#include <span>
 
 #include "physics/exercises/not_implemented.h"
 #include "physics/ode/integrators.h"
@@ -41,36 +43,35 @@ void velocityVerletStep(SecondOrderSystem& system, Real h, Workspace& w) {
   finishInPlace(system, s, h);
 }
 
-void midpointStep(SecondOrderSystem& system, Real h, Workspace& w) {
-  const InPlaceStep s = startInPlace(system, w);  // a₁ = a(t, q, v) in w.k1
+void midpointStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unused]] Real h, [[maybe_unused]] Workspace& w) {
+  // BEGIN SOLUTION
+  const InPlaceStep s = startInPlace(system, w);  // the start slope: (v, a₁), a₁ in w.k1
   Workspace::fit(s.n, {&w.k2, &w.tmp, &w.tmp2});
-  const Real halfStep = 0.5 * h;
-  Real* __restrict q = s.q.data();
-  Real* __restrict v = s.v.data();
-  const Real* __restrict a1 = w.k1.data();
-  Real* __restrict qMid = w.tmp.data();
-  Real* __restrict vMid = w.tmp2.data();
-  for (std::size_t i = 0; i < s.n; ++i) {  // s + (h/2) f(s, t), with f = (v, a)
-    qMid[i] = q[i] + halfStep * v[i];
-    vMid[i] = v[i] + halfStep * a1[i];
+  const Real half = 0.5 * h;
+  const std::span<Real> qMid(w.tmp), vMid(w.tmp2);
+  for (std::size_t i = 0; i < s.n; ++i) {  // half a step along the start slope
+    qMid[i] = s.q[i] + half * s.v[i];
+    vMid[i] = s.v[i] + half * s.a[i];
   }
-  system.acceleration(s.t + halfStep, w.tmp, w.tmp2, w.k2);  // a₂ at the midpoint
-  const Real* __restrict a2 = w.k2.data();
-  for (std::size_t i = 0; i < s.n; ++i) {  // s + h f(s_mid, t + h/2)
-    q[i] += h * vMid[i];
-    v[i] += h * a2[i];
+  system.acceleration(s.t + half, qMid, vMid, w.k2);  // the middle slope: (vMid, a₂), a₂ in w.k2
+  for (std::size_t i = 0; i < s.n; ++i) {             // the whole step along the middle slope
+    s.q[i] += h * vMid[i];
+    s.v[i] += h * w.k2[i];
   }
   finishInPlace(system, s, h);
+  // END SOLUTION
+  // STUB: exercises::markNotImplemented("PART-7");  // the state and the time stay where they are
 }
 
-// Start-up probe: tells the lab whether PART-2 is still a stub.
+// Start-up probe: tells the lab whether PART-2 and PART-7 are still stubs.
 namespace {
-void probeSymplecticEuler() {
+void probeSecondOrderMethods() {
   HarmonicOscillator oscillator;
   Workspace w;
   symplecticEulerStep(oscillator, 0.01, w);
+  midpointStep(oscillator, 0.01, w);
 }
 }  // namespace
-PBA_EXERCISE_PROBE(probeSymplecticEuler());
+PBA_EXERCISE_PROBE(probeSecondOrderMethods());
 
 }  // namespace pba::ode

@@ -1,4 +1,5 @@
-// Tests of the integrators that are not exercises: midpoint, velocity Verlet, implicit Euler, adaptive,
+// Tests of the integrators that are not exercises: velocity Verlet, implicit Euler, adaptive's error
+// handling (its controller is PART-8: midpoint_adaptive_exercise_test.cpp),
 // the name table and the finite-difference Jacobian. Expected values come from closed forms.
 #include <cmath>
 #include <limits>
@@ -15,50 +16,8 @@ namespace {
 using testing::convergesWithOrders;
 using testing::multipliesEnergyEachStepBy;
 
-TEST(Midpoint, ConvergesWithOrderTwoOnTheOscillator) {
-  EXPECT_TRUE(convergesWithOrders(IntegratorKind::Midpoint, 200, {.x = 2.0, .v = 2.0, .phase = 2.0}));
-}
-
 TEST(VelocityVerlet, ConvergesWithOrderTwoOnTheOscillator) {
   EXPECT_TRUE(convergesWithOrders(IntegratorKind::VelocityVerlet, 200, {.x = 2.0, .v = 2.0, .phase = 2.0}));
-}
-
-TEST(Midpoint, MultipliesTheOscillatorEnergyByOnePlusZToTheFourthOverFour) {
-  // One midpoint step on ẍ = −ω²x is the matrix [[1 − z²/2, h], [−ω²h, 1 − z²/2]] (z = ωh); its
-  // determinant, the energy factor, is (1 − z²/2)² + z² = 1 + z⁴/4.
-  HarmonicOscillator osc;
-  Integrator integrator(IntegratorKind::Midpoint);
-  const Real h = 0.1, z = h * osc.omega();
-  EXPECT_TRUE(multipliesEnergyEachStepBy(osc, integrator, h, 50, 1.0 + z * z * z * z / 4.0, 1e-13));
-}
-
-TEST(Midpoint, InPlaceOnTheSplitGivesTheGenericMethodsNumbersBitForBit) {
-  // Integrator steps a SecondOrderSystem with the in-place form; the reference is the notes' formula
-  // s ← s + h f(s + (h/2) f(s, t), t + h/2) written here on the packed state, and the generic form.
-  const Real h = 0.01;
-  KeplerOrbit inPlace, generic, reference;
-  Integrator integrator(IntegratorKind::Midpoint);
-  Workspace w;
-  std::vector<Real> s(6), k1(6), mid(6), k2(6);
-  for (int step = 0; step < 300; ++step) {
-    integrator.step(inPlace, h);
-    midpointStep(static_cast<OdeSystem&>(generic), h, w);
-    const Real t = reference.time();
-    reference.getState(s);
-    reference.derivative(t, s, k1);
-    for (std::size_t i = 0; i < 6; ++i) mid[i] = s[i] + (0.5 * h) * k1[i];
-    reference.derivative(t + 0.5 * h, mid, k2);
-    for (std::size_t i = 0; i < 6; ++i) s[i] += h * k2[i];
-    reference.setState(s);
-    reference.setTime(t + h);
-  }
-  for (std::size_t i = 0; i < 3; ++i) {
-    EXPECT_EQ(inPlace.positions()[i], reference.positions()[i]) << i;
-    EXPECT_EQ(inPlace.velocities()[i], reference.velocities()[i]) << i;
-    EXPECT_EQ(generic.positions()[i], reference.positions()[i]) << i;
-    EXPECT_EQ(generic.velocities()[i], reference.velocities()[i]) << i;
-  }
-  EXPECT_EQ(inPlace.time(), reference.time());
 }
 
 TEST(HarmonicOscillator, OnePassAccelerationIsTheForceScaledByTheInverseMass) {
@@ -103,58 +62,6 @@ TEST(ImplicitEuler, FiniteDifferenceJacobianAgreesWithTheAnalyticOne) {
   const Vec3 expected = (3.0 * r * glm::dot(r, d) / std::pow(len, 5) - d / std::pow(len, 3)) * orbit.desc().gm;
   // Central differences with ε ≈ 1e-6: truncation O(ε²) and rounding O(1e-16/ε) ≈ 1e-10.
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(out[static_cast<std::size_t>(i)], expected[i], 1e-8);
-}
-
-TEST(Adaptive, MeetsItsToleranceWithFewerStepsThanAFixedStepOfEqualAccuracy) {
-  const Real T = 10.0;
-  for (Real tolerance : {1e-6, 1e-9}) {
-    SCOPED_TRACE(::testing::Message() << "tolerance " << tolerance);
-    HarmonicOscillator osc;
-    Integrator adaptive(IntegratorKind::Adaptive);
-    ASSERT_TRUE(adaptive.setAdaptiveSettings({.tolerance = tolerance}).ok());
-    adaptive.step(osc, T);  // one call: the controller chooses every substep
-    const Real error =
-        std::hypot(osc.positions()[0] - osc.exactPosition(T), osc.velocities()[0] - osc.exactVelocity(T));
-    // Error per unit step ≤ tolerance ⇒ global error ≲ tolerance × T on this non-expanding system.
-    EXPECT_LE(error, tolerance * T);
-    const long steps = adaptive.adaptiveState().accepted + adaptive.adaptiveState().rejected;
-    // Smallest fixed-step RK4 run (n = 2^k) that is at least as accurate. RK4 on ẍ = −x is the
-    // rotation-like matrix [[c, s], [−s, c]] per step (c = 1 − h²/2 + h⁴/24, s = h − h³/6), applied
-    // here directly so that this test does not depend on the PART-3 exercise.
-    auto rk4Error = [&](int n) {
-      const Real h = T / n, c = 1 - h * h / 2 + h * h * h * h / 24, s = h - h * h * h / 6;
-      Real x = 1.0, v = 0.0;
-      for (int i = 0; i < n; ++i) {
-        const Real xn = c * x + s * v;
-        v = -s * x + c * v;
-        x = xn;
-      }
-      return std::hypot(x - std::cos(T), v + std::sin(T));
-    };
-    int fixedSteps = 1;
-    while (rk4Error(fixedSteps) > error) {
-      fixedSteps *= 2;
-      ASSERT_LT(fixedSteps, 1 << 20);
-    }
-    EXPECT_LT(steps, fixedSteps) << "adaptive error " << error;
-    // Fewer derivative evaluations as well (6 per DOPRI step, 4 per RK4 step).
-    EXPECT_LT(adaptive.adaptiveState().evaluations, 4L * fixedSteps);
-  }
-}
-
-TEST(Adaptive, ShrinksTheStepNearPericentreOfAnEccentricOrbit) {
-  OrbitDesc desc;
-  desc.velocity = Vec3(0.0, 0.0, -0.5);  // start at apocentre of an e ≈ 0.75 orbit
-  KeplerOrbit orbit(desc);
-  Integrator adaptive(IntegratorKind::Adaptive);
-  ASSERT_TRUE(adaptive.setAdaptiveSettings({.tolerance = 1e-8}).ok());
-  const Real e0 = orbit.energy();
-  const Real T = orbit.period();
-  const int frames = 200;
-  for (int i = 0; i < frames; ++i) adaptive.step(orbit, T / frames);
-  EXPECT_NEAR(orbit.energy(), e0, 1e-6 * std::abs(e0));
-  EXPECT_NEAR(orbit.position().x, desc.position.x, 1e-5);  // back at apocentre after one period
-  EXPECT_GT(adaptive.adaptiveState().accepted, frames);    // it subdivided somewhere
 }
 
 TEST(IntegratorNames, RoundTripAndRejectUnknownNames) {
