@@ -72,9 +72,10 @@ ClothScene::ClothScene() {
             "XPBD compliance α = 1/k of the stretch and shear constraints: 0 is inextensible. Independent of "
             "iterations and substeps, unlike PBD's stiffness. Typical 0–10⁻⁴.")
       .logarithmic();
-  params_.choiceEnum("bending", &settings_.bending, {"isometric", "distance", "none"},
-                     "Bending of pbd/xpbd: isometric (Bergou 2006, one linear constraint per inner edge), distance "
-                     "(TMP #14–15: opposite vertices of each inner edge keep their rest distance) or none.");
+  params_.choiceEnum(
+      "bending", &settings_.bending, {"isometric", "distance", "none"},
+      "Bending of pbd/xpbd: isometric (Bergou 2006, one linear constraint per inner edge, CLOTH-6), distance "
+      "(TMP #14–15: opposite vertices of each inner edge keep their rest distance) or none.");
   params_
       .real("bend_compliance", &bendCompliance_, 0.0, 1e4, "1/(N·m)",
             "XPBD compliance of isometric bending (Bergou 2006): larger is floppier. Typical 1–100.")

@@ -20,7 +20,8 @@ class TableclothScene final : public ClothScene {
     return app::CameraView{Vec3(0.0, 0.55, 0.0), 3.2, 0.6, 0.5};
   }
   std::string description() const override {
-    return "A tablecloth falls onto a table: friction holds it on the top, the corners fold over the edges.";
+    return "A tablecloth falls onto a table (a box, CLOTH-7): friction holds it on the top, the corners fold over the "
+           "edges.";
   }
 
  protected:

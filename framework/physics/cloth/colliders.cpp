@@ -42,25 +42,10 @@ Prepared prepare(const Collider& c) {
   return p;
 }
 
-SurfacePoint boxSurface(const Prepared& b, const Vec3& x) {
-  const Collider& c = *b.c;
-  const Vec3 p = glm::conjugate(b.q) * (x - c.center);  // box frame
-  const Vec3 a = glm::abs(p) - c.halfExtents;           // per-axis distance outside the slab
-  SurfacePoint s;
-  if (a.x > 0.0 || a.y > 0.0 || a.z > 0.0) {  // outside: distance to the closest point of the box
-    const Vec3 outside = glm::max(a, Vec3(0.0));
-    s.distance = glm::length(outside);
-    const Vec3 n = outside * glm::sign(p);
-    s.normal = b.q * (n / s.distance);
-    return s;
-  }
-  int axis = 0;  // inside: leave through the nearest face
-  if (a.y > a[axis]) axis = 1;
-  if (a.z > a[axis]) axis = 2;
-  Vec3 n(0.0);
-  n[axis] = p[axis] >= 0.0 ? 1.0 : -1.0;
-  s.distance = a[axis];
-  s.normal = b.q * n;
+/// The box collider in world coordinates: CLOTH-7 in the box's frame, rotated in and out.
+SurfacePoint boxSurfaceWorld(const Prepared& b, const Vec3& x) {
+  SurfacePoint s = boxSurface(b.c->halfExtents, glm::conjugate(b.q) * (x - b.c->center));
+  s.normal = b.q * s.normal;
   return s;
 }
 
@@ -81,7 +66,7 @@ SurfacePoint surfaceOf(const Prepared& p, const Vec3& x) {
       return {l - c.radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
     }
     case ColliderShape::Box:
-      return boxSurface(p, x);
+      return boxSurfaceWorld(p, x);
   }
   return {};
 }
@@ -106,6 +91,27 @@ Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real m
 }  // namespace
 
 SurfacePoint closestSurface(const Collider& c, const Vec3& x) { return surfaceOf(prepare(c), x); }
+
+SurfacePoint boxSurface([[maybe_unused]] const Vec3& halfExtents, [[maybe_unused]] const Vec3& p) {
+  // BEGIN SOLUTION
+  const Vec3 a = glm::abs(p) - halfExtents;  // per-axis distance outside the slab
+  SurfacePoint s;
+  if (a.x > 0.0 || a.y > 0.0 || a.z > 0.0) {  // outside: distance to the closest point of the box
+    const Vec3 outside = glm::max(a, Vec3(0.0));
+    s.distance = glm::length(outside);
+    s.normal = outside * glm::sign(p) / s.distance;
+    return s;
+  }
+  int axis = 0;  // inside: leave through the nearest face
+  if (a.y > a[axis]) axis = 1;
+  if (a.z > a[axis]) axis = 2;
+  s.normal = Vec3(0.0);
+  s.normal[axis] = p[axis] >= 0.0 ? 1.0 : -1.0;
+  s.distance = a[axis];
+  return s;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("CLOTH-7", SurfacePoint{std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)}, halfExtents, p);
+}
 
 Vec3 projectOutOfSphere([[maybe_unused]] const Vec3& x, [[maybe_unused]] const Vec3& xPrev,
                         [[maybe_unused]] const Vec3& center, [[maybe_unused]] Real radius,
@@ -245,5 +251,7 @@ Real minColliderDistance(std::span<const Collider> colliders, std::span<const Ve
 
 // Start-up probe: tells the lab whether CLOTH-4 is still a stub.
 PBA_EXERCISE_PROBE(projectOutOfSphere(Vec3(0.0, 0.5, 0.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0), 1.0, 0.5));
+// Start-up probe: tells the lab whether CLOTH-7 is still a stub.
+PBA_EXERCISE_PROBE(boxSurface(Vec3(0.5), Vec3(0.0, 1.0, 0.0)));
 
 }  // namespace pba::cloth

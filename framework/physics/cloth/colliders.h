@@ -37,6 +37,24 @@ struct SurfacePoint {
 };
 SurfacePoint closestSurface(const Collider& c, const Vec3& x);
 
+// ***** CLOTH-7: signed distance and normal of a box (Müller et al. 2007 §3.5: collision constraints) *****
+// The box is centred at the origin of its own frame, its faces perpendicular to the axes, halfExtents
+// [m] from the centre (all > 0). p [m] is the particle in that frame (the caller rotates in and out).
+// Return the signed distance of p to the box's surface [m] (negative inside) and the outward unit normal
+// at the closest surface point, both in the box frame.
+// (1) Per axis, work out how far p lies outside the slab between the two faces of that axis (negative
+//     when it lies between them).
+// (2) Outside the box (outside at least one slab): the closest point clamps p into the box; the distance
+//     and the normal come from the part of p that clamping removes (a face, an edge or a corner is the
+//     closest feature depending on how many slabs p is outside), with the normal's signs those of p.
+// (3) Inside: the particle leaves through the nearest face; the distance is the least negative of the
+//     three slab values and the normal is that face's axis, pointing to the side p is on (+ at 0).
+// Check: a point above the top face by d has distance d and normal +y; one beyond an edge or corner lies
+// at the Euclidean distance to it, with a unit normal along the offset; the centre is at minus the
+// smallest half extent; |normal| = 1 everywhere.
+// *****
+SurfacePoint boxSurface(const Vec3& halfExtents, const Vec3& p);
+
 // ***** CLOTH-4: sphere collision projection with friction (Müller et al. 2007 §3.5; Macklin et al. 2014 §6.1) *****
 // A particle ended a step at x [m], coming from xPrev (where it was at the start of the step, already
 // moved with the collider). The sphere has centre c and radius r (the collider's radius plus the cloth's

@@ -1,5 +1,6 @@
 #include "physics/cloth/xpbd.h"
 
+#include <array>
 #include <cmath>
 
 #include "physics/cloth/forces.h"
@@ -28,8 +29,10 @@ DistanceCorrection xpbdDistanceCorrection([[maybe_unused]] const Vec3& xi, [[may
   // STUB: return exercises::notImplemented("CLOTH-2", DistanceCorrection{}, xi, xj, wi, wj, restLength, compliance, h, lambda);
 }
 
-void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::span<const Real> w, Real compliance,
-                             Real h, Vec3& lambda) {
+void projectIsometricBending([[maybe_unused]] const BendingStencil& s, [[maybe_unused]] std::span<Vec3> x,
+                             [[maybe_unused]] std::span<const Real> w, [[maybe_unused]] Real compliance,
+                             [[maybe_unused]] Real h, [[maybe_unused]] Vec3& lambda) {
+  // BEGIN SOLUTION
   Vec3 c(0.0);
   Real denominator = 0.0;
   for (int k = 0; k < 4; ++k) {
@@ -41,6 +44,8 @@ void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::sp
   const Vec3 deltaLambda = (-c - alphaTilde * lambda) / (denominator + alphaTilde);
   lambda += deltaLambda;
   for (int k = 0; k < 4; ++k) x[s.vertex[k]] += w[s.vertex[k]] * s.weight[k] * deltaLambda;
+  // END SOLUTION
+  // STUB: exercises::markNotImplemented("CLOTH-6");
 }
 
 namespace {
@@ -129,5 +134,20 @@ Real constraintEnergy(std::span<const Link> constraints, std::span<const Vec3> x
 
 // Start-up probe: tells the lab whether CLOTH-2 is still a stub.
 PBA_EXERCISE_PROBE(xpbdDistanceCorrection(Vec3(0.0), Vec3(1.0, 0.0, 0.0), 1.0, 1.0, 0.5, 0.0, 0.01, 0.0));
+
+namespace {
+/// CLOTH-6 on a folded pair of unit right triangles (weights of no particular stencil).
+void probeIsometricBending() {
+  BendingStencil s;
+  s.vertex = {0, 1, 2, 3};
+  s.weight = {1.0, 1.0, -1.0, -1.0};
+  std::array<Vec3, 4> x{Vec3(0.0), Vec3(1.0, 0.0, 0.0), Vec3(0.0, 1.0, 0.0), Vec3(1.0, 0.0, 1.0)};
+  const std::array<Real, 4> w{1.0, 1.0, 1.0, 1.0};
+  Vec3 lambda(0.0);
+  projectIsometricBending(s, x, w, 0.0, 0.01, lambda);
+}
+}  // namespace
+// Start-up probe: tells the lab whether CLOTH-6 is still a stub.
+PBA_EXERCISE_PROBE(probeIsometricBending());
 
 }  // namespace pba::cloth

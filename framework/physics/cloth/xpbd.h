@@ -44,10 +44,24 @@ struct DistanceCorrection {
 DistanceCorrection xpbdDistanceCorrection(const Vec3& xi, const Vec3& xj, Real wi, Real wj, Real restLength,
                                           Real compliance, Real h, Real lambda);
 
-/// Isometric bending (cloth.h, BendingStencil) as an XPBD vector constraint C = Σ_k K_k x_k ∈ ℝ³ with
-/// compliance α = 1/k_b: because C is linear with ∇_k C = K_k I, one projection solves it exactly:
-///   Δλ = (−C − α̃ λ) / (Σ_k w_k K_k² + α̃) ∈ ℝ³,  Δx_k = w_k K_k Δλ.
-/// Updates x and λ (3 reals). compliance [1/(N·m)], h [s].
+// ***** CLOTH-6: the isometric bending constraint of XPBD (Bergou et al. 2006 §4; Macklin et al. 2016 eq. 17–18) *****
+// A stencil (cloth.h, BendingStencil) names the four particles of two triangles that share an edge and
+// one weight K_k [1/m] per particle, worked out once on the flat rest shape; its constraint is the vector
+// C = Σ_k K_k x_k ∈ ℝ³ [1/m · m = dimensionless], zero for the flat rest pair and for any rigid motion of
+// it. Inputs: the positions x [m] (update the stencil's four in place), inverse masses w [1/kg] (0:
+// pinned), the compliance α = 1/k_b [1/(N·m)], the substep h [s] and the stencil's multiplier λ ∈ ℝ³
+// accumulated so far in this substep (update it in place).
+// (1) Evaluate C at the current positions and write down its gradient with respect to one particle:
+//     C is linear in the positions, so the gradient is constant (a multiple of the 3 × 3 identity).
+// (2) Follow CLOTH-2's XPBD update (eq. 18) with that gradient, component by component: the compliance
+//     scaled by the substep, the accumulated multiplier in the numerator, the weighted squared gradients
+//     of all four particles in the denominator. When that denominator is zero (every particle pinned,
+//     no compliance) do nothing.
+// (3) Add Δλ to λ and move each particle along its own gradient by Δλ, weighted by its inverse mass.
+// Check: with α = 0 one call makes C exactly zero (C is linear: no iteration needed); a pinned particle
+// never moves; the mass-weighted centre Σ m_k x_k stays put (the weights sum to zero); a flat stencil
+// is left alone.
+// *****
 void projectIsometricBending(const BendingStencil& s, std::span<Vec3> x, std::span<const Real> w, Real compliance,
                              Real h, Vec3& lambda);
 /// How a Gauss–Seidel sweep treats its constraints: XPBD (compliance by kind, λ accumulated) or PBD
