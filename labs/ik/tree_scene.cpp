@@ -23,7 +23,8 @@ class TreeScene final : public IkScene {
         .needsReset();
   }
   std::string description() const override {
-    return "Several goals on one tree: the Jacobian stacks one 3-row block per effector; FABRIK averages at sub-bases.";
+    return "Several goals on one tree: the Jacobian stacks one 3-row block per effector and SDLS damps each singular "
+           "direction by itself (IK-8); FABRIK averages at sub-bases.";
   }
 
  protected:

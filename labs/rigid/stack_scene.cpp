@@ -17,7 +17,9 @@ class StackScene final : public lab::WorldScene {
     params_.real("friction", &desc_.friction, 0.0, 1.5, "", "Coulomb μ of every box. Typical 0.6.").needsReset();
   }
   std::string description() const override {
-    return "A 10-box column and a 210-box pyramid stand still: warm-started soft contacts keep the tops from drifting.";
+    return "A 10-box column and a 210-box pyramid stand still: warm-started soft contacts, each row scaled by its "
+           "effective "
+           "mass (RIGID-5), keep the tops from drifting.";
   }
 
  protected:

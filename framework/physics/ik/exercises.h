@@ -43,6 +43,13 @@ struct TransposeStep {
 };
 TransposeStep jacobianTransposeStep(const Matrix& J, const std::vector<Real>& error);
 
+/// IK-8 (jacobian_solvers.cpp): selectively damped least squares' damping choice for one singular
+/// direction (Buss & Kim 2005 §4): the largest DOF change γᵢ [rad] its step may make, at most γ_max.
+/// u: the left singular vector (J.rows entries, 3 per effector block), v: the right one (J.cols
+/// entries), sigma > 0 its singular value, rho[j]: how far all effectors move per unit change of DOF j.
+Real selectiveDampingLimit(const std::vector<Real>& u, const std::vector<Real>& v, Real sigma,
+                           const std::vector<Real>& rho, Real gammaMax);
+
 /// IK-6 (limits.cpp): clamps joint j of `pose` into its limits (Workbook §2.7; IK slides "Joint limits").
 void clampJointToLimits(const Skeleton& skeleton, Pose& pose, int j);
 

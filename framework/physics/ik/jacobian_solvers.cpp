@@ -6,9 +6,9 @@
 //   pinv   Δθ = J⁺ Δe = Σ_{σᵢ > c σ_max} σᵢ⁻¹ (uᵢ·Δe) vᵢ  (SVD; c = singularCutoff drops near-singular
 //          directions, which would otherwise give huge steps: IK slides "Degenerate cases").
 //   DLS    the exercise IK-4: minimises |J Δθ − Δe|² + λ² |Δθ|² (Buss 2004 §5).
-//   SDLS   Buss & Kim 2005 §4: each singular direction gets its own clamp γᵢ = min(1, Nᵢ/Mᵢ) γ_max,
-//          Nᵢ = Σₖ |uᵢ,ₖ| (effector blocks), Mᵢ = σᵢ⁻¹ Σⱼ |vⱼᵢ| Σₖ |J_kj| — the ratio of the motion the
-//          step asks for to the motion the joints would produce; the sum is clamped to γ_max = π/4.
+//   SDLS   Buss & Kim 2005 §4: each singular direction's step is clamped to its own γᵢ ≤ γ_max, from
+//          the motion the step asks of the effectors and the motion its joints would produce (the
+//          exercise IK-8); the sum is clamped to γ_max = π/4.
 // Δe is each effector's error clamped to maxErrorStep (Buss's D_max, the clamping of Buss & Kim's
 // experiments) to keep the linearisation valid. DOF weights wⱼ scale the columns (J̃ = J W) and the
 // step (Δθ = W Δỹ). Joint limits: the pose is clamped after each step (IK-6); with ZeroColumns, DOFs
@@ -87,6 +87,40 @@ TransposeStep jacobianTransposeStep(const Matrix& J, const std::vector<Real>& er
 
 // Start-up probe: tells the lab whether IK-7 is still a stub.
 PBA_EXERCISE_PROBE(jacobianTransposeStep(Matrix(1, 1), std::vector<Real>{0.0}));
+
+// ***** IK-8: selectively damped least squares, the damping of one singular direction (Buss & Kim
+// 2005, "Selectively damped least squares for inverse kinematics", §4) *****
+// Inputs: one singular triple of J (u: J.rows entries, the effector rows in blocks of 3; v: J.cols
+// entries; σ > 0), ρ (J.cols entries, ρⱼ [m/rad]: the sum over the effector blocks of the length of
+// column j's block, how far the effectors move per unit change of DOF j) and γ_max [rad]. Output: γᵢ
+// [rad], the largest change of any one DOF that this direction's step may make (the solver clamps
+// the direction's undamped step to it).
+// (1) Nᵢ [1]: how much effector motion this direction asks for per unit of error: the sum over the
+//     effector blocks of the length of u's block (a block is 3 consecutive rows).
+// (2) Mᵢ [1]: how much effector motion the joints would make for that step: each DOF's share of v
+//     (its absolute value) times that DOF's ρ, summed over the DOFs, then divided by σ (the undamped
+//     step along this direction is 1/σ times larger than its share of the error).
+// (3) γᵢ: γ_max when the joints would move the effectors no more than asked (Mᵢ ≤ Nᵢ); otherwise
+//     γ_max scaled down by how many times more they would move.
+// Check: a single hinge moving one effector gets γ_max; a direction whose joints swing the effectors
+// far more than asked (small σ) gets proportionally less; the result never exceeds γ_max and is ≥ 0.
+// *****
+Real selectiveDampingLimit(const std::vector<Real>& u, const std::vector<Real>& v, Real sigma,
+                           const std::vector<Real>& rho, Real gammaMax) {
+  // BEGIN SOLUTION
+  Real N = 0.0;
+  for (size_t r = 0; r + 2 < u.size(); r += 3) N += glm::length(Vec3(u[r], u[r + 1], u[r + 2]));
+  Real M = 0.0;
+  for (size_t col = 0; col < v.size(); ++col) M += std::abs(v[col]) * rho[col];
+  M /= sigma;
+  return (M > N ? N / M : 1.0) * gammaMax;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("IK-8", 0.0, u, v, sigma, rho, gammaMax);
+}
+
+// Start-up probe: tells the lab whether IK-8 is still a stub.
+PBA_EXERCISE_PROBE(selectiveDampingLimit(std::vector<Real>{1.0, 0.0, 0.0}, std::vector<Real>{1.0}, 1.0,
+                                         std::vector<Real>{1.0}, 0.5));
 
 namespace detail {
 namespace {
@@ -180,12 +214,7 @@ class JacobianMethod final : public Method {
     for (size_t i = 0; i < d.sigma.size(); ++i) {
       if (d.v[i].empty()) continue;  // σᵢ = 0: no response (Buss & Kim sum over σᵢ ≠ 0)
       const Real alpha = dot(d.u[i], e);
-      Real N = 0.0;
-      for (size_t r = 0; r + 2 < d.u[i].size(); r += 3) N += glm::length(Vec3(d.u[i][r], d.u[i][r + 1], d.u[i][r + 2]));
-      Real M = 0.0;
-      for (int col = 0; col < n; ++col) M += std::abs(d.v[i][static_cast<size_t>(col)]) * rho[static_cast<size_t>(col)];
-      M /= d.sigma[i];
-      const Real gamma = (M > N ? N / M : 1.0) * kSdlsGammaMax;
+      const Real gamma = selectiveDampingLimit(d.u[i], d.v[i], d.sigma[i], rho, kSdlsGammaMax);  // IK-8
       std::vector<Real>& phi = phi_;
       const Real scale = alpha / d.sigma[i];  // once, not per entry (phi's stores could alias sigma)
       phi.resize(d.v[i].size());

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <type_traits>
 
+#include "physics/rigid/exercises.h"
+
 namespace pba::rigid {
 
 void tangentBasis(const Vec3& n, Vec3& t1, Vec3& t2) {
@@ -38,28 +40,22 @@ void prepareContact(const ContactConstraint& c, const std::vector<SolverBody>& b
   out.invIB = b.invI;
   out.count = c.manifold.count;
   const Vec3 directions[3] = {out.normal, out.tangent[0], out.tangent[1]};
+  const Mat3 zero(0.0);
+  const Mat3& invIA = out.sides != ContactSides::OnlyB ? a.invI : zero;
+  const Mat3& invIB = out.sides != ContactSides::OnlyA ? b.invI : zero;
   for (int i = 0; i < out.count; ++i) {
     SolverContactPoint& p = out.points[i];
     const collision::ManifoldPoint& mp = c.manifold.points[i];
     p.rA = mp.point - a.c;
     p.rB = mp.point - b.c;
     p.separation = mp.separation;
-    Real k[3];
-    for (int d = 0; d < 3; ++d) {
-      // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d); a side at rest adds zeros.
-      k[d] = a.invMass + b.invMass;
-      if (out.sides != ContactSides::OnlyB) {
-        const Vec3 ra = glm::cross(p.rA, directions[d]);
-        k[d] += glm::dot(ra, a.invI * ra);
-      }
-      if (out.sides != ContactSides::OnlyA) {
-        const Vec3 rb = glm::cross(p.rB, directions[d]);
-        k[d] += glm::dot(rb, b.invI * rb);
-      }
-    }
-    p.normalMass = k[0] > 0.0 ? 1.0 / k[0] : 0.0;
-    p.tangentMass[0] = k[1] > 0.0 ? 1.0 / k[1] : 0.0;
-    p.tangentMass[1] = k[2] > 0.0 ? 1.0 / k[2] : 0.0;
+    // Each row's effective mass (RIGID-5); a side at rest takes part with zero inverse inertia.
+    Real mass[3];
+    for (int d = 0; d < 3; ++d)
+      mass[d] = contactEffectiveMass(a.invMass, invIA, p.rA, b.invMass, invIB, p.rB, directions[d]);
+    p.normalMass = mass[0];
+    p.tangentMass[0] = mass[1];
+    p.tangentMass[1] = mass[2];
     p.normalImpulse = warmStarting ? c.points[i].normalImpulse : 0.0;
     p.tangentImpulse[0] = warmStarting ? c.points[i].tangentImpulse[0] : 0.0;
     p.tangentImpulse[1] = warmStarting ? c.points[i].tangentImpulse[1] : 0.0;

@@ -4,7 +4,7 @@
 //
 // Non-penetration at a contact point with normal n (A → B) and arms r_A, r_B:
 //   C = separation ≥ 0,   Ċ = n·(v_B + ω_B × r_B − v_A − ω_A × r_A) = J v,
-//   J = [−nᵀ, −(r_A × n)ᵀ, nᵀ, (r_B × n)ᵀ],  m_eff = 1/(J M⁻¹ Jᵀ).
+//   J = [−nᵀ, −(r_A × n)ᵀ, nᵀ, (r_B × n)ᵀ],  m_eff the row's effective mass (the exercise RIGID-5).
 // Each iteration applies λ = −m_eff (Ċ + bias) and clamps the accumulated impulse to ≥ 0 (the impulse
 // may push, never pull). Friction rows along the tangents t₁, t₂ are clamped to the Coulomb cone
 // |λ_t| ≤ μ λ_n (or the pyramid |λ_tᵢ| ≤ μ λ_n). The bias: speculative (C > 0: allow the approach

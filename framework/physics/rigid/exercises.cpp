@@ -122,6 +122,37 @@ Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& poi
   // STUB: return exercises::notImplemented("RIGID-4", Vec3(0.0), a, b, point, normal, normalImpulse, friction);
 }
 
+// ***** RIGID-5: The effective mass of a contact row (Catto, "Fast and Simple Physics using Sequential
+// Impulses", GDC 2006; Baraff & Witkin 2001, "Rigid Body Dynamics II", §8.3) *****
+// Inputs in world axes: each side's inverse mass [1/kg] and inverse inertia [1/(kg·m²)] (zeros for a
+// side that cannot move), the arms r_A, r_B [m] from each centre of mass to the contact point, and the
+// unit direction d of the row. Output: the effective mass [kg] ≥ 0 of the row, the factor the
+// sequential-impulse solver multiplies a velocity error along d [m/s] by to get the impulse [N·s].
+// (1) Translation: an impulse of 1 N·s along d (+ on B, − on A) changes each side's velocity by its
+//     inverse mass; add up how much that changes the two points' relative velocity along d.
+// (2) Rotation: the same impulse applied at the end of an arm gives each side an angular impulse (the
+//     moment of d about the centre); its inverse inertia turns that into a change of ω, which moves
+//     the point; keep only the part of that motion along d. Each side adds a term of its own, ≥ 0.
+// (3) The sum K [1/kg] is the inverse of the effective mass. Return its reciprocal, or 0 when K is not
+//     positive (two sides that cannot move: the row must apply nothing).
+// Check: a point on the line of d through a centre adds only that side's inverse mass; an arm
+// perpendicular to d adds (|r|²/I) for an isotropic inertia I; swapping A and B, or reversing d,
+// changes nothing; 1/K equals the impulse that stops a relative velocity of 1 m/s along d.
+// *****
+Real contactEffectiveMass(Real inverseMassA, const Mat3& inverseInertiaA, const Vec3& armA, Real inverseMassB,
+                          const Mat3& inverseInertiaB, const Vec3& armB, const Vec3& direction) {
+  // BEGIN SOLUTION
+  // K = m_A⁻¹ + m_B⁻¹ + (r_A × d)·I_A⁻¹(r_A × d) + (r_B × d)·I_B⁻¹(r_B × d), summed in this order.
+  Real k = inverseMassA + inverseMassB;
+  const Vec3 momentA = glm::cross(armA, direction);
+  k += glm::dot(momentA, inverseInertiaA * momentA);
+  const Vec3 momentB = glm::cross(armB, direction);
+  k += glm::dot(momentB, inverseInertiaB * momentB);
+  return k > 0.0 ? 1.0 / k : 0.0;
+  // END SOLUTION
+  // STUB: return exercises::notImplemented("RIGID-5", 0.0, inverseMassA, inverseInertiaA, armA, inverseMassB, inverseInertiaB, armB, direction);
+}
+
 // Start-up probes: tell the lab which exercises are still stubs.
 PBA_EXERCISE_PROBE(boxInertiaTensor(1.0, Vec3(0.5), Quat(1, 0, 0, 0)));
 PBA_EXERCISE_PROBE(integrateOrientation(Quat(1, 0, 0, 0), Vec3(0.0, 1.0, 0.0), 0.01));
@@ -129,5 +160,6 @@ PBA_EXERCISE_PROBE(collisionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(
                                     ImpulseBody{}, Vec3(0.0), kUp, 0.5));
 PBA_EXERCISE_PROBE(frictionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0), Vec3(1.0, -1.0, 0.0), Vec3(0.0)},
                                    ImpulseBody{}, Vec3(0.0), kUp, 1.0, 0.5));
+PBA_EXERCISE_PROBE(contactEffectiveMass(1.0, Mat3(1.0), Vec3(1.0, 0.0, 0.0), 0.0, Mat3(0.0), Vec3(0.0), kUp));
 
 }  // namespace pba::rigid

@@ -3,7 +3,8 @@
 // them (the `tumble` scene). The world's solver (world.h) moves every orientation with RIGID-2 and
 // finds box contacts through COLL-2 (collision/exercises.h); for inertia and impulses it has its own
 // general routes (Mirtich's integrals of any hull, sequential impulses with accumulated clamping), so
-// RIGID-1, -3 and -4 run in the `tumble` scene.
+// RIGID-1, -3 and -4 run in the `tumble` scene. The world's contact solver takes the effective mass of
+// every contact row from RIGID-5.
 //
 // Conventions of this file (Baraff & Witkin 2001, "Rigid Body Dynamics II", §8): a contact between
 // bodies A and B at world point p with unit normal n pointing from B toward A; arms r = p − x; the
@@ -44,5 +45,14 @@ Real collisionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& po
 /// tangential relative velocity, stops it if that takes at most μ j, and is clamped to μ j otherwise.
 Vec3 frictionImpulse(const ImpulseBody& a, const ImpulseBody& b, const Vec3& point, const Vec3& normal,
                      Real normalImpulse, Real friction);
+
+// RIGID-5
+/// The effective mass [kg] of one contact row along the unit direction d (the normal or a tangent) at a
+/// point with arms r_A, r_B from the two centres of mass (world axes): the impulse along d that changes
+/// the relative velocity of the two points along d by 1 m/s. 0 when neither side can respond (K = 0).
+/// A side that cannot move passes 0 for its inverse mass and inverse inertia. The world's contact
+/// solver (contact_solver.cpp, prepareContact) calls it for each point's normal and two tangent rows.
+Real contactEffectiveMass(Real inverseMassA, const Mat3& inverseInertiaA, const Vec3& armA, Real inverseMassB,
+                          const Mat3& inverseInertiaB, const Vec3& armB, const Vec3& direction);
 
 }  // namespace pba::rigid

@@ -1,4 +1,4 @@
-// Unit tests of the IK exercises' functions in isolation (suite names carry the tag: IK_1_… IK_6_…).
+// Unit tests of the IK exercises' functions in isolation (suite names carry the tag: IK_1_… IK_8_…).
 // Expected values come from independent references computed here (rotations applied by glm, angles
 // by acos, finite differences, the SVD formula of the damped step with Eigen's SVD).
 #include <cmath>
@@ -287,6 +287,42 @@ TEST(IK_6_JointLimitClamping, ClampsScalarDofsAndFreeJointAngles) {
   EXPECT_EQ(p.dofs[2], 0.25);
   EXPECT_VEC3_NEAR(rotationVector(p.rotations[1]), 0.3 * glm::normalize(Vec3(1, 2, 3)), 1e-12);
   EXPECT_LE(limitViolation(s, p), 1e-12);
+}
+
+// IK-8 on a Jacobian whose singular triples are known in closed form: two unit-speed DOFs moving one
+// effector in directions an angle t apart, j₁ = (1, 0, 0), j₂ = (cos t, sin t, 0), so ρ = (1, 1).
+// JᵀJ = [[1, c], [c, 1]]: σ² = 1 ± c along v = (1, ±1)/√2, u = J v / σ. Then N = |u| = 1 and
+// M = √2 / σ, so γ = γ_max σ/√2: cos(t/2) γ_max for the stiff direction and sin(t/2) γ_max for the
+// nearly singular one (it asks the joints to swing far apart for a small effector motion).
+TEST(IK_8_SelectiveDampingLimit, ScalesGammaMaxByTheRatioOfAskedToProducedMotion) {
+  const Real gammaMax = 0.7;
+  for (Real t : {0.05, 0.4, 1.0, 2.0, 3.0}) {
+    const Real c = std::cos(t), s = std::sin(t);
+    const std::vector<Real> rho{1.0, 1.0};
+    for (Real sign : {1.0, -1.0}) {
+      const Real sigma = std::sqrt(1.0 + sign * c);
+      const std::vector<Real> v{1.0 / std::sqrt(2.0), sign / std::sqrt(2.0)};
+      const std::vector<Real> u{(v[0] + v[1] * c) / sigma, v[1] * s / sigma, 0.0};
+      const Real expected = (sign > 0.0 ? std::cos(0.5 * t) : std::sin(0.5 * t)) * gammaMax;
+      EXPECT_NEAR(selectiveDampingLimit(u, v, sigma, rho, gammaMax), expected, 1e-12) << "t " << t << " sign " << sign;
+    }
+  }
+}
+
+TEST(IK_8_SelectiveDampingLimit, GivesGammaMaxWhenTheJointsMoveNoMoreThanAsked) {
+  // One hinge moving one effector at 2 m: J = (0, 2, 0)ᵀ, σ = 2, u = (0, 1, 0), v = (1), ρ = 2.
+  EXPECT_NEAR(selectiveDampingLimit({0.0, 1.0, 0.0}, {1.0}, 2.0, {2.0}, 0.5), 0.5, 1e-15);
+  // The same hinge moving two effectors, at 1 m and 3 m: σ = √10, ρ = 4; the motion asked (sum of the
+  // two blocks of u) equals the motion produced, so still γ_max.
+  const Real sigma = std::sqrt(10.0);
+  EXPECT_NEAR(selectiveDampingLimit({0.0, 1.0 / sigma, 0.0, 0.0, 3.0 / sigma, 0.0}, {1.0}, sigma, {4.0}, 0.5), 0.5,
+              1e-14);
+  // A DOF that swings the effector 10 times farther than its share asks: a tenth of γ_max. u has two
+  // blocks of length 1/√2 each (N = √2); v = (1), ρ = 10√2, σ = 1: M = 10√2.
+  const Real h = 1.0 / std::sqrt(2.0);
+  EXPECT_NEAR(selectiveDampingLimit({h, 0.0, 0.0, 0.0, h, 0.0}, {1.0}, 1.0, {10.0 * std::sqrt(2.0)}, 0.5), 0.05, 1e-14);
+  // Scaling J by k scales σ and ρ alike and leaves γ unchanged.
+  EXPECT_NEAR(selectiveDampingLimit({h, 0.0, 0.0, 0.0, h, 0.0}, {1.0}, 7.0, {70.0 * std::sqrt(2.0)}, 0.5), 0.05, 1e-14);
 }
 
 }  // namespace

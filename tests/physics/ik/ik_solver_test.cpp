@@ -3,12 +3,13 @@
 // is solved, whatever the state of the others. Hence:
 //   IK_1  the analytic solver (IK-1's single-joint rotation in its ball and free joints),
 //   IK_2  CCD (IK-2's joint update),
-//   IK_3  the Jacobian methods that are not an exercise themselves (pinv, SDLS, L-BFGS) on
-//         IK-3's analytic columns,
+//   IK_3  the Jacobian methods that are not an exercise themselves (pinv, gradient descent, L-BFGS)
+//         on IK-3's analytic columns,
 //   IK_4  DLS (IK-4's step) on the central-difference Jacobian (JacobianSource::CentralDifferences),
 //         so that IK-3's columns play no part,
 //   IK_5  FABRIK (IK-5's passes),
 //   IK_7  the Jacobian transpose (IK-7's step and length) on the central-difference Jacobian,
+//   IK_8  SDLS (IK-8's damping of each singular direction) on the central-difference Jacobian,
 // all with joint limits off (IK-6's clamp is its own exercise: ik_limits_test.cpp) and the methods as
 // published (no restarts, no step clamp, no line search of the Jacobian methods).
 //
@@ -162,6 +163,14 @@ TEST(IK_4_DampedLeastSquaresSolver, ReachesRandomReachableTargets) {
   expectRandomTargets(chain(JointType::Hinge), o, 0.99, "10 hinges", kFdTargets);
 }
 
+// ---- IK-8: SDLS on the central-difference Jacobian ------------------------------------------------
+
+TEST(IK_8_SelectivelyDampedSolver, ReachesRandomReachableTargets) {
+  const SolveOptions o = unlimited(SolverKind::SelectivelyDamped, JacobianSource::CentralDifferences);
+  expectRandomTargets(chain(JointType::Ball), o, 0.99, "10 ball joints", kFdTargets);
+  expectRandomTargets(chain(JointType::Hinge), o, 0.99, "10 hinges", kFdTargets);
+}
+
 // ---- IK-7: the Jacobian transpose on the central-difference Jacobian -----------------------------
 
 TEST(IK_7_JacobianTransposeSolver, ReachesRandomReachableTargets) {
@@ -173,7 +182,7 @@ TEST(IK_7_JacobianTransposeSolver, ReachesRandomReachableTargets) {
 // ---- IK-3: the other Jacobian methods on IK-3's columns ------------------------------------------
 
 TEST(IK_3_JacobianMethods, ReachRandomReachableTargets) {
-  for (SolverKind kind : {SolverKind::PseudoInverse, SolverKind::SelectivelyDamped, SolverKind::Lbfgs}) {
+  for (SolverKind kind : {SolverKind::PseudoInverse, SolverKind::Lbfgs}) {
     expectRandomTargets(chain(JointType::Ball), unlimited(kind), 0.99, "10 ball joints");
     expectRandomTargets(chain(JointType::Hinge), unlimited(kind), 0.99, "10 hinges");
   }
@@ -241,8 +250,8 @@ constexpr TaggedMethod kCcd{SolverKind::Ccd, JacobianSource::Analytic};
 constexpr TaggedMethod kFabrik{SolverKind::Fabrik, JacobianSource::Analytic};
 constexpr TaggedMethod kDls{SolverKind::DampedLeastSquares, JacobianSource::CentralDifferences};
 constexpr TaggedMethod kTranspose{SolverKind::JacobianTranspose, JacobianSource::CentralDifferences};
+constexpr TaggedMethod kSdls{SolverKind::SelectivelyDamped, JacobianSource::CentralDifferences};
 constexpr TaggedMethod kIk3Methods[] = {{SolverKind::PseudoInverse, JacobianSource::Analytic},
-                                        {SolverKind::SelectivelyDamped, JacobianSource::Analytic},
                                         {SolverKind::GradientDescent, JacobianSource::Analytic},
                                         {SolverKind::Lbfgs, JacobianSource::Analytic}};
 
@@ -252,6 +261,7 @@ TEST(IK_4_DampedLeastSquaresSolver, StretchesTowardUnreachableTargetsAndComesBac
 TEST(IK_7_JacobianTransposeSolver, StretchesTowardUnreachableTargetsAndComesBack) {
   expectStretchAndReturn(kTranspose);
 }
+TEST(IK_8_SelectivelyDampedSolver, StretchesTowardUnreachableTargetsAndComesBack) { expectStretchAndReturn(kSdls); }
 TEST(IK_3_JacobianMethods, StretchTowardUnreachableTargetsAndComeBack) {
   for (const TaggedMethod& m : kIk3Methods) expectStretchAndReturn(m);
 }
@@ -262,6 +272,7 @@ TEST(IK_4_DampedLeastSquaresSolver, SingularPosesGiveFiniteResultsAndAClearStatu
 TEST(IK_7_JacobianTransposeSolver, SingularPosesGiveFiniteResultsAndAClearStatus) {
   expectSingularPosesHandled(kTranspose);
 }
+TEST(IK_8_SelectivelyDampedSolver, SingularPosesGiveFiniteResultsAndAClearStatus) { expectSingularPosesHandled(kSdls); }
 TEST(IK_3_JacobianMethods, SingularPosesGiveFiniteResultsAndAClearStatus) {
   for (const TaggedMethod& m : kIk3Methods) expectSingularPosesHandled(m);
 }
@@ -278,8 +289,9 @@ TEST(IK_2_CcdSolver, TreesReachTheirGoals) { expectTreeTargets(kCcd, 0.97, 0.9);
 TEST(IK_5_FabrikSolver, TreesReachTheirGoals) { expectTreeTargets(kFabrik, 0.97, 0.8); }
 TEST(IK_4_DampedLeastSquaresSolver, TreesReachTheirGoals) { expectTreeTargets(kDls, 0.97, 0.9); }
 TEST(IK_3_JacobianMethods, TreesReachTheirGoals) {
-  expectTreeTargets({SolverKind::SelectivelyDamped, JacobianSource::Analytic}, 0.97, 0.9);
+  expectTreeTargets({SolverKind::PseudoInverse, JacobianSource::Analytic}, 0.97, 0.9);
 }
+TEST(IK_8_SelectivelyDampedSolver, TreesReachTheirGoals) { expectTreeTargets(kSdls, 0.97, 0.9); }
 
 // A 6-DOF effector: position and orientation reached together (orientation rows, CCD's and
 // FABRIK's three extra points).
@@ -307,8 +319,8 @@ TEST(IK_5_FabrikSolver, SixDofEffectorMatchesPositionAndOrientation) { expectSix
 TEST(IK_4_DampedLeastSquaresSolver, SixDofEffectorMatchesPositionAndOrientation) { expectSixDof(kDls); }
 TEST(IK_3_JacobianMethods, SixDofEffectorMatchesPositionAndOrientation) {
   expectSixDof({SolverKind::PseudoInverse, JacobianSource::Analytic});
-  expectSixDof({SolverKind::SelectivelyDamped, JacobianSource::Analytic});
 }
+TEST(IK_8_SelectivelyDampedSolver, SixDofEffectorMatchesPositionAndOrientation) { expectSixDof(kSdls); }
 
 // ---- IK-1: the analytic solver ------------------------------------------------------------------
 

@@ -1,10 +1,13 @@
-// Exercise tests of RIGID-1 to RIGID-4. Each uses only reference code besides its own exercise:
+// Exercise tests of RIGID-1 to RIGID-5. Each uses only reference code besides its own exercise:
 //  RIGID-1 against Mirtich's polyhedral integrals of the box (physics/collision/mass.h) and against the
 //          definition I_world ω = R (I_body (Rᵀ ω));
 //  RIGID-2 against glm's rotation by the whole angle, B&W's derivative, and unit norm;
 //  RIGID-3 by its defining properties: after the impulse the normal relative velocity is −e times the one
 //          before, and linear and angular momentum (about the contact point) are unchanged;
-//  RIGID-4 by Coulomb's law: sticking stops the tangential slip, sliding gets exactly μ j against it.
+//  RIGID-4 by Coulomb's law: sticking stops the tangential slip, sliding gets exactly μ j against it;
+//  RIGID-5 by its meaning: an impulse of the effective mass applied to both bodies (velocity changes
+//          written out here) changes their relative velocity along the row by exactly 1 m/s; and by
+//          closed forms (a central hit, a sphere hit at right angles, two bodies that cannot move).
 #include <cmath>
 #include <random>
 
@@ -199,6 +202,53 @@ TEST(RIGID_4_FrictionImpulse, IsExactlyMuJAgainstTheSlipWhenSliding) {
   EXPECT_VEC3_NEAR(frictionImpulse(ImpulseBody{1.0, Mat3(1.0), Vec3(0.0, 0.5, 0.0), Vec3(0.0, -1.0, 0.0), Vec3(0.0)},
                                    ground, Vec3(0.0), kUp, 0.5, 0.4),
                    Vec3(0.0), 0.0);  // no slip: no friction
+}
+
+// RIGID-5: the impulse m_eff d (+ on B, − on A, the contact solver's convention) changes the relative
+// velocity of the two points along d by exactly 1 m/s. The velocity changes are applied as impulses
+// (apply above), not through the row's K. Random boxes, arms and directions; 1e-12 relative.
+TEST(RIGID_5_ContactEffectiveMass, ItsImpulseChangesTheRelativeVelocityAlongTheRowByOne) {
+  std::mt19937_64 rng(55);
+  std::normal_distribution<Real> n(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    TwoBodies t = randomCollision(rng);
+    if (trial % 4 == 3) t.b.inverseMass = 0.0, t.b.inverseInertia = Mat3(0.0);  // against a static body
+    const Vec3 d = glm::normalize(Vec3(n(rng), n(rng), n(rng)));
+    const Vec3 ra = t.point - t.a.position, rb = t.point - t.b.position;
+    const Real m =
+        contactEffectiveMass(t.a.inverseMass, t.a.inverseInertia, ra, t.b.inverseMass, t.b.inverseInertia, rb, d);
+    ASSERT_GT(m, 0.0);
+    auto along = [&](const ImpulseBody& a, const ImpulseBody& b) {
+      return glm::dot(d, b.velocityAt(t.point) - a.velocityAt(t.point));
+    };
+    const Real before = along(t.a, t.b);
+    ImpulseBody a = t.a, b = t.b;
+    apply(a, t.point, -m * d);
+    apply(b, t.point, m * d);
+    EXPECT_NEAR(along(a, b) - before, 1.0, 1e-12 * (1.0 + std::abs(before)));
+    // The row is the same seen from the other side, or along −d.
+    EXPECT_NEAR(
+        contactEffectiveMass(t.b.inverseMass, t.b.inverseInertia, rb, t.a.inverseMass, t.a.inverseInertia, ra, -d), m,
+        1e-12 * m);
+  }
+}
+
+TEST(RIGID_5_ContactEffectiveMass, MatchesClosedFormsAndIsZeroWhenNothingCanMove) {
+  const Vec3 up(0.0, 1.0, 0.0);
+  // A hit on the line through both centres: no rotation, the reduced mass m_A m_B / (m_A + m_B).
+  EXPECT_NEAR(
+      contactEffectiveMass(1.0 / 2.0, Mat3(3.0), Vec3(0.0, -0.5, 0.0), 1.0 / 6.0, Mat3(5.0), Vec3(0.0, 0.7, 0.0), up),
+      2.0 * 6.0 / 8.0, 1e-14);
+  // A solid ball (m = 2 kg, radius 0.5 m: I = 2/5 m R² = 0.2 kg·m²) hit on the ground at its rim, with the
+  // row along the tangent: the arm is perpendicular to it, 1/m_eff = 1/m + R²/I = 0.5 + 1.25.
+  const Mat3 ballInverse(1.0 / 0.2);
+  EXPECT_NEAR(contactEffectiveMass(0.5, ballInverse, Vec3(0.0, -0.5, 0.0), 0.0, Mat3(0.0), Vec3(1.0, 2.0, 3.0),
+                                   Vec3(1.0, 0.0, 0.0)),
+              1.0 / 1.75, 1e-14);
+  // Along the normal at the same point the arm is parallel to the row: only the translation, m = 2 kg.
+  EXPECT_NEAR(contactEffectiveMass(0.5, ballInverse, Vec3(0.0, -0.5, 0.0), 0.0, Mat3(0.0), Vec3(0.0), up), 2.0, 1e-14);
+  // Two sides that cannot move: the row applies nothing.
+  EXPECT_EQ(contactEffectiveMass(0.0, Mat3(0.0), Vec3(1.0, 0.0, 0.0), 0.0, Mat3(0.0), Vec3(0.0, 1.0, 0.0), up), 0.0);
 }
 
 }  // namespace
