@@ -20,9 +20,9 @@ inline constexpr int kDefaultScreenshotFrames = 120;  // 2 s: scenes have starte
 inline constexpr int kDefaultRecordFrames = 300;      // 5 s of video
 inline constexpr long kMaxFrames = 6'000'000;         // 100,000 s (over a day) of simulated time
 inline constexpr double kMaxSeconds = 100'000.0;      // [s] the same bound for --seconds
-inline constexpr int kMinWindowWidth = 320;            // [px] --size and the saved window size
-inline constexpr int kMinWindowHeight = 240;           // [px]
-inline constexpr int kMaxWindowSide = 8192;            // [px] either side
+inline constexpr int kMinWindowWidth = 320;           // [px] --size and the saved window size
+inline constexpr int kMinWindowHeight = 240;          // [px]
+inline constexpr int kMaxWindowSide = 8192;           // [px] either side
 
 /// A scene parameter set on the command line, with the option that set it ("--set" or a lab flag
 /// such as "--links"), so that an error names what the user typed.
@@ -46,9 +46,9 @@ struct LabOptions {
   /// --size WxH: the window's size [px] for this run (screenshots and recordings default to 1280×720,
   /// the window to its saved size).
   std::optional<std::pair<int, int>> size;
-  bool recordUi = false;   ///< --record-ui on: the panels are in the recording (default: the scene alone)
-  std::string metrics;     ///< JSON path or "-" for stdout
-  std::string poseJson;    ///< --pose-json FILE: every joint's world position, by name, when the run ends
+  bool recordUi = false;  ///< --record-ui on: the panels are in the recording (default: the scene alone)
+  std::string metrics;    ///< JSON path or "-" for stdout
+  std::string poseJson;   ///< --pose-json FILE: every joint's world position, by name, when the run ends
   std::uint64_t seed = 1;
   bool lecture = false;
   bool listScenes = false;

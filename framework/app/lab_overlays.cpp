@@ -62,7 +62,8 @@ void plotSeries(const std::string& name, const std::vector<double>& series, cons
   if (split != std::string::npos)
     // The range in the text colour in lecture mode: the disabled grey was too faint on a projector.
     draw->AddText(ImGui::GetFont(), 0.8f * font, ImVec2(o.x + pad, o.y + 0.5f * pad + font),
-                  ImGui::GetColorU32(lecture ? ImGuiCol_Text : ImGuiCol_TextDisabled), caption.substr(split + 2).c_str());
+                  ImGui::GetColorU32(lecture ? ImGuiCol_Text : ImGuiCol_TextDisabled),
+                  caption.substr(split + 2).c_str());
   ImGui::Dummy(size);
 }
 

@@ -231,9 +231,7 @@ void LabSession::stepForward() {
   singleStep();
 }
 
-std::int64_t LabSession::stepsPerSecond() const {
-  return std::max<std::int64_t>(1, std::llround(1.0 / runner_.dt()));
-}
+std::int64_t LabSession::stepsPerSecond() const { return std::max<std::int64_t>(1, std::llround(1.0 / runner_.dt())); }
 
 void LabSession::stepBy(std::int64_t delta) {
   if (delta == 0 || history_.empty()) return;

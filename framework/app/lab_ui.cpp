@@ -268,8 +268,8 @@ void simulationControls(LabSession& session, UiState& ui) {
   double scale = runner.timeScale();
   const double lo = kMinTimeScale, hi = kMaxTimeScale;
   const std::string scaleHelp = "Slow motion below 1, fast forward above 1. The physics step dt does not change.";
-  if (ImGui::SliderScalar(labelLine(ui, "time scale", scaleHelp, above).c_str(), ImGuiDataType_Double, &scale, &lo,
-                          &hi, "%.2fx", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::SliderScalar(labelLine(ui, "time scale", scaleHelp, above).c_str(), ImGuiDataType_Double, &scale, &lo, &hi,
+                          "%.2fx", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
     runner.setTimeScale(scale);
   helpAfter(ui, "time scale", scaleHelp, above);
   ImGui::Text("t = %.3f s   steps = %lld", runner.simTime(), static_cast<long long>(runner.steps()));

@@ -29,11 +29,11 @@ struct UiState {
   bool hideUi = false;
   bool lecture = false;
   bool screenshotRequested = false;
-  bool recordRequested = false;   ///< F9 or the Record button: start or stop a recording
-  bool demoActive = false;        ///< playing a demo script: PageDown / PageUp move through its steps
-  int demoMove = 0;               ///< steps asked for this frame (PageDown +1, PageUp −1)
-  bool panelCollapsed = false;    ///< the control panel is a strip (key C): the scene takes the width
-  bool showPlots = true;          ///< the plot window (key M)
+  bool recordRequested = false;  ///< F9 or the Record button: start or stop a recording
+  bool demoActive = false;       ///< playing a demo script: PageDown / PageUp move through its steps
+  int demoMove = 0;              ///< steps asked for this frame (PageDown +1, PageUp −1)
+  bool panelCollapsed = false;   ///< the control panel is a strip (key C): the scene takes the width
+  bool showPlots = true;         ///< the plot window (key M)
   /// Labels of the panel's widgets that did not fit in it this frame (the UI status reports them; a
   /// lecture-layout test requires none).
   std::vector<std::string> clippedLabels;

@@ -67,7 +67,7 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
         break;
       case GLFW_KEY_O:
         session.singleStep();
-        break;  // held: repeats
+        break;              // held: repeats
       case GLFW_KEY_COMMA:  // one simulation step back (Shift: one second); held: repeats
       case GLFW_KEY_PERIOD:
         session.stepBy((key == GLFW_KEY_COMMA ? -1 : 1) *

@@ -4,14 +4,14 @@
 // the window writes every frame (PBA_UI_STATUS, framework/app/ui_status.h). Expected values come from
 // the check itself: the preset's own values over the defaults the window reported on arrival, the
 // pinhole camera model for a drag, the camera's rotate speed and zoom factor for orbit and wheel.
+#include <sys/wait.h>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <iterator>
-#include <sys/wait.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <map>
 #include <thread>
 
@@ -437,8 +437,8 @@ void checkFrame(const std::string& exe, const std::string& work) {
   expect(!s["scene_rect"].is_null(), "after F nothing of the scene is in front of the camera");
   const Rect scene = Rect::fromJson(s["scene_rect"]);
   const Rect view{0, 0, vecAt(s["viewport"], 0), vecAt(s["viewport"], 1)};
-  expect(scene.intersect(view).area() > 0.5 * scene.area(),
-         "after F the scene is mostly off screen: its picture " + s["scene_rect"].dump() + " in " + s["viewport"].dump());
+  expect(scene.intersect(view).area() > 0.5 * scene.area(), "after F the scene is mostly off screen: its picture " +
+                                                                s["scene_rect"].dump() + " in " + s["viewport"].dump());
   expect(scene.area() > 0.02 * view.area(), "after F the scene is a speck");
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }

@@ -95,7 +95,8 @@ TEST(WusonSkinFixture, RecordedVerticesAreTheNodeTreeRoute) {
   ASSERT_TRUE(c.skin.model);
   const bool print = std::getenv("PBA_PRINT_SKIN_FIXTURE") != nullptr;
   std::vector<std::vector<std::vector<Vec3>>> bySample;
-  for (int s = 0; s < fixture::kSamples; ++s) bySample.push_back(nodeTreeSkin(*c.skin.model, fixture::sampleTime(c.clip.duration, s)));
+  for (int s = 0; s < fixture::kSamples; ++s)
+    bySample.push_back(nodeTreeSkin(*c.skin.model, fixture::sampleTime(c.clip.duration, s)));
   if (print) {
     // Every 97th vertex of each skinned mesh, at every sample.
     for (int s = 0; s < fixture::kSamples; ++s)
@@ -109,7 +110,8 @@ TEST(WusonSkinFixture, RecordedVerticesAreTheNodeTreeRoute) {
   for (const fixture::RecordedVertex& r : fixture::kVertices) {
     const Vec3& p = bySample.at(static_cast<size_t>(r.sample)).at(r.mesh).at(r.vertex);
     // 12 significant digits of coordinates below 100 file units.
-    EXPECT_LT(glm::length(p - r.position), 1e-8) << "sample " << r.sample << " mesh " << r.mesh << " vertex " << r.vertex;
+    EXPECT_LT(glm::length(p - r.position), 1e-8)
+        << "sample " << r.sample << " mesh " << r.mesh << " vertex " << r.vertex;
   }
 }
 
