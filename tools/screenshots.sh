@@ -37,6 +37,20 @@ if [[ -x "$build/bin/pba-hello" ]]; then
   echo "wrote docs/images/hello-spring-energy.png"
   count=$((count + 1))
 fi
+# The undamped spring ball after 8 s: its energy in a narrow band (HELLO-4's figure in the workbook).
+if [[ -x "$build/bin/pba-hello" ]]; then
+  "${run[@]}" "$build/bin/pba-hello" --scene spring --set damping=0 --set drag=0 --frames 480 \
+    --screenshot "$root/docs/images/hello-spring-undamped.png" >/dev/null
+  echo "wrote docs/images/hello-spring-undamped.png"
+  count=$((count + 1))
+fi
+# The cloth's bending (CLOTH-6) and box (CLOTH-7) figures of the workbook, after 4 s.
+if [[ -x "$build/bin/pba-cloth" ]]; then
+  "${run[@]}" "$build/bin/pba-cloth" --scene drape --frames 240 --screenshot "$root/docs/images/cloth-bending-drape.png" >/dev/null
+  "${run[@]}" "$build/bin/pba-cloth" --scene tablecloth --frames 240 --screenshot "$root/docs/images/cloth-tablecloth-box.png" >/dev/null
+  echo "wrote docs/images/cloth-bending-drape.png docs/images/cloth-tablecloth-box.png"
+  count=$((count + 2))
+fi
 # The Jacobian view of the IK lab (heat map and singular values), for the workbook.
 if [[ -x "$build/bin/pba-ik" ]]; then
   "${run[@]}" "$build/bin/pba-ik" --scene tree --set solver=dls --frames 150 --screenshot "$root/docs/images/ik-jacobian.png" >/dev/null

@@ -304,7 +304,7 @@ std::string usage(const std::string& lab) {
       text += std::string("  ") + k.key + "  (scene " + k.scene + ") " + k.action + "\n";
   }
   text +=
-      "\nKeys: Space/P pause  O step  , . rewind / forward one frame  R reset  [ ] scene  1-9 presets\n"
+      "\nKeys: Space/P pause  O step  , . back / forward one step (Shift: 1 s)  R reset  [ ] scene  1-9 presets\n"
       "      F1/H help  F12 screenshot  F9 record\n"
       "      L lecture mode  Tab hide UI  F frame scene.  Arrows nudge the target in the view plane,\n"
       "      PageUp/PageDown or Shift+Up/Down away/toward the camera, Ctrl for a fine step.\n"
