@@ -86,8 +86,8 @@ bash "$src/tools/grade.sh" "$tests_dir" "$src/resources/exercises.tsv" "${tags[@
 if [[ "$suite" == --suite ]]; then
   echo "== the hand-out's suite with these solutions"
   not_in_handout='^(exercises\.(student-release|catalog|golden-tolerance)|repository\.(formatted|builds-with-clang14))$'
-  skip_labels='^(ui|lab-screenshots|display|extremes)$'
-  [[ "${PBA_SUITE_ALL:-0}" == 1 ]] && skip_labels='^(ui|lab-screenshots|display)$'
+  skip_labels='^(ui|lab-screenshots|display|extremes|coursework|web)$'
+  [[ "${PBA_SUITE_ALL:-0}" == 1 ]] && skip_labels='^(ui|lab-screenshots|display|coursework|web)$'
   PBA_GOLDEN_COMPARE=tolerance ctest --test-dir "$tests_dir" -E "$not_in_handout" -LE "$skip_labels" -j "$jobs" \
     --output-on-failure >"$work/suite.log" 2>&1 || { tail -n 60 "$work/suite.log"; echo "FAIL: the suite"; exit 1; }
   grep -E 'tests passed' "$work/suite.log" | sed 's/^/   /'

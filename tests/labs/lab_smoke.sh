@@ -52,7 +52,8 @@ case "$check" in
       ran_ok $rc "$work/$s.json" || fail "scene $s exited $rc: $(cat "$work/$s.err")"
       "$checker" metrics "$work/$s.json" "$lab" "$s" || fail "scene $s: bad metrics"
     done
-    "$exe" --headless --seconds 0.5 --metrics - >"$work/stdout.json" || fail "--metrics - failed"
+    "$exe" --headless --seconds 0.5 --metrics - >"$work/stdout.json"
+    ran_ok $? "$work/stdout.json" || fail "--metrics - failed"
     "$checker" metrics "$work/stdout.json" "$lab" "" || fail "--metrics - wrote bad JSON"
     echo "ok: every scene runs headless with valid metrics"
     ;;

@@ -1,7 +1,7 @@
 // Determinism of every solver (issue 3, "Tests: determinism"). Untagged: it holds against the
 // exercise stubs too (they are deterministic), so it passes in the student release.
-#include <bit>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <thread>
 #include <vector>
@@ -22,10 +22,18 @@ using testing::chain;
 // solve in between, of other goals, changes nothing (no hidden state), and the repeatability option
 // (fromRest) makes the start pose irrelevant. Poses are compared by a hash of their bytes and
 // field by field.
+// The bits of a double (std::bit_cast is missing from Emscripten 3.1.6's libc++, which the browser build's
+// tests use).
+std::uint64_t bitsOf(double x) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits;
+}
+
 std::uint64_t poseHash(const Pose& pose) {
   std::uint64_t h = 1469598103934665603ull;  // FNV-1a
   auto mix = [&](Real x) {
-    const auto bits = std::bit_cast<std::uint64_t>(x);
+    const std::uint64_t bits = bitsOf(x);
     for (int b = 0; b < 64; b += 8) h = (h ^ ((bits >> b) & 0xFF)) * 1099511628211ull;
   };
   for (Real v : pose.dofs) mix(v);
@@ -39,8 +47,8 @@ void expectIdentical(const SolveResult& a, const Pose& pa, const SolveResult& b,
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.iterations, b.iterations);
   EXPECT_EQ(a.restarts, b.restarts);
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.positionResidual), std::bit_cast<std::uint64_t>(b.positionResidual));
-  EXPECT_EQ(std::bit_cast<std::uint64_t>(a.orientationResidual), std::bit_cast<std::uint64_t>(b.orientationResidual));
+  EXPECT_EQ(bitsOf(a.positionResidual), bitsOf(b.positionResidual));
+  EXPECT_EQ(bitsOf(a.orientationResidual), bitsOf(b.orientationResidual));
 }
 
 TEST(IkDeterminism, EverySolverGivesBitwiseIdenticalResultsForIdenticalInputs) {
