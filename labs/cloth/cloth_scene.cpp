@@ -180,9 +180,9 @@ void ClothScene::step(Real dt) {
 }
 
 std::optional<Real> ClothScene::energyGainBound(Real reference) const {
-  // Implicit Euler with one Newton step and CG to 10⁻³ shows transient elastic energy where stiff springs
-  // meet a pin or a collider (the k = 10⁵ drape peaks at 13× its start for one frame, then settles): not a
-  // runaway, so only the factor of 100 applies to it.
+  // Implicit Euler with one Newton step and an inexact CG shows transient elastic energy where stiff
+  // springs meet a pin or a collider (a spike for a frame, then it settles): not a runaway, so only the
+  // guard's factor of 100 applies to it.
   if (settings_.kind == ClothSolverKind::Implicit) return std::nullopt;
   const std::optional<Real> slack = Scene::energyGainBound(reference);
   const Real v = driveSpeed();
