@@ -51,6 +51,13 @@ if [[ -x "$build/bin/pba-cloth" ]]; then
   echo "wrote docs/images/cloth-bending-drape.png docs/images/cloth-tablecloth-box.png"
   count=$((count + 2))
 fi
+# The adaptive integrator on the orbit after 10 s (PART-8's figure in the workbook).
+if [[ -x "$build/bin/pba-particles" ]]; then
+  "${run[@]}" "$build/bin/pba-particles" --scene orbit --integrator adaptive --frames 600 \
+    --screenshot "$root/docs/images/particles-orbit-adaptive.png" >/dev/null
+  echo "wrote docs/images/particles-orbit-adaptive.png"
+  count=$((count + 1))
+fi
 # The Jacobian view of the IK lab (heat map and singular values), for the workbook.
 if [[ -x "$build/bin/pba-ik" ]]; then
   "${run[@]}" "$build/bin/pba-ik" --scene tree --set solver=dls --frames 150 --screenshot "$root/docs/images/ik-jacobian.png" >/dev/null
