@@ -3,6 +3,7 @@
 // hand-out they are skipped, "needs …", until both are solved). Reference values: second differences of
 // the springs' energy and dissipation (the matrix never comes from the code under test), Eigen's direct
 // solve of the same linear system, closed forms for the static sag.
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -152,7 +153,11 @@ TEST(ClothImplicitStep, VelocityIsEigensDirectSolveOfTheBackwardEulerSystemWithP
   EXPECT_TRUE(stats.cg.converged);
   for (Eigen::Index r = 0; r < nf; ++r) {
     const std::size_t i = static_cast<std::size_t>(free[r] / 3);
-    EXPECT_NEAR(c.velocity[i][static_cast<int>(free[r] % 3)], expected(r), 1e-7) << "coordinate " << free[r];
+    // The reference matrix comes from central differences of the forces (about 1e-8 relative), and the
+    // solution reaches a few m/s: within 1e-7 of its largest component (at least 1e-7 m/s).
+    EXPECT_NEAR(c.velocity[i][static_cast<int>(free[r] % 3)], expected(r),
+                1e-7 * std::max(1.0, expected.lpNorm<Eigen::Infinity>()))
+        << "coordinate " << free[r];
   }
   for (std::size_t i = 0; i < c.size(); ++i) {
     EXPECT_VEC3_NEAR(c.position[i], before.position[i] + h * c.velocity[i], 1e-15);
