@@ -158,9 +158,9 @@ Vec3 collide(const Collider& c, const Vec3& x, const Vec3& xPrev, Real margin, R
 
 namespace {
 /// Projects particle i out of collider p, which it may touch; counts the contact into stats. Kept out of
-/// line: most queries end at clearOf (on TMP #15's ribbon 43 of 47 million a run: a pile's upper layers,
-/// the falling part), and with the projection inlined into the pass every query paid a call that saved
-/// and restored a dozen registers (the passes' instructions: 4.8 G → 3.0 G).
+/// line: most queries end at clearOf (the falling part, a pile's upper layers), and with the projection
+/// inlined into the pass every query paid a call that saved and restored a dozen registers
+/// (docs/performance-cloth.md has the figures).
 [[gnu::noinline]] void collideTouching(const Prepared& p, std::size_t i, std::span<Vec3> x, std::span<const Vec3> xPrev,
                                        Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
                                        CollisionPassStats& stats) {
