@@ -64,6 +64,14 @@ if [[ -x "$build/bin/pba-ik" ]]; then
   echo "wrote docs/images/ik-jacobian.png"
   count=$((count + 1))
 fi
+# The chain scene under DLS (IK-4) and under FABRIK in the paper's setting (IK-5), for the workbook.
+if [[ -x "$build/bin/pba-ik" ]]; then
+  "${run[@]}" "$build/bin/pba-ik" --scene chain --set solver=dls --frames 150 --screenshot "$root/docs/images/ik-chain-dls.png" >/dev/null
+  "${run[@]}" "$build/bin/pba-ik" --scene chain --set solver=fabrik --set joint=ball --set limits=0 --frames 150 \
+    --screenshot "$root/docs/images/ik-chain-fabrik.png" >/dev/null
+  echo "wrote docs/images/ik-chain-dls.png docs/images/ik-chain-fabrik.png"
+  count=$((count + 2))
+fi
 # A skinned character (the mesh follows the solved skeleton).
 if [[ -x "$build/bin/pba-ik" && -f /usr/share/assimp/models/X/Testwuson.X ]]; then
   "${run[@]}" "$build/bin/pba-ik" --scene character --skeleton /usr/share/assimp/models/X/Testwuson.X --frames 150 \
