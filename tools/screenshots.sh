@@ -58,6 +58,16 @@ if [[ -x "$build/bin/pba-particles" ]]; then
   echo "wrote docs/images/particles-orbit-adaptive.png"
   count=$((count + 1))
 fi
+# RK4 alone on the oscillator at its end time (PART-3) and position Verlet on the orbit after 10 s
+# (PART-6), for the workbook.
+if [[ -x "$build/bin/pba-particles" ]]; then
+  "${run[@]}" "$build/bin/pba-particles" --scene oscillator --integrator rk4 --set only_selected=true --frames 1140 \
+    --screenshot "$root/docs/images/particles-oscillator-rk4.png" >/dev/null
+  "${run[@]}" "$build/bin/pba-particles" --scene orbit --integrator verlet --frames 600 \
+    --screenshot "$root/docs/images/particles-orbit-verlet.png" >/dev/null
+  echo "wrote docs/images/particles-oscillator-rk4.png docs/images/particles-orbit-verlet.png"
+  count=$((count + 2))
+fi
 # The Jacobian view of the IK lab (heat map and singular values), for the workbook.
 if [[ -x "$build/bin/pba-ik" ]]; then
   "${run[@]}" "$build/bin/pba-ik" --scene tree --set solver=dls --frames 150 --screenshot "$root/docs/images/ik-jacobian.png" >/dev/null
