@@ -51,6 +51,13 @@ if [[ -x "$build/bin/pba-cloth" ]]; then
   echo "wrote docs/images/cloth-bending-drape.png docs/images/cloth-tablecloth-box.png"
   count=$((count + 2))
 fi
+# The implicit cloth at k = 1e5 N/m, one step per frame (the hanging scene's preset 5; CLOTH-5's figure).
+if [[ -x "$build/bin/pba-cloth" ]]; then
+  "${run[@]}" "$build/bin/pba-cloth" --scene hanging --set solver=implicit --set substeps=1 --set stiffness=1e5 \
+    --frames 150 --screenshot "$root/docs/images/cloth-hanging-implicit-stiff.png" >/dev/null
+  echo "wrote docs/images/cloth-hanging-implicit-stiff.png"
+  count=$((count + 1))
+fi
 # The adaptive integrator on the orbit after 10 s (PART-8's figure in the workbook).
 if [[ -x "$build/bin/pba-particles" ]]; then
   "${run[@]}" "$build/bin/pba-particles" --scene orbit --integrator adaptive --frames 600 \
