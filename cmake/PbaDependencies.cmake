@@ -1,4 +1,4 @@
-# Every dependency comes from a package of the system (docs/architecture.md, "Dependencies"). CMake looks
+# Every dependency comes from a package of the system (docs/architecture.md §6). CMake looks
 # for each through its CONFIG package first, under the names vcpkg and Homebrew install (what a Windows
 # or macOS student has), and falls back to pkg-config only where Debian ships nothing else (ImGui's and
 # stb's .pc files). A missing one stops configure naming what to install on each system.

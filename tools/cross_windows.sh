@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tools/cross_windows.sh [--tests-only] [--deps-only]: `./pba cross windows`.
-# Proves the Windows build here (docs/architecture.md, "students' own machines"): builds the
+# Proves the Windows build here (docs/architecture.md §6): builds the
 # dependencies for MinGW-w64 (the -posix compilers) from Debian's own source packages, once, into a
 # cache outside the clone; configures the project with the windows-mingw preset, which finds every
 # dependency through its CONFIG package as on Windows with vcpkg; builds every lab and test as .exe;

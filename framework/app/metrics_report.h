@@ -11,9 +11,10 @@
 namespace pba::app {
 
 nlohmann::json metricsReport(const std::string& lab, const SceneRunner& runner, long frames);
-/// True for a wall-clock metric, which legitimately differs between runs. By convention (docs/architecture.md,
-/// "Metrics") a timing key has a unit word "ms" or "us" among its '_'-separated words (step_ms,
-/// solve_us_median, fabrik_solve_us) or ends in "_per_s"; gl_renderer names the machine.
+/// True for a wall-clock metric, which legitimately differs between runs. By convention
+/// (docs/decisions/2026-12-01-command-line-errors-and-exit-codes.md) a timing key has a unit word "ms" or "us" among
+/// its '_'-separated words (step_ms, solve_us_median, fabrik_solve_us) or ends in "_per_s"; gl_renderer names the
+/// machine.
 bool isTimingMetric(const std::string& key);
 /// `metrics` without its timing entries, at every depth (what two identical runs must agree on).
 nlohmann::json withoutTimings(nlohmann::json metrics);

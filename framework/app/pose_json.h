@@ -1,8 +1,8 @@
 #pragma once
-// --pose-json FILE (docs/architecture.md, "Command line and errors"): the world position of every joint of
-// the scene's skeleton, by name, when the run ends, so that a pose can be checked from outside the lab
-// (a script compares a hand with its goal). One writer for every lab with a skeleton (IK, animation):
-// a scene lists its joints through Scene::jointPositions(), the runner writes them.
+// --pose-json FILE (docs/decisions/2026-12-01-animation-splines-skeletons-and-skins.md): the world position of every
+// joint of the scene's skeleton, by name, when the run ends, so that a pose can be checked from outside the lab (a
+// script compares a hand with its goal). One writer for every lab with a skeleton (IK, animation): a scene lists its
+// joints through Scene::jointPositions(), the runner writes them.
 //
 //   {"lab": "ik", "scene": "character", "sim_time_s": 0.5, "unit": "m",
 //    "joints": {"Hips": [0.0, 0.95, 0.0], "LeftHand": [...], ...},

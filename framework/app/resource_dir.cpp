@@ -1,6 +1,6 @@
-// The one translation unit that sees PBA_RESOURCE_DIR (framework/app/CMakeLists.txt): every other
-// compile command is then the same in any copy of the tree, so the compiler cache serves the copies
-// that the exercise checks build (docs/architecture.md, "Build").
+// The one translation unit that sees PBA_RESOURCE_DIR (framework/app/CMakeLists.txt): every other compile command is
+// then the same in any copy of the tree, so the compiler cache serves the copies that the exercise checks build
+// (docs/decisions/2026-12-02-build-time-is-ci-time.md).
 #include "app/resource_dir.h"
 
 #include <cstdlib>

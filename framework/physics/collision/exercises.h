@@ -1,5 +1,5 @@
 #pragma once
-// The collision-detection exercises (docs/architecture.md, "Exercises"; workbook chapter 4). The narrow
+// The collision-detection exercises (docs/architecture.md §5; workbook chapter 4). The narrow
 // phase (narrow_phase.h) calls COLL-1 for every round pair (spheres and capsules, through the closest
 // points of their cores); its tests feed the exercises fixed inputs, so each is graded alone.
 #include <optional>

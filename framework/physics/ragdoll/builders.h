@@ -1,5 +1,5 @@
 #pragma once
-// Ragdoll builders shared by the lab, the tests and the benchmarks (docs/architecture.md, "Layers"): the
+// Ragdoll builders shared by the lab, the tests and the benchmarks (docs/architecture.md §1): the
 // Ragdoll paper's human (§5, its table of part sizes), its test scenes 1–7 (§5, "Visual tests"), chains,
 // the four-legged spider, stairs and piles. Every builder returns a RagdollDesc that makes either kind.
 // Ground y = 0, y up; the figures face +z, so a figure's left is +x (its width axis), z its depth.

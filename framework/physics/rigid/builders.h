@@ -1,5 +1,5 @@
 #pragma once
-// Scene builders shared by the pba-rigid lab, the tests and the benchmarks (docs/architecture.md, "Layers"; Box2D's
+// Scene builders shared by the pba-rigid lab, the tests and the benchmarks (docs/architecture.md §1; Box2D's
 // shared/ scenes). Each fills a World and returns the bodies a caller wants to watch. Sizes in metres,
 // masses in kilograms; the ground is the plane y = 0 unless said otherwise.
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The rigid-body exercises (docs/architecture.md, "Exercises") and the course's single-impulse collision response built from
+// The rigid-body exercises (docs/architecture.md §5) and the course's single-impulse collision response built from
 // them (the `tumble` scene). The world's solver (world.h) moves every orientation with RIGID-2 and
 // finds box contacts through COLL-2 (collision/exercises.h); for inertia and impulses it has its own
 // general routes (Mirtich's integrals of any hull, sequential impulses with accumulated clamping), so

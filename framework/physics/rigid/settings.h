@@ -1,5 +1,5 @@
 #pragma once
-// Every knob of the rigid-body world in one place (docs/architecture.md: a description apart from the runtime
+// Every knob of the rigid-body world in one place (docs/architecture.md §2: a description apart from the runtime
 // object; the lab's panel edits these). Defaults follow Box2D v3 (b2DefaultWorldDef) where it has the
 // same setting.
 #include <string>
@@ -26,7 +26,8 @@ enum class FrictionModel { Cone, Pyramid };
 ///            (stable at large ω, slowly dissipates energy and |L|);
 ///  Midpoint  implicit midpoint rule on L̇ = L × I⁻¹L in the body frame with the orientation advanced by
 ///            the same Cayley rotation, which conserves L exactly and the energy up to the solve's
-///            tolerance (the conservative choice of the `spinning` scene; see docs/architecture.md).
+///            tolerance (the conservative choice of the `spinning` scene; see
+///            docs/decisions/2026-12-01-rigid-bodies-as-box2d-v3-in-3d.md).
 enum class GyroscopicMode { Off, Implicit, Midpoint };
 
 std::vector<std::string> positionCorrectionNames();

@@ -52,10 +52,9 @@ inline Eigen::MatrixXd centralDifferenceJacobian(const Skeleton& s, const Pose& 
   return out;
 }
 
-/// True (and says so, with `consequence`) when an exercise stub ran since the last
-/// exercises::clearNotImplemented(): a test of a method that runs two exercises (CCD or FABRIK with
-/// limits) then checks nothing that needs the solutions (docs/architecture.md, "One exercise, one
-/// grade (IK)").
+/// True (and says so, with `consequence`) when an exercise stub ran since the last exercises::clearNotImplemented():
+/// a test of a method that runs two exercises (CCD or FABRIK with limits) then checks nothing that needs the
+/// solutions (docs/decisions/2026-11-25-ik-one-driver-and-one-table-of-methods.md, "One exercise, one grade (IK)").
 inline bool stubRan(const char* consequence) {
   const std::vector<std::string> stubs = exercises::notImplementedTags();
   if (stubs.empty()) return false;
