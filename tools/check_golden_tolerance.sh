@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Goldens a correct solution cannot fail
-# (docs/decisions/2026-12-01-tests-independent-references-goldens-soak-fuzz.md): builds a copy of this tree in which
-# some exercises are solved in another, equally correct form (tools/golden_alternatives/ TAG.inc, the lines of TAG's
-# solution block: CLOTH-2 with std::fma and glm::normalize, PART-4 and PART-5 reordered, RIGID-2 through another
+# (docs/decisions/2026-12-02-golden-trajectories-bit-for-bit-or-within-tolerance.md): builds a copy of this tree in
+# which some exercises are solved in another, equally correct form (tools/golden_alternatives/ TAG.inc, the lines of
+# TAG's solution block: CLOTH-2 with std::fma and glm::normalize, PART-4 and PART-5 reordered, RIGID-2 through another
 # formula), and runs this build's tests against the copy's physics library (LD_LIBRARY_PATH, as
 # tools/check_student_release.sh):
 #  1. the goldens bit for bit (PBA_GOLDEN_COMPARE=exact): reported, expected to differ (the alternatives

@@ -31,8 +31,8 @@ constexpr std::uint64_t kGoldenSeed = 1;  // the labs' default --seed
 
 /// The platform whose arithmetic a golden file records: compiler and version, C++ standard library, C library (libm),
 /// architecture, and whether the compiler may fuse a multiply and an add. Two builds with the same string compute the
-/// same bits (docs/decisions/2026-12-01-tests-independent-references-goldens-soak-fuzz.md); any other pair may differ
-/// in the last bits of a libm function or of a contracted product.
+/// same bits (docs/decisions/2026-12-02-golden-trajectories-bit-for-bit-or-within-tolerance.md); any other pair may
+/// differ in the last bits of a libm function or of a contracted product.
 std::string buildPlatform() {
   std::string s;
 #if defined(__clang__)
@@ -79,13 +79,14 @@ std::string buildPlatform() {
   return s;
 }
 
-// Tolerance comparison (docs/decisions/2026-12-01-tests-independent-references-goldens-soak-fuzz.md): what a correct
-// solution written in another order of operations, or built by another compiler or libm, still meets after 60 frames.
-// Rounding differences start at ~1e-16 relative and grow through the dynamics. With the differently written solutions
-// of tools/check_golden_tolerance.sh (CLOTH-2 with std::fma and glm::normalize, PART-4 and PART-5 reordered, RIGID-2
-// through another formula) every scene that is not chaotic (below) stays within 2e-5 of these bounds (cloth/drape's
-// max_compression, 2e-11 relative), so they leave a wide margin for other platforms, while an error of a solution (a
-// sign, a missing factor, a wrong frame) moves energies by percents and positions by millimetres at least.
+// Tolerance comparison (docs/decisions/2026-12-02-golden-trajectories-bit-for-bit-or-within-tolerance.md): what a
+// correct solution written in another order of operations, or built by another compiler or libm, still meets after 60
+// frames. Rounding differences start at ~1e-16 relative and grow through the dynamics. With the differently written
+// solutions of tools/check_golden_tolerance.sh (CLOTH-2 with std::fma and glm::normalize, PART-4 and PART-5
+// reordered, RIGID-2 through another formula) every scene that is not chaotic (below) stays within 2e-5 of these
+// bounds (cloth/drape's max_compression, 2e-11 relative), so they leave a wide margin for other platforms, while an
+// error of a solution (a sign, a missing factor, a wrong frame) moves energies by percents and positions by
+// millimetres at least.
 constexpr double kRelativeTolerance = 1e-6;  ///< every floating-point metric (energies [J] among them)
 constexpr double kAbsoluteTolerance = 1e-9;  ///< added to it, for metrics that should be zero
 constexpr double kPositionTolerance = 1e-6;  ///< [m] each coordinate of the drawn positions' summary

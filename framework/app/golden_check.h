@@ -1,8 +1,8 @@
 #pragma once
-// Golden trajectories (docs/decisions/2026-12-01-tests-independent-references-goldens-soak-fuzz.md): every registered
-// scene of a lab is run headless from its defaults for a fixed number of frames and seed, and its state fingerprint
-// (state_fingerprint.h: step count, clock, hash of everything drawn, metrics without timings) is compared with the
-// one recorded in tests/golden/<lab>.json. The hidden lab options
+// Golden trajectories (docs/decisions/2026-12-02-golden-trajectories-bit-for-bit-or-within-tolerance.md): every
+// registered scene of a lab is run headless from its defaults for a fixed number of frames and seed, and its state
+// fingerprint (state_fingerprint.h: step count, clock, hash of everything drawn, metrics without timings) is compared
+// with the one recorded in tests/golden/<lab>.json. The hidden lab options
 //   --check-golden FILE    compare (exit 0 when every scene agrees, 1 when one differs, 2 for a bad file)
 //   --update-golden FILE   rewrite FILE from this build (./pba golden --update does it for every lab)
 // loop over the registry in one process, so a new scene is covered once its entry is regenerated.

@@ -1,8 +1,7 @@
 #pragma once
 // Every numeric parameter of every scene at its extremes, generated from the Params declarations
-// (docs/decisions/2026-12-01-tests-independent-references-goldens-soak-fuzz.md): a lab's hidden test mode
-// `--check-extremes` loops in one process over its registered scenes, so a new scene or parameter is covered without
-// writing a test.
+// (docs/decisions/2026-12-02-every-parameter-at-its-extremes.md): a lab's hidden test mode `--check-extremes` loops
+// in one process over its registered scenes, so a new scene or parameter is covered without writing a test.
 //   - at the declared minimum and maximum (through the command line's --set path): the scene must load,
 //     run `frames` display frames and stay finite (state and metrics), or be paused by the
 //     instability guard, which is the guard's job (a maximum marked Params::workload(), an amount of

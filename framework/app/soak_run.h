@@ -1,10 +1,9 @@
 #pragma once
-// Soak test (docs/decisions/2026-12-01-tests-independent-references-goldens-soak-fuzz.md): the hidden lab option
-// `--soak SECONDS [--seed N]` drives a lab's LabSession, the object behind the window's keys and mouse, headless for
-// SECONDS of wall time with a scripted user: drags through each scene's pick()/drag() interface, nudges, parameter
-// changes within their declared ranges, presets, resets, pauses, single steps, rewinds and scene switches, all drawn
-// from one random stream seeded by --seed. Every lab, including one added later, is covered without code of its own.
-// It fails on
+// Soak test (docs/decisions/2026-12-02-soak-runs-with-a-scripted-user.md): the hidden lab option `--soak SECONDS
+// [--seed N]` drives a lab's LabSession, the object behind the window's keys and mouse, headless for SECONDS of wall
+// time with a scripted user: drags through each scene's pick()/drag() interface, nudges, parameter changes within
+// their declared ranges, presets, resets, pauses, single steps, rewinds and scene switches, all drawn from one random
+// stream seeded by --seed. Every lab, including one added later, is covered without code of its own. It fails on
 //   - an instability in a passive scene (untouched since its last reset): any guard pause at the defaults,
 //     a non-finite state under a preset (a preset may show a blow-up on purpose, "symplectic: boom": the
 //     guard must pause it while the state is still finite; such presets are listed). After a parameter

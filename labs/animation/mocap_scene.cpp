@@ -46,8 +46,8 @@ class MocapScene final : public AnimScene {
   void reset() override {
     Result<ImportedClip> r = importClip(file_, height_);
     // The clip is shared, read-only, by the rewind history's copies of the scene
-    // (docs/decisions/2026-11-25-one-scene-interface-and-a-fixed-step-runner.md: a copy per frame of CMU 01_01's
-    // 2,752 frames filled the history in a second): a change is a new clip.
+    // (docs/decisions/2026-12-02-rewind-by-copying-scenes-and-checking-determinism.md: a copy per frame of CMU
+    // 01_01's 2,752 frames filled the history in a second): a change is a new clip.
     ImportedClip loaded;
     if (r) {
       loaded = std::move(r).value();
