@@ -63,6 +63,10 @@ ragdoll::RagdollDesc posedFigure(const StairsFall& scene, Real t) {
   return ragdoll::translated(ragdoll::rotated(scene.figure, tip, scene.pivot), Vec3(scene.driftSpeed * t, 0.0, 0.0));
 }
 
+// Finite first: an ordered comparison with NaN raises the invalid-operation flag (the tests trap it).
+bool positive(Real x) { return std::isfinite(x) && x > 0.0; }
+bool nonNegative(Real x) { return std::isfinite(x) && x >= 0.0; }
+
 int firstFigureBone(const StairsFall& scene) { return static_cast<int>(scene.stairs.bones.size()); }
 
 void switchToRagdoll(StairsFall& scene) {
@@ -99,15 +103,18 @@ void switchToRagdoll(StairsFall& scene) {
 
 Result<StairsFall> buildStairsFall(const StairsFallDesc& desc) {
   if (desc.steps < 1) return Error{"steps: must be at least 1"};
-  if (!(desc.rise > 0.0)) return Error{"rise: must be positive"};
-  if (!(desc.run > 0.0)) return Error{"run: must be positive"};
-  if (!(desc.width > 0.0)) return Error{"width: must be positive"};
-  if (!(desc.figureMass > 0.0)) return Error{"figureMass: must be positive"};
-  if (!(desc.figureScale > 0.0)) return Error{"figureScale: must be positive"};
-  if (!(desc.tipAcceleration >= 0.0)) return Error{"tipAcceleration: must be >= 0"};
+  if (!positive(desc.rise)) return Error{"rise: must be positive"};
+  if (!positive(desc.run)) return Error{"run: must be positive"};
+  if (!positive(desc.width)) return Error{"width: must be positive"};
+  if (!positive(desc.figureMass)) return Error{"figureMass: must be positive"};
+  if (!positive(desc.figureScale)) return Error{"figureScale: must be positive"};
+  if (!nonNegative(desc.tipAcceleration)) return Error{"tipAcceleration: must be >= 0"};
   if (!std::isfinite(desc.driftSpeed)) return Error{"driftSpeed: must be finite"};
-  if (!(desc.switchAt >= 0.0)) return Error{"switchAt: must be >= 0"};
-  if (!(desc.jointFriction >= 0.0)) return Error{"jointFriction: must be >= 0"};
+  if (!nonNegative(desc.switchAt)) return Error{"switchAt: must be >= 0"};
+  if (!nonNegative(desc.jointFriction)) return Error{"jointFriction: must be >= 0"};
+  if (!positive(desc.rest.linearSpeed)) return Error{"rest.linearSpeed: must be positive"};
+  if (!positive(desc.rest.angularSpeed)) return Error{"rest.angularSpeed: must be positive"};
+  if (!nonNegative(desc.rest.quietTime)) return Error{"rest.quietTime: must be >= 0"};
   StairsFall scene;
   scene.stairs = ragdoll::buildStairs(desc.steps, desc.rise, desc.run, desc.width);
   // The human faces +x (down the stairs), turned by the seed's yaw.

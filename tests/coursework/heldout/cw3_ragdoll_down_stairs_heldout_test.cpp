@@ -32,14 +32,9 @@ TEST(CW3_1_HandOverHeldOut, RandomParabolasAndAcceleratedSpinsAreExact) {
       return BonePose{c0 + v0 * s + 0.5 * a * s * s, glm::angleAxis(w0 * s + 0.5 * alpha * s * s, axis) * base};
     };
     const BoneMotion m = handOverMotion(pose(t - 2 * h), pose(t - h), pose(t), h);
-    {
-      SCOPED_TRACE(::testing::Message() << "seed 2718, trial " << trial);
-      EXPECT_VEC3_NEAR(m.velocity, v0 + a * t, 1e-7);
-    }
-    {
-      SCOPED_TRACE(::testing::Message() << "seed 2718, trial " << trial);
-      EXPECT_VEC3_NEAR(m.angularVelocity, (w0 + alpha * t) * axis, 1e-6);
-    }
+    SCOPED_TRACE(::testing::Message() << "seed 2718, trial " << trial);
+    EXPECT_VEC3_NEAR(m.velocity, v0 + a * t, 1e-7);
+    EXPECT_VEC3_NEAR(m.angularVelocity, (w0 + alpha * t) * axis, 1e-6);
   }
 }
 
@@ -55,10 +50,8 @@ TEST(CW3_1_HandOverHeldOut, QuaternionSignsBetweenFramesChangeNothing) {
     BonePose g[3] = {f[0], f[1], f[2]};
     g[flip].orientation = -g[flip].orientation;
     const BoneMotion m = handOverMotion(g[0], g[1], g[2], h);
-    {
-      SCOPED_TRACE(::testing::Message() << "frame " << flip << " negated");
-      EXPECT_VEC3_NEAR(m.angularVelocity, plain.angularVelocity, 1e-9);
-    }
+    SCOPED_TRACE(::testing::Message() << "frame " << flip << " negated");
+    EXPECT_VEC3_NEAR(m.angularVelocity, plain.angularVelocity, 1e-9);
   }
 }
 
@@ -67,14 +60,9 @@ TEST(CW3_1_HandOverHeldOut, ABadStepGivesZeroButAGoodOneDoesNot) {
       c{Vec3(0.2, 0, 0), glm::angleAxis(0.2, Vec3(0, 0, 1))};
   for (const Real h : {0.0, -0.01}) {
     const BoneMotion m = handOverMotion(a, b, c, h);
-    {
-      SCOPED_TRACE(::testing::Message() << "h = " << h);
-      EXPECT_VEC3_NEAR(m.velocity, Vec3(0.0), 0.0);
-    }
-    {
-      SCOPED_TRACE(::testing::Message() << "h = " << h);
-      EXPECT_VEC3_NEAR(m.angularVelocity, Vec3(0.0), 0.0);
-    }
+    SCOPED_TRACE(::testing::Message() << "h = " << h);
+    EXPECT_VEC3_NEAR(m.velocity, Vec3(0.0), 0.0);
+    EXPECT_VEC3_NEAR(m.angularVelocity, Vec3(0.0), 0.0);
   }
   const BoneMotion good = handOverMotion(a, b, c, 0.1);
   EXPECT_VEC3_NEAR(good.velocity, Vec3(1.0, 0.0, 0.0), 1e-12);
@@ -97,14 +85,9 @@ TEST(CW3_1_HandOverHeldOut, OtherStairsStepsAndMassesKeepTheFigureContinuous) {
   const std::vector<BoneMotion> started = figureMotion(scene);
   ASSERT_EQ(started.size(), exact.size());
   for (std::size_t b = 0; b < exact.size(); ++b) {
-    {
-      SCOPED_TRACE(::testing::Message() << "bone " << b);
-      EXPECT_VEC3_NEAR(started[b].angularVelocity, exact[b].angularVelocity, 1e-9);
-    }
-    {
-      SCOPED_TRACE(::testing::Message() << "bone " << b);
-      EXPECT_VEC3_NEAR(started[b].velocity, exact[b].velocity, 0.004);
-    }  // O(h²)
+    SCOPED_TRACE(::testing::Message() << "bone " << b);
+    EXPECT_VEC3_NEAR(started[b].angularVelocity, exact[b].angularVelocity, 1e-9);
+    EXPECT_VEC3_NEAR(started[b].velocity, exact[b].velocity, 0.004);  // O(h²)
   }
 }
 

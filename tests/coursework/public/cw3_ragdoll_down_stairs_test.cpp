@@ -64,20 +64,12 @@ TEST(CW3_1_HandOver, RagdollStartsWithTheScriptedVelocities) {
   for (std::size_t b = 0; b < exact.size(); ++b) {
     const rigid::Body& body =
         scene.ragdoll.world().body(scene.ragdoll.bodyOf(static_cast<int>(scene.stairs.bones.size() + b)));
-    {
-      SCOPED_TRACE(::testing::Message() << "bone " << b);
-      EXPECT_VEC3_NEAR(body.position, pose[b].center, 1e-12);
-    }
+    SCOPED_TRACE(::testing::Message() << "bone " << b);
+    EXPECT_VEC3_NEAR(body.position, pose[b].center, 1e-12);
     // The script turns about a fixed axis with constant angular acceleration: ω is exact; the centres move
     // on circles, where the second-order difference errs by O(h²) (a first-order one by ½ h |a| ≈ 5 cm/s).
-    {
-      SCOPED_TRACE(::testing::Message() << "bone " << b);
-      EXPECT_VEC3_NEAR(started[b].angularVelocity, exact[b].angularVelocity, 1e-9);
-    }
-    {
-      SCOPED_TRACE(::testing::Message() << "bone " << b);
-      EXPECT_VEC3_NEAR(started[b].velocity, exact[b].velocity, 0.01);
-    }
+    EXPECT_VEC3_NEAR(started[b].angularVelocity, exact[b].angularVelocity, 1e-9);
+    EXPECT_VEC3_NEAR(started[b].velocity, exact[b].velocity, 0.01);
   }
 }
 

@@ -24,6 +24,8 @@ TEST(StairsFallBuild, BadDescriptionsNameTheirField) {
   fails([](StairsFallDesc& d) { d.figureMass = 0.0; }, "figureMass");
   fails([](StairsFallDesc& d) { d.figureScale = std::nan(""); }, "figureScale");
   fails([](StairsFallDesc& d) { d.switchAt = -1.0; }, "switchAt");
+  fails([](StairsFallDesc& d) { d.jointFriction = -1.0; }, "jointFriction");
+  fails([](StairsFallDesc& d) { d.rest.quietTime = std::nan(""); }, "rest.quietTime");
 }
 
 TEST(StairsFallBuild, TheFigureStandsOnTheTopStepBehindItsNosing) {
@@ -58,10 +60,8 @@ TEST(StairsFallBuild, ScriptedVelocitiesAreTheDerivativesOfTheScriptedPoses) {
   const std::vector<BoneMotion> motion = scriptedMotion(scene, t);
   for (std::size_t b = 0; b < motion.size(); ++b) {
     // Central differences: error O(e²) ≈ 1e-10 m/s, against rounding of 1e-16 / e ≈ 1e-11 m/s.
-    {
-      SCOPED_TRACE(::testing::Message() << "bone " << b);
-      EXPECT_VEC3_NEAR(motion[b].velocity, (ahead[b].center - behind[b].center) / (2 * e), 1e-8);
-    }
+    SCOPED_TRACE(::testing::Message() << "bone " << b);
+    EXPECT_VEC3_NEAR(motion[b].velocity, (ahead[b].center - behind[b].center) / (2 * e), 1e-8);
   }
 }
 
