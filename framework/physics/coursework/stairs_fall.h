@@ -88,7 +88,7 @@ struct StairsFallDesc {
   Real driftSpeed = 0.4;       ///< [m/s] forward speed of the controlled figure
   Real switchAt = 0.45;        ///< [s] ≥ 0: control passes to the ragdoll at this time
   unsigned seed = 0;           ///< turns the figure by up to ±15° about the vertical (0: square to the stairs)
-  Real jointFriction = 10.0;   ///< [N·m] ≥ 0, the largest torque each hinge of the ragdoll resists
+  Real jointFriction = 30.0;   ///< [N·m] ≥ 0, the largest torque each hinge of the ragdoll resists
   RestSettings rest;
 };
 
@@ -100,7 +100,7 @@ struct StairsFall {
   Real tipAcceleration = 3.0;       ///< [rad/s²]
   Real driftSpeed = 0.4;            ///< [m/s] along +x
   Real switchAt = 0.45;             ///< [s]
-  Real jointFriction = 10.0;        ///< [N·m]
+  Real jointFriction = 30.0;        ///< [N·m]
   Real time = 0.0;                  ///< [s]
   Real h = 0.0;                     ///< [s] the step of the last frames under control (0 before the first)
   std::vector<BonePose> frames[3];  ///< the figure's poses at t − 2h, t − h, t while controlled
