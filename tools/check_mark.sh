@@ -2,9 +2,9 @@
 # ctest coursework.mark: `./pba mark` gives the marks the rubric says (resources/coursework/rubric.tsv) to
 #   the reference tree (this one): every automatic mark;
 #   a fresh student hand-out (tools/student_release.sh): zero;
-#   a half-solved tree: this tree with the second task of each coursework (CW1-2, CW2-2) turned back into
-#     its stub: the first tasks' criteria, public and held-out, and nothing that runs a stub (the whole
-#     walker, the coupled step, the budgets);
+#   a half-solved tree: this tree with the second task of each coursework (CW1-2, CW2-2, CW3-2) turned back
+#     into its stub: the first tasks' criteria, public and held-out, and nothing that runs a stub (the whole
+#     walker, the coupled step, the rest test and the whole fall, the budgets);
 # and that bad arguments exit 2 with one line, a tree that does not compile scores 0 with a line naming its
 # log, and a tree whose code hangs is stopped at the time limits (shortened here) with a line for each.
 # The three trees build through the given compiler cache, so only the files that differ compile.
@@ -20,7 +20,7 @@ work="$(cd "$work" && pwd)"
 weights() { awk -F'\t' -v want=" $* " 'NR > 1 && $3 != "person" && index(want, " " $1 ":" $2 " ") { s += $4 } END { print s + 0 }' \
   "$src/resources/coursework/rubric.tsv"; }
 all_automatic="$(awk -F'\t' 'NR > 1 && $3 != "person" { s += $4 } END { print s }' "$src/resources/coursework/rubric.tsv")"
-half="$(weights 1:foot-cycle 1:foot-cycle-heldout 2:contact 2:contact-heldout)"
+half="$(weights 1:foot-cycle 1:foot-cycle-heldout 2:contact 2:contact-heldout 3:hand-over 3:hand-over-heldout)"
 
 mark_total() {  # mark_total NAME TREE: marks TREE, prints the CSV's total
   bash "$src/tools/mark.sh" "$src" "$2" --csv "$work/$1.csv" --work "$work/$1" >"$work/$1.log" 2>&1 ||
@@ -39,9 +39,10 @@ bash "$src/tools/student_release.sh" "$src" "$work/src/handout" >/dev/null
 cp -R "$work/src/reference" "$work/src/half"
 python3 - "$work/src/half" <<'PY'
 import re, sys
-# Turn the CW1-2 and CW2-2 blocks back into their stubs, as the hand-out has them.
+# Turn the CW1-2, CW2-2 and CW3-2 blocks back into their stubs, as the hand-out has them.
 for path, tag in (("framework/physics/coursework/walker.cpp", "CW1-2"),
-                  ("framework/physics/coursework/ball_on_cloth.cpp", "CW2-2")):
+                  ("framework/physics/coursework/ball_on_cloth.cpp", "CW2-2"),
+                  ("framework/physics/coursework/stairs_fall.cpp", "CW3-2")):
     full = f"{sys.argv[1]}/{path}"
     text = open(full, encoding="utf-8").read()
     block = re.compile(r"[ \t]*// BEGIN SOLUTION\n(?:(?!// BEGIN SOLUTION).)*?// END SOLUTION\n([ \t]*)// STUB: ([^\n]*\"" + tag + r"\"[^\n]*)\n", re.S)
