@@ -1,8 +1,8 @@
 // CCD's option of ours for long chains with tight limits (SolveOptions::ccdMaxTurn; ccd.cpp): every joint turns by at
 // most the cap in one pass. CCD with limits runs two exercises, IK-2's update and IK-6's clamp, so no exercise grades
-// these tests (docs/decisions/2026-11-25-ik-one-driver-and-one-table-of-methods.md, "One exercise, one grade (IK)"):
-// they are untagged, and when a stub ran they say so and check nothing that needs the solutions. The published CCD
-// (the option off) is the golden file's and the IK_2 tests' business.
+// these tests (docs/decisions/2026-12-01-ik-one-exercise-one-grade.md): they are untagged, and when a stub ran they
+// say so and check nothing that needs the solutions. The published CCD (the option off) is the golden file's and the
+// IK_2 tests' business.
 //
 // Every solve starts from rest; success is judged by independent forward kinematics of the returned
 // pose against the goal (runRandomTargets), the limits by the joints' own bounds (limitViolation).

@@ -1,8 +1,8 @@
 // FABRIK's two options of ours on trees with joint limits (SolveOptions::fabrikHingeTwist and fabrikLimitFit;
 // framework/physics/ik/fabrik_options.cpp). FABRIK with limits runs two exercises, IK-5's passes and IK-6's clamp, so
-// no exercise grades these tests (docs/decisions/2026-11-25-ik-one-driver-and-one-table-of-methods.md, "One exercise,
-// one grade (IK)"): they are untagged, and when a stub ran (a student release, or the isolation check with IK-5 or
-// IK-6 stubbed) they say so and check nothing that needs the solutions, as the animation lab's keyframe test does.
+// no exercise grades these tests (docs/decisions/2026-12-01-ik-one-exercise-one-grade.md): they are untagged, and
+// when a stub ran (a student release, or the isolation check with IK-5 or IK-6 stubbed) they say so and check nothing
+// that needs the solutions, as the animation lab's keyframe test does.
 //
 // Every solve starts from rest; success is judged by independent forward kinematics of the returned
 // pose against the goal (runRandomTargets), never by the solver's own status alone.

@@ -54,7 +54,7 @@ inline Eigen::MatrixXd centralDifferenceJacobian(const Skeleton& s, const Pose& 
 
 /// True (and says so, with `consequence`) when an exercise stub ran since the last exercises::clearNotImplemented():
 /// a test of a method that runs two exercises (CCD or FABRIK with limits) then checks nothing that needs the
-/// solutions (docs/decisions/2026-11-25-ik-one-driver-and-one-table-of-methods.md, "One exercise, one grade (IK)").
+/// solutions (docs/decisions/2026-12-01-ik-one-exercise-one-grade.md).
 inline bool stubRan(const char* consequence) {
   const std::vector<std::string> stubs = exercises::notImplementedTags();
   if (stubs.empty()) return false;
