@@ -96,4 +96,26 @@ if [[ -x "$build/bin/pba-ik" && -f /usr/share/assimp/models/X/Testwuson.X ]]; th
   echo "wrote docs/images/ik-character-skinned.png"
   count=$((count + 1))
 fi
+# The expected-result figures of workbook chapters 4-7 (exercises COLL, RIGID, RAG and ANIM): a scene with the
+# parameters and the number of frames (1/60 s each) its caption names.
+exercise_figure() {
+  local lab="$1" png="$2"
+  shift 2
+  [[ -x "$build/bin/pba-$lab" ]] || return 0
+  "${run[@]}" "$build/bin/pba-$lab" "$@" --screenshot "$root/docs/images/$png" >/dev/null
+  echo "wrote docs/images/$png"
+  count=$((count + 1))
+}
+exercise_figure rigid rigid-stack-sap.png --scene stack --set broad_phase=sap --frames 120
+exercise_figure rigid rigid-tumble-bouncy.png --scene tumble --set restitution=0.8 --set friction=0.3 --frames 150
+exercise_figure rigid rigid-tumble-clay.png --scene tumble --set restitution=0 --set friction=0.8 --frames 90
+exercise_figure ragdoll ragdoll-rag5-frames.png --scene boxes --frames 45
+exercise_figure ragdoll ragdoll-rag6-joints.png --scene ball-chain --frames 60
+exercise_figure animation animation-anim1-hermite.png --scene splines --set follow=hermite --set tension=0.8 \
+  --set show_catmull_rom=false --set show_natural_cubic=false --set show_linear=false --frames 150
+exercise_figure animation animation-anim2-catmull-rom.png --scene splines --set show_hermite=false \
+  --set show_natural_cubic=false --set show_linear=false --frames 150
+exercise_figure animation animation-anim4-run.png --scene secondary --set gait=run --frames 150
+exercise_figure animation animation-anim5-squad.png --scene keyframes --set rotation=squad --frames 40
+exercise_figure animation animation-anim6-blend.png --scene blend --frames 198
 echo "screenshots: $count images in docs/images"
