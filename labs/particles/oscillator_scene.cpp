@@ -23,10 +23,11 @@
 namespace {
 using namespace pba;
 
-// The figure is a 4 × 2 grid facing the camera (preferredView frames it to fill the view between the
-// control panel and the energy plot's column): eight phase portraits in two rows of four.
-constexpr int kColumns = 4;
-constexpr int kRows = 2;
+// The figure is a 3 × 3 grid facing the camera (preferredView frames it to fill the view between the
+// control panel and the energy plot's column): eight phase portraits in rows of three, the ninth cell
+// (bottom right) empty. Nearly square, it keeps the portraits as large as the free area allows.
+constexpr int kColumns = 3;
+constexpr int kRows = 3;
 constexpr Real kPanel = 3.4;          // [m] horizontal spacing of the cells in the scene
 constexpr Real kPanelHeight = 3.7;    // [m] vertical spacing (room for the labels above and below)
 constexpr Real kPhaseLimit = 1.4;     // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
@@ -95,8 +96,8 @@ class OscillatorScene final : public app::Scene {
   }
 
   void draw(DebugDraw& d) const override {
-    // Two rows of four phase portraits, all above the ground (y > 0) and in a vertical plane turned to
-    // face the lab's default camera yaw.
+    // Eight phase portraits in rows of three, all above the ground (y > 0) and in a vertical plane
+    // turned to face the lab's default camera yaw.
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       const Vec3 c = panelCenter(i);
       const Color color = kMethodColors[i];
