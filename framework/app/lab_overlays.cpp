@@ -14,7 +14,7 @@
 namespace pba::app::detail {
 namespace {
 
-constexpr float kMargin = 8.0f;  // [px] between windows and the window's edge
+constexpr float kMargin = 8.0f;           // [px] between windows and the window's edge
 constexpr float kMinCaptionScale = 0.6f;  // a plot caption is never drawn smaller than this share of the font
 
 /// A line plot of `series` filling `size`, 2 px wide (3 in lecture mode): ImGui's PlotLines draws 1 px,

@@ -14,8 +14,7 @@
 #include <memory>
 #include <string>
 
-#include <imgui.h>
-
+#include "app/overlay_window.h"
 #include "app/scene_registry.h"
 #include "common.h"
 #include "physics/ode/oscillator.h"
@@ -28,12 +27,12 @@ using namespace pba;
 // (bottom right) empty. Nearly square, it keeps the portraits as large as the free area allows.
 constexpr int kColumns = 3;
 constexpr int kRows = 3;
-constexpr Real kPanel = 3.4;          // [m] horizontal spacing of the cells in the scene
-constexpr Real kPanelHeight = 3.7;    // [m] vertical spacing (room for the labels above and below)
-constexpr Real kPhaseLimit = 1.4;     // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
-constexpr Real kBottom = 0.6;         // [m] lowest cell edge above the ground (its label sits below it)
-constexpr Real kFacingYaw = 0.6;      // [rad] the figure faces the lab's default camera (OrbitCamera::yaw)
-constexpr std::size_t kTrail = 2000;  // samples kept per trajectory
+constexpr Real kPanel = 3.4;            // [m] horizontal spacing of the cells in the scene
+constexpr Real kPanelHeight = 3.7;      // [m] vertical spacing (room for the labels above and below)
+constexpr Real kPhaseLimit = 1.4;       // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
+constexpr Real kBottom = 0.6;           // [m] lowest cell edge above the ground (its label sits below it)
+constexpr Real kFacingYaw = 0.6;        // [rad] the figure faces the lab's default camera (OrbitCamera::yaw)
+constexpr std::size_t kTrail = 2000;    // samples kept per trajectory
 constexpr double kEnergyPlotTop = 4.0;  // E/E₀ at the top of the energy plot (Euler's growth is clipped there)
 constexpr Color kMethodColors[] = {colors::kRed,    colors::kBlue,   colors::kGreen, colors::kPurple,
                                    colors::kOrange, colors::kYellow, colors::kDark,  colors::kGrey};
@@ -197,11 +196,7 @@ class OscillatorScene final : public app::Scene {
   /// The energy window: E/E₀ ∈ [0, 4] against t ∈ [0, end_time], ticks at whole E/E₀, the grey line
   /// E/E₀ = 1 (exact), then the methods' names in their curves' colours.
   void energyPlotWindow(const app::ScreenRect& column) const {
-    ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
-    ImGui::SetNextWindowSize(ImVec2(column.x1 - column.x0, 0.0f), ImGuiCond_Always);
-    ImGui::Begin("E/E0 over t, every method", nullptr,
-                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoScrollbar);
+    app::beginColumnWindow(column, "E/E0 over t, every method");
     const float font = ImGui::GetFontSize();
     const float axis = ImGui::CalcTextSize("4").x + 0.4f * font;
     const float width = ImGui::GetContentRegionAvail().x - axis, height = 8.0f * font;
@@ -212,7 +207,7 @@ class OscillatorScene final : public app::Scene {
       return ImVec2(o.x + axis + width * static_cast<float>(std::clamp(t / endTime_, 0.0, 1.0)),
                     o.y + height * static_cast<float>(1.0 - y));
     };
-    auto rgba = [](const Color& c) { return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, c.a)); };
+    const auto rgba = app::imguiColor;
     draw->AddRectFilled(point(0.0, kEnergyPlotTop), point(endTime_, 0.0), ImGui::GetColorU32(ImGuiCol_FrameBg));
     for (int tick = 0; tick <= static_cast<int>(kEnergyPlotTop); ++tick) {
       const ImVec2 a = point(0.0, tick);
@@ -232,7 +227,8 @@ class OscillatorScene final : public app::Scene {
     for (std::size_t i = 0; i < methods_.size(); ++i) {  // the key, wrapped to the window's width
       const std::string name(ode::integratorName(methods_[i].integrator.kind()));
       if (i > 0) {
-        const float next = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(name.c_str()).x;
+        const float next =
+            ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(name.c_str()).x;
         if (next < ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
       }
       const Color c = kMethodColors[i];

@@ -21,8 +21,8 @@ constexpr Real kGoldenAngle = 2.399963229728653;  // [rad] π (3 − √5): succ
 // The mouse spring: a damped spring on the grabbed point, stiffness m ω² and damping 2 ζ m ω for the
 // box's mass m, so that it pulls any mass at the same 3 Hz, critically damped in the linear part.
 // Its force is bounded so that a fast cursor does not fling the box through the ground.
-constexpr Real kDragHertz = 3.0;           // [Hz]
-constexpr Real kDragDampingRatio = 1.0;    // [1]
+constexpr Real kDragHertz = 3.0;              // [Hz]
+constexpr Real kDragDampingRatio = 1.0;       // [1]
 constexpr Real kDragMaxAccelerations = 30.0;  // the bound: this many times g on the box's mass
 
 PBA_REGISTER_LAB_KEY('T', "tumble", "throw the box again (a new heading each time)");
@@ -179,9 +179,9 @@ class TumbleScene final : public app::Scene {
   rigid::TumbleSettings settings_;
   std::vector<rigid::TumbleContact> contacts_;
   Real gravity_ = kStandardGravity, height_ = 1.5, spin_ = 2.0, maxPenetration_ = 0.0;
-  int throws_ = 0;                   ///< T presses since the reset
-  std::optional<Vec3> dragTarget_;   ///< [m] where the cursor pulls the grabbed point, while dragging
-  Vec3 grabLocal_{0.0};              ///< [m] the grabbed point in the box's frame
+  int throws_ = 0;                  ///< T presses since the reset
+  std::optional<Vec3> dragTarget_;  ///< [m] where the cursor pulls the grabbed point, while dragging
+  Vec3 grabLocal_{0.0};             ///< [m] the grabbed point in the box's frame
 };
 
 }  // namespace

@@ -572,8 +572,8 @@ void checkDragEveryScene(const std::string& exe, const std::string& work) {
       std::printf("scene %s: no dynamic body at its start, nothing to drag\n", list[index].c_str());
       continue;
     }
-    const bool anyInView = std::any_of(s["handles"].begin(), s["handles"].end(),
-                                       [](const json& h) { return h["visible"] == true; });
+    const bool anyInView =
+        std::any_of(s["handles"].begin(), s["handles"].end(), [](const json& h) { return h["visible"] == true; });
     if (!anyInView) {  // bench-boxes: the bodies it reports, its highest, start above the picture
       std::printf("scene %s: the bodies it reports are out of view at its start, not dragged\n", list[index].c_str());
       continue;
