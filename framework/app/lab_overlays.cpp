@@ -14,7 +14,8 @@
 namespace pba::app::detail {
 namespace {
 
-constexpr float kMargin = 8.0f;  // [px] between windows and the window's edge
+constexpr float kMargin = 8.0f;           // [px] between windows and the window's edge
+constexpr float kMinCaptionScale = 0.6f;  // a plot caption is never drawn smaller than this share of the font
 
 /// A line plot of `series` filling `size`, 2 px wide (3 in lecture mode): ImGui's PlotLines draws 1 px,
 /// which a projector loses. The caption (plotCaption) says what the vertical range is.
@@ -57,13 +58,19 @@ void plotSeries(const std::string& name, const std::vector<double>& series, cons
   }
   const size_t split = caption.find("  ");
   const float font = ImGui::GetFontSize();
-  draw->AddText(ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text),
-                caption.substr(0, split).c_str());
-  if (split != std::string::npos)
+  const std::string top = caption.substr(0, split);
+  const std::string range = split != std::string::npos ? caption.substr(split + 2) : std::string();
+  // A caption wider than the plot ("particle_kinetic_energy_J = 1.512e-05" in a lecture plot) is drawn
+  // smaller until it fits, both lines alike, never cut at the window's edge.
+  const float room = size.x - 2.0f * pad;
+  const float widest = std::max(ImGui::CalcTextSize(top.c_str()).x, 0.8f * ImGui::CalcTextSize(range.c_str()).x);
+  const float fit = widest > room ? std::max(room / widest, kMinCaptionScale) : 1.0f;
+  draw->AddText(ImGui::GetFont(), fit * font, ImVec2(o.x + pad, o.y + 0.5f * pad), ImGui::GetColorU32(ImGuiCol_Text),
+                top.c_str());
+  if (!range.empty())
     // The range in the text colour in lecture mode: the disabled grey was too faint on a projector.
-    draw->AddText(ImGui::GetFont(), 0.8f * font, ImVec2(o.x + pad, o.y + 0.5f * pad + font),
-                  ImGui::GetColorU32(lecture ? ImGuiCol_Text : ImGuiCol_TextDisabled),
-                  caption.substr(split + 2).c_str());
+    draw->AddText(ImGui::GetFont(), 0.8f * fit * font, ImVec2(o.x + pad, o.y + 0.5f * pad + fit * font),
+                  ImGui::GetColorU32(lecture ? ImGuiCol_Text : ImGuiCol_TextDisabled), range.c_str());
   ImGui::Dummy(size);
 }
 

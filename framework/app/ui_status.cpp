@@ -8,6 +8,9 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include "app/exercise_catalog.h"
+#include "physics/exercises/not_implemented.h"
+
 namespace pba::app {
 namespace {
 
@@ -87,7 +90,10 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
     nlohmann::json h = pixelJson(camera, list[i].position, f.viewport);
     h["handle"] = list[i].handle;
     h["position"] = vec(list[i].position);
-    if (f.picked && *f.picked == list[i].handle) picked = h;
+    if (f.picked && *f.picked == list[i].handle) {
+      picked = h;
+      picked["drag_plane_point"] = vec(f.dragPlanePoint);
+    }
     if (i < kMaxStatusHandles) handles.push_back(std::move(h));
   }
   nlohmann::json widgets = nlohmann::json::object();
@@ -132,6 +138,8 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
           {"message", session.message()},
           {"file_error", session.fileError()},
           {"guard", runner.guardMessage() ? *runner.guardMessage() : std::string()},
+          // This lab's exercises that ran as stubs (a hand-out): a check whose path runs them skips.
+          {"stubbed_exercises", stubbedExercises(session.exercises(), exercises::notImplementedTags())},
           {"notice", noticeShown ? ui.notice : std::string()},
           {"last_screenshot", ui.lastScreenshot},
           {"recording", ui.recording},
@@ -143,6 +151,7 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
           {"presets", presets},
           {"handles", handles},
           {"picked", picked},
+          {"dragging", f.dragging},
           {"legend_entries", scene.legend().size()},
           {"windows", windowsJson()},
           {"widgets", widgets},

@@ -30,6 +30,8 @@ struct UiFrame {
   long frame = 0;                              ///< frames displayed so far
   glm::vec2 viewport{1280.0f, 720.0f};         ///< window size [screen coordinates]
   std::optional<int> picked;                   ///< handle being dragged, else the last one dragged
+  glm::vec3 dragPlanePoint{0.0f};              ///< [m] on the plane that drag moved on (faces the camera)
+  bool dragging = false;                       ///< the left button holds `picked` now
   bool hasBounds = false;                      ///< the scene drew something
   glm::vec3 boundsMin{0.0f}, boundsMax{0.0f};  ///< [m] of what it drew this frame
 };

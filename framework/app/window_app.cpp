@@ -327,7 +327,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
 
     // One view, or A and B side by side: each drawn into its own viewport (framebuffer pixels).
     const float toFb = ws.x > 0 ? static_cast<float>(fb.x) / static_cast<float>(ws.x) : 1.0f;
-    UiFrame status{frame + 1, glm::vec2(ws), input.pickedHandle()};
+    UiFrame status{frame + 1, glm::vec2(ws), input.pickedHandle(), glm::vec3(input.dragPlanePoint()), input.dragging()};
     auto drawView = [&](const Scene& scene, float x0, bool first) {
       renderer->beginFrame(camera, static_cast<int>(viewWidth * toFb), fb.y, static_cast<int>(x0 * toFb), 0);
       SceneDraw draw(debug);

@@ -27,6 +27,8 @@ class WindowInput {
   bool dragging() const { return handle_.has_value(); }
   /// The object being dragged, else the one dragged last (the UI status reports it).
   std::optional<int> pickedHandle() const { return handle_ ? handle_ : lastHandle_; }
+  /// [m] A point of the plane the last drag moved on (the picked surface point; it faces the camera).
+  const Vec3& dragPlanePoint() const { return planePoint_; }
 
  private:
   void keys(LabSession& session, UiState& ui, const graphics::OrbitCamera& camera);

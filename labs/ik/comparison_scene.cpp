@@ -14,6 +14,8 @@
 
 #include <imgui.h>
 
+#include "app/overlay_window.h"
+
 #include "ik_scene.h"
 
 namespace pba::labs::ik {
@@ -224,11 +226,7 @@ class ComparisonScene final : public app::Scene {
   /// Residual after each iteration of the last solve, log10 scale, one curve per method, with the
   /// tolerance as a dark line and a legend (iterations, final residual, status).
   void plotWindow(const app::ScreenRect& column) const {
-    ImGui::SetNextWindowPos(ImVec2(column.x1, column.y1), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
-    ImGui::SetNextWindowSize(ImVec2(column.x1 - column.x0, 0.0f), ImGuiCond_Always);
-    ImGui::Begin("Residual per iteration (log scale)", nullptr,
-                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoScrollbar);
+    app::beginColumnWindow(column, "Residual per iteration (log scale)");
     size_t longest = 2;
     Real top = -1.0;
     for (const SolveResult& r : results_) {
@@ -245,7 +243,7 @@ class ComparisonScene final : public app::Scene {
       return ImVec2(o.x + axis + width * static_cast<float>(i / Real(longest - 1)),
                     o.y + height * static_cast<float>(1.0 - y));
     };
-    auto rgba = [](const Color& c) { return ImGui::GetColorU32(ImVec4(c.r, c.g, c.b, c.a)); };
+    const auto rgba = app::imguiColor;
     const ImU32 grid = ImGui::GetColorU32(ImVec4(0.6f, 0.6f, 0.62f, 0.6f));
     for (Real e = kPlotFloor; e <= top; e += 1.0) {
       const ImVec2 a = point(0, std::pow(10.0, e)), b = point(Real(longest - 1), std::pow(10.0, e));

@@ -2,7 +2,8 @@
 // integrator side by side against the exact solution (Lobb notes, "ODE view"). Each panel is a phase
 // portrait (x right, v up): the exact orbit is the grey unit circle; Euler spirals outward (energy × 1 + h²
 // per step), symplectic Euler and the Verlets stay on a nearby ellipse, RK4 hugs the circle, implicit
-// Euler spirals inward. The ninth cell plots the energy of each method over time.
+// Euler spirals inward. A 2-D plot beside the portraits (the scene's own window in the right-hand column)
+// shows the energy of each method over time.
 //
 // Time: every method steps with the scene's own h (the parameter), not the runner's dt. The runner's dt
 // advances the scene's clock; h-steps are taken as they fall due on that clock (ode::nextDueStep), and
@@ -13,6 +14,7 @@
 #include <memory>
 #include <string>
 
+#include "app/overlay_window.h"
 #include "app/scene_registry.h"
 #include "common.h"
 #include "physics/ode/oscillator.h"
@@ -20,17 +22,18 @@
 namespace {
 using namespace pba;
 
-// The figure is a 4 × 3 grid facing the camera (preferredView frames it to fill the view right of the
-// control panel): eight phase portraits in two rows of four and, bottom left, the energy plot. The
-// bottom right is left empty for the plot window (error and energy of the selected method).
-constexpr int kColumns = 4;
+// The figure is a 3 × 3 grid facing the camera (preferredView frames it to fill the view between the
+// control panel and the energy plot's column): eight phase portraits in rows of three, the ninth cell
+// (bottom right) empty. Nearly square, it keeps the portraits as large as the free area allows.
+constexpr int kColumns = 3;
 constexpr int kRows = 3;
-constexpr Real kPanel = 3.4;          // [m] horizontal spacing of the cells in the scene
-constexpr Real kPanelHeight = 3.7;    // [m] vertical spacing (room for the labels above and below)
-constexpr Real kPhaseLimit = 1.4;     // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
-constexpr Real kBottom = 0.6;         // [m] lowest cell edge above the ground (its label sits below it)
-constexpr Real kFacingYaw = 0.6;      // [rad] the figure faces the lab's default camera (OrbitCamera::yaw)
-constexpr std::size_t kTrail = 2000;  // samples kept per trajectory
+constexpr Real kPanel = 3.4;            // [m] horizontal spacing of the cells in the scene
+constexpr Real kPanelHeight = 3.7;      // [m] vertical spacing (room for the labels above and below)
+constexpr Real kPhaseLimit = 1.4;       // [m] half-size of a cell; |(x, v)| beyond it is drawn at the rim
+constexpr Real kBottom = 0.6;           // [m] lowest cell edge above the ground (its label sits below it)
+constexpr Real kFacingYaw = 0.6;        // [rad] the figure faces the lab's default camera (OrbitCamera::yaw)
+constexpr std::size_t kTrail = 2000;    // samples kept per trajectory
+constexpr double kEnergyPlotTop = 4.0;  // E/E₀ at the top of the energy plot (Euler's growth is clipped there)
 constexpr Color kMethodColors[] = {colors::kRed,    colors::kBlue,   colors::kGreen, colors::kPurple,
                                    colors::kOrange, colors::kYellow, colors::kDark,  colors::kGrey};
 
@@ -92,8 +95,8 @@ class OscillatorScene final : public app::Scene {
   }
 
   void draw(DebugDraw& d) const override {
-    // Two rows of four phase portraits above an energy plot, all above the ground (y > 0) and in a
-    // vertical plane turned to face the lab's default camera yaw.
+    // Eight phase portraits in rows of three, all above the ground (y > 0) and in a vertical plane
+    // turned to face the lab's default camera yaw.
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       const Vec3 c = panelCenter(i);
       const Color color = kMethodColors[i];
@@ -119,23 +122,12 @@ class OscillatorScene final : public app::Scene {
     std::snprintf(header, sizeof header, "h = %.3g s (every method)   t = %.2f / %.2f s%s", h_, time_, endTime_,
                   time_ >= endTime_ ? "  (end: error taken here)" : "");
     d.text(panelCenter(0) + (kPhaseLimit + 0.75) * kUp - kPhaseLimit * right(), header, colors::kDark);
-    // Energy plot in the last cell: E/E₀ over time, one polyline per method (clipped to [0, 4]).
-    const Vec3 origin = panelCenter(methods_.size()) - kPhaseLimit * (right() + kUp);
-    const Real width = 2.0 * kPhaseLimit, height = 2.0 * kPhaseLimit, tScale = width / endTime_;
-    d.line(origin, origin + width * right(), colors::kDark);
-    d.line(origin, origin + height * kUp, colors::kDark);
-    const Real yOne = height / 4.0;  // E/E₀ = 1 (the axis spans 0…4)
-    d.line(origin + yOne * kUp, origin + yOne * kUp + width * right(), colors::kGrey);
-    d.text(origin + (height + 0.15) * kUp, "E/E0 over t", colors::kDark);
-    d.text(origin - 0.3 * kUp, "grey: E/E0 = 1", colors::kGrey);  // below the time axis, clear of it
-    for (std::size_t i = 0; i < methods_.size(); ++i) {
-      const auto& e = methods_[i].energy;
-      auto pt = [&](std::size_t j) {
-        return origin + (e[j].x * tScale) * right() + (yOne * std::clamp(e[j].y, 0.0, 4.0)) * kUp;
-      };
-      for (std::size_t k = 1; k < e.size(); ++k) d.line(pt(k - 1), pt(k), kMethodColors[i]);
-    }
   }
+
+  /// E/E₀ of every method over t, a 2-D plot in the right-hand column (its own window, docked above the
+  /// runner's plots): the eight curves in the portraits' colours against the grey line E/E₀ = 1.
+  bool wantsOverlay() const override { return true; }
+  void overlayUi(const app::ScreenRect& column) override { energyPlotWindow(column); }
 
   nlohmann::json metrics() const override {
     const Method& m = methods_[index(selected_)];
@@ -159,8 +151,8 @@ class OscillatorScene final : public app::Scene {
     return std::nullopt;
   }
   // No energy(): the runaway guard must not stop Euler's outward spiral, which is the point here.
-  // The selected method's error against the closed form and its energy (the ninth cell draws every
-  // method's energy; switch "integrator" to plot another).
+  // The selected method's error against the closed form and its energy (the energy window plots every
+  // method's; switch "integrator" to plot another here).
   std::vector<std::string> defaultPlots() const override { return {"error", "energy"}; }
   std::vector<app::Preset> presets() const override {
     return {{"Lobb: h = 0.1", {{"h", 0.1}}},
@@ -186,7 +178,7 @@ class OscillatorScene final : public app::Scene {
   }
   static std::size_t index(ode::IntegratorKind k) { return static_cast<std::size_t>(k); }
   bool selected(std::size_t i) const { return i == index(selected_); }
-  // Cell i of the grid, row by row from the top left; cell 8 (bottom left) holds the energy plot.
+  // Cell i of the grid, row by row from the top left.
   static Vec3 panelCenter(std::size_t i) {
     const Real column = static_cast<Real>(i % kColumns) - 0.5 * (kColumns - 1);
     const Real rowFromBottom = static_cast<Real>(kRows - 1 - static_cast<int>(i / kColumns));
@@ -200,6 +192,49 @@ class OscillatorScene final : public app::Scene {
     // 45° vertical field of view: the visible height at distance D is 2 D tan 22.5°; 5 % margin.
     const Real distance = 1.05 * height / (2.0 * std::tan(0.5 * degToRad(45.0)));
     return app::CameraView{Vec3(0.0, 0.5 * (top + kBottom - 0.5), 0.0), distance, kFacingYaw, pitch};
+  }
+  /// The energy window: E/E₀ ∈ [0, 4] against t ∈ [0, end_time], ticks at whole E/E₀, the grey line
+  /// E/E₀ = 1 (exact), then the methods' names in their curves' colours.
+  void energyPlotWindow(const app::ScreenRect& column) const {
+    app::beginColumnWindow(column, "E/E0 over t, every method");
+    const float font = ImGui::GetFontSize();
+    const float axis = ImGui::CalcTextSize("4").x + 0.4f * font;
+    const float width = ImGui::GetContentRegionAvail().x - axis, height = 8.0f * font;
+    const ImVec2 o = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    auto point = [&](double t, double ratio) {
+      const double y = std::clamp(ratio, 0.0, kEnergyPlotTop) / kEnergyPlotTop;
+      return ImVec2(o.x + axis + width * static_cast<float>(std::clamp(t / endTime_, 0.0, 1.0)),
+                    o.y + height * static_cast<float>(1.0 - y));
+    };
+    const auto rgba = app::imguiColor;
+    draw->AddRectFilled(point(0.0, kEnergyPlotTop), point(endTime_, 0.0), ImGui::GetColorU32(ImGuiCol_FrameBg));
+    for (int tick = 0; tick <= static_cast<int>(kEnergyPlotTop); ++tick) {
+      const ImVec2 a = point(0.0, tick);
+      draw->AddLine(a, point(endTime_, tick), rgba(tick == 1 ? colors::kGrey : Color{0.75f, 0.76f, 0.78f, 0.6f}),
+                    tick == 1 ? 0.12f * font : 1.0f);
+      draw->AddText(ImVec2(o.x, a.y - 0.5f * font), ImGui::GetColorU32(ImGuiCol_Text), std::to_string(tick).c_str());
+    }
+    for (std::size_t i = 0; i < methods_.size(); ++i) {
+      std::vector<ImVec2> line;
+      for (const Vec2& e : methods_[i].energy) line.push_back(point(e.x, e.y));
+      if (line.size() >= 2)
+        draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethodColors[i]), 0,
+                          (selected(i) ? 0.2f : 0.12f) * font);
+    }
+    ImGui::Dummy(ImVec2(axis + width, height));
+    ImGui::Text("t = 0 … %.3g s; grey: E/E0 = 1", endTime_);
+    for (std::size_t i = 0; i < methods_.size(); ++i) {  // the key, wrapped to the window's width
+      const std::string name(ode::integratorName(methods_[i].integrator.kind()));
+      if (i > 0) {
+        const float next =
+            ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(name.c_str()).x;
+        if (next < ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+      }
+      const Color c = kMethodColors[i];
+      ImGui::TextColored(ImVec4(c.r, c.g, c.b, 1.0f), "%s", name.c_str());
+    }
+    ImGui::End();
   }
   Real errorOf(const Method& m) const {
     return std::hypot(m.system.positions()[0] - m.system.exactPosition(time_),

@@ -10,7 +10,7 @@ class BoxesScene final : public lab::RagdollScene {
  public:
   std::string description() const override {
     return "Test 1: two boxes thrown at each other collide, fall and slide to a stop by friction (particle blue left, "
-           "constraint red right).";
+           "constraint purple right).";
   }
 
  protected:

@@ -8,7 +8,8 @@ namespace pba::lab {
 
 namespace {
 const Color kParticleColor = colors::kBlue;
-const Color kConstraintColor = colors::kRed;
+// Purple, not red: lecture mode keeps red for danger (a violated limit, the guard).
+const Color kConstraintColor = colors::kPurple;
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -19,7 +20,7 @@ RagdollScene::RagdollScene() {
   ragdoll::ParticleSettings& p = particleSettings_;
   rigid::WorldSettings& w = constraintSettings_.world;
   params_.choiceEnum("show", &shown_, {"both", "particle", "constraint"},
-                     "Draw both methods side by side (particle blue, left; constraint red, right) or one of them.");
+                     "Draw both methods side by side (particle blue, left; constraint purple, right) or one of them.");
   params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration (downwards). Earth 9.81.");
   params_.integer(
       "iterations", &p.iterations, 1, 50, "",

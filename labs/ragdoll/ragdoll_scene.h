@@ -1,6 +1,6 @@
 #pragma once
 // The base of the ragdoll lab's scenes (Ragdoll paper §5): one RagdollDesc built twice, side by side — the
-// particle ragdoll in blue on the left, the constraint ragdoll on the rigid module in red on the right
+// particle ragdoll in blue on the left, the constraint ragdoll on the rigid module in purple on the right
 // (`show` draws one of them) — with every solver knob of both as parameters, picking and dragging bones,
 // debug draw (particles and sticks, joint points, hinge axes and limit arcs, cones, contacts) and the
 // metrics under "ragdoll" with particle_ and constraint_ prefixes. Scenes only build their description.

@@ -59,7 +59,7 @@ class InclineScene final : public lab::WorldScene {
   }
   std::vector<std::string> defaultPlots() const override { return {"slide_distance_m", "expected_slide_distance_m"}; }
   std::optional<app::CameraView> preferredView() const override {
-    return app::CameraView{Vec3(0.0, 4.5, 0.0), 13.0, 0.35, 0.12};
+    return app::CameraView{Vec3(0.0, 4.5, 0.0), 17.0, 0.35, 0.12};  // the box at the top in view at 1280×720
   }
 
  private:

@@ -5,6 +5,7 @@
 // the check itself: the preset's own values over the defaults the window reported on arrival, the
 // pinhole camera model for a drag, the camera's rotate speed and zoom factor for orbit and wheel.
 #include <sys/wait.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -33,6 +34,17 @@ constexpr int kSkipped = 77;
 constexpr double kMaxCovered = 1.0 / 3.0;  // share of the scene's picture windows may cover in lecture mode
 
 bool near(double a, double b, double tolerance) { return std::abs(a - b) <= tolerance; }
+
+/// The lab's exercises that ran as stubs, from the last status the window wrote ("RIGID-1, RIGID-2");
+/// empty with the solutions or without a status.
+std::string stubbedExercises(const std::string& work) {
+  std::ifstream in(fs::path(work) / "status.json");
+  const json s = json::parse(in, nullptr, false);
+  std::string tags;
+  if (s.is_object() && s.contains("stubbed_exercises"))
+    for (const json& tag : s["stubbed_exercises"]) tags += (tags.empty() ? "" : ", ") + tag.get<std::string>();
+  return tags;
+}
 double vecAt(const json& v, int i) { return v.at(i).get<double>(); }
 bool hasWindow(const json& s, const std::string& part) {
   for (const auto& [name, rect] : windows(s))
@@ -483,13 +495,10 @@ json sceneWithHandle(LabWindow& lab, const std::vector<std::string>& list, doubl
   return handles.front();
 }
 
-// A left drag moves the picked object by the dragged distance: dx right and dy down on screen move it
+// A left drag moves the picked object `h` by the dragged distance: dx right and dy down on screen move it
 // by (dx right − dy up) × (metres per pixel at its depth) = 2 d tan(fov/2) / height, in the plane
 // facing the camera (the pinhole model, an independent route from the window's picking code).
-void checkDrag(const std::string& exe, const std::string& work) {
-  LabWindow lab(exe, {}, work);
-  pause(lab);  // a paused scene: only the drag moves anything
-  const json h = sceneWithHandle(lab, listScenes(exe), 30);
+void expectDragFollows(LabWindow& lab, const json& h) {
   const json s0 = lab.status();
   const double px = vecAt(h["pixel"], 0), py = vecAt(h["pixel"], 1);
   // 60 px across and 45 px up or down, toward the middle of the window (away from its edges).
@@ -498,8 +507,12 @@ void checkDrag(const std::string& exe, const std::string& work) {
   lab.frames(2);
   lab.press(1);
   const int handle = h["handle"];
-  lab.waitFor([handle](const json& s) { return !s["picked"].is_null() && s["picked"]["handle"] == handle; },
-              "the pick");
+  // A fresh pick (the status keeps the last one dragged): the button holds this object now.
+  lab.waitFor(
+      [handle](const json& s) {
+        return s.value("dragging", true) && !s["picked"].is_null() && s["picked"]["handle"] == handle;
+      },
+      "the pick");
   for (int i = 1; i <= 4; ++i) {
     lab.move(px + dx * i / 4, py + dy * i / 4);
     lab.frames(2);
@@ -508,12 +521,16 @@ void checkDrag(const std::string& exe, const std::string& work) {
   lab.release(1);
   lab.frames(2);
   const json& cam = s0["camera"];
+  // The cursor moves on the plane facing the camera through the picked surface point; the object keeps
+  // its offset from it, so it moves by the displacement at that plane's depth (its own centre's depth
+  // when the window does not report the plane).
+  const json& plane = s["picked"].contains("drag_plane_point") ? s["picked"]["drag_plane_point"] : h["position"];
   double p0[3], p1[3], moved[3], want[3], depth = 0.0;
   for (int k = 0; k < 3; ++k) {
     p0[k] = vecAt(h["position"], k);
     p1[k] = vecAt(s["picked"]["position"], k);
     moved[k] = p1[k] - p0[k];
-    depth += (p0[k] - vecAt(cam["eye"], k)) * vecAt(cam["forward"], k);
+    depth += (vecAt(plane, k) - vecAt(cam["eye"], k)) * vecAt(cam["forward"], k);
   }
   const double metresPerPixel = 2.0 * depth * std::tan(0.5 * cam["fov_y"].get<double>()) / vecAt(s0["viewport"], 1);
   double error = 0.0, length = 0.0, along = 0.0;
@@ -523,12 +540,68 @@ void checkDrag(const std::string& exe, const std::string& work) {
     length += want[k] * want[k];
     along += moved[k] * vecAt(cam["forward"], k);
   }
-  // 12 %: the pick point lies on the object's surface, nearer than its centre by up to its radius.
+  // 12 %: the slack of the cursor's whole pixels and of a running spring's lag (paused: none).
   std::printf("scene %s handle %d moved %.4f m, expected %.4f m, error %.4f m\n", s["scene"].get<std::string>().c_str(),
               handle, std::sqrt(moved[0] * moved[0] + moved[1] * moved[1] + moved[2] * moved[2]), std::sqrt(length),
               std::sqrt(error));
   expect(std::sqrt(error) <= 0.12 * std::sqrt(length), "the dragged object did not follow the cursor");
   expect(std::abs(along) <= 0.05 * std::sqrt(length), "the drag moved the object toward or away from the camera");
+}
+
+// The scene built most around dragging (sceneWithHandle): its object follows a left drag.
+void checkDrag(const std::string& exe, const std::string& work) {
+  LabWindow lab(exe, {}, work);
+  pause(lab);  // a paused scene: only the drag moves anything
+  expectDragFollows(lab, sceneWithHandle(lab, listScenes(exe), 30));
+  expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
+// Every scene of the lab with a dynamic body at its start has one on screen, and it follows a left drag
+// (the rigid lab: workbook §5 says "left-drag any body", the tumble box included).
+void checkDragEveryScene(const std::string& exe, const std::string& work) {
+  const std::vector<std::string> list = listScenes(exe);
+  LabWindow lab(exe, {}, work);
+  pause(lab);
+  for (size_t index = 0; index < list.size(); ++index) {
+    if (index > 0) {
+      lab.key("bracketright");
+      lab.waitFor([&](const json& s) { return s["scene"] == list[index]; }, "] to reach " + list[index]);
+    }
+    const json s = lab.frames(3);
+    if (s["handles"].empty()) {  // e.g. bullet: static walls until its first shot is fired
+      std::printf("scene %s: no dynamic body at its start, nothing to drag\n", list[index].c_str());
+      continue;
+    }
+    const bool anyInView =
+        std::any_of(s["handles"].begin(), s["handles"].end(), [](const json& h) { return h["visible"] == true; });
+    if (!anyInView) {  // bench-boxes: the bodies it reports, its highest, start above the picture
+      std::printf("scene %s: the bodies it reports are out of view at its start, not dragged\n", list[index].c_str());
+      continue;
+    }
+    const std::vector<json> handles = freeHandles(s, 30);
+    expect(!handles.empty(), list[index] + ": no draggable body on screen away from the panels");
+    expectDragFollows(lab, handles.front());
+  }
+  expect(lab.close() == 0, "the lab did not exit cleanly");
+}
+
+double heightOf(const json& s) { return vecAt(s["handles"].at(0)["position"], 1); }
+
+// The default scene (rigid: tumble) can be thrown again: once the box has landed (its centre below the
+// drop height's half), T lifts it back to the drop height and it falls and lands again, with no reset
+// (the step count keeps growing) and no guard pause.
+void checkThrowAgain(const std::string& exe, const std::string& work) {
+  LabWindow lab(exe, {}, work);
+  const json start = lab.frames(2);
+  if (start["handles"].empty()) throw NothingToCheck("the default scene reports no draggable body");
+  const double drop = start["params"]["height"];
+  lab.waitFor([&](const json& s) { return heightOf(s) < 0.5 * drop; }, "the box to land");
+  const long steps = lab.status()["steps"];
+  lab.key("t");
+  const json thrown = lab.waitFor([&](const json& s) { return heightOf(s) > 0.9 * drop; }, "T to throw the box again");
+  expect(thrown["steps"].get<long>() >= steps, "T reset the scene's clock instead of throwing again");
+  lab.waitFor([&](const json& s) { return heightOf(s) < 0.5 * drop; }, "the box to land again");
+  expect(lab.status()["guard"].get<std::string>().empty(), "the guard paused the second throw");
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 
@@ -703,6 +776,8 @@ const std::map<std::string, Check> kChecks = {{"pause", checkPause},
                                               {"tab", checkTab},
                                               {"frame", checkFrame},
                                               {"drag", checkDrag},
+                                              {"drag-every-scene", checkDragEveryScene},
+                                              {"throw-again", checkThrowAgain},
                                               {"orbit-zoom", checkOrbitAndZoom},
                                               {"bad-scene-file", checkBadSceneFile},
                                               {"lecture-layout", checkLectureLayout},
@@ -730,6 +805,12 @@ int main(int argc, char** argv) {
     std::cout << "SKIPPED [" << argv[1] << "]: " << e.what() << '\n';
     return kSkipped;
   } catch (const std::exception& e) {
+    // In a hand-out a check whose scene ran stubbed exercises may fail for that (the stubbed cloth falls
+    // through the floor): it is skipped, naming them (docs/architecture.md §5), never failed.
+    if (const std::string tags = stubbedExercises(work); !tags.empty()) {
+      std::cout << "SKIPPED [" << argv[1] << "]: needs " << tags << " (with them stubbed: " << e.what() << ")\n";
+      return kSkipped;
+    }
     std::cout << "FAIL [" << argv[1] << "]: " << e.what() << '\n';
     return 1;
   }
