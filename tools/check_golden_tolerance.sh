@@ -85,7 +85,8 @@ echo "== ./pba grade ${tags[*]}"
 bash "$src/tools/grade.sh" "$tests_dir" "$src/resources/exercises.tsv" "${tags[@]}" || { echo "FAIL: grade"; exit 1; }
 if [[ "$suite" == --suite ]]; then
   echo "== the hand-out's suite with these solutions"
-  not_in_handout='^(exercises\.(student-release|catalog|golden-tolerance)|repository\.(formatted|builds-with-clang14))$'
+  # shellcheck source=tools/not_in_handout.sh
+  source "$src/tools/not_in_handout.sh"
   skip_labels='^(ui|lab-screenshots|display|extremes|coursework|web)$'
   [[ "${PBA_SUITE_ALL:-0}" == 1 ]] && skip_labels='^(ui|lab-screenshots|display|coursework|web)$'
   PBA_GOLDEN_COMPARE=tolerance ctest --test-dir "$tests_dir" -E "$not_in_handout" -LE "$skip_labels" -j "$jobs" \
