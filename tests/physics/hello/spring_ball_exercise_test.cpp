@@ -104,9 +104,9 @@ int substepsUnderConstantForce(const SpringDesc& desc, Real dt, const Vec3& forc
 }
 
 TEST(HELLO_4_SpringBallSubsteps, AConstantForceFrameIsTheSummedRecurrenceOfTheFewestStableSubsteps) {
-  // ω = √(50/2) = 5 rad/s, dt = 0.3 s: ω dt / 0.2 = 7.5, so 8 substeps of 0.0375 s (7 would give
-  // ω h = 0.214 > 0.2). Under a constant force the end of the frame is the closed form with n = 8.
-  const SpringDesc desc = springWithRates(50.0, 2.0, 0.0, 0.0);
+  // ω = √(60/2) = 5.477 rad/s, dt = 0.3 s: ω dt / 0.05 = 32.86, so 33 substeps (32 would give
+  // ω h = 0.0513 > 0.05). Under a constant force the end of the frame is the closed form with n = 33.
+  const SpringDesc desc = springWithRates(60.0, 2.0, 0.0, 0.0);
   const Vec3 force{1.0, -19.6, 0.5};
   const BallState s0{{1.0, 2.0, 3.0}, {0.5, -1.0, 2.0}};
   std::vector<BallState> seen;
@@ -114,26 +114,26 @@ TEST(HELLO_4_SpringBallSubsteps, AConstantForceFrameIsTheSummedRecurrenceOfTheFe
     seen.push_back(b);
     return force;
   });
-  ASSERT_EQ(seen.size(), 8u);
+  ASSERT_EQ(seen.size(), 33u);
   EXPECT_EQ(seen.front().position, s0.position);  // the first force is taken at the frame's start
   EXPECT_EQ(seen.front().velocity, s0.velocity);
-  const BallState expected = symplecticClosedForm(s0, force / desc.mass, 0.3 / 8.0, 8);
-  // Eight substeps of O(10) values: rounding well under 1e-12.
+  const BallState expected = symplecticClosedForm(s0, force / desc.mass, 0.3 / 33.0, 33);
+  // 33 substeps of O(10) values: rounding well under 1e-12.
   EXPECT_VEC3_NEAR(s.position, expected.position, 1e-12);
   EXPECT_VEC3_NEAR(s.velocity, expected.velocity, 1e-12);
   // Each later force sees the state the recurrence reached after the substeps before it.
-  for (int n = 1; n < 8; ++n) {
+  for (int n = 1; n < 33; ++n) {
     SCOPED_TRACE("substep " + std::to_string(n));
-    const BallState mid = symplecticClosedForm(s0, force / desc.mass, 0.3 / 8.0, n);
+    const BallState mid = symplecticClosedForm(s0, force / desc.mass, 0.3 / 33.0, n);
     EXPECT_VEC3_NEAR(seen[static_cast<std::size_t>(n)].position, mid.position, 1e-12);
   }
 }
 
 TEST(HELLO_4_SpringBallSubsteps, DampingAndDragLimitTheSubstepWhenTheyAreTheFasterRate) {
-  // ω = 1 rad/s but (c_s + c)/m = (3.2 + 1)/1 = 4.2 /s: 4.2 × 0.25 / 0.2 = 5.25, so 6 substeps.
-  EXPECT_EQ(substepsUnderConstantForce(springWithRates(1.0, 1.0, 3.2, 1.0), 0.25, Vec3(0.0, -9.8, 0.0)), 6);
-  // The same spring without damping or drag: ω dt = 0.25 > 0.2, and 0.25 / 0.2 = 1.25 → 2 substeps.
-  EXPECT_EQ(substepsUnderConstantForce(springWithRates(1.0, 1.0, 0.0, 0.0), 0.25, Vec3(0.0, -9.8, 0.0)), 2);
+  // ω = 1 rad/s but (c_s + c)/m = (3.3 + 1)/1 = 4.3 /s: 4.3 × 0.26 / 0.05 = 22.36, so 23 substeps.
+  EXPECT_EQ(substepsUnderConstantForce(springWithRates(1.0, 1.0, 3.3, 1.0), 0.26, Vec3(0.0, -9.8, 0.0)), 23);
+  // The same spring without damping or drag: ω dt / 0.05 = 0.26 / 0.05 = 5.2, so 6 substeps.
+  EXPECT_EQ(substepsUnderConstantForce(springWithRates(1.0, 1.0, 0.0, 0.0), 0.26, Vec3(0.0, -9.8, 0.0)), 6);
 }
 
 TEST(HELLO_4_SpringBallSubsteps, TheSceneDefaultsNeedOneSubstepAndAnAbsurdFrameIsCapped) {
@@ -151,10 +151,10 @@ TEST(HELLO_4_SpringBallSubsteps, TheSceneDefaultsNeedOneSubstepAndAnAbsurdFrameI
 
 TEST(HELLO_4_SpringBallSubsteps, AStiffSpringKeepsItsModifiedEnergyWhereOneStepWouldExplode) {
   // Workbook §6.6: on ẍ = −ω² x symplectic Euler with step h conserves ω²x² + v² − h ω² x v exactly, and
-  // is unstable for ω h > 2. Here ω = 10 rad/s and dt = 0.31 s (ω dt = 3.1: one step per frame would
-  // grow without bound); 3.1 / 0.2 = 15.5 gives 16 substeps of h = dt/16, on every axis. The force is the
-  // test's own linear spring about the origin (no gravity, no damping).
-  const Real k = 100.0, m = 1.0, omega = 10.0, dt = 0.31, h = dt / 16.0;
+  // is unstable for ω h > 2. Here ω = 10 rad/s and dt = 0.3125 s (ω dt = 3.125: one step per frame would
+  // grow without bound); 3.125 / 0.05 = 62.5 gives 63 substeps of h = dt/63, on every axis. The force is
+  // the test's own linear spring about the origin (no gravity, no damping).
+  const Real k = 100.0, m = 1.0, omega = 10.0, dt = 0.3125, h = dt / 63.0;
   const SpringDesc desc = springWithRates(k, m, 0.0, 0.0);
   auto modified = [&](const BallState& s) {
     Real sum = 0.0;
@@ -168,7 +168,7 @@ TEST(HELLO_4_SpringBallSubsteps, AStiffSpringKeepsItsModifiedEnergyWhereOneStepW
   const Real invariant = modified(s);
   for (int frame = 0; frame < 200; ++frame) {
     s = stepSpringBall(desc, s, dt, [&](const BallState& b) { return -k * b.position; });
-    // Rounding only: a few ulps of O(50) per substep, summed over 3200 substeps.
+    // Rounding only: a few ulps of O(50) per substep, summed over 12600 substeps.
     ASSERT_NEAR(modified(s), invariant, 1e-9) << "frame " << frame;
   }
   EXPECT_NE(s.position.x, 0.7);  // the ball moved
