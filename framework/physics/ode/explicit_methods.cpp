@@ -16,20 +16,18 @@ using detail::endGenericStep;
 void explicitEulerStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unused]] Real h,
                        [[maybe_unused]] Workspace& w) {
   // BEGIN SOLUTION
-  const std::size_t n = system.dofCount();
-  Workspace::fit(n, {&w.k1});
-  const Real t = system.time();
-  const std::span<Real> q = system.positions();
-  const std::span<Real> v = system.velocities();
+  Workspace::fit(system.dofCount(), {&w.k1});
+  const Real start = system.time();
+  const std::span<Real> positions = system.positions(), velocities = system.velocities();
+  system.force(start, positions, velocities, w.k1);  // f(t, q, v) [N] at the start of the step
   const std::span<const Real> inverseMass = system.inverseMasses();
-  system.force(t, q, v, w.k1);  // f(t, q, v) [N] at the start of the step
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < positions.size(); ++i) {
     const Real acceleration = w.k1[i] * inverseMass[i];  // v̇ = M⁻¹ f: 0 on a pinned coordinate
-    q[i] += h * v[i];                                    // q̇ = v, before v changes
-    v[i] += h * acceleration;
+    positions[i] += h * velocities[i];                   // q̇ = v, before v changes
+    velocities[i] += h * acceleration;
   }
   system.stateChanged();
-  system.setTime(t + h);
+  system.setTime(start + h);
   // END SOLUTION
   // STUB: exercises::markNotImplemented("PART-1");  // the state and the time stay where they are
 }
