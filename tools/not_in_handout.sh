@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # The ctest names (a regular expression) of the tests that only this repository has: the checks of the
 # exercise machinery itself, the marking check, the house style. Sourced by tools/check_student_release.sh
 # and tools/check_golden_tolerance.sh, which run the hand-out's suite without them.
