@@ -3,8 +3,8 @@
 # (docs/decisions/2026-12-02-golden-trajectories-bit-for-bit-or-within-tolerance.md): builds a copy of this tree in
 # which some exercises are solved in another, equally correct form (tools/golden_alternatives/ TAG.inc, the lines of
 # TAG's solution block: CLOTH-2 with std::fma and glm::normalize, PART-4 and PART-5 reordered, RIGID-2 through another
-# formula), and runs this build's tests against the copy's physics library (LD_LIBRARY_PATH, as
-# tools/check_student_release.sh):
+# formula; a fast path of TAG becomes its stub, the scalar sweep over the alternative, as in the hand-out), and runs
+# this build's tests against the copy's physics library (LD_LIBRARY_PATH, as tools/check_student_release.sh):
 #  1. the goldens bit for bit (PBA_GOLDEN_COMPARE=exact): reported, expected to differ (the alternatives
 #     round otherwise, so the check below is not vacuous);
 #  2. the goldens within their tolerances (PBA_GOLDEN_COMPARE=tolerance, as in the hand-out): must pass;
@@ -59,6 +59,27 @@ for tag in tags:
             break
     if not done:
         sys.exit(f"FAIL: no solution block with a {tag} stub")
+    # A fast path of TAG (// FAST PATH: TAG after its block) runs the student's scalar code in the hand-out:
+    # its stub lines replace it here too, as tools/student_release.sh does, so that the copy's fast path is
+    # the alternative's and the tests that compare the two see the hand-out's pairing.
+    for d, _, files in os.walk(os.path.join(tree, "framework")):
+        for name in files:
+            path = os.path.join(d, name)
+            if not name.endswith(".cpp"):
+                continue
+            lines = open(path, encoding="utf-8").read().split("\n")
+            marks = [i for i, line in enumerate(lines) if re.match(rf"\s*// FAST PATH: {tag}\b", line)]
+            for i in reversed(marks):
+                end = max(k for k in range(i) if "// END SOLUTION" in lines[k])
+                begin = max(k for k in range(end) if "// BEGIN SOLUTION" in lines[k])
+                last = i + 1
+                while last < len(lines) and "// STUB: " in lines[last]:
+                    last += 1
+                stub = [line.replace("// STUB: ", "", 1) for line in lines[i + 1:last]]
+                lines[begin:last] = stub
+                print(f"   {tag}: {os.path.relpath(path, tree)}'s fast path runs the alternative, as in the hand-out")
+            if marks:
+                open(path, "w", encoding="utf-8").write("\n".join(lines))
 PY
 started=$SECONDS
 (cd "$tree" && cmake --preset release -DPBA_BUILD_BENCH=OFF "-DPBA_CCACHE_DIR=$cache" >"$work/configure.log" 2>&1) ||
@@ -86,7 +107,8 @@ echo "== ./pba grade ${tags[*]}"
 bash "$src/tools/grade.sh" "$tests_dir" "$src/resources/exercises.tsv" "${tags[@]}" || { echo "FAIL: grade"; exit 1; }
 if [[ "$suite" == --suite ]]; then
   echo "== the hand-out's suite with these solutions"
-  not_in_handout='^(exercises\.(student-release|catalog|golden-tolerance)|repository\.(formatted|builds-with-clang14))$'
+  # shellcheck source=tools/not_in_handout.sh
+  source "$src/tools/not_in_handout.sh"
   skip_labels='^(ui|lab-screenshots|display|extremes|coursework|web)$'
   [[ "${PBA_SUITE_ALL:-0}" == 1 ]] && skip_labels='^(ui|lab-screenshots|display|coursework|web)$'
   PBA_GOLDEN_COMPARE=tolerance ctest --test-dir "$tests_dir" -E "$not_in_handout" -LE "$skip_labels" -j "$jobs" \

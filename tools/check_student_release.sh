@@ -32,7 +32,8 @@ work="$(cd "$work" && pwd)"
 [[ -f "$build/lib/libpba_physics.so" ]] ||
   { echo "FAIL: $build/lib/libpba_physics.so not found (configure with PBA_PHYSICS_SHARED=ON, the default)"; exit 1; }
 # Tests that only this repository has (the checks of the exercise machinery itself, the house style).
-not_in_handout='^(exercises\.(student-release|catalog|golden-tolerance)|coursework\.mark|repository\.(formatted|builds-with-clang14))$'
+# shellcheck source=tools/not_in_handout.sh
+source "$src/tools/not_in_handout.sh"
 # The nested ctest runs read this build's test lists from a copy, so that their logs (Testing/) stay out
 # of the build's own; the tests themselves run as registered (this check is RUN_SERIAL: nothing runs beside).
 tests_dir="$work/ctest"

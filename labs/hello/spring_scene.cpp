@@ -1,6 +1,6 @@
 // Hello lab, scene "spring": a ball hanging from a damped spring (Lobb notes, damped spring force).
 // Drag the ball with the left mouse button, let go and watch the oscillation decay. The force is HELLO-3,
-// the step HELLO-4's symplectic Euler, the plotted energy HELLO-5.
+// the frame HELLO-4's stable substeps of symplectic Euler, the plotted energy HELLO-5.
 #include <cmath>
 #include <cstdio>
 
@@ -39,7 +39,8 @@ class SpringScene final : public app::Scene {
   }
   void step(Real dt) override {
     if (dragging_) return;
-    state_ = hello::symplecticEulerStep(state_, hello::springBallForce(desc_, state_) / desc_.mass, dt);
+    state_ = hello::stepSpringBall(desc_, state_, dt,
+                                   [this](const hello::BallState& s) { return hello::springBallForce(desc_, s); });
   }
   void draw(DebugDraw& d) const override {
     d.box(desc_.anchor + Vec3(0, 0.06, 0), Vec3(0.3, 0.06, 0.3), Quat(1, 0, 0, 0), colors::kGrey);

@@ -41,9 +41,10 @@ Quat slerp(const Quat& q0, const Quat& q1In, Real u) {
 // Inputs: four unit keys on one hemisphere (q1 and q2 bound the segment, q0 and q3 are their neighbours
 // when hasPrevious / hasNext), and u ∈ [0, 1] (the segment's own parameter, not seconds).
 // (1) The inner control point of a key with both neighbours: in that key's own frame, take the logarithms
-//     (quatLog) of the rotations to its two neighbours; the control point turns the key by minus a quarter
-//     of their sum, mapped back with quatExp (workbook §7.2). A key at an end of the channel is its own
-//     control point.
+//     (quatLog) of the rotations to its two neighbours. Work out from workbook §7.2 which multiple of
+//     their sum, mapped back with quatExp and applied to the key, gives a curve that leaves the key in the
+//     direction it arrived (the condition the section derives it from). A key at an end of the channel is
+//     its own control point.
 // (2) Bring the second control point to the hemisphere of the first.
 // (3) Interpolate twice along great arcs (slerp): once between the keys, once between the control points,
 //     both at u; then between those two results with the weight of workbook §7.2, which vanishes at both

@@ -123,14 +123,23 @@ Vec3 springBallForce(const SpringDesc& d, const BallState& s) {
   // STUB: return exercises::notImplemented("HELLO-3", Vec3(0.0), d, s);
 }
 
-BallState symplecticEulerStep(const BallState& state, const Vec3& acceleration, Real h) {
+BallState stepSpringBall(const SpringDesc& d, const BallState& state, Real dt, const SpringBallForce& force) {
   // BEGIN SOLUTION
-  BallState next;
-  next.velocity = state.velocity + h * acceleration;
-  next.position = state.position + h * next.velocity;
-  return next;
+  const Real omega = std::sqrt(d.stiffness / d.mass);      // [rad/s] natural angular frequency
+  const Real dampingRate = (d.damping + d.drag) / d.mass;  // [1/s]
+  const Real fastest = std::max(omega, dampingRate);
+  const Real needed = std::ceil(fastest * dt / kMaxRateTimesSubstep);
+  const int substeps = static_cast<int>(std::clamp(needed, 1.0, static_cast<Real>(kMaxSpringSubsteps)));
+  const Real h = dt / substeps;
+  BallState s = state;
+  for (int i = 0; i < substeps; ++i) {
+    const Vec3 acceleration = force(s) / d.mass;
+    s.velocity += h * acceleration;  // velocity first ...
+    s.position += h * s.velocity;    // ... then the position with the new velocity
+  }
+  return s;
   // END SOLUTION
-  // STUB: return exercises::notImplemented("HELLO-4", state, acceleration, h);
+  // STUB: return exercises::notImplemented("HELLO-4", state, d, dt, force);
 }
 
 Real springExtension(const SpringDesc& d, const BallState& s) {
@@ -150,7 +159,7 @@ Real springEnergy(const SpringDesc& d, const BallState& s) {
 
 // Start-up probes: tell the lab whether HELLO-3, HELLO-4 and HELLO-5 are still stubs.
 PBA_EXERCISE_PROBE(springBallForce(SpringDesc{}, BallState{}));
-PBA_EXERCISE_PROBE(symplecticEulerStep(BallState{}, Vec3(0.0), 0.01));
+PBA_EXERCISE_PROBE(stepSpringBall(SpringDesc{}, BallState{}, 0.01, [](const BallState&) { return Vec3(0.0); }));
 PBA_EXERCISE_PROBE(springEnergy(SpringDesc{}, BallState{}));
 
 BallState springEquilibrium(const SpringDesc& d) {

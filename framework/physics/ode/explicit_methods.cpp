@@ -1,6 +1,8 @@
-// Generic explicit methods on any OdeSystem: explicit Euler and RK4 (Lobb notes, "ODE view"). Midpoint (RK2,
-// PART-7) works on the split s = (q, v) in place: second_order_methods.cpp.
+// The explicit methods of the Lobb notes' "ODE view": explicit Euler (PART-1) on a second-order system's split
+// s = (q, v) in place, its derivative assembled from the forces; RK4 (PART-3) on any OdeSystem. Midpoint
+// (RK2, PART-7) works on the split in place too: second_order_methods.cpp.
 #include <cstddef>
+#include <span>
 
 #include "physics/exercises/not_implemented.h"
 #include "physics/ode/integrators.h"
@@ -11,13 +13,21 @@ namespace pba::ode {
 using detail::beginGenericStep;
 using detail::endGenericStep;
 
-void explicitEulerStep(OdeSystem& system, [[maybe_unused]] Real h, Workspace& w) {
-  const std::size_t n = system.stateSize();
-  Workspace::fit(n, {&w.k1});
+void explicitEulerStep([[maybe_unused]] SecondOrderSystem& system, [[maybe_unused]] Real h,
+                       [[maybe_unused]] Workspace& w) {
   // BEGIN SOLUTION
-  const Real t = beginGenericStep(system, w);  // s in w.s, f(s, t) in w.k1
-  for (std::size_t i = 0; i < n; ++i) w.s[i] += h * w.k1[i];
-  endGenericStep(system, w, t + h);
+  Workspace::fit(system.dofCount(), {&w.k1});
+  const Real start = system.time();
+  const std::span<Real> positions = system.positions(), velocities = system.velocities();
+  system.force(start, positions, velocities, w.k1);  // f(t, q, v) [N] at the start of the step
+  const std::span<const Real> inverseMass = system.inverseMasses();
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Real acceleration = w.k1[i] * inverseMass[i];  // v̇ = M⁻¹ f: 0 on a pinned coordinate
+    positions[i] += h * velocities[i];                   // q̇ = v, before v changes
+    velocities[i] += h * acceleration;
+  }
+  system.stateChanged();
+  system.setTime(start + h);
   // END SOLUTION
   // STUB: exercises::markNotImplemented("PART-1");  // the state and the time stay where they are
 }

@@ -73,32 +73,40 @@ struct Workspace {
 };
 
 // ----- Generic methods: any OdeSystem (state copied out, advanced, copied back) -----
-
-// ***** PART-1: explicit Euler (Lobb notes, "ODE view": Euler) *****
-// One step of length h [s] of the system's first-order ODE ds/dt = f(s, t), the state s being every
-// position and velocity the system exposes (getState/setState), the clock its time [s].
-// (1) Decide where in the step explicit Euler takes its slope, and get that slope from the system.
-// (2) Move every component of the state along the slope for the length of the step.
-// (3) Leave the system with its new state AND its clock advanced by the step.
-// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() reads the state and
-// the first slope into w.s and w.k1, endGenericStep() writes back and advances the clock.)
-// Check: on ds/dt = λ s one step multiplies s by a factor you can work out by hand; halving h halves the
-// error after a fixed time (first order: the convergence test measures it).
-// *****
-void explicitEulerStep(OdeSystem& system, Real h, Workspace& w);
+// (explicit Euler, PART-1, works on the split s = (q, v) in place: it is with the methods below.)
 
 // ***** PART-3: classical Runge–Kutta 4 (Lobb notes, RK4) *****
-// One step of length h [s] of ds/dt = f(s, t) on the system's whole state (as PART-1).
+// One step of length h [s] of ds/dt = f(s, t) on the system's whole state s (getState/setState), its
+// clock the system's time [s].
 // (1) Four slopes, each taken at a trial state built from the previous slope: at the start of the step,
 //     twice at its middle, and at its end. Work out each trial state and its time. (The notes scale each
 //     slope by h; here a slope is the derivative itself, so h multiplies when you use it.)
 // (2) Combine the four with RK4's weights (Simpson's rule) into the step.
-// (3) Write the state back and advance the clock by h (beginGenericStep/endGenericStep as in PART-1).
+// (3) Write the state back and advance the clock by h.
+// (ode/step_helpers.h has the helpers every generic method uses: beginGenericStep() reads the state and
+// the first slope into w.s and w.k1, endGenericStep() writes back and advances the clock.)
 // Check: exact when ds/dt is a polynomial in t alone of degree ≤ 3; halving h divides the error by 16.
 // *****
 void rk4Step(OdeSystem& system, Real h, Workspace& w);
 
 // ----- Methods that use the split s = (q, v) of a SecondOrderSystem (in place) -----
+
+// ***** PART-1: the ODE view and its Euler step (Lobb notes, "ODE view": Euler; "Solver/state separation") *****
+// One explicit Euler step of length h [s] of a second-order system seen as the first-order ODE
+// ds/dt = f(s, t): the state s = (q, v) is its positions q [m] (or rad) and velocities v [m/s], both
+// the system's own arrays (positions(), velocities(), n = dofCount() values each, updated in place).
+// (1) Assemble the state derivative at the start of the step from what the system knows: the rate of
+//     change of q is one of the state's own halves (which?); that of v comes from the generalised force
+//     f(t, q, v) [N] (force(), into a scratch array of the workspace sized with Workspace::fit) and the
+//     inverse masses M⁻¹ [1/kg] (inverseMasses(); 0 on a pinned coordinate, which must not accelerate).
+// (2) Move every coordinate and every velocity along its slope for the length of the step. Every slope
+//     must be the one of the START of the step: mind the order in which you overwrite q and v.
+// (3) Tell the system its state changed (stateChanged()) and advance its clock (setTime) by h.
+// Check: on ẍ = −ω²x one step is the first-degree Taylor polynomial of the exact rotation and multiplies
+// the energy by exactly 1 + (ωh)²; a pinned coordinate under a force stays put; halving h halves the
+// error after a fixed time (first order).
+// *****
+void explicitEulerStep(SecondOrderSystem& system, Real h, Workspace& w);
 
 // ***** PART-2: symplectic (semi-implicit) Euler (Lobb notes, "simple loop"; CMU asst4 pendulum) *****
 // One step of length h [s] of a second-order system: positions q [m], velocities v [m/s], accelerations

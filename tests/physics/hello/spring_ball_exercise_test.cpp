@@ -1,9 +1,11 @@
-// Exercise tests of the hello lab's spring ball: HELLO-3 (its forces), HELLO-4 (the symplectic Euler step)
+// Exercise tests of the hello lab's spring ball: HELLO-3 (its forces), HELLO-4 (one frame in stable substeps)
 // and HELLO-5 (its energy). Each suite calls its own exercise only; expected values come from potentials
 // differentiated numerically, closed forms of the discrete recurrences (workbook chapter 0, §6.5–6.6) and
 // invariants. springEquilibrium() is library code (the closed form k (l − L) = m g), not an exercise.
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -69,7 +71,7 @@ TEST(HELLO_3_SpringBallForce, VanishesAtTheEquilibriumAndStaysFiniteOnTheAnchor)
                    Vec3(0.0, -desc.mass * desc.gravity, 0.0) - desc.drag * onAnchor.velocity, 1e-12);
 }
 
-// ----- HELLO-4: the symplectic Euler step -----
+// ----- HELLO-4: one frame of the spring ball in stable substeps -----
 
 // Closed form of the symplectic Euler recurrence under a constant acceleration a: v_n = v0 + n h a and
 // x_n = x0 + h (v_1 + … + v_n) = x0 + n h v0 + h² a n(n+1)/2.
@@ -78,40 +80,98 @@ BallState symplecticClosedForm(const BallState& s0, const Vec3& a, Real h, int n
           s0.velocity + Real(n) * h * a};
 }
 
-TEST(HELLO_4_SymplecticEuler, ConstantAccelerationMatchesTheSummedRecurrence) {
+/// A spring whose rates the test chooses: stiffness k and mass m give ω = √(k/m), damping + drag over m
+/// the damping rate. The force the frame integrates is the test's own, so HELLO-3 is not involved.
+SpringDesc springWithRates(Real stiffness, Real mass, Real damping, Real drag) {
+  SpringDesc desc;
+  desc.stiffness = stiffness;
+  desc.mass = mass;
+  desc.damping = damping;
+  desc.drag = drag;
+  return desc;
+}
+
+/// Runs one frame under a constant force and returns how many times the force was asked for.
+int substepsUnderConstantForce(const SpringDesc& desc, Real dt, const Vec3& force, BallState* end = nullptr) {
   const BallState s0{{1.0, 2.0, 3.0}, {0.5, -1.0, 2.0}};
-  const Vec3 a{0.0, -9.81, 1.0};
-  for (const Real h : {0.1, 0.01}) {
-    BallState s = s0;
-    Real worst = 0.0;
-    for (int n = 1; n <= 50; ++n) {
-      s = symplecticEulerStep(s, a, h);
-      const BallState expected = symplecticClosedForm(s0, a, h, n);
-      worst =
-          std::max({worst, glm::length(s.position - expected.position), glm::length(s.velocity - expected.velocity)});
-    }
-    // 50 steps of O(10) values: rounding well under 1e-12.
-    EXPECT_LT(worst, 1e-12) << "h " << h;
-    EXPECT_GT(glm::length(s.velocity - s0.velocity), 0.0) << "h " << h;  // the state moved
+  int calls = 0;
+  const BallState s = stepSpringBall(desc, s0, dt, [&](const BallState&) {
+    ++calls;
+    return force;
+  });
+  if (end) *end = s;
+  return calls;
+}
+
+TEST(HELLO_4_SpringBallSubsteps, AConstantForceFrameIsTheSummedRecurrenceOfTheFewestStableSubsteps) {
+  // ω = √(60/2) = 5.477 rad/s, dt = 0.3 s: ω dt / 0.05 = 32.86, so 33 substeps (32 would give
+  // ω h = 0.0513 > 0.05). Under a constant force the end of the frame is the closed form with n = 33.
+  const SpringDesc desc = springWithRates(60.0, 2.0, 0.0, 0.0);
+  const Vec3 force{1.0, -19.6, 0.5};
+  const BallState s0{{1.0, 2.0, 3.0}, {0.5, -1.0, 2.0}};
+  std::vector<BallState> seen;
+  const BallState s = stepSpringBall(desc, s0, 0.3, [&](const BallState& b) {
+    seen.push_back(b);
+    return force;
+  });
+  ASSERT_EQ(seen.size(), 33u);
+  EXPECT_EQ(seen.front().position, s0.position);  // the first force is taken at the frame's start
+  EXPECT_EQ(seen.front().velocity, s0.velocity);
+  const BallState expected = symplecticClosedForm(s0, force / desc.mass, 0.3 / 33.0, 33);
+  // 33 substeps of O(10) values: rounding well under 1e-12.
+  EXPECT_VEC3_NEAR(s.position, expected.position, 1e-12);
+  EXPECT_VEC3_NEAR(s.velocity, expected.velocity, 1e-12);
+  // Each later force sees the state the recurrence reached after the substeps before it.
+  for (int n = 1; n < 33; ++n) {
+    SCOPED_TRACE("substep " + std::to_string(n));
+    const BallState mid = symplecticClosedForm(s0, force / desc.mass, 0.3 / 33.0, n);
+    EXPECT_VEC3_NEAR(seen[static_cast<std::size_t>(n)].position, mid.position, 1e-12);
   }
 }
 
-TEST(HELLO_4_SymplecticEuler, KeepsTheModifiedEnergyOfTheOscillatorExactly) {
-  // Workbook §6.6: on ẍ = −ω² x symplectic Euler conserves ω²x² + v² − h ω² x v exactly, so the true
-  // energy never drifts; explicit Euler would multiply it by 1 + ω²h² every step (×1.04 per step here).
-  const Real omega = 6.0, h = 0.03;
+TEST(HELLO_4_SpringBallSubsteps, DampingAndDragLimitTheSubstepWhenTheyAreTheFasterRate) {
+  // ω = 1 rad/s but (c_s + c)/m = (3.3 + 1)/1 = 4.3 /s: 4.3 × 0.26 / 0.05 = 22.36, so 23 substeps.
+  EXPECT_EQ(substepsUnderConstantForce(springWithRates(1.0, 1.0, 3.3, 1.0), 0.26, Vec3(0.0, -9.8, 0.0)), 23);
+  // The same spring without damping or drag: ω dt / 0.05 = 0.26 / 0.05 = 5.2, so 6 substeps.
+  EXPECT_EQ(substepsUnderConstantForce(springWithRates(1.0, 1.0, 0.0, 0.0), 0.26, Vec3(0.0, -9.8, 0.0)), 6);
+}
+
+TEST(HELLO_4_SpringBallSubsteps, TheSceneDefaultsNeedOneSubstepAndAnAbsurdFrameIsCapped) {
+  // The scene's spring (ω = √40 = 6.32 rad/s, (0.6 + 0.05)/1 /s) at dt = 1/240 s: ω dt = 0.026, one
+  // substep, which is one symplectic Euler step of the whole frame.
+  BallState end;
+  const Vec3 force{0.3, -9.0, 0.1};
+  ASSERT_EQ(substepsUnderConstantForce(SpringDesc{}, 1.0 / 240.0, force, &end), 1);
+  const BallState expected = symplecticClosedForm({{1.0, 2.0, 3.0}, {0.5, -1.0, 2.0}}, force, 1.0 / 240.0, 1);
+  EXPECT_VEC3_NEAR(end.position, expected.position, 1e-14);
+  EXPECT_VEC3_NEAR(end.velocity, expected.velocity, 1e-14);
+  // ω = √(10⁶/10⁻³) ≈ 31623 rad/s over 1 s would want 158114 substeps: capped.
+  EXPECT_EQ(substepsUnderConstantForce(springWithRates(1e6, 1e-3, 0.0, 0.0), 1.0, Vec3(0.0)), kMaxSpringSubsteps);
+}
+
+TEST(HELLO_4_SpringBallSubsteps, AStiffSpringKeepsItsModifiedEnergyWhereOneStepWouldExplode) {
+  // Workbook §6.6: on ẍ = −ω² x symplectic Euler with step h conserves ω²x² + v² − h ω² x v exactly, and
+  // is unstable for ω h > 2. Here ω = 10 rad/s and dt = 0.3125 s (ω dt = 3.125: one step per frame would
+  // grow without bound); 3.125 / 0.05 = 62.5 gives 63 substeps of h = dt/63, on every axis. The force is
+  // the test's own linear spring about the origin (no gravity, no damping).
+  const Real k = 100.0, m = 1.0, omega = 10.0, dt = 0.3125, h = dt / 63.0;
+  const SpringDesc desc = springWithRates(k, m, 0.0, 0.0);
   auto modified = [&](const BallState& s) {
-    return omega * omega * s.position.x * s.position.x + s.velocity.x * s.velocity.x -
-           h * omega * omega * s.position.x * s.velocity.x;
+    Real sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+      const Real x = s.position[i], v = s.velocity[i];
+      sum += omega * omega * x * x + v * v - h * omega * omega * x * v;
+    }
+    return sum;
   };
-  BallState s{{0.7, 0.0, 0.0}, {-0.4, 0.0, 0.0}};
+  BallState s{{0.7, -0.2, 0.1}, {-0.4, 0.3, 0.0}};
   const Real invariant = modified(s);
-  for (int n = 0; n < 2000; ++n) {
-    s = symplecticEulerStep(s, Vec3(-omega * omega * s.position.x, 0.0, 0.0), h);
-    // Rounding only: a few ulps of O(20) per step, summed over 2000 steps.
-    ASSERT_NEAR(modified(s), invariant, 1e-10) << "step " << n;
+  for (int frame = 0; frame < 200; ++frame) {
+    s = stepSpringBall(desc, s, dt, [&](const BallState& b) { return -k * b.position; });
+    // Rounding only: a few ulps of O(50) per substep, summed over 12600 substeps.
+    ASSERT_NEAR(modified(s), invariant, 1e-9) << "frame " << frame;
   }
-  EXPECT_NE(s.position.x, 0.7);  // the oscillator moved
+  EXPECT_NE(s.position.x, 0.7);  // the ball moved
 }
 
 // ----- HELLO-5: the spring ball's energy -----

@@ -2,10 +2,13 @@
 // PART-6 position Verlet. Each tag's tests step only that tag's method; the expected values come from the
 // exact flow of the oscillator (its Taylor polynomials, step matrices, energy factors) or a projectile.
 #include <cmath>
+#include <cstddef>
+#include <span>
 
 #include <gtest/gtest.h>
 
 #include "oscillator_support.h"
+#include "physics/ode/ode_system.h"
 
 namespace pba::ode {
 namespace {
@@ -45,6 +48,58 @@ TEST(PART_1_ExplicitEuler, MultipliesTheOscillatorEnergyByExactlyOnePlusZSquared
   ASSERT_TRUE(multipliesEnergyEachStepBy(osc, integrator, h, 200, 1.0 + z * z, 1e-13));
   // Lobb's observation: within three oscillations the energy is several times the initial one.
   EXPECT_GT(osc.energy() / 0.5, 6.0);
+}
+
+/// A three-coordinate system whose force the test knows in closed form, f_i = c_i + d_i q_i + e_i v_i + t,
+/// with inverse masses (0.5, 0, 2): the middle coordinate is pinned. It counts stateChanged() calls.
+class KnownForceSystem final : public OwnedStateSystem {
+ public:
+  static constexpr Real c[3] = {1.0, -4.0, 0.5}, d[3] = {-3.0, 2.0, -1.5}, e[3] = {-0.2, 0.7, -0.4};
+  KnownForceSystem() : OwnedStateSystem({0.3, -1.2, 2.0}, {1.5, 0.0, -0.6}, {0.5, 0.0, 2.0}) {}
+  void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override {
+    for (std::size_t i = 0; i < 3; ++i) out[i] = c[i] + d[i] * q[i] + e[i] * v[i] + t;
+  }
+  void stateChanged() override { ++changes; }
+  int changes = 0;
+};
+
+TEST(PART_1_ExplicitEuler, AssemblesTheSlopeFromTheForceAndInverseMassesAtTheStartOfTheStep) {
+  // The ODE view: ṡ = (v, M⁻¹ f(t, q, v)), every part taken at the start (t₀ = 2 s). By hand, with
+  // h = 0.1: f = (1 − 0.9 − 0.3 + 2, −4 − 2.4 + 0 + 2, 0.5 − 3 + 0.24 + 2) = (1.8, −4.4, −0.26);
+  // q₁ = q₀ + h v₀ = (0.45, −1.2, 1.94); v₁ = v₀ + h M⁻¹ f = (1.5 + 0.09, 0, −0.6 − 0.052).
+  // The pinned middle coordinate (M⁻¹ = 0) feels −4.4 N and must not move.
+  KnownForceSystem system;
+  system.setTime(2.0);
+  Workspace w;
+  explicitEulerStep(system, 0.1, w);
+  const Real q1[3] = {0.45, -1.2, 1.94}, v1[3] = {1.59, 0.0, -0.652};
+  for (std::size_t i = 0; i < 3; ++i) {
+    // Values of order 1 after a handful of operations: a few ulps.
+    EXPECT_NEAR(system.positions()[i], q1[i], 1e-15) << "q" << i;
+    EXPECT_NEAR(system.velocities()[i], v1[i], 1e-15) << "v" << i;
+  }
+  EXPECT_EQ(system.positions()[1], -1.2);  // pinned: exactly where it was
+  EXPECT_EQ(system.velocities()[1], 0.0);
+  EXPECT_NEAR(system.time(), 2.1, 1e-15);  // the clock advanced by h
+  EXPECT_EQ(system.changes, 1);            // and the system was told once
+}
+
+TEST(PART_1_ExplicitEuler, TheSecondStepStartsFromTheFirstStepsStateAndTime) {
+  // Two steps of h = 0.1 from t₀ = 2 s: the second slope is the closed-form force at (q₁, v₁, 2.1 s),
+  // q₁ and v₁ from the previous test's hand computation.
+  KnownForceSystem system;
+  system.setTime(2.0);
+  Workspace w;
+  explicitEulerStep(system, 0.1, w);
+  explicitEulerStep(system, 0.1, w);
+  const Real q1[3] = {0.45, -1.2, 1.94}, v1[3] = {1.59, 0.0, -0.652}, inverseMass[3] = {0.5, 0.0, 2.0};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Real f1 = KnownForceSystem::c[i] + KnownForceSystem::d[i] * q1[i] + KnownForceSystem::e[i] * v1[i] + 2.1;
+    EXPECT_NEAR(system.positions()[i], q1[i] + 0.1 * v1[i], 1e-14) << "q" << i;
+    EXPECT_NEAR(system.velocities()[i], v1[i] + 0.1 * inverseMass[i] * f1, 1e-14) << "v" << i;
+  }
+  EXPECT_NEAR(system.time(), 2.2, 1e-14);
+  EXPECT_EQ(system.changes, 2);
 }
 
 TEST(PART_2_SymplecticEuler, OneStepIsTheProductOfAKickAndADrift) {
