@@ -129,6 +129,10 @@ SolveWorkspace::SolveWorkspace(const SolveWorkspace&) : SolveWorkspace() {}
 SolveWorkspace& SolveWorkspace::operator=(const SolveWorkspace&) { return *this; }  // scratch, not state
 SolveWorkspace::SolveWorkspace(SolveWorkspace&&) noexcept = default;
 SolveWorkspace& SolveWorkspace::operator=(SolveWorkspace&&) noexcept = default;
+detail::SolveStorage& SolveWorkspace::storage() {
+  if (!storage_) storage_ = std::make_unique<detail::SolveStorage>();
+  return *storage_;
+}
 
 namespace {
 

@@ -180,7 +180,7 @@ class SolveWorkspace {
   SolveWorkspace& operator=(const SolveWorkspace&);
   SolveWorkspace(SolveWorkspace&&) noexcept;
   SolveWorkspace& operator=(SolveWorkspace&&) noexcept;
-  detail::SolveStorage& storage() { return *storage_; }
+  detail::SolveStorage& storage();  ///< for solve(); a moved-from workspace starts empty again
 
  private:
   std::unique_ptr<detail::SolveStorage> storage_;

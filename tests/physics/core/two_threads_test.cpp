@@ -46,6 +46,9 @@ std::vector<Fingerprint> onTwoThreads(const std::function<Fingerprint(int)>& wor
 }
 
 void expectSameConcurrently(const std::function<Fingerprint(int)>& work) {
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+  GTEST_SKIP() << "the browser build has no threads (it is built without -pthread)";
+#endif
   const Fingerprint alone0 = work(0), alone1 = work(1);
   ASSERT_NE(alone0, alone1) << "the two runs must differ, or a swap of their results would go unseen";
   const std::vector<Fingerprint> together = onTwoThreads(work);
