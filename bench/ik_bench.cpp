@@ -38,9 +38,10 @@ void solveChain(benchmark::State& state, SolverKind kind, JointType joint, Real 
   o.ccdMaxTurn = ccdMaxTurn;
   long iterations = 0, solves = 0, successes = 0;
   size_t next = 0;
+  SolveWorkspace workspace;
   for (auto _ : state) {
     Pose pose = rig.skeleton.restPose();
-    const SolveResult r = solve(rig.skeleton, pose, goals[next], o);
+    const SolveResult r = solve(rig.skeleton, pose, goals[next], o, workspace);
     benchmark::DoNotOptimize(pose.dofs.data());
     next = (next + 1) % goals.size();
     iterations += r.iterations;

@@ -76,10 +76,11 @@ void ours(benchmark::State& state, SolverKind kind, Real maxErrorStep = 0.0) {
   std::vector<Effector> effectors = p.rig.effectors;
   long iterations = 0, solves = 0, successes = 0;
   size_t next = 0;
+  SolveWorkspace workspace;
   for (auto _ : state) {
     effectors[0].targetPosition = p.goals[next];
     Pose pose = p.rig.skeleton.restPose();
-    const SolveResult r = solve(p.rig.skeleton, pose, effectors, o);
+    const SolveResult r = solve(p.rig.skeleton, pose, effectors, o, workspace);
     benchmark::DoNotOptimize(pose.dofs.data());
     next = (next + 1) % p.goals.size();
     iterations += r.iterations;

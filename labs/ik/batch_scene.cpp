@@ -110,7 +110,7 @@ class BatchScene final : public app::Scene {
     if (!moves) return Error{"effectors: no joint of " + character_.skeleton + " above them moves"};
     if (options_.solver == SolverKind::Analytic) {
       Pose pose = rig.skeleton.restPose();
-      const SolveResult trial = solve(rig.skeleton, pose, rig.effectors, options_);
+      const SolveResult trial = solve(rig.skeleton, pose, rig.effectors, options_, workspace_);
       if (trial.status == SolveStatus::NotApplicable)
         return Error{"--solver analytic: " + trial.message + " (it applies to 1 or 2 links)"};
     }
@@ -139,12 +139,12 @@ class BatchScene final : public app::Scene {
       std::vector<Effector> effectors = rig_.effectors;
       setGoalsFromPose(rig_.skeleton, randomPose(rig_.skeleton, rng), effectors);
       pose_ = rig_.skeleton.restPose();
-      last_ = solve(rig_.skeleton, pose_, effectors, plain);
+      last_ = solve(rig_.skeleton, pose_, effectors, plain, workspace_);
       plainSuccesses_ += last_.status == SolveStatus::Success;
       plainIterations += last_.iterations;
       if (options_.restarts > 0) {
         pose_ = rig_.skeleton.restPose();
-        last_ = solve(rig_.skeleton, pose_, effectors, options_);
+        last_ = solve(rig_.skeleton, pose_, effectors, options_, workspace_);
       }
       successes_ += last_.status == SolveStatus::Success;
       violations_ += limitViolation(rig_.skeleton, pose_) > 1e-9;
@@ -213,6 +213,7 @@ class BatchScene final : public app::Scene {
   BatchTree tree_ = BatchTree::None;
   int targets_ = 100;
   SolveOptions options_;
+  SolveWorkspace workspace_;  // reused by every solve of the batch
   Rig rig_;
   Pose pose_;
   SolveResult last_;

@@ -117,6 +117,7 @@ class ComparisonScene final : public app::Scene {
     rig_.skeleton.joint(0).restRotation = facing() * glm::angleAxis(kPi / 2.0, Vec3(0, 0, 1));
     poses_.assign(kMethods.size(), rig_.skeleton.restPose());
     results_.assign(kMethods.size(), SolveResult{});
+    workspaces_.resize(kMethods.size());
     time_ = 0.0;
     goal_ = pathGoal(0.0);
     step(0.0);
@@ -209,7 +210,7 @@ class ComparisonScene final : public app::Scene {
       effectors[0].targetPosition = goal_;  // chains are solved at the origin and drawn at their base
       SolveOptions o = options_;
       o.solver = kMethods[m].kind;
-      results_[m] = solve(rig_.skeleton, poses_[m], effectors, o);
+      results_[m] = solve(rig_.skeleton, poses_[m], effectors, o, workspaces_[m]);
     }
   }
   /// The goal on the figure-8 at `phase` [rad], relative to the chains' base.
@@ -275,6 +276,7 @@ class ComparisonScene final : public app::Scene {
   Rig rig_;
   std::vector<Pose> poses_;
   std::vector<SolveResult> results_;
+  std::vector<SolveWorkspace> workspaces_;  // one per method: each keeps its method between solves
   bool dragging_ = false;
   Vec3 goal_{0.0};
   Real time_ = 0.0;

@@ -175,7 +175,7 @@ Vec3 IkScene::pathOffset(size_t, Real phase) const {
   return r * Vec3(std::cos(phase) - 1.0, std::sin(phase), 0.3 * std::sin(phase));
 }
 
-void IkScene::solveNow() { last_ = solve(rig_.skeleton, pose_, rig_.effectors, options_); }
+void IkScene::solveNow() { last_ = solve(rig_.skeleton, pose_, rig_.effectors, options_, workspace_); }
 
 nlohmann::json IkScene::metrics() const {
   return {{"solver", solverName(options_.solver)},

@@ -86,6 +86,7 @@ class IkScene : public app::Scene {
   Rig rig_;
   Pose pose_;
   SolveOptions options_;
+  SolveWorkspace workspace_;  // reused by every solve of the scene
   SolveResult last_;
   TargetPath path_ = TargetPath::Circle;
   Real pathSpeed_ = 0.5;  // [Hz] laps per second of the scripted path

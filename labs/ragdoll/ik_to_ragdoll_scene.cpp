@@ -159,7 +159,7 @@ void IkToRagdollScene::solveIk(Real dt) {
   const Real phase = 2.0 * kPi * pathHertz_ * time_;
   const Vec3 goal = dragged_ ? dragGoal_ : goalRest_ + 0.5 * (1.0 - std::cos(phase)) * kReach;
   rig_.effectors[static_cast<size_t>(goalEffector_)].targetPosition = goal;
-  residual_ = pba::ik::solve(rig_.skeleton, pose_, rig_.effectors, options_).positionResidual;
+  residual_ = pba::ik::solve(rig_.skeleton, pose_, rig_.effectors, options_, workspace_).positionResidual;
   previous_ = current_;
   current_ = bonePoses();
   previousDt_ = dt;

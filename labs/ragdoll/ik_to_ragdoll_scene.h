@@ -73,6 +73,7 @@ class IkToRagdollScene final : public RagdollScene {
 
   app::CharacterDesc character_;
   pba::ik::SolveOptions options_;
+  pba::ik::SolveWorkspace workspace_;  // reused by every solve of the scene
   pba::ik::Rig rig_;
   pba::ik::Pose pose_;
   std::vector<pba::ik::Frame> restFrames_;

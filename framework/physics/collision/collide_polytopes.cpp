@@ -113,12 +113,6 @@ bool isMinkowskiFace(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   return cba * dba < 0.0 && adc * bdc < 0.0 && cba * bdc > 0.0;
 }
 
-struct WorldHull {
-  std::vector<Vec3> vertices, normals;
-  std::vector<Real> offsets;
-  Vec3 centroid{0.0};
-};
-
 void toWorld(const ConvexHull& h, const Transform& pose, WorldHull& out) {
   out.vertices.resize(h.vertices.size());
   out.normals.resize(h.faces.size());
@@ -146,9 +140,11 @@ Real queryFaces(const WorldHull& a, const WorldHull& b, int& bestFace) {
 
 }  // namespace
 
-Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
+Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
+                          NarrowPhaseScratch& scratch) {
   if (a.kind == ShapeKind::Box && b.kind == ShapeKind::Box) return collideBoxes(a, pa, b, pb, margin);
-  thread_local WorldHull wa, wb;
+  WorldHull& wa = scratch.hullA;
+  WorldHull& wb = scratch.hullB;
   const ConvexHull& ha = *a.hull;
   const ConvexHull& hb = *b.hull;
   toWorld(ha, pa, wa);

@@ -5,12 +5,44 @@
 // rebalances by rotations on the way up, so the tree stays shallow under incremental insert, remove and
 // move. A leaf's AABB is the proxy's AABB grown by `margin`, so a proxy that moves a little keeps its
 // leaf (moveProxy returns false) and the tree is untouched.
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "physics/collision/aabb.h"
 
 namespace pba::collision {
+
+namespace detail {
+// A query's traversal stack, on the caller's stack so that queries are re-entrant and may run on
+// several threads at once (Box2D v3's b2DynamicTree_Query keeps its stack local the same way). A
+// balanced tree needs at most its height + 1 entries, far below the inline capacity; a deeper one
+// spills to the heap rather than fail.
+class TraversalStack {
+ public:
+  bool empty() const { return size_ == 0; }
+  void push(int id) {
+    if (size_ < kInline)
+      inline_[size_] = id;
+    else
+      spill_.push_back(id);
+    ++size_;
+  }
+  int pop() {
+    --size_;
+    if (size_ < kInline) return inline_[size_];
+    const int id = spill_.back();
+    spill_.pop_back();
+    return id;
+  }
+
+ private:
+  static constexpr std::size_t kInline = 128;
+  int inline_[kInline];
+  std::size_t size_ = 0;
+  std::vector<int> spill_;
+};
+}  // namespace detail
 
 class DynamicTree {
  public:
@@ -42,18 +74,17 @@ class DynamicTree {
   template <typename Visit>
   void query(const Aabb& box, Visit&& visit) const {
     if (root_ == kNull) return;
-    stack_.clear();
-    stack_.push_back(root_);
-    while (!stack_.empty()) {
-      const int id = stack_.back();
-      stack_.pop_back();
+    detail::TraversalStack stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+      const int id = stack.pop();
       const Node& n = nodes_[id];
       if (!overlaps(n.box, box)) continue;
       if (n.isLeaf()) {
         if (!visit(id)) return;
       } else {
-        stack_.push_back(n.child1);
-        stack_.push_back(n.child2);
+        stack.push(n.child1);
+        stack.push(n.child2);
       }
     }
   }
@@ -72,19 +103,18 @@ class DynamicTree {
   void rayCast(const Vec3& origin, const Vec3& direction, Real maxT, Hit&& hit) const {
     if (root_ == kNull) return;
     const Vec3 inv = safeInverse(direction);
-    stack_.clear();
-    stack_.push_back(root_);
-    while (!stack_.empty()) {
-      const int id = stack_.back();
-      stack_.pop_back();
+    detail::TraversalStack stack;
+    stack.push(root_);
+    while (!stack.empty()) {
+      const int id = stack.pop();
       const Node& n = nodes_[id];
       if (!raySegmentHitsAabb(origin, inv, maxT, n.box)) continue;
       if (n.isLeaf()) {
         maxT = hit(id, maxT);
         if (maxT <= 0.0) return;
       } else {
-        stack_.push_back(n.child1);
-        stack_.push_back(n.child2);
+        stack.push(n.child1);
+        stack.push(n.child2);
       }
     }
   }
@@ -110,7 +140,6 @@ class DynamicTree {
   int root_ = kNull;
   int freeList_ = kNull;
   int leafCount_ = 0;
-  mutable std::vector<int> stack_;  // traversal scratch (queries are not re-entrant)
 };
 
 }  // namespace pba::collision

@@ -5,19 +5,14 @@
 
 namespace pba::collision {
 
-Manifold collideConvexPlane(const Shape& convex, const Transform& pc, const Transform& planePose, Real margin) {
+Manifold collideConvexPlane(const Shape& convex, const Transform& pc, const Transform& planePose, Real margin,
+                            NarrowPhaseScratch& scratch) {
   // Every core vertex v at signed height s = n·(v − p₀) − r above the plane is a candidate (the
   // deepest points of a polytope on a plane are its vertices); at most 4 are kept.
   const Vec3 n = planePose.rotate(kUp);
   const Vec3& p0 = planePose.position;
-  thread_local std::vector<Vec3> roundCore;
-  const std::vector<Vec3>* corePoints = &roundCore;
-  if (convex.hull)
-    corePoints = &convex.hull->vertices;  // boxes and hulls: no copy
-  else
-    coreVertices(convex, roundCore);
-  const std::vector<Vec3>& vertices = *corePoints;
-  thread_local std::vector<ManifoldPoint> candidates;
+  const CoreVertices vertices(convex);  // boxes and hulls: no copy
+  std::vector<ManifoldPoint>& candidates = scratch.candidates;
   candidates.clear();
   const Real r = convex.radius;
   Manifold m;
@@ -36,7 +31,7 @@ Manifold collideConvexPlane(const Shape& convex, const Transform& pc, const Tran
 namespace {
 
 void collideOrdered(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
-                    std::vector<Manifold>& out) {
+                    std::vector<Manifold>& out, NarrowPhaseScratch& scratch) {
   using K = ShapeKind;
   if (b.kind == K::Mesh) {
     if (a.isConvex()) collideConvexMesh(a, pa, b, pb, margin, out);
@@ -44,7 +39,7 @@ void collideOrdered(const Shape& a, const Transform& pa, const Shape& b, const T
   }
   Manifold m;
   if (b.kind == K::Plane) {
-    if (a.isConvex()) m = collideConvexPlane(a, pa, pb, margin);
+    if (a.isConvex()) m = collideConvexPlane(a, pa, pb, margin, scratch);
   } else if (a.kind == K::Sphere && b.kind == K::Sphere) {
     m = collideSpheres(a, pa, b, pb, margin);
   } else if (a.kind == K::Sphere && b.kind == K::Capsule) {
@@ -54,7 +49,7 @@ void collideOrdered(const Shape& a, const Transform& pa, const Shape& b, const T
   } else if (a.kind == K::Capsule && b.kind == K::Capsule) {
     m = collideCapsules(a, pa, b, pb, margin);
   } else if ((a.kind == K::Box || a.kind == K::Hull) && (b.kind == K::Box || b.kind == K::Hull)) {
-    m = collidePolytopes(a, pa, b, pb, margin);
+    m = collidePolytopes(a, pa, b, pb, margin, scratch);
   } else {
     m = collideConvex(a, pa, b, pb, margin);
   }
@@ -64,13 +59,13 @@ void collideOrdered(const Shape& a, const Transform& pa, const Shape& b, const T
 }  // namespace
 
 void collide(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
-             std::vector<Manifold>& out) {
+             std::vector<Manifold>& out, NarrowPhaseScratch& scratch) {
   if (static_cast<int>(a.kind) <= static_cast<int>(b.kind)) {
-    collideOrdered(a, pa, b, pb, margin, out);
+    collideOrdered(a, pa, b, pb, margin, out, scratch);
     return;
   }
   const std::size_t first = out.size();
-  collideOrdered(b, pb, a, pa, margin, out);
+  collideOrdered(b, pb, a, pa, margin, out, scratch);
   for (std::size_t i = first; i < out.size(); ++i) out[i] = out[i].flipped();
 }
 

@@ -24,6 +24,22 @@
 
 namespace pba::collision {
 
+/// A polytope in world coordinates: the separating axis test's copy of a hull, moved once per query.
+struct WorldHull {
+  std::vector<Vec3> vertices, normals;  // [m], unit
+  std::vector<Real> offsets;            // [m] each face plane's n·x
+  Vec3 centroid{0.0};                   // [m] mean of the vertices
+};
+
+/// The narrow phase's scratch memory: buffers a query fills and forgets, kept by the caller so that a
+/// warm caller allocates nothing (the rigid world owns one, as Box2D's step context owns its arena and
+/// Jolt's update takes a TempAllocator). Queries with different scratch may run at once on different
+/// threads; the contents mean nothing between calls.
+struct NarrowPhaseScratch {
+  std::vector<ManifoldPoint> candidates;  // collideConvexPlane: the core vertices within the margin
+  WorldHull hullA, hullB;                  // collidePolytopes: both hulls in world coordinates
+};
+
 Manifold collideSpheres(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);
 Manifold collideSphereCapsule(const Shape& sphere, const Transform& ps, const Shape& capsule, const Transform& pc,
                               Real margin);
@@ -31,11 +47,13 @@ Manifold collideCapsules(const Shape& a, const Transform& pa, const Shape& b, co
 Manifold collideSphereBox(const Shape& sphere, const Transform& ps, const Shape& box, const Transform& pb, Real margin);
 Manifold collideBoxes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);
 /// Any two polytopes (boxes or hulls) by the separating axis test.
-Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);
+Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
+                          NarrowPhaseScratch& scratch);
 /// The general convex pair: GJK/EPA for the normal and depth, then feature clipping.
 Manifold collideConvex(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);
 /// A convex shape against a plane (the plane is B).
-Manifold collideConvexPlane(const Shape& convex, const Transform& pc, const Transform& planePose, Real margin);
+Manifold collideConvexPlane(const Shape& convex, const Transform& pc, const Transform& planePose, Real margin,
+                            NarrowPhaseScratch& scratch);
 /// A convex shape against the triangles of a mesh (the mesh is B); one manifold per touching triangle,
 /// its key the triangle index.
 void collideConvexMesh(const Shape& convex, const Transform& pc, const Shape& mesh, const Transform& pm, Real margin,
@@ -44,6 +62,6 @@ void collideConvexMesh(const Shape& convex, const Transform& pc, const Shape& me
 /// Dispatches on the kinds (swapping and flipping as needed) and appends the non-empty manifolds.
 /// Plane–plane, plane–mesh and mesh–mesh give nothing (static only).
 void collide(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
-             std::vector<Manifold>& out);
+             std::vector<Manifold>& out, NarrowPhaseScratch& scratch);
 
 }  // namespace pba::collision

@@ -132,19 +132,20 @@ Vec3 coreSupport(const Shape& shape, const Vec3& d) {
   return Vec3(0.0);
 }
 
-void coreVertices(const Shape& shape, std::vector<Vec3>& out) {
-  out.clear();
+CoreVertices::CoreVertices(const Shape& shape) {
   switch (shape.kind) {
     case ShapeKind::Sphere:
-      out.emplace_back(0.0);
+      size_ = 1;
       break;
     case ShapeKind::Capsule:
-      out.emplace_back(0.0, -shape.halfHeight, 0.0);
-      out.emplace_back(0.0, shape.halfHeight, 0.0);
+      round_[0] = Vec3(0.0, -shape.halfHeight, 0.0);
+      round_[1] = Vec3(0.0, shape.halfHeight, 0.0);
+      size_ = 2;
       break;
     case ShapeKind::Box:
     case ShapeKind::Hull:
-      out = shape.hull->vertices;
+      data_ = shape.hull->vertices.data();
+      size_ = shape.hull->vertices.size();
       break;
     case ShapeKind::Plane:
     case ShapeKind::Mesh:

@@ -8,6 +8,7 @@
 // avoids EPA on curved surfaces). Local frames: a capsule's segment runs along local y, a plane is the
 // local plane y = 0 with normal +y (solid below). Planes and triangle meshes are static only.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -104,7 +105,23 @@ Real minimumExtent(const Shape& shape);
 Vec3 coreSupport(const Shape& shape, const Vec3& direction);
 /// The radius added to the core: the sphere's and capsule's radius, 0 for polytopes.
 inline Real coreRadius(const Shape& shape) { return shape.radius; }
-/// The core's vertices in local coordinates: 1 (sphere), 2 (capsule), 8 (box), or the hull's.
-void coreVertices(const Shape& shape, std::vector<Vec3>& out);
+/// The core's vertices in local coordinates: 1 (sphere), 2 (capsule), 8 (box), or the hull's; none for
+/// planes and meshes. A view, so that a query needs no buffer: a polytope's are its hull's vertices, a
+/// round core's are held inline. Not copyable (it may point into itself).
+class CoreVertices {
+ public:
+  explicit CoreVertices(const Shape& shape);
+  CoreVertices(const CoreVertices&) = delete;
+  CoreVertices& operator=(const CoreVertices&) = delete;
+  const Vec3* begin() const { return data_; }
+  const Vec3* end() const { return data_ + size_; }
+  std::size_t size() const { return size_; }
+  const Vec3& operator[](std::size_t i) const { return data_[i]; }
+
+ private:
+  Vec3 round_[2]{Vec3(0.0), Vec3(0.0)};  // a sphere's centre, or a capsule's segment ends
+  const Vec3* data_ = round_;
+  std::size_t size_ = 0;
+};
 
 }  // namespace pba::collision

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 #include "physics/collision/gjk.h"
 
@@ -26,8 +25,7 @@ Real rotationAngle(const Quat& q0, const Quat& q1) {
 namespace {
 // Signed distance of convex `a` to the plane shape at `plane` (normal from a toward the plane).
 SignedDistance toPlane(const Shape& a, const Transform& xa, const Transform& plane) {
-  thread_local std::vector<Vec3> vertices;
-  coreVertices(a, vertices);
+  const CoreVertices vertices(a);
   const Vec3 n = plane.rotate(kUp);
   SignedDistance d;
   d.separation = std::numeric_limits<Real>::max();

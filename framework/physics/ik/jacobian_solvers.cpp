@@ -165,7 +165,7 @@ class JacobianMethod final : public Method {
  private:
   // Δθ = W Δỹ for the method; JT returns the unscaled direction W J̃ᵀ r (α comes separately).
   std::vector<Real> step(const Context& c, const Matrix& J, const std::vector<Real>& full,
-                         const std::vector<Real>& clamped) const {
+                         const std::vector<Real>& clamped) {
     std::vector<Real> dy;
     switch (kind_) {
       case SolverKind::JacobianTranspose:
@@ -187,7 +187,7 @@ class JacobianMethod final : public Method {
     return dy;
   }
 
-  std::vector<Real> pseudoInverseStep(const Matrix& J, const std::vector<Real>& e, Real cutoff) const {
+  std::vector<Real> pseudoInverseStep(const Matrix& J, const std::vector<Real>& e, Real cutoff) {
     svd(J, svd_, svdWorkspace_);
     const Svd& d = svd_;
     std::vector<Real> out(static_cast<size_t>(J.cols), 0.0);
@@ -200,7 +200,7 @@ class JacobianMethod final : public Method {
     return out;
   }
 
-  std::vector<Real> selectivelyDampedStep(const Matrix& J, const std::vector<Real>& e) const {
+  std::vector<Real> selectivelyDampedStep(const Matrix& J, const std::vector<Real>& e) {
     svd(J, svd_, svdWorkspace_);
     const Svd& d = svd_;
     const int n = J.cols;
@@ -259,10 +259,10 @@ class JacobianMethod final : public Method {
   SolverKind kind_;
   LeastSquaresSystem sys_;  // J, r and the layout of the current step, storage kept across steps
   TrialFrames scratch_;
-  mutable std::vector<Real> rho_;      // SDLS: ρⱼ, the motion of the effectors per unit of DOF j
-  mutable std::vector<Real> phi_;      // SDLS: one singular direction's clamped step
-  mutable Svd svd_;                    // pinv and SDLS: the decomposition of the step, storage kept
-  mutable SvdWorkspace svdWorkspace_;  // across steps
+  std::vector<Real> rho_;      // SDLS: ρⱼ, the motion of the effectors per unit of DOF j
+  std::vector<Real> phi_;      // SDLS: one singular direction's clamped step
+  Svd svd_;                    // pinv and SDLS: the decomposition of the step, storage kept
+  SvdWorkspace svdWorkspace_;  // across steps
 };
 
 }  // namespace

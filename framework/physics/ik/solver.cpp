@@ -7,7 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <tuple>
+#include <memory>
+#include <string>
 
 #include "physics/core/validate.h"
 #include "physics/ik/exercises.h"
@@ -93,22 +94,6 @@ void randomizeActiveJoints(detail::Context& c, RestartRng& rng) {
   }
 }
 
-// What solve() keeps between the solves of a thread, so that a warm solve allocates nothing: the
-// Context's storage, the last method (reused for the same kind, Method::resetForReuse) and the
-// driver's lists. thread_local: solve() may run on several threads at once. A solve takes it out and
-// puts it back at the end, so that a solve inside a solve would find it empty and use its own.
-struct Workspace {
-  detail::ContextStorage storage;
-  std::unique_ptr<detail::Method> method;
-  SolverKind methodKind = SolverKind::Analytic;  // of `method`
-  std::vector<Vec3> points;                      // effector points of a method that defers the pose
-  std::vector<Real> progress;                    // combined residual per iteration (stall detection)
-};
-thread_local Workspace threadWorkspace;
-// Solves of larger skeletons keep nothing: their allocations are a small part of their cost, and a
-// thread would otherwise hold the storage of the largest skeleton it ever solved.
-constexpr int kKeptJoints = 64;
-
 std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string* why) {
   switch (c.options.solver) {
     case SolverKind::Analytic:
@@ -125,17 +110,326 @@ std::unique_ptr<detail::Method> makeMethod(const detail::Context& c, std::string
   }
 }
 
+}  // namespace
+
+namespace detail {
+// The contents of a SolveWorkspace.
+struct SolveStorage {
+  ContextStorage context;
+  std::unique_ptr<Method> method;
+  SolverKind methodKind = SolverKind::Analytic;  // of `method`
+  std::vector<Vec3> points;                      // effector points of a method that defers the pose
+  std::vector<Real> progress;                    // combined residual per iteration (stall detection)
+};
+}  // namespace detail
+
+SolveWorkspace::SolveWorkspace() : storage_(std::make_unique<detail::SolveStorage>()) {}
+SolveWorkspace::~SolveWorkspace() = default;
+SolveWorkspace::SolveWorkspace(const SolveWorkspace&) : SolveWorkspace() {}
+SolveWorkspace& SolveWorkspace::operator=(const SolveWorkspace&) { return *this; }  // scratch, not state
+SolveWorkspace::SolveWorkspace(SolveWorkspace&&) noexcept = default;
+SolveWorkspace& SolveWorkspace::operator=(SolveWorkspace&&) noexcept = default;
+detail::SolveStorage& SolveWorkspace::storage() {
+  if (!storage_) storage_ = std::make_unique<detail::SolveStorage>();
+  return *storage_;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
 // Sets w.method to a method for c's options: the last one, returned to a fresh one's state, when it
 // is of that kind and can be (Method::resetForReuse); else a new one (null, with *why, when the
 // method does not apply).
-void prepareMethod(Workspace& w, const detail::Context& c, std::string* why) {
+void prepareMethod(detail::SolveStorage& w, const detail::Context& c, std::string* why) {
   if (w.method && w.methodKind == c.options.solver && w.method->resetForReuse()) return;
   w.method = makeMethod(c, why);
   w.methodKind = c.options.solver;
 }
 
-using Clock = std::chrono::steady_clock;
-SolveResult solveIn(detail::Context& c, Workspace& w, Clock::time_point start);
+// ---- Setup: the caches a solve reads, filled once per solve ----
+
+// Per joint, the effectors below it (c.belowStart, c.belowList) and whether any is (c.active).
+void listEffectorsBelowJoints(detail::Context& c) {
+  const Skeleton& skeleton = c.skeleton;
+  const std::vector<Effector>& effectors = c.effectors;
+  const auto J = static_cast<size_t>(skeleton.jointCount());
+  detail::bucketLists(
+      J,
+      [&](auto visit) {
+        for (size_t k = 0; k < effectors.size(); ++k)
+          for (int j = effectors[k].joint; j >= 0; j = skeleton.joint(j).parent)
+            visit(static_cast<size_t>(j), static_cast<int>(k));
+      },
+      c.belowStart, c.belowList);
+  c.active.assign(J, 0);
+  for (size_t j = 0; j < J; ++j) c.active[j] = c.belowStart[j + 1] > c.belowStart[j];
+}
+
+// One ball joint's limit caches (see ContextStorage::insideCosHalf and eulerRanges).
+void cacheBallLimits(const Joint& joint, Real& insideCosHalf, std::array<detail::Context::EulerRange, 3>& ranges) {
+  Real L = 0.5 * kPi;
+  for (int k = 0; k < 3; ++k) L = std::min({L, -joint.lo[k], joint.hi[k]});
+  if (L > 0.0) insideCosHalf = std::cos(0.5 * L) + 1e-12;
+  for (int k = 0; k < 3; ++k) {
+    const Real bound = k == 1 ? 0.5 * kPi : kPi;  // principal angles: b in [−π/2, π/2], a and c in (−π, π]
+    detail::Context::EulerRange& r = ranges[static_cast<size_t>(k)];
+    if (joint.lo[k] <= -bound && joint.hi[k] >= bound) {
+      r.cosHalf = -2.0;
+    } else if (joint.lo[k] >= -kPi && joint.hi[k] <= kPi) {
+      const Real mid = 0.5 * (joint.lo[k] + joint.hi[k]), half = 0.5 * (joint.hi[k] - joint.lo[k]);
+      r = {std::cos(mid), std::sin(mid), std::cos(half)};
+    }  // else a range across ±π: no test (cosHalf 2)
+  }
+}
+
+// Every ball joint's limit caches; a joint with the same limits as the ball joint before it (chains
+// repeat them) copies that one's.
+void cacheLimits(detail::Context& c) {
+  const Skeleton& skeleton = c.skeleton;
+  const auto J = static_cast<size_t>(skeleton.jointCount());
+  c.insideCosHalf.assign(J, 2.0);
+  c.eulerRanges.assign(J, {});
+  const Joint* previous = nullptr;  // the last ball joint
+  for (size_t j = 0; j < J; ++j) {
+    const Joint& joint = skeleton.joint(static_cast<int>(j));
+    if (joint.type != JointType::Ball) continue;
+    if (previous && std::equal(joint.lo, joint.lo + 3, previous->lo) &&
+        std::equal(joint.hi, joint.hi + 3, previous->hi)) {
+      const auto p = static_cast<size_t>(previous - &skeleton.joint(0));
+      c.insideCosHalf[j] = c.insideCosHalf[p];
+      c.eulerRanges[j] = c.eulerRanges[p];
+    } else {
+      cacheBallLimits(joint, c.insideCosHalf[j], c.eulerRanges[j]);
+    }
+    previous = &joint;
+  }
+}
+
+void setUp(detail::Context& c) {
+  c.refresh();
+  c.meanBone = meanBoneLength(c.skeleton, c.effectors);
+  c.orientationScale = c.options.orientationScale > 0.0 ? c.options.orientationScale : c.meanBone;
+  c.maxErrorStep = c.options.maxErrorStep > 0.0 ? c.options.maxErrorStep : c.meanBone;
+  listEffectorsBelowJoints(c);
+  cacheLimits(c);
+}
+
+// Reachability (Aristidou & Lasenby 2011, Algorithm 1, first test): a goal farther from the root than
+// the sum of the bones on its path cannot be reached.
+bool anyGoalOutOfReach(const detail::Context& c) {
+  const Skeleton& skeleton = c.skeleton;
+  bool unreachable = false;
+  for (const Effector& e : c.effectors) {
+    int root = e.joint;
+    while (skeleton.joint(root).parent >= 0) root = skeleton.joint(root).parent;
+    if (glm::length(e.targetPosition - c.frames[static_cast<size_t>(root)].position) > reach(skeleton, root, e) + 1e-12)
+      unreachable = true;
+  }
+  return unreachable;
+}
+
+// ---- The iteration, its stopping rules and the stall and restart policy ----
+
+// One solve after setUp(): iterates the method until a stopping rule holds (IK slides, "Stopping"),
+// restarting it from a random pose when it stalls short of a reachable goal.
+class SolveLoop {
+ public:
+  SolveLoop(detail::Context& c, detail::SolveStorage& w, Clock::time_point start)
+      : c_(c), w_(w), o_(c.options), start_(start), rng_(c.options.restartSeed) {}
+
+  SolveResult run();
+
+ private:
+  Real elapsed() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+  bool overTime() const { return o_.maxSeconds > 0.0 && elapsed() > o_.maxSeconds; }
+  bool converged() const { return residual_.position <= o_.tolerance && residual_.orientation <= o_.angleTolerance; }
+  Real pastScore() const {  // the score stallIterations ago (needs more entries than that)
+    return w_.progress[w_.progress.size() - 1 - static_cast<size_t>(o_.stallIterations)];
+  }
+  bool enoughHistory() const {
+    return o_.stallIterations > 0 && static_cast<int>(w_.progress.size()) > o_.stallIterations;
+  }
+  bool stalled() const;
+  bool crawling(int it) const;
+  bool mayRestart(int it) const;
+  void restart();
+  void iterate(int it);
+  void measure();
+  void record();
+  void startAttempt();
+  void keepBest();
+  SolveResult stop(SolveStatus status);
+  SolveResult finish(SolveStatus status);
+
+  detail::Context& c_;
+  detail::SolveStorage& w_;
+  const SolveOptions& o_;
+  Clock::time_point start_;
+  SolveResult result_;
+  bool unreachable_ = false;
+  Residual residual_;  // of the current pose
+  Real score_ = 0.0;   // residual_.position + orientationScale · residual_.orientation
+  // Stall recovery: the best attempt so far (its pose and score) and the restart poses' generator.
+  Pose best_;
+  Real bestScore_ = std::numeric_limits<Real>::infinity();
+  RestartRng rng_;
+};
+
+SolveResult SolveLoop::run() {
+  std::string why;
+  prepareMethod(w_, c_, &why);
+  if (!w_.method) {
+    result_.message = why;
+    return finish(SolveStatus::NotApplicable);
+  }
+  if (o_.recordHistory) result_.effectorPath.assign(c_.effectors.size(), {});
+  w_.points.clear();
+  // A lone position effector is stretched toward an unreachable goal, and the method refines from
+  // there (the gradient vanishes at the exact stretched pose, so the methods keep it).
+  unreachable_ = anyGoalOutOfReach(c_);
+  if (unreachable_ && c_.effectors.size() == 1 && c_.effectors[0].kind == EffectorKind::Position) {
+    detail::stretchToward(c_, c_.effectors[0]);
+    c_.flushPose();
+  }
+  w_.progress.reserve(16);
+  startAttempt();
+  for (int it = 0;; ++it) {
+    if (converged()) return finish(SolveStatus::Success);
+    // A closed-form method that did not succeed has found the nearest reachable pose: the goal is
+    // out of its workspace (too far, too near, or outside the limits).
+    if (w_.method->finished()) return finish(SolveStatus::Unreachable);
+    const bool stuck = stalled();
+    if ((stuck || crawling(it)) && mayRestart(it)) {  // crawling: asked only when not stalled
+      restart();
+      continue;
+    }
+    if (stuck) return stop(unreachable_ ? SolveStatus::Unreachable : SolveStatus::Stalled);
+    if (it >= o_.maxIterations) return stop(unreachable_ ? SolveStatus::Unreachable : SolveStatus::IterationCap);
+    if (overTime()) return stop(SolveStatus::TimeCap);
+    iterate(it);
+  }
+}
+
+// Less than the stall ratio of progress over the last stallIterations iterations.
+bool SolveLoop::stalled() const { return enoughHistory() && !(score_ < (1.0 - o_.stallRatio) * pastScore()); }
+
+// Short of a stall, crawling counts as stuck when a restart is left: less than 10 % progress over the
+// last k iterations, a rate at which the tolerance would take more than twice the iterations that
+// remain (CCD along a limit can gain 1 % per pass for hundreds of passes). Methods that speed up near
+// the goal (DLS: linear while the error clamp acts, then quadratic) are never this slow.
+bool SolveLoop::crawling(int it) const {
+  if (!enoughHistory() || result_.restarts >= o_.restarts) return false;
+  const Real rate = score_ / pastScore();
+  const Real goal = o_.tolerance + c_.orientationScale * o_.angleTolerance;
+  if (!(score_ > goal && rate > 0.9 && rate < 1.0)) return false;
+  return Real(o_.stallIterations) * std::log(goal / score_) / std::log(rate) > 2.0 * Real(o_.maxIterations - it);
+}
+
+// A restart needs a reachable goal, a restart left, and iterations to get anywhere: at least 2k must
+// remain (an interactive solve with a cap of 30 keeps refining its warm start instead of jumping to a
+// random pose it cannot finish).
+bool SolveLoop::mayRestart(int it) const {
+  return !unreachable_ && result_.restarts < o_.restarts &&
+         o_.maxIterations - it >= 2 * std::max(o_.stallIterations, 1) && !overTime();
+}
+
+// A local minimum short of a reachable goal: keep this attempt if it is the best, then start again
+// from a random pose of the joints that move the effectors, with a fresh method.
+void SolveLoop::restart() {
+  w_.method->finish(c_);
+  c_.flushPose();
+  keepBest();
+  randomizeActiveJoints(c_, rng_);
+  c_.refresh();
+  std::string why;
+  prepareMethod(w_, c_, &why);
+  ++result_.restarts;
+  startAttempt();
+}
+
+void SolveLoop::iterate(int it) {
+  w_.method->iterate(c_);
+  switch (w_.method->framesAfterIterate()) {
+    case detail::Method::FramesAfterIterate::Refresh:
+      c_.refresh();
+      break;
+    case detail::Method::FramesAfterIterate::FromCache:
+      c_.refreshFrames();
+      break;
+    case detail::Method::FramesAfterIterate::Current:
+      break;
+  }
+  result_.iterations = it + 1;
+  measure();
+  record();
+  w_.progress.push_back(score_);
+}
+
+// The residual and score of the current pose (a method that defers the pose gives its effector points).
+void SolveLoop::measure() {
+  const std::vector<Effector>& effectors = c_.effectors;
+  Residual r;
+  if (w_.method->posesDeferred()) {  // position effectors only (FABRIK's condition for deferring)
+    w_.method->effectorPoints(c_, w_.points);
+    for (size_t k = 0; k < effectors.size(); ++k)
+      r.position = std::max(r.position, glm::length(effectors[k].targetPosition - w_.points[k]));
+  } else {
+    r = residual(effectors, c_.frames);
+  }
+  residual_ = r;
+  score_ = r.position + c_.orientationScale * r.orientation;
+}
+
+// History (SolveOptions::recordHistory): the residual and every effector's position.
+void SolveLoop::record() {
+  if (!o_.recordHistory) return;
+  result_.residualHistory.push_back(residual_.position);
+  const bool deferred = w_.method->posesDeferred();
+  for (size_t k = 0; k < c_.effectors.size(); ++k)
+    result_.effectorPath[k].push_back(deferred ? w_.points[k] : effectorPosition(c_.effectors[k], c_.frames));
+}
+
+// The first measurement of an attempt, and a fresh progress history for the stall rules.
+void SolveLoop::startAttempt() {
+  w_.progress.clear();
+  measure();
+  record();
+  w_.progress.push_back(score_);
+}
+
+// After method->finish(): the pose and frames of the attempt are current.
+void SolveLoop::keepBest() {
+  const Residual now = residual(c_.effectors, c_.frames);
+  const Real s = now.position + c_.orientationScale * now.orientation;
+  if (s < bestScore_) bestScore_ = s, best_ = c_.pose;
+}
+
+// An unsuccessful end: after restarts, the best attempt's pose.
+SolveResult SolveLoop::stop(SolveStatus status) {
+  if (result_.restarts > 0) {
+    w_.method->finish(c_);
+    c_.flushPose();
+    const Pose last = c_.pose;
+    keepBest();
+    if (!(best_.dofs == last.dofs && best_.rotations == last.rotations)) {
+      c_.pose = best_;
+      c_.refresh();
+    }
+  }
+  return finish(status);
+}
+
+SolveResult SolveLoop::finish(SolveStatus status) {
+  if (w_.method) w_.method->finish(c_);
+  c_.flushPose();
+  const Residual r = residual(c_.effectors, c_.frames);
+  result_.status = status;
+  result_.positionResidual = r.position;
+  result_.orientationResidual = r.orientation;
+  result_.seconds = elapsed();
+  return result_;
+}
 
 }  // namespace
 
@@ -152,7 +446,8 @@ Real resolvedOrientationScale(const Skeleton& skeleton, const std::vector<Effect
   return o.orientationScale > 0.0 ? o.orientationScale : meanBoneLength(skeleton, effectors);
 }
 
-SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o) {
+SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors, const SolveOptions& o,
+                  SolveWorkspace& workspace) {
   const auto start = Clock::now();
   if (Status st = validateInputs(skeleton, pose, effectors, o); !st) {
     SolveResult result;
@@ -160,217 +455,22 @@ SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effect
     return result;
   }
   if (o.fromRest) pose = skeleton.restPose();
-  Workspace w = std::move(threadWorkspace);  // taken out, put back below (see Workspace)
-  w.storage.clear();
-  detail::Context c{std::move(w.storage), skeleton, pose, effectors, o};
-  SolveResult result = solveIn(c, w, start);
-  w.storage = std::move(static_cast<detail::ContextStorage&>(c));
+  detail::SolveStorage& w = workspace.storage();
+  w.context.clear();
+  detail::Context c{std::move(w.context), skeleton, pose, effectors, o};  // lent, taken back below
+  setUp(c);
+  SolveResult result = SolveLoop(c, w, start).run();
+  w.context = std::move(static_cast<detail::ContextStorage&>(c));
   // A method that cannot serve the next solve is not kept: its storage (a Jacobian's matrices) would
   // stay allocated for nothing.
   if (w.method && !w.method->resetForReuse()) w.method.reset();
-  if (skeleton.jointCount() <= kKeptJoints) threadWorkspace = std::move(w);
   return result;
 }
 
-namespace {
-
-// solve() on its Context, with the storage of the workspace w.
-SolveResult solveIn(detail::Context& c, Workspace& w, Clock::time_point start) {
-  const Skeleton& skeleton = c.skeleton;
-  Pose& pose = c.pose;
-  const std::vector<Effector>& effectors = c.effectors;
-  const SolveOptions& o = c.options;
-  SolveResult result;
-  c.refresh();
-  c.meanBone = meanBoneLength(skeleton, effectors);
-  c.orientationScale = o.orientationScale > 0.0 ? o.orientationScale : c.meanBone;
-  c.maxErrorStep = o.maxErrorStep > 0.0 ? o.maxErrorStep : c.meanBone;
-  const auto J = static_cast<size_t>(skeleton.jointCount());
-  detail::bucketLists(
-      J,
-      [&](auto visit) {
-        for (size_t k = 0; k < effectors.size(); ++k)
-          for (int j = effectors[k].joint; j >= 0; j = skeleton.joint(j).parent)
-            visit(static_cast<size_t>(j), static_cast<int>(k));
-      },
-      c.belowStart, c.belowList);
-  c.active.assign(J, 0);
-  for (size_t j = 0; j < J; ++j) c.active[j] = c.belowStart[j + 1] > c.belowStart[j];
-  c.insideCosHalf.assign(J, 2.0);
-  c.eulerRanges.assign(J, {});
-  const Joint* previous = nullptr;  // the last ball joint: chains repeat the same limits
-  for (size_t j = 0; j < J; ++j) {
-    const Joint& joint = skeleton.joint(static_cast<int>(j));
-    if (joint.type != JointType::Ball) continue;
-    if (previous && std::equal(joint.lo, joint.lo + 3, previous->lo) &&
-        std::equal(joint.hi, joint.hi + 3, previous->hi)) {
-      const auto p = static_cast<size_t>(previous - &skeleton.joint(0));
-      c.insideCosHalf[j] = c.insideCosHalf[p];
-      c.eulerRanges[j] = c.eulerRanges[p];
-      previous = &joint;
-      continue;
-    }
-    previous = &joint;
-    Real L = 0.5 * kPi;
-    for (int k = 0; k < 3; ++k) L = std::min({L, -joint.lo[k], joint.hi[k]});
-    if (L > 0.0) c.insideCosHalf[j] = std::cos(0.5 * L) + 1e-12;
-    for (int k = 0; k < 3; ++k) {
-      const Real bound = k == 1 ? 0.5 * kPi : kPi;  // principal angles: b in [−π/2, π/2], a and c in (−π, π]
-      detail::Context::EulerRange& r = c.eulerRanges[j][static_cast<size_t>(k)];
-      if (joint.lo[k] <= -bound && joint.hi[k] >= bound) {
-        r.cosHalf = -2.0;
-      } else if (joint.lo[k] >= -kPi && joint.hi[k] <= kPi) {
-        const Real mid = 0.5 * (joint.lo[k] + joint.hi[k]), half = 0.5 * (joint.hi[k] - joint.lo[k]);
-        r = {std::cos(mid), std::sin(mid), std::cos(half)};
-      }  // else a range across ±π: no test (cosHalf 2)
-    }
-  }
-
-  std::string why;
-  prepareMethod(w, c, &why);
-  const std::unique_ptr<detail::Method>& method = w.method;
-  auto finish = [&](SolveStatus status) {
-    if (method) method->finish(c);
-    c.flushPose();
-    const Residual r = residual(effectors, c.frames);
-    result.status = status;
-    result.positionResidual = r.position;
-    result.orientationResidual = r.orientation;
-    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    return result;
-  };
-  if (!method) {
-    result.message = why;
-    return finish(SolveStatus::NotApplicable);
-  }
-  if (o.recordHistory) result.effectorPath.assign(effectors.size(), {});
-  std::vector<Vec3>& points = w.points;
-  points.clear();
-  auto effectorPoint = [&](size_t k) {
-    return method->posesDeferred() ? points[k] : effectorPosition(effectors[k], c.frames);
-  };
-  auto record = [&](Real positionResidual) {
-    if (!o.recordHistory) return;
-    result.residualHistory.push_back(positionResidual);
-    for (size_t k = 0; k < effectors.size(); ++k) result.effectorPath[k].push_back(effectorPoint(k));
-  };
-
-  // Reachability (Aristidou & Lasenby 2011, Algorithm 1, first test): a goal farther from the root
-  // than the sum of the bones on its path cannot be reached. A lone position effector is then
-  // stretched toward it, and the method refines from there (the gradient vanishes at the exact
-  // stretched pose, so the methods keep it).
-  bool unreachable = false;
-  for (const Effector& e : effectors) {
-    int root = e.joint;
-    while (skeleton.joint(root).parent >= 0) root = skeleton.joint(root).parent;
-    if (glm::length(e.targetPosition - c.frames[static_cast<size_t>(root)].position) > reach(skeleton, root, e) + 1e-12)
-      unreachable = true;
-  }
-  if (unreachable && effectors.size() == 1 && effectors[0].kind == EffectorKind::Position) {
-    detail::stretchToward(c, effectors[0]);
-    c.flushPose();
-  }
-
-  std::vector<Real>& progress = w.progress;
-  progress.clear();
-  progress.reserve(16);
-  auto measure = [&]() {
-    Residual r;
-    if (method->posesDeferred()) {  // position effectors only (FABRIK's condition for deferring)
-      method->effectorPoints(c, points);
-      for (size_t k = 0; k < effectors.size(); ++k)
-        r.position = std::max(r.position, glm::length(effectors[k].targetPosition - points[k]));
-    } else {
-      r = residual(effectors, c.frames);
-    }
-    return std::pair<Residual, Real>{r, r.position + c.orientationScale * r.orientation};
-  };
-  auto [r, score] = measure();
-  record(r.position);
-  progress.push_back(score);
-  // Stall recovery: the best attempt so far (its pose and score) and the restart poses' generator.
-  Pose best;
-  Real bestScore = std::numeric_limits<Real>::infinity();
-  RestartRng rng(o.restartSeed);
-  auto keepBest = [&]() {  // after method->finish(): the pose and frames of the attempt are current
-    const Residual now = residual(effectors, c.frames);
-    const Real s = now.position + c.orientationScale * now.orientation;
-    if (s < bestScore) bestScore = s, best = pose;
-  };
-  auto stop = [&](SolveStatus status) {
-    if (result.restarts > 0) {
-      method->finish(c);
-      c.flushPose();
-      const Pose last = pose;
-      keepBest();
-      if (!(best.dofs == last.dofs && best.rotations == last.rotations)) {
-        pose = best;
-        c.refresh();
-      }
-    }
-    return finish(status);
-  };
-  for (int it = 0;; ++it) {
-    if (r.position <= o.tolerance && r.orientation <= o.angleTolerance) return finish(SolveStatus::Success);
-    // A closed-form method that did not succeed has found the nearest reachable pose: the goal is
-    // out of its workspace (too far, too near, or outside the limits).
-    if (method->finished()) return finish(SolveStatus::Unreachable);
-    const int k = o.stallIterations;
-    const bool stalled = k > 0 && static_cast<int>(progress.size()) > k &&
-                         !(score < (1.0 - o.stallRatio) * progress[progress.size() - 1 - static_cast<size_t>(k)]);
-    // Crawling counts as stuck when a restart is left: less than 10 % progress over the last k
-    // iterations, a rate at which the tolerance would take more than twice the iterations that
-    // remain (CCD along a limit can gain 1 % per pass for hundreds of passes). Methods that speed up
-    // near the goal (DLS: linear while the error clamp acts, then quadratic) are never this slow.
-    bool slow = false;
-    if (!stalled && k > 0 && static_cast<int>(progress.size()) > k && result.restarts < o.restarts) {
-      const Real rate = score / progress[progress.size() - 1 - static_cast<size_t>(k)];
-      const Real goal = o.tolerance + c.orientationScale * o.angleTolerance;
-      if (score > goal && rate > 0.9 && rate < 1.0)
-        slow = Real(k) * std::log(goal / score) / std::log(rate) > 2.0 * Real(o.maxIterations - it);
-    }
-    // A restart needs iterations to get anywhere: at least 2k must remain (an interactive solve with
-    // a cap of 30 keeps refining its warm start instead of jumping to a random pose it cannot finish).
-    if ((stalled || slow) && !unreachable && result.restarts < o.restarts &&
-        o.maxIterations - it >= 2 * std::max(k, 1) &&
-        !(o.maxSeconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > o.maxSeconds)) {
-      // A local minimum short of a reachable goal: keep this attempt if it is the best, then start
-      // again from a random pose of the joints that move the effectors, with a fresh method.
-      method->finish(c);
-      c.flushPose();
-      keepBest();
-      randomizeActiveJoints(c, rng);
-      c.refresh();
-      prepareMethod(w, c, &why);
-      ++result.restarts;
-      progress.clear();
-      std::tie(r, score) = measure();
-      record(r.position);
-      progress.push_back(score);
-      continue;
-    }
-    if (stalled) return stop(unreachable ? SolveStatus::Unreachable : SolveStatus::Stalled);
-    if (it >= o.maxIterations) return stop(unreachable ? SolveStatus::Unreachable : SolveStatus::IterationCap);
-    if (o.maxSeconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > o.maxSeconds)
-      return stop(SolveStatus::TimeCap);
-    method->iterate(c);
-    switch (method->framesAfterIterate()) {
-      case detail::Method::FramesAfterIterate::Refresh:
-        c.refresh();
-        break;
-      case detail::Method::FramesAfterIterate::FromCache:
-        c.refreshFrames();
-        break;
-      case detail::Method::FramesAfterIterate::Current:
-        break;
-    }
-    result.iterations = it + 1;
-    std::tie(r, score) = measure();
-    record(r.position);
-    progress.push_back(score);
-  }
+SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors,
+                  const SolveOptions& options) {
+  SolveWorkspace workspace;
+  return solve(skeleton, pose, effectors, options, workspace);
 }
-
-}  // namespace
 
 }  // namespace pba::ik

@@ -3,6 +3,7 @@
 // Aristidou & Lasenby 2011, Buss & Kim 2005). A solve moves a Pose so that the effectors reach their
 // goals, and reports how it stopped (IK slides, "Stopping"): success within tolerance, target
 // unreachable, stalled (no progress over k iterations: a local minimum), iteration cap or time cap.
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -162,7 +163,33 @@ struct SolveResult {
   std::vector<std::vector<Vec3>> effectorPath;  ///< per effector: world positions after each iteration (recordHistory)
 };
 
+namespace detail {
+struct SolveStorage;
+}
+
+/// What a solve keeps for the next one, so that a warm solve allocates nothing: the working storage of
+/// the skeleton, the last method (reused when the next solve asks for the same kind) and the driver's
+/// lists. Own one where solves repeat (a scene, a loop), as Jolt's update takes a TempAllocator. It
+/// serves one solve at a time: solves on several threads at once need one each. Its contents are never
+/// state: a copy starts empty, and a solve gives the same result with a fresh workspace.
+class SolveWorkspace {
+ public:
+  SolveWorkspace();
+  ~SolveWorkspace();
+  SolveWorkspace(const SolveWorkspace&);
+  SolveWorkspace& operator=(const SolveWorkspace&);
+  SolveWorkspace(SolveWorkspace&&) noexcept;
+  SolveWorkspace& operator=(SolveWorkspace&&) noexcept;
+  detail::SolveStorage& storage();  ///< for solve(); a moved-from workspace starts empty again
+
+ private:
+  std::unique_ptr<detail::SolveStorage> storage_;
+};
+
 /// Solves in place: moves `pose` toward the goals of `effectors`. Never throws; never produces NaN.
+SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors,
+                  const SolveOptions& options, SolveWorkspace& workspace);
+/// The same with a workspace of its own (its storage is allocated anew: for one-off solves).
 SolveResult solve(const Skeleton& skeleton, Pose& pose, const std::vector<Effector>& effectors,
                   const SolveOptions& options);
 

@@ -11,8 +11,8 @@
 
 namespace pba::ik::detail {
 
-/// The per-joint storage of a Context (its base), kept between solves: solve() lends it out of a
-/// per-thread workspace and takes it back, so that a solve reuses the capacity of the last one and
+/// The per-joint storage of a Context (its base), kept between solves: solve() lends it out of the
+/// caller's SolveWorkspace and takes it back, so that a solve reuses the capacity of the last one and
 /// allocates nothing once warm. Each solve fills every member anew (from clear()).
 struct ContextStorage {
   std::vector<Frame> frames;

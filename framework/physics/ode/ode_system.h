@@ -64,9 +64,10 @@ class SecondOrderSystem : public OdeSystem {
   virtual void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const = 0;
   /// Directional derivative of the force: out = (∂f/∂q)·dq + (∂f/∂v)·dv. Implicit Euler uses it as the
   /// matrix-free Jacobian (Baraff & Witkin 1998 §5). The default takes central finite differences of
-  /// force(); mass-spring systems override it with the analytic Jacobian.
+  /// force(); mass-spring systems override it with the analytic Jacobian. Not const: the default keeps
+  /// its scratch in the system (each thread steps its own system).
   virtual void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
-                                 std::span<const Real> dv, std::span<Real> out) const;
+                                 std::span<const Real> dv, std::span<Real> out);
   /// The 3×3 diagonal blocks of ∂f/∂q and ∂f/∂v, one per group of three coordinates (a particle:
   /// coordinates 3i…3i+2), written to dfdq and dfdv (dofCount()/3 each): implicit Euler's block-Jacobi
   /// preconditioner. Returns false when the system cannot give them (the default); implicit Euler then
@@ -106,8 +107,8 @@ class SecondOrderSystem : public OdeSystem {
 
  private:
   /// Scratch of the default forceDifferential (perturbed q, v and the second force), sized on first use:
-  /// the finite difference allocates nothing per call. Not thread-safe, like the system it belongs to.
-  mutable std::vector<Real> differenceScratch_;
+  /// the finite difference allocates nothing per call.
+  std::vector<Real> differenceScratch_;
 };
 
 /// A SecondOrderSystem that owns its state s = (q, v) as one array (the coordinates, then the

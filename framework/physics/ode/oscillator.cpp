@@ -39,7 +39,7 @@ void HarmonicOscillator::acceleration(Real, std::span<const Real> q, std::span<c
 }
 
 void HarmonicOscillator::forceDifferential(Real, std::span<const Real>, std::span<const Real>, std::span<const Real> dq,
-                                           std::span<const Real>, std::span<Real> out) const {
+                                           std::span<const Real>, std::span<Real> out) {
   for (std::size_t i = 0; i < dq.size(); ++i) out[i] = -desc_.stiffness * dq[i];  // K = −k I, D = 0
 }
 

@@ -38,7 +38,7 @@ class HarmonicOscillator final : public OwnedStateSystem {
   /// (−k q_i) M⁻¹_i in one pass: the same numbers as force() then the scaling.
   void acceleration(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
   void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
-                         std::span<const Real> dv, std::span<Real> out) const override;
+                         std::span<const Real> dv, std::span<Real> out) override;
   /// The copies are independent: f_i = −k q_i, ∂f_i/∂q_i = −k, ∂f_i/∂v_i = 0.
   int uncoupledGroupSize() const override { return 1; }
   void uncoupledForce(Real t, std::span<const Real> q, std::span<const Real> v, std::size_t first, std::span<Real> f,

@@ -37,7 +37,7 @@ void ParticleSystem::force(Real t, std::span<const Real> q, std::span<const Real
 }
 
 void ParticleSystem::forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v,
-                                       std::span<const Real> dq, std::span<const Real> dv, std::span<Real> out) const {
+                                       std::span<const Real> dq, std::span<const Real> dv, std::span<Real> out) {
   std::fill(out.begin(), out.end(), 0.0);
   const std::span<Vec3> df = asVec3(out);
   springs::accumulateSpringDifferential(springs, asVec3(q), asVec3(dq), asVec3(dv), df);

@@ -34,7 +34,7 @@ class ParticleSystem final : public ode::SecondOrderSystem {
   std::span<const Real> inverseMasses() const override { return dofInverseMass_; }
   void force(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Real> out) const override;
   void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
-                         std::span<const Real> dv, std::span<Real> out) const override;
+                         std::span<const Real> dv, std::span<Real> out) override;
   /// Springs (−K_s, −K_d at both ends) and drag; gravity and the position fields add nothing (their small
   /// ∂f/∂x is left out of the differential too).
   bool forceJacobianDiagonalBlocks(Real t, std::span<const Real> q, std::span<const Real> v, std::span<Mat3> dfdq,

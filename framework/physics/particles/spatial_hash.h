@@ -46,9 +46,10 @@ class SpatialHash {
   void build(std::span<const Vec3> positions, Real cellSize);
   /// Calls visit(j) for every particle j in the 27 cells around p (each bucket once; may include
   /// particles farther away than one cell when cells collide in the table, so callers test distance).
-  /// Not thread-safe: it marks the buckets it has visited in a scratch array of the hash.
+  /// Not const: it marks the buckets it has visited in the hash's own scratch array, so two queries on
+  /// one hash may not overlap (each thread or world keeps its own hash).
   template <typename Visit>
-  void forEachNear(const Vec3& p, Visit&& visit) const;
+  void forEachNear(const Vec3& p, Visit&& visit);
 
   std::size_t tableSize() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
 
@@ -63,12 +64,12 @@ class SpatialHash {
   // forEachNear()'s record of the buckets it has visited: bucket b was visited by the current query
   // when visited_[b] == query_. One store and one load per cell instead of comparing each of the 27
   // buckets with all earlier ones (27·26/2 comparisons, a third of a collision sweep before).
-  mutable std::vector<std::uint32_t> visited_;
-  mutable std::uint32_t query_ = 0;
+  std::vector<std::uint32_t> visited_;
+  std::uint32_t query_ = 0;
 };
 
 template <typename Visit>
-void SpatialHash::forEachNear(const Vec3& p, Visit&& visit) const {
+void SpatialHash::forEachNear(const Vec3& p, Visit&& visit) {
   const auto ci = static_cast<std::int64_t>(std::floor(p.x * inverseCell_));
   const auto cj = static_cast<std::int64_t>(std::floor(p.y * inverseCell_));
   const auto ck = static_cast<std::int64_t>(std::floor(p.z * inverseCell_));

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "physics/collision/broad_phase.h"
+#include "physics/collision/narrow_phase.h"
 #include "physics/collision/raycast.h"
 #include "physics/collision/toi.h"
 #include "physics/core/debug_draw.h"
@@ -137,6 +138,8 @@ class World {
   std::vector<char> awake_;                        // per body: dynamic and not sleeping this step
   collision::BroadPhase broadPhase_;
   std::vector<std::pair<int, int>> pairs_;
+  std::vector<collision::Manifold> pairManifolds_;  // collide(): one pair's manifolds
+  collision::NarrowPhaseScratch narrowScratch_;     // collide(): the narrow phase's buffers
   std::vector<collision::Sweep> sweeps_;                    // per body, this step (continuous collision)
   std::vector<Vec3> startVelocity_, startAngularVelocity_;  // per body, at the start of the step
   std::vector<int> islandOf_;                               // per body: union-find root this step (−1: not dynamic)

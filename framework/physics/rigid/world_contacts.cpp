@@ -101,7 +101,7 @@ void World::collide() {
   // constraint (and fault in fresh pages) each time.
   const std::size_t needed = std::max(contacts_.size(), pairs_.size()) + 16;
   if (next.capacity() < needed) next.reserve(needed + needed / 2);
-  thread_local std::vector<collision::Manifold> manifolds;
+  std::vector<collision::Manifold>& manifolds = pairManifolds_;
   std::size_t cursor = 0;  // into the old, sorted contacts
   for (const auto& [a, b] : pairs_) {
     const Body& A = bodies_[a];
@@ -120,7 +120,8 @@ void World::collide() {
     const collision::Transform relative = collision::relative(A.pose(), B.pose());
     if (reuseContacts(a, b, cursor, relative, next)) continue;
     manifolds.clear();
-    collision::collide(A.shape, A.pose(), B.shape, B.pose(), settings_.speculativeDistance, manifolds);
+    collision::collide(A.shape, A.pose(), B.shape, B.pose(), settings_.speculativeDistance, manifolds,
+                       narrowScratch_);
     std::sort(manifolds.begin(), manifolds.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
     for (const collision::Manifold& m : manifolds) {
       ContactConstraint& c = next.emplace_back();  // built in place

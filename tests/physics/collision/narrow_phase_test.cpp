@@ -94,8 +94,13 @@ void expectMostlyExact(const Agreement& r, const char* name) {
 
 const PairFn kDispatch = [](const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
   std::vector<Manifold> out;
-  collide(a, pa, b, pb, margin, out);
+  NarrowPhaseScratch scratch;
+  collide(a, pa, b, pb, margin, out, scratch);
   return out.empty() ? Manifold{} : out[0];
+};
+const PairFn kPolytopes = [](const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin) {
+  NarrowPhaseScratch scratch;
+  return collidePolytopes(a, pa, b, pb, margin, scratch);
 };
 
 TEST(NarrowPhaseAgreesWithGjkEpa, SphereSphere) {
@@ -169,8 +174,8 @@ TEST(NarrowPhaseAgreesWithGjkEpa, BoxHullAndHullHull) {
   std::mt19937_64 rng(7);
   const Shape hullA = makeHull(randomHullPoints(rng, 0.4)).value();
   const Shape hullB = makeHull(randomHullPoints(rng, 0.5)).value();
-  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.5, 0.2)).value(), hullA, collidePolytopes, true, 8), "box-hull");
-  expectMostlyExact(compareWithGjk(hullA, hullB, collidePolytopes, true, 9), "hull-hull");
+  expectMostlyExact(compareWithGjk(makeBox(Vec3(0.3, 0.5, 0.2)).value(), hullA, kPolytopes, true, 8), "box-hull");
+  expectMostlyExact(compareWithGjk(hullA, hullB, kPolytopes, true, 9), "hull-hull");
 }
 TEST(NarrowPhaseAgreesWithGjkEpa, RoundShapesAgainstHullsThroughTheDispatcher) {
   std::mt19937_64 rng(10);
@@ -207,7 +212,8 @@ TEST(BoxBoxManifold, ABoxRestingFlatOnABoxHasFourPointsAtItsCorners) {
 TEST(PlaneManifold, HoldsTheDeepestVerticesOfATiltedBoxAndTheSphereBottom) {
   const Shape box = makeBox(Vec3(0.5, 0.5, 0.5)).value();
   const Transform tilted{Vec3(0.0, 0.6, 0.0), glm::angleAxis(0.4, Vec3(0, 0, 1)) * glm::angleAxis(0.3, Vec3(1, 0, 0))};
-  const Manifold m = collideConvexPlane(box, tilted, Transform{}, 10.0);
+  NarrowPhaseScratch scratch;
+  const Manifold m = collideConvexPlane(box, tilted, Transform{}, 10.0, scratch);
   // Reference: heights of all 8 corners.
   Real lowest = 1e9;
   for (int i = 0; i < 8; ++i)
@@ -217,7 +223,7 @@ TEST(PlaneManifold, HoldsTheDeepestVerticesOfATiltedBoxAndTheSphereBottom) {
   EXPECT_NEAR(m.deepest(), lowest, 1e-12);
   EXPECT_VEC3_NEAR(m.normal, -kUp, 0.0);  // from the box (A) to the plane (B)
   const Manifold s =
-      collideConvexPlane(makeSphere(0.3).value(), {Vec3(1.0, 0.25, 2.0), Quat(1, 0, 0, 0)}, Transform{}, 0.1);
+      collideConvexPlane(makeSphere(0.3).value(), {Vec3(1.0, 0.25, 2.0), Quat(1, 0, 0, 0)}, Transform{}, 0.1, scratch);
   ASSERT_EQ(s.count, 1);
   EXPECT_NEAR(s.separation, -0.05, 1e-15);
   EXPECT_VEC3_NEAR(s.points[0].point, Vec3(1.0, -0.025, 2.0), 1e-15);
@@ -230,7 +236,8 @@ TEST(MeshManifold, ABoxOnATwoTriangleFloorMatchesThePlane) {
   const Shape box = makeBox(Vec3(0.4, 0.3, 0.2)).value();
   const Transform pose{Vec3(0.3, 0.29, -0.2), glm::angleAxis(0.2, kUp)};
   std::vector<Manifold> out;
-  collide(box, pose, floor, Transform{}, 0.02, out);
+  NarrowPhaseScratch scratch;
+  collide(box, pose, floor, Transform{}, 0.02, out, scratch);
   ASSERT_FALSE(out.empty());
   int points = 0;
   for (const Manifold& m : out) {

@@ -51,7 +51,7 @@ struct DenseStep {
   Eigen::VectorXd b;
   std::vector<std::size_t> free;  // coordinate of each row
 };
-DenseStep assemble(const particles::ParticleSystem& sys, Real h) {
+DenseStep assemble(particles::ParticleSystem& sys, Real h) {
   const std::size_t n = sys.dofCount();
   const std::span<const Real> q = sys.positions(), v = sys.velocities(), w = sys.inverseMasses();
   DenseStep d;
@@ -248,7 +248,7 @@ class WithoutJacobianBlocks final : public SecondOrderSystem {
     s_.force(t, q, v, out);
   }
   void forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v, std::span<const Real> dq,
-                         std::span<const Real> dv, std::span<Real> out) const override {
+                         std::span<const Real> dv, std::span<Real> out) override {
     s_.forceDifferential(t, q, v, dq, dv, out);
   }
 
