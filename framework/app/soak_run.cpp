@@ -356,8 +356,8 @@ class Soak {
 
 // glibc's per-thread cache keeps up to 7 freed chunks of each of its 64 sizes (up to 1,032 bytes) for reuse,
 // and mallinfo2 counts them as in use: up to about 230 KiB that fill and drain with the allocation pattern,
-// more than 1 % of a small lab's resident size (a 10-minute cloth soak showed +206 KiB with the cache on,
-// under 3 KiB with it off). The soak therefore measures with the cache off: it runs itself again with
+// more than the 1 % of a small lab's resident size that the soak allows (docs/reliability.md). The soak
+// therefore measures with the cache off: it runs itself again with
 // the tunable set. Sanitizer builds keep their own allocator and are not judged.
 void restartWithoutThreadCache(const char* const* argv) {
 #if defined(__GLIBC__)

@@ -5,13 +5,14 @@
 #include <span>
 
 #include "app/metrics_report.h"
+#include "physics/core/byte_hash.h"
 
 namespace pba::app {
 namespace {
 
 class HashingDraw final : public DebugDraw {
  public:
-  std::uint64_t hash = 1469598103934665603ull;  // FNV-1a offset basis
+  ByteHash hash;
 
   void point(const Vec3& p, float size, const Color& c) override {
     tag(1);
@@ -68,22 +69,11 @@ class HashingDraw final : public DebugDraw {
   }
 
  private:
-  void bytes(const void* data, std::size_t n) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < n; ++i) {
-      hash ^= b[i];
-      hash *= 1099511628211ull;  // FNV-1a prime
-    }
-  }
-  void tag(unsigned char t) { bytes(&t, 1); }
+  void bytes(const void* data, std::size_t n) { hash.bytes(data, n); }
+  void tag(unsigned char t) { hash.add(t); }
   template <typename T>
   void add(const T& value) {
-    bytes(&value, sizeof value);
-  }
-  void add(const Vec3& v) {
-    add(v.x);
-    add(v.y);
-    add(v.z);
+    hash.add(value);
   }
   void add(const Color& c) {
     add(c.r);
@@ -98,7 +88,7 @@ class HashingDraw final : public DebugDraw {
 std::uint64_t drawHash(const Scene& scene) {
   HashingDraw draw;
   scene.draw(draw);
-  return draw.hash;
+  return draw.hash.value();
 }
 
 nlohmann::json stateFingerprint(const SceneRunner& runner) {

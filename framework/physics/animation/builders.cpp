@@ -126,20 +126,4 @@ Clip buildWaveClip(const Skeleton& s) {
   return c;
 }
 
-JointMotion jointMotion(const Skeleton& s, const Clip& clip, const Playback& playback, int joint, Real t, Real h) {
-  Pose pose;
-  Vec3 p[3];
-  JointMotion m;
-  for (int k = 0; k < 3; ++k) {
-    playPose(s, clip, t + (k - 1) * h, playback, pose);
-    const std::vector<JointWorld> world = forwardKinematics(s, pose);
-    p[k] = world[static_cast<size_t>(joint)].position;
-    if (k == 1) m.rotation = world[static_cast<size_t>(joint)].rotation;
-  }
-  m.position = p[1];
-  m.velocity = (p[2] - p[0]) / (2.0 * h);
-  m.acceleration = (p[2] - 2.0 * p[1] + p[0]) / (h * h);
-  return m;
-}
-
 }  // namespace pba::animation

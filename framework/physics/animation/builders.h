@@ -33,13 +33,5 @@ Clip buildWaveClip(const Skeleton& humanoid);
 /// World position of joint j at clip time t, and its acceleration by the second central difference
 /// over ±h [s] (the pivot acceleration of a pendulum joint: root translation plus the keyframed
 /// ancestors' rotations, CMU asst4 "reaction to the parent's motion").
-struct JointMotion {
-  Vec3 position{0.0};      ///< [m]
-  Vec3 velocity{0.0};      ///< [m/s]
-  Vec3 acceleration{0.0};  ///< [m/s²]
-  Quat rotation{1, 0, 0, 0};
-};
-JointMotion jointMotion(const Skeleton& skeleton, const Clip& clip, const Playback& playback, int joint, Real t,
-                        Real h = 1e-3);
 
 }  // namespace pba::animation

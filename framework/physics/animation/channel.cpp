@@ -9,20 +9,6 @@ namespace {
 constexpr Real kSameTime = 1e-9;  // [s] two keys closer than this are "at equal times"
 }
 
-const char* interpolationName(Interpolation mode) {
-  switch (mode) {
-    case Interpolation::Step:
-      return "step";
-    case Interpolation::Linear:
-      return "linear";
-    case Interpolation::CatmullRom:
-      return "catmull-rom";
-    case Interpolation::NaturalCubic:
-      return "natural-cubic";
-  }
-  return "?";
-}
-
 namespace detail {
 
 Result<int> insertionIndex(const std::vector<Real>& times, Real time, const std::string& field) {

@@ -23,7 +23,6 @@ enum class Interpolation {
   CatmullRom,    ///< C¹ (ANIM-1, ANIM-2)
   NaturalCubic,  ///< C², zero second derivative at the ends
 };
-const char* interpolationName(Interpolation mode);
 
 namespace detail {
 /// Index at which a key at `time` goes, or an error when a key already sits there (within 1e-9 s).

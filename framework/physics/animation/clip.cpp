@@ -7,18 +7,6 @@
 
 namespace pba::animation {
 
-const char* rootMotionName(RootMotion mode) {
-  switch (mode) {
-    case RootMotion::AsRecorded:
-      return "as-recorded";
-    case RootMotion::Accumulate:
-      return "accumulate";
-    case RootMotion::InPlace:
-      return "in-place";
-  }
-  return "?";
-}
-
 Status validate(const Clip& clip, const Skeleton& skeleton, const std::string& source) {
   const std::string where = source.empty() ? std::string() : source + ": ";
   if (clip.tracks.size() != skeleton.names.size())

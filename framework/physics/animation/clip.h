@@ -39,7 +39,6 @@ enum class RootMotion {
   Accumulate,  ///< each loop continues from where the last one ended
   InPlace,     ///< the root's horizontal motion is removed
 };
-const char* rootMotionName(RootMotion mode);
 
 struct Playback {
   bool loop = true;

@@ -16,9 +16,9 @@
 //     each cell's particles by index). TMP bounds each particle's speed by 0.2 thickness per substep
 //     (ClothSolverSettings::selfCollisionMaxTravel) and queries the pairs closer than the farthest a
 //     particle can travel in the frame (0.2 n thickness for n substeps); we query one thickness farther
-//     (measured on the 30 × 200 ribbon: TMP's distance alone let 5 pairs pass within half the thickness,
-//     this one none). A heuristic, not a guarantee: two particles rushing at each other could meet unseen.
-//     Piled up, F holds ~240,000 pairs of which a few thousand touch, and every substep checks them all.
+//     (TMP's distance alone can let a pair pass within half the thickness; docs/performance-cloth.md).
+//     A heuristic, not a guarantee: two particles rushing at each other could meet unseen. Piled up, F
+//     holds far more pairs than touch, and every substep checks them all.
 //   - A Verlet list (Verlet 1967; Allen & Tildesley, "Computer Simulation of Liquids", §5.3), the default:
 //     the pairs closer than thickness + s (the skin) when the list was built, kept across substeps and
 //     frames. Before each sweep every particle's distance from where it was at the build is checked; when

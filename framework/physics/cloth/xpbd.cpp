@@ -49,7 +49,7 @@ void projectIsometricBending([[maybe_unused]] const BendingStencil& s, [[maybe_u
 }
 
 namespace {
-// flatten: CLOTH-2's correction is inlined into the sweep (half the cost of a sweep was the call).
+// flatten: CLOTH-2's correction is inlined into the sweep (the call would cost as much as the correction).
 // The sweep hands CLOTH-2 the scaled compliance α̃ = α/h² of each kind, computed once, with h = 1: then
 // α̃/h² is α̃ exactly and the compiler drops the division, one of the four a constraint costs.
 // One loop per mode: XPBD adds the corrections as they are (PBD's stiffness would be 1, and 1·Δx is Δx to

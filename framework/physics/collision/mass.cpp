@@ -185,6 +185,4 @@ MassProperties shapeMass(const Shape& shape, Real density) {
   return {};
 }
 
-Real shapeVolume(const Shape& shape) { return shapeMass(shape, 1.0).mass; }
-
 }  // namespace pba::collision

@@ -25,7 +25,5 @@ MassProperties capsuleMass(Real halfHeight, Real radius, Real density);
 MassProperties polyhedronMass(const ConvexHull& hull, Real density);
 /// Dispatch on the shape kind; planes and meshes (static only) have no mass.
 MassProperties shapeMass(const Shape& shape, Real density);
-/// Volume of a shape [m³] (0 for planes and meshes).
-Real shapeVolume(const Shape& shape);
 
 }  // namespace pba::collision

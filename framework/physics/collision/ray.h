@@ -1,5 +1,6 @@
 #pragma once
-// Rays and ray casts used for picking (and later for collision queries).
+// Rays, and the ray-sphere and ray-plane intersections that picking and the shape ray casts
+// (raycast.h) share.
 #include <optional>
 
 #include "physics/core/types.h"

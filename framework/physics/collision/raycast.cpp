@@ -9,16 +9,11 @@
 namespace pba::collision {
 
 std::optional<RayHit> rayCastSphere(Real radius, const Ray& ray, Real maxT) {
-  // |o + t d|² = r²: t² + 2bt + c = 0 with b = o·d, c = |o|² − r²; entering root −b − √(b² − c).
-  const Real b = glm::dot(ray.origin, ray.direction);
-  const Real c = glm::dot(ray.origin, ray.origin) - radius * radius;
-  if (c < 0.0) return std::nullopt;  // starts inside
-  const Real disc = b * b - c;
-  if (disc < 0.0) return std::nullopt;
-  const Real t = -b - std::sqrt(disc);
-  if (t < 0.0 || t > maxT) return std::nullopt;
-  const Vec3 p = pointAt(ray, t);
-  return RayHit{t, p, p / radius, -1};
+  if (glm::dot(ray.origin, ray.origin) < radius * radius) return std::nullopt;  // starts inside
+  const std::optional<Real> t = intersectRaySphere(ray, Vec3(0.0), radius);     // the entering root
+  if (!t || *t > maxT) return std::nullopt;
+  const Vec3 p = pointAt(ray, *t);
+  return RayHit{*t, p, p / radius, -1};
 }
 
 std::optional<RayHit> rayCastCapsule(Real halfHeight, Real radius, const Ray& ray, Real maxT) {

@@ -3,7 +3,7 @@
 // candidate values both passes use.
 //
 // Why (docs/performance-ik.md, "Trees and analytic IK"): on the hand (ball knuckles within ±60° per
-// Euler angle, two one-way hinges per finger), FABRIK as published reaches 21 % of goals from rest.
+// Euler angle, two one-way hinges per finger), FABRIK as published reaches few goals from rest.
 // Two things trap it. (1) The plane a hinge bends in is the one the shortest-arc rule carries along
 // from the previous pose: a straight finger whose one-way hinges face away from the goal clamps to
 // straight and stays so. (2) IK-6's clamp of a ball joint's Euler angles can land far from the best

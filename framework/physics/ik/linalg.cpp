@@ -71,9 +71,9 @@ bool solveSpd(const Matrix& A, const std::vector<Real>& b, std::vector<Real>& x)
 // dot products afresh in one pass over J (their Gram matrix G = W Wᵀ), Jacobi sweeps on the k × k matrix G
 // (the two-sided step Rᵀ G R gives the dot products the rotated rows would have), then the round's product
 // of rotations applied to the rows in one pass. Two or three rounds for IK's Jacobians, instead of a pass
-// over two rows for every rotation. Eigen's JacobiSVD, which first QR-factorises Jᵀ with column pivoting,
-// took 2.5 times the instructions on IK's 3 × 30 Jacobians (19.7 k against 7.3 k). A tall J, or one of
-// more than 64 rows, goes to Eigen's JacobiSVD.
+// over two rows for every rotation. Eigen's JacobiSVD first QR-factorises Jᵀ with column pivoting, work a
+// 3-row J does not need (docs/performance-ik-kdl.md compares the two). A tall J, or one of more than 64
+// rows, goes to Eigen's JacobiSVD.
 struct SvdWorkspace::Impl {
   Eigen::JacobiSVD<Eigen::MatrixXd> eigen;  // tall matrices and more than 64 rows
   std::vector<Real> w;                      // the rows being orthogonalised, column-major: W(p, i) at w[i·k + p]

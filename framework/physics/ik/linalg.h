@@ -2,7 +2,7 @@
 // Small dense linear algebra for the Jacobian IK methods: a row-major matrix, products with vectors,
 // J Jᵀ, a Cholesky solve and the singular value decomposition. The factorisations come from Eigen 3.4
 // (docs/architecture.md §1: linear algebra that is not the lesson), except the SVD of a wide J, which is
-// our own one-sided Jacobi (2.5 times fewer instructions on IK's 3 × n Jacobians); the lesson, the damped
+// our own one-sided Jacobi (a 3 × n Jacobian needs no QR step first); the lesson, the damped
 // least-squares step of IK-4, is written on top of solveSpd.
 #include <memory>
 #include <vector>

@@ -51,8 +51,6 @@ class SpatialHash {
   template <typename Visit>
   void forEachNear(const Vec3& p, Visit&& visit);
 
-  std::size_t tableSize() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
-
  private:
   std::uint32_t bucket(std::int64_t i, std::int64_t j, std::int64_t k) const { return layout_.bucket(i, j, k); }
   Real inverseCell_ = 1.0;

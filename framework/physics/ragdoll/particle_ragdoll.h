@@ -7,7 +7,7 @@
 //      later correction of x is also a correction of the velocity);
 //   2. broad phase: bone boxes (fitted frames) as AABBs fattened by this step's travel, sweep and prune
 //      on x; jointed pairs and pairs of fixed bones are skipped (the paper tested every unjointed pair
-//      in every iteration, which made its 120-bone test 33× slower than real time);
+//      in every iteration, a cost quadratic in the bones; docs/performance-ragdoll.md);
 //   3. `iterations` times, in this order: the six sticks of every bone (relaxation), the joints, the
 //      joint limits, then the contacts with the ground and between the paired bones (projection), so
 //      that a step ends out of the ground (sticks last instead left 1.1 cm penetration and 1.7 cm joint gaps);
@@ -44,8 +44,8 @@ namespace pba::ragdoll {
 struct ParticleSettings {
   Vec3 gravity{0.0, -kStandardGravity, 0.0};  ///< [m/s²]
   int iterations = 20;                        ///< relaxation + projection passes per step (paper test 3: 2, 5, 20)
-  /// Sweeps over the sticks in each pass (Jakobsen: 1). 3 keep bones within 1 % of their shape after
-  /// relaxation while joints pull on them (a swinging chain: 1.4 % with 1 sweep).
+  /// Sweeps over the sticks in each pass (Jakobsen: 1). More sweeps keep the bones' shape while joints
+  /// pull on them (the ragdoll tests check the bones within 1 % of their shape).
   int stickSweeps = 3;
   /// Share [0, 1] of a contacting particle's tangential step removed each step (the paper moves the old
   /// position towards the current one by a fixed fraction). Typical 0.5.

@@ -7,6 +7,7 @@
 
 #include "physics/cloth/cloth.h"
 #include "physics/cloth/solver.h"
+#include "physics/core/byte_hash.h"
 #include "support/fp_traps.h"
 
 namespace pba::cloth::testing {
@@ -95,16 +96,12 @@ inline ClothStepStats run(Cloth& cloth, ClothSolver& solver, const ClothEnvironm
   return stats;
 }
 
-/// FNV-1a over the bytes of positions and velocities: equal hashes ⇔ (practically) identical state.
+/// A hash of the bits of positions and velocities: equal hashes ⇔ (practically) identical state.
 inline std::uint64_t stateHash(const Cloth& c) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](const std::vector<Vec3>& v) {
-    const auto* bytes = reinterpret_cast<const unsigned char*>(v.data());
-    for (std::size_t i = 0; i < v.size() * sizeof(Vec3); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
-  };
-  mix(c.position);
-  mix(c.velocity);
-  return h;
+  ByteHash h;
+  h.addAll(std::span<const Vec3>(c.position));
+  h.addAll(std::span<const Vec3>(c.velocity));
+  return h.value();
 }
 
 }  // namespace pba::cloth::testing

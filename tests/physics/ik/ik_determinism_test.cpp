@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "ik_random_targets.h"
+#include "physics/core/byte_hash.h"
 #include "physics/ik/builders.h"
 #include "physics/ik/solver.h"
 
@@ -31,14 +32,10 @@ std::uint64_t bitsOf(double x) {
 }
 
 std::uint64_t poseHash(const Pose& pose) {
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
-  auto mix = [&](Real x) {
-    const std::uint64_t bits = bitsOf(x);
-    for (int b = 0; b < 64; b += 8) h = (h ^ ((bits >> b) & 0xFF)) * 1099511628211ull;
-  };
-  for (Real v : pose.dofs) mix(v);
-  for (const Quat& q : pose.rotations) mix(q.w), mix(q.x), mix(q.y), mix(q.z);
-  return h;
+  ByteHash h;
+  h.addAll(std::span<const Real>(pose.dofs));
+  h.addAll(std::span<const Quat>(pose.rotations));
+  return h.value();
 }
 
 void expectIdentical(const SolveResult& a, const Pose& pa, const SolveResult& b, const Pose& pb) {

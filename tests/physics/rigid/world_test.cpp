@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "physics/core/byte_hash.h"
 #include "physics/rigid/builders.h"
 #include "support/expect_helpers.h"
 #include "support/fp_traps.h"
@@ -143,17 +144,14 @@ TEST(NonFiniteState, NamesTheBodyWhoseStateIsNotFinite) {
 
 // A hash of every body's state (bit patterns, so any difference shows).
 std::uint64_t stateHash(const World& w) {
-  std::uint64_t h = 1469598103934665603ull;
-  auto mix = [&](double v) {
-    std::uint64_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    h = (h ^ bits) * 1099511628211ull;
-  };
+  ByteHash h;
   for (const Body& b : w.bodies()) {
-    for (int k = 0; k < 3; ++k) mix(b.position[k]), mix(b.linearVelocity[k]), mix(b.angularVelocity[k]);
-    mix(b.orientation.w), mix(b.orientation.x), mix(b.orientation.y), mix(b.orientation.z);
+    h.add(b.position);
+    h.add(b.linearVelocity);
+    h.add(b.angularVelocity);
+    h.add(b.orientation);
   }
-  return h;
+  return h.value();
 }
 
 std::uint64_t runPile(collision::BroadPhaseKind kind) {
