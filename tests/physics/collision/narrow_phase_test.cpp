@@ -172,6 +172,7 @@ TEST(NarrowPhaseAgreesWithClosedForms, CapsuleBox) {
   std::mt19937_64 rng(5);
   const Real margin = 0.5;
   int compared = 0, apart = 0, through = 0;
+  NarrowPhaseScratch scratch;
   for (int i = 0; i < 10000; ++i) {
     const Transform pa = randomPose(rng, 0.3), pb = randomPose(rng, 0.9);
     const Vec3 p0 = pa.apply({0.0, -capsule.halfHeight, 0.0}), p1 = pa.apply({0.0, capsule.halfHeight, 0.0});
@@ -179,7 +180,7 @@ TEST(NarrowPhaseAgreesWithClosedForms, CapsuleBox) {
     if (gap > 0.0 && gap < 1e-6) continue;  // grazing: neither closed form is well conditioned
     const Real expected = gap > 0.0 ? gap - capsule.radius : -(segmentBoxPenetration(p0, p1, box, pb) + capsule.radius);
     std::vector<Manifold> out;
-    collide(capsule, pa, box, pb, margin, out);
+    collide(capsule, pa, box, pb, margin, out, scratch);
     if (expected < margin - 1e-9) {
       ASSERT_FALSE(out.empty()) << "case " << i << ": expected separation " << expected;
     }
