@@ -37,7 +37,7 @@ struct WorldHull {
 /// threads; the contents mean nothing between calls.
 struct NarrowPhaseScratch {
   std::vector<ManifoldPoint> candidates;  // collideConvexPlane: the core vertices within the margin
-  WorldHull hullA, hullB;                  // collidePolytopes: both hulls in world coordinates
+  WorldHull hullA, hullB;                 // collidePolytopes: both hulls in world coordinates
 };
 
 Manifold collideSpheres(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin);

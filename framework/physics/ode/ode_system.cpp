@@ -54,8 +54,7 @@ void SecondOrderSystem::uncoupledForce(Real, std::span<const Real>, std::span<co
 }
 
 void SecondOrderSystem::forceDifferential(Real t, std::span<const Real> q, std::span<const Real> v,
-                                          std::span<const Real> dq, std::span<const Real> dv,
-                                          std::span<Real> out) {
+                                          std::span<const Real> dq, std::span<const Real> dv, std::span<Real> out) {
   // Central difference along the direction (dq, dv): [f(s + εd) − f(s − εd)] / 2ε, error O(ε²).
   // ε scales with the size of s and of d so that the perturbation is a fixed relative change.
   const std::size_t n = dofCount();

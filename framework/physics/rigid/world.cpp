@@ -52,12 +52,6 @@ void World::wake(int i) {
   bodies_[i].sleepTime = 0.0;
 }
 
-void World::setPose(int i, const Vec3& position, const Quat& orientation) {
-  bodies_[i].position = position;
-  bodies_[i].orientation = glm::normalize(orientation);
-  wake(i);
-}
-
 void World::setVelocity(int i, const Vec3& linear, const Vec3& angular) {
   bodies_[i].linearVelocity = linear;
   bodies_[i].angularVelocity = angular;

@@ -80,8 +80,7 @@ class World {
   /// A joint's settings, editable between steps (motor speed and torque, limits, spring).
   JointDesc& jointDesc(int joint) { return joints_[joint].desc; }
   const std::vector<ContactConstraint>& contacts() const { return contacts_; }
-  /// Teleports or sets velocities (wakes the body and its island).
-  void setPose(int body, const Vec3& position, const Quat& orientation);
+  /// Sets a body's velocities (wakes the body and its island).
   void setVelocity(int body, const Vec3& linear, const Vec3& angular);
   void wake(int body);
 
@@ -138,8 +137,8 @@ class World {
   std::vector<char> awake_;                        // per body: dynamic and not sleeping this step
   collision::BroadPhase broadPhase_;
   std::vector<std::pair<int, int>> pairs_;
-  std::vector<collision::Manifold> pairManifolds_;  // collide(): one pair's manifolds
-  collision::NarrowPhaseScratch narrowScratch_;     // collide(): the narrow phase's buffers
+  std::vector<collision::Manifold> pairManifolds_;          // collide(): one pair's manifolds
+  collision::NarrowPhaseScratch narrowScratch_;             // collide(): the narrow phase's buffers
   std::vector<collision::Sweep> sweeps_;                    // per body, this step (continuous collision)
   std::vector<Vec3> startVelocity_, startAngularVelocity_;  // per body, at the start of the step
   std::vector<int> islandOf_;                               // per body: union-find root this step (−1: not dynamic)

@@ -120,8 +120,7 @@ void World::collide() {
     const collision::Transform relative = collision::relative(A.pose(), B.pose());
     if (reuseContacts(a, b, cursor, relative, next)) continue;
     manifolds.clear();
-    collision::collide(A.shape, A.pose(), B.shape, B.pose(), settings_.speculativeDistance, manifolds,
-                       narrowScratch_);
+    collision::collide(A.shape, A.pose(), B.shape, B.pose(), settings_.speculativeDistance, manifolds, narrowScratch_);
     std::sort(manifolds.begin(), manifolds.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
     for (const collision::Manifold& m : manifolds) {
       ContactConstraint& c = next.emplace_back();  // built in place
