@@ -100,6 +100,9 @@ build_project() {
   local prefixes targets=() lab
   prefixes="$(IFS=':'; echo "${PREFIXES[*]}")"
   for lab in "${labs[@]}"; do targets+=("pba-$lab"); done
+  mkdir -p "$(dirname "$BUILD")" # a fresh clone has no build/ yet (the logs sit beside the build folder)
+  # The preset is read from the current folder: ctest runs this from its own (web.build).
+  cd "$ROOT"
   PBA_WEB_PREFIX_PATH="$prefixes" cmake --preset web -DPBA_WEB_PREFIX_PATH="$prefixes" >"$BUILD.configure.log" 2>&1 ||
     { tail -n 40 "$BUILD.configure.log" >&2; die "configure failed (log $BUILD.configure.log)"; }
   nice -n 5 cmake --build "$BUILD" -j "$JOBS" --target "${targets[@]}" >"$BUILD.build.log" 2>&1 ||

@@ -442,7 +442,10 @@ void mainPanel(LabSession& session, UiState& ui) {
     if (ImGui::Button("Screenshot (F12)")) ui.screenshotRequested = true;
     sameLineIfFits("Help (F1)");
     if (ImGui::Button("Help (F1)")) ui.showHelp = !ui.showHelp;
-    if (ImGui::Button(ui.recording.empty() ? "Record (F9)" : "Stop recording (F9)")) ui.recordRequested = true;
+    if (!kRecordingAvailable)
+      ImGui::TextDisabled("Recording (F9): native build only (a page has no ffmpeg and no disk)");
+    else if (ImGui::Button(ui.recording.empty() ? "Record (F9)" : "Stop recording (F9)"))
+      ui.recordRequested = true;
     if (!ui.recording.empty()) {
       ImGui::SameLine();
       ImGui::TextColored(detail::kAlertRed, "%s", ui.recording.c_str());

@@ -12,6 +12,14 @@
 
 namespace pba::app {
 
+/// Recording (F9, the Record button) writes MP4 through ffmpeg or PNG files to the disk; a browser page
+/// has neither, so there the button gives way to a line saying so and F9 does nothing.
+#ifdef __EMSCRIPTEN__
+inline constexpr bool kRecordingAvailable = false;
+#else
+inline constexpr bool kRecordingAvailable = true;
+#endif
+
 /// A change of the window's mode. Keys and widgets only ask for it during a frame; UiState::applyPending
 /// carries it out between frames, so no frame is built under two readings of a mode (issue 15: L
 /// inside a frame unbalanced the lecture font's push and pop and aborted every lab).

@@ -90,7 +90,7 @@ void WindowInput::keys(LabSession& session, UiState& ui, const graphics::OrbitCa
         ui.screenshotRequested = true;
         break;
       case GLFW_KEY_F9:
-        ui.recordRequested = true;
+        ui.recordRequested = kRecordingAvailable;
         break;
       // Mode changes wait for the end of the frame (UiState::applyPending).
       case GLFW_KEY_L:

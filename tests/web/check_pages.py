@@ -9,7 +9,8 @@ the lab has drawn REPORT frames, then checks that
   - the console shows no error and the page threw no exception;
   - the lab's status (window.pbaStatus(), cmake/web/query.js) names the scene of the query, and the
     parameter set in the query has that value;
-  - the screenshot (OUT/LAB-SCENE.png) is not blank: many distinct colours.
+  - the screenshot (OUT/LAB-SCENE.png) is not blank: many distinct colours;
+  - on the default scene's page, "Open a file" copies a picked file into the page's file system.
 Prints one line a page; exits 1 naming what failed."""
 import base64
 import functools
@@ -28,6 +29,8 @@ CHROMIUM_FLAGS = ["--headless", "--no-sandbox", "--use-angle=swiftshader", "--en
                   "--disable-background-networking", "--disable-component-update", "--disable-sync",
                   "--no-first-run", "--window-size=1280,720", "--hide-scrollbars", "--remote-debugging-pipe"]
 REPORT_FRAMES = 60
+FRAME = (1280, 720)  # the lab's frame (?size=), that of the desktop screenshots (--screenshot)
+NOTE_ROOM = 40  # [px] the page's line under the canvas (cmake/web/shell.html) fits in this
 PAGE_TIMEOUT_S = 240  # a page that never reaches its frames (a hang) fails instead of blocking ctest
 
 
@@ -147,12 +150,38 @@ def png_colours(data, step=7):
     return len(seen)
 
 
+def check_file_picker(chrome, session):
+    """"Open a file" under the canvas copies the picked file into the page's file system (/picked/NAME,
+    cmake/web/query.js): pick a model of the repository and compare the copy's size with the file's."""
+    model = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))),
+                         "resources", "models", "humanoid.bvh")
+    root = chrome.call("DOM.getDocument", session=session)["root"]["nodeId"]
+    node = chrome.call("DOM.querySelector", session=session, nodeId=root, selector="#pick")["nodeId"]
+    if not node:
+        return ["no file picker (#pick) under the canvas"]
+    chrome.call("DOM.setFileInputFiles", session=session, nodeId=node, files=[model])
+    expression = "(function () { try { return FS.stat('/picked/humanoid.bvh').size; } catch (e) { return -1; } })()"
+    size, deadline = -1, time.monotonic() + 30
+    while size < 0 and time.monotonic() < deadline:
+        size = chrome.call("Runtime.evaluate", session=session, returnByValue=True,
+                           expression=expression).get("result", {}).get("value", -1)
+        time.sleep(0.2)  # polling the page: the copy is asynchronous (File.arrayBuffer)
+    if size != os.path.getsize(model):
+        return [f"the picked file is not in the page's file system (/picked/humanoid.bvh: size {size})"]
+    return []
+
+
 def check_page(chrome, base, out, lab, scene, assignment):
-    query = f"?scene={scene}&report={REPORT_FRAMES}" + (f"&set={assignment}" if assignment else "")
+    width, height = FRAME
+    query = f"?scene={scene}&report={REPORT_FRAMES}&size={width}x{height}" + (f"&set={assignment}" if assignment else "")
     target = chrome.call("Target.createTarget", url="about:blank")["targetId"]
     session = chrome.call("Target.attachToTarget", targetId=target, flatten=True)["sessionId"]
-    for domain in ("Runtime.enable", "Log.enable", "Page.enable"):
+    for domain in ("Runtime.enable", "Log.enable", "Page.enable", "DOM.enable"):
         chrome.call(domain, session=session)
+    # Headless Chromium's viewport (1280x633 for a 1280x720 window) would cut the frame: the page gets
+    # the frame's size and room for the line under the canvas.
+    chrome.call("Emulation.setDeviceMetricsOverride", session=session, width=width, height=height + NOTE_ROOM,
+                deviceScaleFactor=1, mobile=False)
     chrome.call("Page.navigate", session=session, url=f"{base}/pba-{lab}.html{query}")
     status, deadline = None, time.monotonic() + PAGE_TIMEOUT_S
     failures = []
@@ -166,7 +195,8 @@ def check_page(chrome, base, out, lab, scene, assignment):
         if console_errors(chrome.events, session):
             break
         time.sleep(0.5)  # polling the page, not a timed assertion: the deadline only bounds a hang
-    shot = base64.b64decode(chrome.call("Page.captureScreenshot", session=session, format="png")["data"])
+    frame = {"x": 0, "y": 0, "width": width, "height": height, "scale": 1}  # the canvas: the lab's frame
+    shot = base64.b64decode(chrome.call("Page.captureScreenshot", session=session, format="png", clip=frame)["data"])
     png = os.path.join(out, f"{lab}-{scene}.png")
     with open(png, "wb") as f:
         f.write(shot)
@@ -181,6 +211,8 @@ def check_page(chrome, base, out, lab, scene, assignment):
             got = status.get("params", {}).get(name)
             if got is None or abs(float(got) - float(value)) > 1e-9 * max(1.0, abs(float(value))):
                 failures.append(f"parameter {name} is {got!r}, the query set {value}")
+    if not assignment:
+        failures += check_file_picker(chrome, session)
     colours = png_colours(shot)
     if colours < 64:
         failures.append(f"the screenshot looks blank ({colours} colours)")
