@@ -20,7 +20,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -259,13 +258,8 @@ TEST_P(RagdollFromBvh, LandsAndComesToRestWithBothMethodsWithinTheBounds) {
   });
   expectRests("particle", file, po, d.bones.size());
 
-  ragdoll::ConstraintSettings cs;
-  if (const char* e = std::getenv("DBG_SUB")) cs.world.substeps = std::atoi(e);
-  if (const char* e = std::getenv("DBG_IT")) cs.world.iterations = std::atoi(e);
-  if (const char* e = std::getenv("DBG_RELAX")) cs.world.relaxIterations = std::atoi(e);
-  if (const char* e = std::getenv("DBG_JH")) cs.world.jointHertz = std::atof(e);
-  if (const char* e = std::getenv("DBG_CH")) cs.world.contactHertz = std::atof(e);
-  if (const char* e = std::getenv("DBG_SPEC")) cs.world.speculativeDistance = std::atof(e);
+  ragdoll::ConstraintSettings cs;  // the character scene's
+  cs.world = ragdoll::skeletonRagdollWorldSettings();
   ragdoll::ConstraintRagdoll r = ragdoll::ConstraintRagdoll::build(d, cs).value();
   const Outcome ro = run(d, [&] {
     r.step(kDt);
@@ -274,10 +268,6 @@ TEST_P(RagdollFromBvh, LandsAndComesToRestWithBothMethodsWithinTheBounds) {
     return pose;
   });
   expectRests("constraint", file, ro, d.bones.size());
-  for (int i = 0; i < r.boneCount(); ++i) {
-    const auto& body = r.world().body(r.bodyOf(i));
-    std::printf("DEBUG %s v %.3f w %.3f sleeping %d y %.3f\n", d.bones[i].name.c_str(), glm::length(body.linearVelocity), glm::length(body.angularVelocity), body.sleeping, body.position.y);
-  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryBvhFile, RagdollFromBvh, ::testing::ValuesIn(bvhCases()),

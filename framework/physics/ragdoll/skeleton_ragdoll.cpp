@@ -32,6 +32,7 @@ Real coneOf(const std::string& name, Real fallback) {
   if (has(n, "hip") || has(n, "upleg") || has(n, "thigh")) return degToRad(60.0);
   if (has(n, "arm")) return degToRad(80.0);
   if (has(n, "hand") || has(n, "foot") || has(n, "wrist") || has(n, "ankle")) return degToRad(40.0);
+  if (has(n, "toe")) return degToRad(60.0);
   return fallback;
 }
 
