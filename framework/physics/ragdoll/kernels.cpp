@@ -13,9 +13,7 @@ Vec3 anyPerpendicular(const Vec3& n) {
   return glm::normalize(e - glm::dot(e, n) * n);
 }
 
-Real sixVolume(const std::array<Vec3, 4>& x) {
-  return glm::dot(x[1] - x[0], glm::cross(x[2] - x[0], x[3] - x[0]));
-}
+Real sixVolume(const std::array<Vec3, 4>& x) { return glm::dot(x[1] - x[0], glm::cross(x[2] - x[0], x[3] - x[0])); }
 
 bool keepMinimumVolume(std::array<Vec3, 4>& x, const std::array<Real, 4>& w, Real restSixVolume, Real share) {
   const Real sign = restSixVolume < 0.0 ? -1.0 : 1.0;

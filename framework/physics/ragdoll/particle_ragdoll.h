@@ -131,7 +131,7 @@ class ParticleRagdoll {
     bool fixed = false;
     std::array<Vec3, 4> rest{};  // particle offsets in the box frame
     Mat3 restInverse{1.0};
-    Real restSixVolume = 0.0;  // [m³] sixVolume(rest), negative (kernels.h)
+    Real restSixVolume = 0.0;          // [m³] sixVolume(rest), negative (kernels.h)
     std::array<Weights, 8> corners{};  // barycentric weights of the box corners
     // The same by particle (cornerWeights[k][i] = corners[i][k]): the ground test sums them corner by
     // corner in packed pairs.

@@ -63,8 +63,7 @@ bool sharesStart(const std::vector<SkeletonJoint>& joints, const std::vector<int
   if (joints[i].parent < 0 || merged[i] != i) return false;
   for (std::size_t k = 0; k < joints.size(); ++k) {
     const int j = static_cast<int>(k);
-    if (j != i && merged[j] == j && joints[j].parent >= 0 &&
-        merged[joints[j].parent] == merged[joints[i].parent] &&
+    if (j != i && merged[j] == j && joints[j].parent >= 0 && merged[joints[j].parent] == merged[joints[i].parent] &&
         glm::length(joints[j].position - joints[i].position) < kMinBone)
       return true;
   }
