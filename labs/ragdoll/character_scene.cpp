@@ -6,6 +6,7 @@
 #include "app/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "physics/ragdoll/constraint_ragdoll.h"
+#include "physics/ragdoll/particle_ragdoll.h"
 #include "ragdoll_scene.h"
 #include "skeleton_import.h"
 
@@ -20,6 +21,7 @@ using namespace pba;
 class CharacterScene final : public lab::RagdollScene {
  public:
   CharacterScene() {
+    particleSettings_ = ragdoll::skeletonParticleSettings();
     constraintSettings_.world = ragdoll::skeletonRagdollWorldSettings();
     params_
         .text("skeleton", &file_.path,

@@ -264,7 +264,8 @@ TEST_P(RagdollFromBvh, LandsAndComesToRestWithBothMethodsWithinTheBounds) {
   const std::string file =
       fs::path(c.path).filename().string() + (f.frame < 0 ? ", rest pose" : ", frame " + std::to_string(f.frame));
 
-  ragdoll::ParticleRagdoll p = ragdoll::ParticleRagdoll::build(d).value();
+  ragdoll::ParticleRagdoll p =
+      ragdoll::ParticleRagdoll::build(d, ragdoll::skeletonParticleSettings()).value();  // the scene's
   const Outcome po = run(d, [&] {
     p.step(kDt);
     std::vector<collision::Transform> pose;

@@ -18,6 +18,12 @@ std::array<Vec3, 8> boxCorners(const Vec3& h) {
 }
 }  // namespace
 
+ParticleSettings skeletonParticleSettings() {
+  ParticleSettings s;
+  s.minVolumeShare = 0.5;
+  return s;
+}
+
 Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const ParticleSettings& settings) {
   if (Status s = validate(desc); !s) return Error{s.error()};
   if (settings.iterations < 1) return Error{"ragdoll.iterations: must be at least 1"};

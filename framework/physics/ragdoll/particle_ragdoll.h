@@ -8,8 +8,8 @@
 //   2. broad phase: bone boxes (fitted frames) as AABBs fattened by this step's travel, sweep and prune
 //      on x; jointed pairs and pairs of fixed bones are skipped (the paper tested every unjointed pair
 //      in every iteration, which made its 120-bone test 33× slower than real time);
-//   3. `iterations` times, in this order: the six sticks of every bone (relaxation) and each bone's
-//      least volume (a departure, ParticleSettings::minVolumeShare), the joints, the
+//   3. `iterations` times, in this order: the six sticks of every bone (relaxation) and, when asked,
+//      each bone's least volume (a departure, ParticleSettings::minVolumeShare), the joints, the
 //      joint limits, then the contacts with the ground and between the paired bones (projection), so
 //      that a step ends out of the ground (sticks last instead left 1.1 cm penetration and 1.7 cm joint gaps);
 //   4. friction: each particle of a bone that touched something gets its old position moved towards
@@ -57,8 +57,9 @@ struct ParticleSettings {
   bool broadPhase = true;      ///< off: every unjointed pair, as the paper did
   /// Smallest share of its rest volume a bone's tetrahedron keeps, in every pass after the sticks
   /// (kernels.h, keepMinimumVolume); 0: off, as in the paper, whose sticks let a thin bone struck hard
-  /// turn inside out and stay so (named departure, on by default). Typical 0.5.
-  Real minVolumeShare = 0.5;
+  /// turn inside out and stay so. A named departure, on for ragdolls from skeleton files
+  /// (skeletonParticleSettings()). Typical 0.5.
+  Real minVolumeShare = 0.0;
   /// Removed share of each step's motion per second [1/s] (x − x_old scaled by 1 − damping·h). 0 in
   /// the paper; a small value lets a figure settle (named departure, off by default).
   Real damping = 0.0;
@@ -84,6 +85,11 @@ struct ParticleDrawOptions {
   bool joints = true;      ///< joint points, hinge axes, limit planes and cones
   bool contacts = false;
 };
+
+/// The settings for ragdolls from skeleton files (skeleton_ragdoll.h): minVolumeShare 0.5. Their bones are
+/// thin (half thickness from 2.5 cm, up to 20× shorter than long) and flat tetrahedra; without it, the
+/// arms and legs of every BVH figure turned inside out on landing (tests/labs/ragdoll_bvh_rest_test.cpp).
+ParticleSettings skeletonParticleSettings();
 
 class ParticleRagdoll {
  public:
