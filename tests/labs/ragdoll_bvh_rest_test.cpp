@@ -289,8 +289,8 @@ TEST_P(RagdollFromBvh, LandsAndComesToRestWithBothMethodsWithinTheBounds) {
 const auto kCaseName = [](const ::testing::TestParamInfo<BvhCase>& i) { return i.param.name; };
 INSTANTIATE_TEST_SUITE_P(EveryBvhFile, RagdollFromBvh, ::testing::ValuesIn(bvhCases(-1)), kCaseName);
 // Started in the middle frame of each file's animation instead: not yet within the bounds (the particle
-// ragdoll's elbows up to 7° past their limits and 1.4 cm deep, the constraint ragdoll still moving at
-// 0.15–0.3 m/s in two files), so disabled; run with --gtest_also_run_disabled_tests.
+// ragdoll's elbows past their limits and boxes too deep, the constraint ragdoll still moving in some files;
+// workbook §6.4), so disabled; run with --gtest_also_run_disabled_tests.
 INSTANTIATE_TEST_SUITE_P(DISABLED_MiddleFrameOfEveryBvhFile, RagdollFromBvh,
                          ::testing::ValuesIn(bvhCases(kMiddleFrame)), kCaseName);
 

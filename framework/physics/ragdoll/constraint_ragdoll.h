@@ -20,9 +20,9 @@ namespace pba::ragdoll {
 /// the substep rate), and a 2 cm margin let the corner of a spinning limb sink 2–3 cm for a step.
 rigid::WorldSettings ragdollWorldSettings();
 /// The same for ragdolls from skeleton files (skeleton_ragdoll.h), with a 2 cm speculative margin: with
-/// 8 cm, the light foot and toe boxes of every BVH figure lying on the ground kept jittering (corners at
-/// 0.2–0.4 m/s) and never came to rest (tests/labs/ragdoll_bvh_rest_test.cpp); their limbs fall no
-/// faster than the figure, so the spinning-limb reason for 8 cm does not arise there.
+/// 8 cm, the light foot and toe boxes of every BVH figure lying on the ground kept jittering and never came
+/// to rest (tests/labs/ragdoll_bvh_rest_test.cpp); a figure dropped whole has no fast-spinning limbs, the
+/// reason for 8 cm.
 rigid::WorldSettings skeletonRagdollWorldSettings();
 
 struct ConstraintSettings {

@@ -86,9 +86,9 @@ struct ParticleDrawOptions {
   bool contacts = false;
 };
 
-/// The settings for ragdolls from skeleton files (skeleton_ragdoll.h): minVolumeShare 0.5. Their bones are
-/// thin (half thickness from 2.5 cm, up to 20× shorter than long) and flat tetrahedra; without it, the
-/// arms and legs of every BVH figure turned inside out on landing (tests/labs/ragdoll_bvh_rest_test.cpp).
+/// The settings for ragdolls from skeleton files (skeleton_ragdoll.h): minVolumeShare 0.5. Their long thin
+/// bones make flat tetrahedra; without it, limbs of every BVH figure turned inside out on landing
+/// (tests/labs/ragdoll_bvh_rest_test.cpp).
 ParticleSettings skeletonParticleSettings();
 
 class ParticleRagdoll {
