@@ -5,6 +5,8 @@
 //   pba-ragdoll --skeleton resources/models/mocap/01_01.bvh --frame 100
 #include "app/scene_registry.h"
 #include "physics/ragdoll/builders.h"
+#include "physics/ragdoll/constraint_ragdoll.h"
+#include "physics/ragdoll/particle_ragdoll.h"
 #include "ragdoll_scene.h"
 #include "skeleton_import.h"
 
@@ -19,6 +21,8 @@ using namespace pba;
 class CharacterScene final : public lab::RagdollScene {
  public:
   CharacterScene() {
+    particleSettings_ = ragdoll::skeletonParticleSettings();
+    constraintSettings_.world = ragdoll::skeletonRagdollWorldSettings();
     params_
         .text("skeleton", &file_.path,
               "Skeleton file (BVH, FBX, COLLADA, glTF: anything Assimp reads). Relative paths are also tried from the "

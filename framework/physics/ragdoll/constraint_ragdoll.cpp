@@ -15,6 +15,12 @@ rigid::WorldSettings ragdollWorldSettings() {
   return s;
 }
 
+rigid::WorldSettings skeletonRagdollWorldSettings() {
+  rigid::WorldSettings s = ragdollWorldSettings();
+  s.speculativeDistance = 0.02;  // [m] (see the header)
+  return s;
+}
+
 rigid::JointDesc rigidJoint(const JointDesc& j, int bodyA, int bodyB) {
   rigid::JointDesc r;
   r.bodyA = bodyA;

@@ -19,6 +19,11 @@ namespace pba::ragdoll {
 /// 120 Hz joints made a spider's legs flail on their cone limits without coming to rest (stiffness at half
 /// the substep rate), and a 2 cm margin let the corner of a spinning limb sink 2–3 cm for a step.
 rigid::WorldSettings ragdollWorldSettings();
+/// The same for ragdolls from skeleton files (skeleton_ragdoll.h), with a 2 cm speculative margin: with
+/// 8 cm, the light foot and toe boxes of every BVH figure lying on the ground kept jittering and never came
+/// to rest (tests/labs/ragdoll_bvh_rest_test.cpp); a figure dropped whole has no fast-spinning limbs, the
+/// reason for 8 cm.
+rigid::WorldSettings skeletonRagdollWorldSettings();
 
 struct ConstraintSettings {
   rigid::WorldSettings world = ragdollWorldSettings();  ///< gravity, substeps, iterations, sleeping, …

@@ -12,6 +12,8 @@
 // The sticks, limits, contacts and embedded points (joints, limits, the mouse) are the exercises RAG-1..4
 // and RAG-6 (exercises.h), which the solver calls.
 
+#include <array>
+
 #include "physics/core/types.h"
 
 namespace pba::ragdoll {
@@ -26,5 +28,20 @@ struct HingeFrame {
 
 /// A unit vector ⟂ n.
 Vec3 anyPerpendicular(const Vec3& n);
+
+/// Six times the signed volume of the tetrahedron x0..x3: (x1 − x0) · ((x2 − x0) × (x3 − x0)) [m³].
+Real sixVolume(const std::array<Vec3, 4>& x);
+
+/// Keeps a bone's tetrahedron from turning flat or inside out (not in the Ragdoll paper: its six sticks
+/// only hold edge lengths, and the mirror image of a tetrahedron has the same edges, so a thin bone struck
+/// hard can flip and stay flipped, its box then drawn and collided in a wrong frame). The unilateral
+/// constraint, with D = sixVolume(x) and D₀ its rest value (σ = sign D₀),
+///   C(x) = σ D − share·|D₀| ≥ 0,
+/// has the gradients ∇₁D = (x2 − x0) × (x3 − x0), ∇₂D = (x3 − x0) × (x1 − x0), ∇₃D = (x1 − x0) × (x2 − x0),
+/// ∇₀D = −(∇₁D + ∇₂D + ∇₃D), and when violated is projected as Müller et al. 2007 §3.3 do (above, but with
+/// one gradient per particle): Δx_k = −C w_k σ∇_kD / Σ_j w_j |∇_jD|². Limiting cases: C ≥ 0 → nothing moves
+/// (a bone within its normal shape is untouched); all w = 0 → nothing moves. Equal weights move the
+/// centroid by Σ∇_k = 0: momentum is kept. Returns whether it moved anything.
+bool keepMinimumVolume(std::array<Vec3, 4>& x, const std::array<Real, 4>& w, Real restSixVolume, Real share);
 
 }  // namespace pba::ragdoll

@@ -18,6 +18,12 @@ std::array<Vec3, 8> boxCorners(const Vec3& h) {
 }
 }  // namespace
 
+ParticleSettings skeletonParticleSettings() {
+  ParticleSettings s;
+  s.minVolumeShare = 0.5;
+  return s;
+}
+
 Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const ParticleSettings& settings) {
   if (Status s = validate(desc); !s) return Error{s.error()};
   if (settings.iterations < 1) return Error{"ragdoll.iterations: must be at least 1"};
@@ -31,6 +37,7 @@ Result<ParticleRagdoll> ParticleRagdoll::build(const RagdollDesc& desc, const Pa
     bone.fixed = b.fixed;
     bone.rest = tetrahedronOffsets(b.halfExtents);
     bone.restInverse = restEdgesInverse(bone.rest);
+    bone.restSixVolume = sixVolume(bone.rest);
     bone.shape = collision::makeBox(b.halfExtents).value();
     const std::array<Vec3, 8> corners = boxCorners(b.halfExtents);
     for (int i = 0; i < 8; ++i) bone.corners[i] = barycentric(bone.rest, corners[i]);
@@ -117,6 +124,7 @@ void ParticleRagdoll::step(Real dt) {
   findPairs(dt);
   for (int it = 0; it < settings_.iterations; ++it) {
     relax();
+    keepVolumes();
     if (it + 1 == settings_.iterations) strainAfterRelaxation_ = stickStrain();
     solveJoints();
     solveLimits();

@@ -8,7 +8,8 @@
 //   2. broad phase: bone boxes (fitted frames) as AABBs fattened by this step's travel, sweep and prune
 //      on x; jointed pairs and pairs of fixed bones are skipped (the paper tested every unjointed pair
 //      in every iteration, a cost quadratic in the bones; docs/performance-ragdoll.md);
-//   3. `iterations` times, in this order: the six sticks of every bone (relaxation), the joints, the
+//   3. `iterations` times, in this order: the six sticks of every bone (relaxation) and, when asked,
+//      each bone's least volume (a departure, ParticleSettings::minVolumeShare), the joints, the
 //      joint limits, then the contacts with the ground and between the paired bones (projection), so
 //      that a step ends out of the ground (sticks last instead left 1.1 cm penetration and 1.7 cm joint gaps);
 //   4. friction: each particle of a bone that touched something gets its old position moved towards
@@ -54,6 +55,11 @@ struct ParticleSettings {
   bool ground = true;
   bool boneCollisions = true;  ///< bone–bone boxes (unjointed pairs)
   bool broadPhase = true;      ///< off: every unjointed pair, as the paper did
+  /// Smallest share of its rest volume a bone's tetrahedron keeps, in every pass after the sticks
+  /// (kernels.h, keepMinimumVolume); 0: off, as in the paper, whose sticks let a thin bone struck hard
+  /// turn inside out and stay so. A named departure, on for ragdolls from skeleton files
+  /// (skeletonParticleSettings()). Typical 0.5.
+  Real minVolumeShare = 0.0;
   /// Removed share of each step's motion per second [1/s] (x − x_old scaled by 1 − damping·h). 0 in
   /// the paper; a small value lets a figure settle (named departure, off by default).
   Real damping = 0.0;
@@ -79,6 +85,11 @@ struct ParticleDrawOptions {
   bool joints = true;      ///< joint points, hinge axes, limit planes and cones
   bool contacts = false;
 };
+
+/// The settings for ragdolls from skeleton files (skeleton_ragdoll.h): minVolumeShare 0.5. Their long thin
+/// bones make flat tetrahedra; without it, limbs of every BVH figure turned inside out on landing
+/// (tests/labs/ragdoll_bvh_rest_test.cpp).
+ParticleSettings skeletonParticleSettings();
 
 class ParticleRagdoll {
  public:
@@ -126,6 +137,7 @@ class ParticleRagdoll {
     bool fixed = false;
     std::array<Vec3, 4> rest{};  // particle offsets in the box frame
     Mat3 restInverse{1.0};
+    Real restSixVolume = 0.0;          // [m³] sixVolume(rest), negative (kernels.h)
     std::array<Weights, 8> corners{};  // barycentric weights of the box corners
     // The same by particle (cornerWeights[k][i] = corners[i][k]): the ground test sums them corner by
     // corner in packed pairs.
@@ -159,6 +171,7 @@ class ParticleRagdoll {
   void integrate(Real dt);
   void findPairs(Real dt);
   void relax();
+  void keepVolumes();
   void solveJoints();
   void solveLimits();
   void solveContacts(bool record);

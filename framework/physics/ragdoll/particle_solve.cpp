@@ -14,6 +14,18 @@ void ParticleRagdoll::relax() {
   relaxSticksFast(sticks_, x_, w_, settings_.stickSweeps);  // RAG-1, through its fast path (stick_fast_path.h)
 }
 
+void ParticleRagdoll::keepVolumes() {
+  if (!(settings_.minVolumeShare > 0.0)) return;
+  for (const Bone& b : bones_) {
+    if (b.fixed) continue;
+    std::array<Vec3, 4> p = particlesOf(static_cast<int>(&b - bones_.data()));
+    if (!keepMinimumVolume(p, {w_[b.first], w_[b.first + 1], w_[b.first + 2], w_[b.first + 3]}, b.restSixVolume,
+                           settings_.minVolumeShare))
+      continue;
+    for (int k = 0; k < 4; ++k) x_[b.first + k] = p[k];
+  }
+}
+
 void ParticleRagdoll::pushApart(int a, const Weights& inA, int b, const Weights& inB, const Vec3& delta) {
   const int fb = bones_[b].first, fa = bones_[a].first;
   moveEmbeddedPoints({&x_[fa], &w_[fa], inA}, {&x_[fb], &w_[fb], inB}, delta);  // RAG-6

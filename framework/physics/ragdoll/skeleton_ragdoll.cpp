@@ -32,6 +32,7 @@ Real coneOf(const std::string& name, Real fallback) {
   if (has(n, "hip") || has(n, "upleg") || has(n, "thigh")) return degToRad(60.0);
   if (has(n, "arm")) return degToRad(80.0);
   if (has(n, "hand") || has(n, "foot") || has(n, "wrist") || has(n, "ankle")) return degToRad(40.0);
+  if (has(n, "toe")) return degToRad(60.0);
   return fallback;
 }
 
@@ -55,6 +56,18 @@ Vec3 forwardOf(const std::vector<SkeletonJoint>& joints) {
   lateral.y = 0.0;
   if (glm::length(lateral) < 1e-6) return Vec3(0.0, 0.0, 1.0);
   return glm::normalize(glm::cross(lateral, kUp));
+}
+
+/// Whether another joint with the same (merged) parent starts within kMinBone of joint i.
+bool sharesStart(const std::vector<SkeletonJoint>& joints, const std::vector<int>& merged, int i) {
+  if (joints[i].parent < 0 || merged[i] != i) return false;
+  for (std::size_t k = 0; k < joints.size(); ++k) {
+    const int j = static_cast<int>(k);
+    if (j != i && merged[j] == j && joints[j].parent >= 0 && merged[joints[j].parent] == merged[joints[i].parent] &&
+        glm::length(joints[j].position - joints[i].position) < kMinBone)
+      return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -93,8 +106,13 @@ Result<RagdollDesc> buildSkeletonRagdoll(const std::vector<SkeletonJoint>& joint
       if (length < kMinBone) continue;  // a helper node: its child joins the ancestor's bone
       const Vec3 u = seg / length;
       const Real half = std::clamp(0.5 * s.thickness * length, s.minHalfThickness, s.maxHalfThickness);
-      b.center = p + 0.5 * seg;
-      b.halfExtents = Vec3(0.5 * length, half, half);
+      // Bones that start at one point (a chest's neck and collars in some files) are each jointed to the
+      // parent there but not to each other: their boxes would overlap at the joint and their contacts pull
+      // the joint apart. Such a box starts twice its half thickness along its bone from the joint (at most
+      // a third of its length); two such boxes at any angle are then apart, and the joint stays at p.
+      const Real start = sharesStart(joints, merged, i) ? std::min(2.0 * half, length / 3.0) : 0.0;
+      b.center = p + (0.5 * (length + start)) * u;
+      b.halfExtents = Vec3(0.5 * (length - start), half, half);
       b.orientation = rotationFromX(u);
       direction[i] = u;
     } else {

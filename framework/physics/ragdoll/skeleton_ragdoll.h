@@ -1,8 +1,9 @@
 #pragma once
 // A ragdoll from any skeleton: the library sees only joint names, parents and rest positions (a lab
-// reads them from a file with Assimp). Both methods land and rest with humanoid.bvh and Debian's CMU BVH
-// files (tests/labs/ragdoll_character_test.cpp). Joints within 2 cm of their parent's joint (helper
-// joints of motion-capture files) merge into it.
+// reads them from a file with Assimp). Both methods land and rest with every BVH file of resources/ and of
+// Debian's assimp-testmodels (tests/labs/ragdoll_bvh_rest_test.cpp; the constraint method with
+// skeletonRagdollWorldSettings()). Joints within 2 cm of their parent's joint (helper joints of
+// motion-capture files) merge into it; bones that start at one point with a sibling start clear of it.
 // One box per joint that has children:
 //   * one child: a box along the segment to it, as thick as `thickness` × length within
 //     [minHalfThickness, maxHalfThickness];
@@ -12,7 +13,8 @@
 // "calf", "shin", "lowerleg", "leg" but not "upleg"; "elbow", "forearm", "lowerarm") are hinges flexing
 // 0°…150° (knees backwards, elbows forwards), the others balls with a cone about the bone by name pattern
 // (spine/chest/neck/head 30°, clavicle/shoulder/collar 20°, hip/upleg/thigh 60°, arm 80°, hand/foot 40°,
-// else `defaultCone`). Masses are in proportion to volume, at least `minMassShare` of the total each.
+// toe 60°: toes bend far, and a figure lying face down presses them up; else `defaultCone`). Masses are
+// in proportion to volume, at least `minMassShare` of the total each.
 // Forward is lateral × up, with lateral the mean of Left* minus Right* joints (+z when there are none).
 #include <string>
 #include <vector>

@@ -63,6 +63,34 @@ using test_scenes::hingeArm;
 
 // An arm released horizontally on a hinge about z: gravity turns it to −90°. Allowed [0°, 270°]: it
 // may only go up and over, so it rests on its lower limit at 0°. Allowed [−270°, 0°]: it hangs at −90°.
+TEST(RagdollTetrahedron, AFlippedTetrahedronIsTurnedBackToItsLeastVolumeKeepingItsCentroid) {
+  // A thin bone's tetrahedron (kernels.h, keepMinimumVolume) mirrored through its x = 0 plane: the same
+  // edges, the opposite signed volume. Repeated projections (the solver's passes) bring the signed volume
+  // back to at least half the rest value; equal weights keep the centroid (Σ gradients = 0). Tolerances:
+  // the projection is first order, so each pass removes most of the remaining violation; 1e-9 relative
+  // is far below what 20 passes leave, and the centroid moves only by rounding.
+  const std::array<Vec3, 4> rest = tetrahedronOffsets(Vec3(0.25, 0.025, 0.025));
+  const Real rest6 = sixVolume(rest);
+  ASSERT_LT(rest6, 0.0);
+  std::array<Vec3, 4> x = rest;
+  for (Vec3& p : x) p.x = -p.x;  // mirrored
+  EXPECT_NEAR(sixVolume(x), -rest6, 1e-15);
+  const Vec3 centroidBefore = centroid(x);
+  const std::array<Real, 4> w{1.0, 1.0, 1.0, 1.0};
+  for (int pass = 0; pass < 20; ++pass) keepMinimumVolume(x, w, rest6, 0.5);
+  EXPECT_GE(-sixVolume(x), 0.5 * std::abs(rest6) * (1.0 - 1e-9));
+  EXPECT_VEC3_NEAR(centroid(x), centroidBefore, 1e-12);
+  // Within its least volume nothing moves, bit for bit; fixed particles never move.
+  std::array<Vec3, 4> same = rest;
+  EXPECT_FALSE(keepMinimumVolume(same, w, rest6, 0.5));
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(same[k], rest[k]);
+  std::array<Vec3, 4> pinned = x;
+  for (Vec3& p : pinned) p.x = -p.x;
+  const std::array<Vec3, 4> before = pinned;
+  EXPECT_FALSE(keepMinimumVolume(pinned, {0.0, 0.0, 0.0, 0.0}, rest6, 0.5));
+  for (int k = 0; k < 4; ++k) EXPECT_EQ(pinned[k], before[k]);
+}
+
 TEST(RagdollParticleHinge, LimitsBeyondHalfATurnHoldOnTheCorrectSide) {
   ParticleRagdoll up = ParticleRagdoll::build(hingeArm(0.0, degToRad(270.0))).value();
   ParticleRagdoll down = ParticleRagdoll::build(hingeArm(degToRad(-270.0), 0.0)).value();
