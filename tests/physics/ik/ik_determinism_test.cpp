@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
-#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -89,11 +88,12 @@ TEST(IkDeterminism, EverySolverGivesBitwiseIdenticalResultsForIdenticalInputs) {
   }
 }
 
-// solve() keeps storage and the last FABRIK method between the solves of a thread (solver.cpp,
-// Workspace): a solve after solves of other skeletons, sizes and methods gives the bits of the same
-// solve on a fresh thread, which starts with nothing kept.
-TEST(IkDeterminism, ASolveAfterOtherSolvesEqualsOneOnAFreshThread) {
+// A SolveWorkspace keeps storage and the last FABRIK method between the solves it serves: a solve
+// through a workspace that has served other skeletons, sizes and methods gives the bits of the same
+// solve through a fresh workspace, which starts with nothing kept.
+TEST(IkDeterminism, ASolveThroughAUsedWorkspaceEqualsOneThroughAFreshOne) {
   const Rig balls = chain(JointType::Ball), hinges = chain(JointType::Hinge, 30), hand = buildHand().value();
+  SolveWorkspace used;
   for (SolverKind kind : {SolverKind::Fabrik, SolverKind::Ccd, SolverKind::DampedLeastSquares}) {
     SCOPED_TRACE(solverName(kind));
     std::mt19937_64 rng(11);
@@ -106,8 +106,11 @@ TEST(IkDeterminism, ASolveAfterOtherSolvesEqualsOneOnAFreshThread) {
       o.solver = kind;
       Pose fresh = start;
       SolveResult onFresh;
-      std::thread([&] { onFresh = solve(sk, fresh, goals, o); }).join();
-      // This thread has solved other problems (every rig, FABRIK and CCD) before this one.
+      {
+        SolveWorkspace freshWorkspace;
+        onFresh = solve(sk, fresh, goals, o, freshWorkspace);
+      }
+      // The used workspace has served other problems (every rig, FABRIK and CCD) before this one.
       for (const Rig* other : {&hand, &hinges, &balls})
         for (SolverKind otherKind : {SolverKind::Fabrik, SolverKind::Ccd}) {
           std::vector<Effector> otherGoals = other->effectors;
@@ -115,10 +118,10 @@ TEST(IkDeterminism, ASolveAfterOtherSolvesEqualsOneOnAFreshThread) {
           Pose p = other->skeleton.restPose();
           SolveOptions otherOptions;
           otherOptions.solver = otherKind;
-          solve(other->skeleton, p, otherGoals, otherOptions);
+          solve(other->skeleton, p, otherGoals, otherOptions, used);
         }
       Pose warm = start;
-      const SolveResult onWarm = solve(sk, warm, goals, o);
+      const SolveResult onWarm = solve(sk, warm, goals, o, used);
       expectIdentical(onFresh, fresh, onWarm, warm);
     }
   }
