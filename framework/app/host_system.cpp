@@ -2,6 +2,7 @@
 #include "app/host_system.h"
 
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -17,6 +18,7 @@
 #elif defined(__APPLE__)
 #include <mach-o/dyld.h>
 #include <mach/mach.h>
+#include <malloc/malloc.h>
 #include <unistd.h>
 #else
 #include <unistd.h>
@@ -73,6 +75,19 @@ std::size_t residentBytes() {
   std::size_t size = 0, resident = 0;
   if (!(statm >> size >> resident)) return 0;
   return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+#endif
+}
+
+void restartWithoutMallocThreadCache(const char* const* argv) {
+#if defined(__GLIBC__)
+  constexpr const char* kTunable = "glibc.malloc.tcache_count=0";
+  const char* current = std::getenv("GLIBC_TUNABLES");
+  if (current && std::strstr(current, kTunable)) return;
+  const std::string value = current && *current ? std::string(current) + ":" + kTunable : std::string(kTunable);
+  if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
+  execv("/proc/self/exe", const_cast<char* const*>(argv));  // returns only on failure
+#else
+  (void)argv;
 #endif
 }
 

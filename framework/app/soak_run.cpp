@@ -12,15 +12,12 @@
 #include <random>
 #include <set>
 #include <string>
-#if defined(__GLIBC__)
-#include <malloc.h>
-#include <unistd.h>
-#endif
 
 #include "app/host_system.h"
 #include "app/lab.h"
 #include "app/lab_session.h"
 #include "app/scene_registry.h"
+#include "app/scene_state.h"
 #include "physics/core/format.h"
 #include "physics/exercises/not_implemented.h"
 
@@ -44,17 +41,6 @@ constexpr bool kSanitizerBuild = false;
 #else
 constexpr bool kSanitizerBuild = false;
 #endif
-
-/// Bytes the program holds through malloc (freed memory and allocator overhead aside): what a leak grows,
-/// where the resident size also counts fragmentation.
-std::size_t heapInUse() {
-#if defined(__GLIBC__)
-  const struct mallinfo2 m = mallinfo2();
-  return m.uordblks + m.hblkhd;
-#else
-  return 0;
-#endif
-}
 
 double secondsSince(SoakClock::time_point since) {
   return std::chrono::duration<double>(SoakClock::now() - since).count();
@@ -265,7 +251,7 @@ class Soak {
   // Memory is compared at like moments: a scene just loaded at its defaults (history and buffers of
   // the previous scene gone). Warm-up: every scene loaded once and a quarter of the run over.
   void checkpointMemory(bool firstVisit) {
-    const std::size_t rss = residentBytes(), heap = heapInUse();
+    const std::size_t rss = residentBytes(), heap = heapBytesInUse();
     const bool warm =
         !firstVisit && visited_.size() == scenes().size() && secondsSince(start_) >= kSoakWarmupFraction * o_.seconds;
     if (!warm) {
@@ -360,17 +346,7 @@ class Soak {
 // therefore measures with the cache off: it runs itself again with
 // the tunable set. Sanitizer builds keep their own allocator and are not judged.
 void restartWithoutThreadCache(const char* const* argv) {
-#if defined(__GLIBC__)
-  if (kSanitizerBuild) return;
-  constexpr const char* kTunable = "glibc.malloc.tcache_count=0";
-  const char* current = std::getenv("GLIBC_TUNABLES");
-  if (current && std::strstr(current, kTunable)) return;
-  const std::string value = current && *current ? std::string(current) + ":" + kTunable : std::string(kTunable);
-  if (setenv("GLIBC_TUNABLES", value.c_str(), 1) != 0) return;
-  execv("/proc/self/exe", const_cast<char* const*>(argv));  // returns only on failure: measure with the cache
-#else
-  (void)argv;
-#endif
+  if (!kSanitizerBuild) restartWithoutMallocThreadCache(argv);  // sanitizers keep their own allocator
 }
 
 bool threadCacheOff() {
