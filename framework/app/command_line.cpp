@@ -1,5 +1,6 @@
 #include "app/command_line.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -57,7 +58,8 @@ const LabFlag* findLabFlag(const std::string& flag) {
 
 long LabOptions::frameCount() const {
   if (frames) return *frames;
-  if (seconds) return static_cast<long>(std::ceil(*seconds / kDisplayFrame - 1e-9));
+  // A positive time shorter than a frame still runs one frame (--seconds 1e-60 once gave 0 frames).
+  if (seconds) return std::max(1L, static_cast<long>(std::ceil(*seconds / kDisplayFrame - 1e-9)));
   if (!record.empty()) return kDefaultRecordFrames;
   return screenshot.empty() ? kDefaultHeadlessFrames : kDefaultScreenshotFrames;
 }

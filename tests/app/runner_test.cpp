@@ -208,6 +208,8 @@ TEST(CommandLine, ParsesTheContractOfDesignSection4) {
   ASSERT_EQ(o.overrides.size(), 1u);
   EXPECT_EQ(o.overrides[0], (ParamOverride{"speed", "2", "--set"}));
   EXPECT_EQ(parse({"--seconds", "1"}).value().frameCount(), 60);
+  EXPECT_EQ(parse({"--seconds", "0.02"}).value().frameCount(), 2);    // 1.2 frames: rounded up
+  EXPECT_EQ(parse({"--seconds", "10e-60"}).value().frameCount(), 1);  // shorter than a frame: one frame
   const auto inlineSet = parse({"--set=speed=2.5"});
   ASSERT_TRUE(inlineSet.ok()) << inlineSet.error();
   EXPECT_EQ(inlineSet.value().overrides.at(0), (ParamOverride{"speed", "2.5", "--set"}));
