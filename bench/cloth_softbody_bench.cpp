@@ -52,9 +52,9 @@ constexpr int kMaxMatchedIterations = 1024;
 enum class Peer { Pbd, Xpbd, Bullet };
 
 struct Setup {
-  int n = 32;          ///< particles per side
-  int substeps = 1;    ///< steps per frame
-  int iterations = 10; ///< Gauss–Seidel sweeps per step (Bullet's piterations)
+  int n = 32;           ///< particles per side
+  int substeps = 1;     ///< steps per frame
+  int iterations = 10;  ///< Gauss–Seidel sweeps per step (Bullet's piterations)
 };
 
 Cloth squareCloth(int n) {
@@ -157,9 +157,7 @@ class BulletCloth {
 
  private:
   std::uint32_t ours(int k) const { return static_cast<std::uint32_t>((k / n_) * n_ + (n_ - 1 - k % n_)); }
-  std::uint32_t ours(const btSoftBody::Node* node) const {
-    return ours(static_cast<int>(node - &body_->m_nodes[0]));
-  }
+  std::uint32_t ours(const btSoftBody::Node* node) const { return ours(static_cast<int>(node - &body_->m_nodes[0])); }
 
   std::string checkSameCloth() const {
     for (int k = 0; k < body_->m_nodes.size(); ++k) {
