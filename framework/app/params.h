@@ -8,6 +8,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "physics/core/enum_names.h"
 #include "physics/core/result.h"
 #include "physics/core/types.h"
 
@@ -50,6 +51,12 @@ class Params {
   /// Free text, e.g. a model file path or a comma-separated list of joint names. The scene checks
   /// its meaning in reset() (a file that does not load is the scene's error to report).
   Params& text(std::string name, std::string* value, std::string tooltip);
+  /// An enum chosen by name from its table (physics/core/enum_names.h), e.g. a lab's
+  /// `constexpr auto kLayoutNames = enumNames<Layout>({{Layout::Grid, "grid"}, {Layout::Mesh, "mesh"}});`.
+  template <typename Enum, std::size_t N>
+  Params& choiceEnum(std::string name, Enum* value, const EnumNames<Enum, N>& names, std::string tooltip) {
+    return choiceEnum(std::move(name), value, names.names(), std::move(tooltip));
+  }
   template <typename Enum>
   Params& choiceEnum(std::string name, Enum* value, std::vector<std::string> choices, std::string tooltip) {
     Param p = makeChoice(std::move(name), std::move(choices), std::move(tooltip));

@@ -9,11 +9,13 @@ namespace pba::labs::animation {
 namespace {
 
 enum class WeightSource { Timeline, Slider };
+constexpr auto kWeightSourceNames =
+    enumNames<WeightSource>({{WeightSource::Timeline, "timeline"}, {WeightSource::Slider, "slider"}});
 
 class BlendScene final : public AnimScene {
  public:
   BlendScene() {
-    params_.choiceEnum("weight_from", &source_, {"timeline", "slider"},
+    params_.choiceEnum("weight_from", &source_, kWeightSourceNames,
                        "Where the blend weight comes from: the weight timeline (walk 2 s, fade 2 s, run 2 s, fade back "
                        "2 s) or the slider below.");
     params_.real("weight", &manualWeight_, 0.0, 1.0, "", "Blend weight w of the run (slider mode): 0 walk, 1 run.");

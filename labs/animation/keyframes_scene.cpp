@@ -20,7 +20,7 @@ class KeyframesScene final : public AnimScene {
  public:
   KeyframesScene() {
     params_.choiceEnum(
-        "rotation", &rotationMode_, {"step", "slerp", "squad"},
+        "rotation", &rotationMode_, an::kRotationInterpolationNames,
         "How joint rotations interpolate between keys: squad is C¹, slerp turns at a corner at each key.");
     params_.choiceEnum("ik", &ikMethod_, pba::ik::solverNames(),
                        "How a dragged hand or foot poses its limb: analytic is the law of cosines with a pole; the "

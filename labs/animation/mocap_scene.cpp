@@ -31,7 +31,7 @@ class MocapScene final : public AnimScene {
     params_
         .text("trail_joint", &trailJoint_, "Joint whose path over the clip is drawn (empty: none). Typical LeftHand.")
         .needsReset();
-    params_.choiceEnum("rotation", &rotationMode_, {"step", "slerp", "squad"},
+    params_.choiceEnum("rotation", &rotationMode_, an::kRotationInterpolationNames,
                        "Interpolation of the rotations between the file's frames.");
     params_.flag("skin", &showSkin_,
                  "Draw the file's meshes, skinned by the played pose (linear blend skinning), when it has any.");

@@ -19,7 +19,9 @@ namespace pba::labs::animation {
 namespace {
 
 enum class Gait { Walk, Run };
+constexpr auto kGaitNames = enumNames<Gait>({{Gait::Walk, "walk"}, {Gait::Run, "run"}});
 enum class Ponytail { OneWay, Coupled };
+constexpr auto kPonytailNames = enumNames<Ponytail>({{Ponytail::OneWay, "one-way"}, {Ponytail::Coupled, "coupled"}});
 
 struct Appendage {
   int joint = -1;
@@ -34,7 +36,7 @@ struct Appendage {
 class SecondaryScene final : public AnimScene {
  public:
   SecondaryScene() {
-    params_.choiceEnum("gait", &gait_, {"walk", "run"}, "The keyframed clip that drives the character.").needsReset();
+    params_.choiceEnum("gait", &gait_, kGaitNames, "The keyframed clip that drives the character.").needsReset();
     params_.flag("reaction", &reaction_,
                  "Include the reaction term (the pivot's acceleration) in the pendulum equation; off, only gravity and "
                  "the pivot's position act.");
@@ -50,7 +52,7 @@ class SecondaryScene final : public AnimScene {
         .needsReset();
     params_.integer("tail_links", &tailLinks_, 1, 8, "", "Links of the tail chain. Typical 4.").needsReset();
     params_
-        .choiceEnum("ponytail", &ponytail_, {"one-way", "coupled"},
+        .choiceEnum("ponytail", &ponytail_, kPonytailNames,
                     "one-way: each link a pendulum joint driven by the one above, which it never pushes back "
                     "(ANIM-4). coupled: the full n-link pendulum, masses on rigid rods that pull both ways "
                     "(RATTLE); the reaction switch does not apply to it.")

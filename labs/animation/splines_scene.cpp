@@ -13,11 +13,15 @@ namespace pba::labs::animation {
 namespace {
 
 enum class Curve { CatmullRom, Hermite, NaturalCubic, Linear };
+constexpr auto kCurveNames = enumNames<Curve>({{Curve::CatmullRom, "catmull-rom"},
+                                               {Curve::Hermite, "hermite"},
+                                               {Curve::NaturalCubic, "natural-cubic"},
+                                               {Curve::Linear, "linear"}});
 
 class SplinesScene final : public AnimScene {
  public:
   SplinesScene() {
-    params_.choiceEnum("follow", &follow_, {"catmull-rom", "hermite", "natural-cubic", "linear"},
+    params_.choiceEnum("follow", &follow_, kCurveNames,
                        "The curve the ball follows (its arrows show that curve's velocity and acceleration).");
     params_.real("tension", &tension_, 0.0, 1.0, "",
                  "Hermite curve: tangents = (1 − tension) × Catmull-Rom's. 0 is Catmull-Rom, 1 stops at every knot. "

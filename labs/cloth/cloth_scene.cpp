@@ -73,7 +73,7 @@ ClothScene::ClothScene() {
             "iterations and substeps, unlike PBD's stiffness. Typical 0–10⁻⁴.")
       .logarithmic();
   params_.choiceEnum(
-      "bending", &settings_.bending, {"isometric", "distance", "none"},
+      "bending", &settings_.bending, kBendingModelNames,
       "Bending of pbd/xpbd: isometric (Bergou 2006, one linear constraint per inner edge, CLOTH-6), distance "
       "(TMP #14–15: opposite vertices of each inner edge keep their rest distance) or none.");
   params_
@@ -94,7 +94,7 @@ ClothScene::ClothScene() {
       .needsReset()
       .workload();  // 65,536 particles: 10 s of the extremes check per scene
   params_
-      .choiceEnum("layout", &layout_, {"grid", "mesh"},
+      .choiceEnum("layout", &layout_, kSpringLayoutNames,
                   "Springs of the mass-spring model: grid (Provot: axis neighbours, both diagonals, skip-one; "
                   "CLOTH-1) or mesh (every edge, and across every inner edge).")
       .needsReset();
@@ -116,7 +116,7 @@ ClothScene::ClothScene() {
 }
 
 void ClothScene::declareDisplayParams() {
-  params_.choiceEnum("pattern", &pattern_, {"checker", "woven", "plain"}, "Fabric pattern: folds read on a projector.");
+  params_.choiceEnum("pattern", &pattern_, kPatternNames, "Fabric pattern: folds read on a projector.");
   params_.flag("strain_colors", &strainColors_,
                "Colour triangles by strain: blue < 0.5 %, green, yellow, orange, red ≥ 10 %.");
   params_.flag("wireframe", &wireframe_, "Draw the mesh edges.");

@@ -12,12 +12,15 @@
 #include "app/scene_registry.h"
 #include "physics/cloth/solver.h"
 #include "physics/cloth/tearing.h"
+#include "physics/core/enum_names.h"
 
 namespace pba::labs::cloth {
 
 using namespace pba::cloth;
 
 enum class Pattern { Checker, Woven, Plain };
+inline constexpr auto kPatternNames =
+    enumNames<Pattern>({{Pattern::Checker, "checker"}, {Pattern::Woven, "woven"}, {Pattern::Plain, "plain"}});
 
 class ClothScene : public app::Scene {
  public:

@@ -8,13 +8,15 @@ namespace pba::labs::cloth {
 namespace {
 
 enum class DrapeCollider { Sphere, Box, Capsule };
+constexpr auto kDrapeColliderNames = enumNames<DrapeCollider>(
+    {{DrapeCollider::Sphere, "sphere"}, {DrapeCollider::Box, "box"}, {DrapeCollider::Capsule, "capsule"}});
 constexpr Real kDropHeight = 1.3;  // [m] of the cloth's centre at the start
 constexpr Real kSize = 1.2;        // [m] side of the cloth
 
 class DrapeScene final : public ClothScene {
  public:
   DrapeScene() {
-    params_.choiceEnum("collider", &shape_, {"sphere", "box", "capsule"}, "What the cloth falls on.").needsReset();
+    params_.choiceEnum("collider", &shape_, kDrapeColliderNames, "What the cloth falls on.").needsReset();
     params_.text("mesh", &meshFile_,
                  "A triangle mesh file (any format Assimp reads) to drop instead of the square grid; empty: the grid.");
     params_.needsReset();

@@ -25,7 +25,7 @@ namespace {
 std::string solverChoices() {
   std::string choices;
   for (const pba::ik::SolverInfo& s : pba::ik::solverTable())
-    choices += std::string(choices.empty() ? "" : "|") + s.name;
+    choices += std::string(choices.empty() ? "" : "|") + std::string(s.name);
   return choices;
 }
 }  // namespace
@@ -42,7 +42,10 @@ namespace pba::labs::ik {
 namespace {
 
 enum class BatchJoint { Hinge, Ball };
+constexpr auto kBatchJointNames = enumNames<BatchJoint>({{BatchJoint::Hinge, "hinge"}, {BatchJoint::Ball, "ball"}});
 enum class BatchTree { None, Hand, DoubleY };
+constexpr auto kBatchTreeNames =
+    enumNames<BatchTree>({{BatchTree::None, "none"}, {BatchTree::Hand, "hand"}, {BatchTree::DoubleY, "double-y"}});
 
 Real percentile(std::vector<Real> v, Real q) {
   if (v.empty()) return 0.0;
@@ -58,7 +61,7 @@ class BatchScene final : public app::Scene {
     options_.maxIterations = 1000;
     params_.choiceEnum("solver", &options_.solver, solverNames(), "IK method.").needsReset();
     params_.integer("links", &desc_.links, 1, 10000, "", "Links of the chain.").needsReset().workload();
-    params_.choiceEnum("joint", &joint_, {"hinge", "ball"}, "Joint type of every link.").needsReset();
+    params_.choiceEnum("joint", &joint_, kBatchJointNames, "Joint type of every link.").needsReset();
     params_.integer("targets", &targets_, 1, 1000000, "", "Number of solves.").needsReset().workload();
     params_.real("tolerance", &options_.tolerance, 1e-9, 1.0, "m", "Success tolerance. Typical 1e-4 m.")
         .logarithmic()
@@ -71,7 +74,7 @@ class BatchScene final : public app::Scene {
         .flag("limits", &options_.enforceLimits,
               "Enforce the joint limits (IK-6's clamp). Off: the goals still come from poses inside them.")
         .needsReset();
-    params_.choiceEnum("tree", &tree_, {"none", "hand", "double-y"},
+    params_.choiceEnum("tree", &tree_, kBatchTreeNames,
                        "A tree of the tree scene instead of the chain: the hand (five finger tips) or Buss & Kim's "
                        "double Y. none: the chain.");
     declareMethodOptions(params_, options_, false);

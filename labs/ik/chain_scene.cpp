@@ -6,6 +6,8 @@ namespace pba::labs::ik {
 namespace {
 
 enum class ChainJoint { Hinge, Ball, Free };
+constexpr auto kChainJointNames =
+    enumNames<ChainJoint>({{ChainJoint::Hinge, "hinge"}, {ChainJoint::Ball, "ball"}, {ChainJoint::Free, "free"}});
 
 class ChainScene final : public IkScene {
  public:
@@ -15,10 +17,8 @@ class ChainScene final : public IkScene {
     declareSolverParams();
     params_.integer("links", &desc_.links, 1, 1000, "", "Number of links (joints). Workbook §2.1: try 10 to 1000.")
         .needsReset();
-    params_.choiceEnum("joint", &joint_, {"hinge", "ball", "free"}, "Joint type of every link.").needsReset();
-    params_
-        .choiceEnum("axes", &desc_.axes, {"planar", "alternating"},
-                    "Hinge axes: all z (planar arm) or alternating z/y (3D).")
+    params_.choiceEnum("joint", &joint_, kChainJointNames, "Joint type of every link.").needsReset();
+    params_.choiceEnum("axes", &desc_.axes, kHingeAxesNames, "Hinge axes: all z (planar arm) or alternating z/y (3D).")
         .needsReset();
     params_.angle("limit", &desc_.limit, 5.0, 180.0, "Every rotational DOF is limited to ±limit.").needsReset();
     params_.real("length", &desc_.totalLength, 0.5, 4.0, "m", "Total length of the chain (its reach). Typical 2 m.")

@@ -58,7 +58,7 @@ Color colorOf(SolverKind kind) {
 std::vector<Method> comparedMethods() {
   std::vector<Method> methods;
   for (const SolverInfo& s : solverTable())
-    if (s.kind != SolverKind::Analytic) methods.push_back({s.kind, colorOf(s.kind)});
+    if (s.value != SolverKind::Analytic) methods.push_back({s.value, colorOf(s.value)});
   return methods;
 }
 const std::vector<Method> kMethods = comparedMethods();
@@ -69,8 +69,13 @@ constexpr Real kSpacing = 0.8;     // [chain lengths] between neighbouring bases
 constexpr Real kViewYaw = 0.6;
 
 enum class Layout { Overlay, SideBySide };
+constexpr auto kLayoutNames = enumNames<Layout>({{Layout::Overlay, "overlay"}, {Layout::SideBySide, "side-by-side"}});
 enum class CompareJoint { Hinge, Ball };
+constexpr auto kCompareJointNames =
+    enumNames<CompareJoint>({{CompareJoint::Hinge, "hinge"}, {CompareJoint::Ball, "ball"}});
 enum class ComparePath { Figure8, Mouse };
+constexpr auto kComparePathNames =
+    enumNames<ComparePath>({{ComparePath::Figure8, "figure8"}, {ComparePath::Mouse, "mouse"}});
 
 class ComparisonScene final : public app::Scene {
  public:
@@ -79,11 +84,11 @@ class ComparisonScene final : public app::Scene {
     options_.recordHistory = true;
     params_.integer("links", &desc_.links, 2, 50, "", "Links of every chain. Typical 8.").needsReset();
     params_
-        .choiceEnum("joint", &joint_, {"hinge", "ball"},
+        .choiceEnum("joint", &joint_, kCompareJointNames,
                     "Joint type of every link (hinges alternate z/y axes; FABRIK handles hinges poorly: compare).")
         .needsReset();
     params_.choiceEnum(
-        "layout", &layout_, {"overlay", "side-by-side"},
+        "layout", &layout_, kLayoutNames,
         "Chains overlaid on one base as ghosts of one another (compact, best on a projector), or side by side.");
     params_.integer("max_iterations", &options_.maxIterations, 1, 1000, "",
                     "Iteration cap per solve, for every method. Typical 60.");
@@ -97,7 +102,7 @@ class ComparisonScene final : public app::Scene {
     declareMethodOptions(params_, options_, false);
     params_.flag("from_rest", &options_.fromRest,
                  "Start every solve from the rest pose (the plot then shows full convergence curves every frame).");
-    params_.choiceEnum("path", &path_, {"figure8", "mouse"},
+    params_.choiceEnum("path", &path_, kComparePathNames,
                        "How the goal moves: along a figure-8, or only where the mouse or the arrow keys put it.");
     params_.real("path_speed", &speed_, 0.0, 2.0, "Hz", "Laps per second of the goal's figure-8. Typical 0.25 Hz.");
     options_.lineSearch = LineSearch::Backtracking;

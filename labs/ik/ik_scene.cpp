@@ -65,7 +65,7 @@ void IkScene::declareSolverParams(bool withPath) {
   // Table-driven from the library: every method it names appears in the dropdown.
   std::string methods;
   for (const SolverInfo& s : solverTable())
-    methods += std::string(methods.empty() ? "" : ", ") + s.name + " (" + s.longName + ")";
+    methods += std::string(methods.empty() ? "" : ", ") + std::string(s.name) + " (" + std::string(s.description) + ")";
   params_.choiceEnum("solver", &options_.solver, solverNames(), "IK method: " + methods + ".");
   params_.integer("max_iterations", &options_.maxIterations, 1, 5000, "",
                   "Iteration cap per solve (CCD/FABRIK: passes; Jacobian methods: steps). Typical 100.");
@@ -115,7 +115,7 @@ void IkScene::declareSolverParams(bool withPath) {
                                           k == SolverKind::DampedLeastSquares || k == SolverKind::SelectivelyDamped);
       });
   if (withPath) {
-    params_.choiceEnum("path", &path_, {"mouse", "circle", "figure8", "random"},
+    params_.choiceEnum("path", &path_, kTargetPathNames,
                        "How the goal moves: dragged with the mouse, or along a scripted path for lectures.");
     params_.real("path_speed", &pathSpeed_, 0.0, 2.0, "Hz", "Laps per second of the scripted path. Typical 0.5 Hz.");
   }

@@ -14,6 +14,7 @@
 
 #include "app/scene_registry.h"
 #include "jacobian_view.h"
+#include "physics/core/enum_names.h"
 #include "physics/ik/builders.h"
 #include "physics/ik/solver.h"
 
@@ -22,6 +23,10 @@ namespace pba::labs::ik {
 using namespace pba::ik;
 
 enum class TargetPath { Mouse, Circle, Figure8, RandomJumps };
+inline constexpr auto kTargetPathNames = enumNames<TargetPath>({{TargetPath::Mouse, "mouse"},
+                                                                {TargetPath::Circle, "circle"},
+                                                                {TargetPath::Figure8, "figure8"},
+                                                                {TargetPath::RandomJumps, "random"}});
 
 inline constexpr Real kTargetRadiusFactor = 2.2;  // goal sphere radius in bone radii
 

@@ -6,6 +6,7 @@ namespace pba::labs::ik {
 namespace {
 
 enum class TreeShape { Hand, DoubleY };
+constexpr auto kTreeShapeNames = enumNames<TreeShape>({{TreeShape::Hand, "hand"}, {TreeShape::DoubleY, "double-y"}});
 
 class TreeScene final : public IkScene {
  public:
@@ -18,7 +19,7 @@ class TreeScene final : public IkScene {
     options_.fabrikLimitFit = true;
     declareSolverParams();
     params_
-        .choiceEnum("shape", &shape_, {"hand", "double-y"},
+        .choiceEnum("shape", &shape_, kTreeShapeNames,
                     "The tree: a hand with five finger tips, or Buss & Kim's double Y.")
         .needsReset();
   }

@@ -55,7 +55,7 @@ IkToRagdollScene::IkToRagdollScene() {
   // stay out of the loop), so that they pass in the student release as well.
   params_.choiceEnum("ik_solver", &options_.solver, pba::ik::solverNames(),
                      "IK method that poses the character. Typical dls (damped least squares).");
-  params_.choiceEnum("ik_jacobian", &options_.jacobian, {"analytic", "differences"},
+  params_.choiceEnum("ik_jacobian", &options_.jacobian, pba::ik::jacobianSourceNames(),
                      "Where the Jacobian methods take J from: analytic columns or central differences of forward "
                      "kinematics.");
   params_.flag("ik_limits", &options_.enforceLimits, "Clamp the IK pose to the joint limits of the rig.");

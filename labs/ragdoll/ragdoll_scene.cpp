@@ -19,7 +19,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 RagdollScene::RagdollScene() {
   ragdoll::ParticleSettings& p = particleSettings_;
   rigid::WorldSettings& w = constraintSettings_.world;
-  params_.choiceEnum("show", &shown_, {"both", "particle", "constraint"},
+  params_.choiceEnum("show", &shown_, kShownNames,
                      "Draw both methods side by side (particle blue, left; constraint purple, right) or one of them.");
   params_.real("gravity", &gravity_, 0.0, 30.0, "m/s²", "Gravitational acceleration (downwards). Earth 9.81.");
   params_.integer(

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/scene.h"
+#include "physics/core/enum_names.h"
 #include "physics/ragdoll/constraint_ragdoll.h"
 #include "physics/ragdoll/particle_ragdoll.h"
 
@@ -17,6 +18,8 @@ namespace pba::lab {
 class RagdollScene : public app::Scene {
  public:
   enum class Shown { Both, Particle, Constraint };
+  static constexpr auto kShownNames =
+      enumNames<Shown>({{Shown::Both, "both"}, {Shown::Particle, "particle"}, {Shown::Constraint, "constraint"}});
 
   void reset() override;
   void step(Real dt) override;

@@ -52,7 +52,7 @@ TEST(KeyframesIk, AKeySetByEveryIkMethodPutsTheHandOnItsGoal) {
     for (int g = 0; g < 3; ++g) {
       exercises::clearNotImplemented();
       std::unique_ptr<app::Scene> scene = entry->create();
-      ASSERT_TRUE(scene->params().setFromText("ik", method.name).ok()) << method.name;
+      ASSERT_TRUE(scene->params().setFromText("ik", std::string(method.name)).ok()) << method.name;
       scene->reset();
       scene->step(0.1);  // between the clip's keys: the drag inserts a new one
       const Vec3 shoulder = jointAt(*scene, "LeftArm"), elbow = jointAt(*scene, "LeftForeArm");

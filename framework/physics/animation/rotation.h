@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "physics/core/enum_names.h"
 #include "physics/core/types.h"
 
 namespace pba::animation {
@@ -33,6 +34,10 @@ enum class RotationInterpolation {
   Slerp,  ///< great arcs between keys (C⁰: the angular velocity jumps at the keys)
   Squad,  ///< Shoemake's squad (C¹)
 };
+inline constexpr auto kRotationInterpolationNames =
+    enumNames<RotationInterpolation>({{RotationInterpolation::Step, "step"},
+                                      {RotationInterpolation::Slerp, "slerp"},
+                                      {RotationInterpolation::Squad, "squad"}});
 
 /// Rotation at t through keys at strictly increasing times (neighbouring keys are brought to the same
 /// hemisphere first). No key → identity; outside the keys → the nearest end key.

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/core/enum_names.h"
 #include "physics/core/result.h"
 #include "physics/core/types.h"
 
@@ -80,6 +81,8 @@ enum class SpringLayout {
   Grid,  ///< Provot 1995 on a rectangular grid: axis neighbours, both diagonals, skip-one (CLOTH-1)
   Mesh,  ///< any triangle mesh: every edge, and across every inner edge the two opposite vertices
 };
+inline constexpr auto kSpringLayoutNames =
+    enumNames<SpringLayout>({{SpringLayout::Grid, "grid"}, {SpringLayout::Mesh, "mesh"}});
 
 /// Which way each quad of a grid is split into two triangles.
 enum class GridDiagonals { Regular, Alternating };

@@ -7,33 +7,6 @@
 
 namespace pba::cloth {
 
-std::string_view solverName(ClothSolverKind kind) {
-  switch (kind) {
-    case ClothSolverKind::Explicit:
-      return "explicit";
-    case ClothSolverKind::Implicit:
-      return "implicit";
-    case ClothSolverKind::Pbd:
-      return "pbd";
-    case ClothSolverKind::Xpbd:
-      return "xpbd";
-  }
-  return "?";
-}
-
-std::optional<ClothSolverKind> parseSolver(std::string_view name) {
-  for (ClothSolverKind k : kAllClothSolvers) {
-    if (solverName(k) == name) return k;
-  }
-  return std::nullopt;
-}
-
-std::vector<std::string> solverNames() {
-  std::vector<std::string> names;
-  for (ClothSolverKind k : kAllClothSolvers) names.emplace_back(solverName(k));
-  return names;
-}
-
 bool usesSprings(ClothSolverKind kind) {
   return kind == ClothSolverKind::Explicit || kind == ClothSolverKind::Implicit;
 }

@@ -20,16 +20,19 @@
 #include "physics/cloth/implicit.h"
 #include "physics/cloth/self_collision.h"
 #include "physics/cloth/tearing.h"
+#include "physics/core/enum_names.h"
 
 namespace pba::cloth {
 
 enum class ClothSolverKind { Explicit, Implicit, Pbd, Xpbd };
-inline constexpr std::array kAllClothSolvers = {ClothSolverKind::Explicit, ClothSolverKind::Implicit,
-                                                ClothSolverKind::Pbd, ClothSolverKind::Xpbd};
-/// "explicit", "implicit", "pbd", "xpbd".
-std::string_view solverName(ClothSolverKind kind);
-std::optional<ClothSolverKind> parseSolver(std::string_view name);
-std::vector<std::string> solverNames();
+inline constexpr auto kClothSolverNames = enumNames<ClothSolverKind>({{ClothSolverKind::Explicit, "explicit"},
+                                                                      {ClothSolverKind::Implicit, "implicit"},
+                                                                      {ClothSolverKind::Pbd, "pbd"},
+                                                                      {ClothSolverKind::Xpbd, "xpbd"}});
+inline constexpr std::array kAllClothSolvers = kClothSolverNames.values();
+inline std::string_view solverName(ClothSolverKind kind) { return kClothSolverNames.name(kind); }
+inline std::optional<ClothSolverKind> parseSolver(std::string_view name) { return kClothSolverNames.parse(name); }
+inline std::vector<std::string> solverNames() { return kClothSolverNames.names(); }
 /// True for the mass-spring solvers (explicit, implicit), false for the constraint ones.
 bool usesSprings(ClothSolverKind kind);
 
@@ -39,6 +42,8 @@ enum class BendingModel {
   Distance,   ///< TMP #14–15: the opposite vertices of every inner edge keep their rest distance (compliant)
   None,
 };
+inline constexpr auto kBendingModelNames = enumNames<BendingModel>(
+    {{BendingModel::Isometric, "isometric"}, {BendingModel::Distance, "distance"}, {BendingModel::None, "none"}});
 
 struct ClothSolverSettings {
   ClothSolverKind kind = ClothSolverKind::Xpbd;

@@ -6,8 +6,6 @@
 
 namespace pba::collision {
 
-std::vector<std::string> broadPhaseNames() { return {"tree", "sap", "brute-force"}; }
-
 BroadPhase::BroadPhase(BroadPhaseKind kind, Real margin) : kind_(kind), margin_(margin) {}
 
 int BroadPhase::add(const Aabb& aabb, int userData, bool isStatic) {

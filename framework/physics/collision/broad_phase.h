@@ -16,12 +16,15 @@
 #include <vector>
 
 #include "physics/collision/dynamic_tree.h"
+#include "physics/core/enum_names.h"
 
 namespace pba::collision {
 
 enum class BroadPhaseKind { Tree, SweepAndPrune, BruteForce };
-/// "tree", "sap", "brute-force".
-std::vector<std::string> broadPhaseNames();
+inline constexpr auto kBroadPhaseNames = enumNames<BroadPhaseKind>({{BroadPhaseKind::Tree, "tree"},
+                                                                    {BroadPhaseKind::SweepAndPrune, "sap"},
+                                                                    {BroadPhaseKind::BruteForce, "brute-force"}});
+inline std::vector<std::string> broadPhaseNames() { return kBroadPhaseNames.names(); }
 
 class BroadPhase {
  public:

@@ -1,5 +1,7 @@
 #include "physics/collision/shapes.h"
 
+#include "physics/core/enum_names.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,23 +11,16 @@
 
 namespace pba::collision {
 
-const char* shapeKindName(ShapeKind kind) {
-  switch (kind) {
-    case ShapeKind::Sphere:
-      return "sphere";
-    case ShapeKind::Capsule:
-      return "capsule";
-    case ShapeKind::Box:
-      return "box";
-    case ShapeKind::Hull:
-      return "hull";
-    case ShapeKind::Plane:
-      return "plane";
-    case ShapeKind::Mesh:
-      return "mesh";
-  }
-  return "?";
-}
+namespace {
+constexpr auto kShapeKindNames = enumNames<ShapeKind>({{ShapeKind::Sphere, "sphere"},
+                                                       {ShapeKind::Capsule, "capsule"},
+                                                       {ShapeKind::Box, "box"},
+                                                       {ShapeKind::Hull, "hull"},
+                                                       {ShapeKind::Plane, "plane"},
+                                                       {ShapeKind::Mesh, "mesh"}});
+}  // namespace
+
+const char* shapeKindName(ShapeKind kind) { return kShapeKindNames.name(kind).data(); }
 
 Result<Shape> makeSphere(Real radius, const std::string& field) {
   if (Status s = checkPositive(field + ".radius", radius); !s) return Error{s.error()};

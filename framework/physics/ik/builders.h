@@ -6,6 +6,7 @@
 #include <random>
 #include <vector>
 
+#include "physics/core/enum_names.h"
 #include "physics/core/result.h"
 #include "physics/ik/effector.h"
 #include "physics/ik/skeleton.h"
@@ -20,6 +21,8 @@ struct Rig {
 /// Axes of a hinge chain: all about z (a planar arm in the xy plane), or alternating z and y so that
 /// the chain reaches out of the plane.
 enum class HingeAxes { Planar, Alternating };
+inline constexpr auto kHingeAxesNames =
+    enumNames<HingeAxes>({{HingeAxes::Planar, "planar"}, {HingeAxes::Alternating, "alternating"}});
 
 /// A serial chain along +x from `base`: `links` joints, each followed by a bone of totalLength/links;
 /// one position effector at the tip (Workbook §2.1 tasks 1, 3 and 5).

@@ -1,5 +1,7 @@
 #include "physics/ik/skeleton.h"
 
+#include "physics/core/enum_names.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -23,21 +25,15 @@ int dofCount(JointType type) {
   return 0;
 }
 
-const char* jointTypeName(JointType type) {
-  switch (type) {
-    case JointType::Fixed:
-      return "fixed";
-    case JointType::Hinge:
-      return "hinge";
-    case JointType::Ball:
-      return "ball";
-    case JointType::Free:
-      return "free";
-    case JointType::Prismatic:
-      return "prismatic";
-  }
-  return "?";
-}
+namespace {
+constexpr auto kJointTypeNames = enumNames<JointType>({{JointType::Fixed, "fixed"},
+                                                       {JointType::Hinge, "hinge"},
+                                                       {JointType::Ball, "ball"},
+                                                       {JointType::Free, "free"},
+                                                       {JointType::Prismatic, "prismatic"}});
+}  // namespace
+
+const char* jointTypeName(JointType type) { return kJointTypeNames.name(type).data(); }
 
 Result<int> Skeleton::add(Joint j) {
   const int index = jointCount();

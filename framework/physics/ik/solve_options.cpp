@@ -14,7 +14,7 @@ namespace pba::ik {
 
 namespace {
 
-constexpr std::array<SolverInfo, 9> kSolvers = {{
+constexpr auto kSolvers = enumNames<SolverKind>({
     {SolverKind::Analytic, "analytic", "Analytic"},
     {SolverKind::Ccd, "ccd", "Cyclic coordinate descent"},
     {SolverKind::Fabrik, "fabrik", "FABRIK"},
@@ -24,14 +24,13 @@ constexpr std::array<SolverInfo, 9> kSolvers = {{
     {SolverKind::SelectivelyDamped, "sdls", "Selectively damped least squares"},
     {SolverKind::GradientDescent, "gradient", "Gradient descent"},
     {SolverKind::Lbfgs, "lbfgs", "L-BFGS (quasi-Newton)"},
-}};
-
-constexpr bool tableInEnumOrder() {
-  for (size_t i = 0; i < kSolvers.size(); ++i)
-    if (static_cast<size_t>(kSolvers[i].kind) != i) return false;
-  return true;
-}
-static_assert(tableInEnumOrder(), "kSolvers must list the methods in SolverKind order");
+});
+constexpr auto kLineSearches = enumNames<LineSearch>(
+    {{LineSearch::Fixed, "fixed"}, {LineSearch::Backtracking, "backtracking"}, {LineSearch::GoldenSection, "golden"}});
+constexpr auto kLimitModes = enumNames<JacobianLimitMode>(
+    {{JacobianLimitMode::Clamp, "clamp"}, {JacobianLimitMode::ZeroColumns, "zero_columns"}});
+constexpr auto kJacobianSources = enumNames<JacobianSource>(
+    {{JacobianSource::Analytic, "analytic"}, {JacobianSource::CentralDifferences, "differences"}});
 
 template <typename Enum>
 bool inTable(Enum e, const std::vector<std::string>& names) {
@@ -75,38 +74,32 @@ bool atLeast(std::string_view field, long long value, long long lowest, Status* 
 
 }  // namespace
 
-std::span<const SolverInfo> solverTable() { return kSolvers; }
-const char* solverName(SolverKind k) { return kSolvers[static_cast<size_t>(k)].name; }
-const char* solverLongName(SolverKind k) { return kSolvers[static_cast<size_t>(k)].longName; }
+// Every name is a string literal, so the views' data() end in a NUL.
+std::span<const SolverInfo> solverTable() { return kSolvers.entries; }
+const char* solverName(SolverKind k) { return kSolvers.name(k).data(); }
+const char* solverLongName(SolverKind k) { return kSolvers.description(k).data(); }
 
 bool solverFromName(const std::string& name, SolverKind* kind) {
-  for (const SolverInfo& s : kSolvers)
-    if (name == s.name) {
-      *kind = s.kind;
-      return true;
-    }
-  return false;
+  const std::optional<SolverKind> k = kSolvers.parse(name);
+  if (k) *kind = *k;
+  return k.has_value();
 }
 
-std::vector<std::string> solverNames() {
-  std::vector<std::string> names;
-  for (const SolverInfo& s : kSolvers) names.emplace_back(s.name);
-  return names;
-}
+std::vector<std::string> solverNames() { return kSolvers.names(); }
 
 const std::vector<std::string>& lineSearchNames() {
-  static const std::vector<std::string> names = {"fixed", "backtracking", "golden"};
+  static const std::vector<std::string> names = kLineSearches.names();
   return names;
 }
-const char* lineSearchName(LineSearch s) { return lineSearchNames()[static_cast<size_t>(s)].c_str(); }
+const char* lineSearchName(LineSearch s) { return kLineSearches.name(s).data(); }
 
 const std::vector<std::string>& jacobianLimitModeNames() {
-  static const std::vector<std::string> names = {"clamp", "zero_columns"};
+  static const std::vector<std::string> names = kLimitModes.names();
   return names;
 }
 
 const std::vector<std::string>& jacobianSourceNames() {
-  static const std::vector<std::string> names = {"analytic", "differences"};
+  static const std::vector<std::string> names = kJacobianSources.names();
   return names;
 }
 

@@ -3,6 +3,8 @@
 // jacobian_solvers.cpp and analytic.cpp.
 #include "physics/ik/solver.h"
 
+#include "physics/core/enum_names.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,25 +18,17 @@
 
 namespace pba::ik {
 
-const char* statusName(SolveStatus s) {
-  switch (s) {
-    case SolveStatus::Success:
-      return "success";
-    case SolveStatus::Unreachable:
-      return "unreachable";
-    case SolveStatus::Stalled:
-      return "stalled";
-    case SolveStatus::IterationCap:
-      return "iteration_cap";
-    case SolveStatus::TimeCap:
-      return "time_cap";
-    case SolveStatus::NotApplicable:
-      return "not_applicable";
-    case SolveStatus::InvalidInput:
-      return "invalid_input";
-  }
-  return "?";
-}
+namespace {
+constexpr auto kStatusNames = enumNames<SolveStatus>({{SolveStatus::Success, "success"},
+                                                      {SolveStatus::Unreachable, "unreachable"},
+                                                      {SolveStatus::Stalled, "stalled"},
+                                                      {SolveStatus::IterationCap, "iteration_cap"},
+                                                      {SolveStatus::TimeCap, "time_cap"},
+                                                      {SolveStatus::NotApplicable, "not_applicable"},
+                                                      {SolveStatus::InvalidInput, "invalid_input"}});
+}  // namespace
+
+const char* statusName(SolveStatus s) { return kStatusNames.name(s).data(); }
 
 namespace {
 

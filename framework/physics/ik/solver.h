@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "physics/core/enum_names.h"
 #include "physics/core/result.h"
 #include "physics/ik/effector.h"
 #include "physics/ik/skeleton.h"
@@ -28,11 +29,9 @@ enum class SolverKind {
 
 /// The one table of the methods' names, in SolverKind order: menus, command-line choices, metrics
 /// keys and tests all read it, so a new method is one row here (and one case in makeMethod).
-struct SolverInfo {
-  SolverKind kind;
-  const char* name;      ///< short name ("ccd", "dls", …): menus, --solver, metrics keys
-  const char* longName;  ///< "Cyclic coordinate descent", …
-};
+/// A method's entry: `value`, its short `name` ("ccd", "dls", …: menus, --solver, metrics keys) and its
+/// `description` ("Cyclic coordinate descent", …).
+using SolverInfo = EnumName<SolverKind>;
 std::span<const SolverInfo> solverTable();
 const char* solverName(SolverKind kind);
 const char* solverLongName(SolverKind kind);
@@ -46,7 +45,8 @@ enum class LineSearch {
   Backtracking,   ///< halve α from the quadratic model's minimiser until Armijo's sufficient decrease holds
   GoldenSection,  ///< minimise f along the direction by golden-section search (an exact line search)
 };
-/// "fixed", "backtracking", "golden", in LineSearch order.
+/// "fixed", "backtracking", "golden", in LineSearch order (lineSearchNames() and the rest are the tables in
+/// solve_options.cpp, physics/core/enum_names.h).
 const std::vector<std::string>& lineSearchNames();
 const char* lineSearchName(LineSearch search);
 

@@ -5,41 +5,6 @@
 
 namespace pba::ode {
 
-std::string_view integratorName(IntegratorKind kind) {
-  switch (kind) {
-    case IntegratorKind::Euler:
-      return "euler";
-    case IntegratorKind::SymplecticEuler:
-      return "symplectic-euler";
-    case IntegratorKind::Midpoint:
-      return "midpoint";
-    case IntegratorKind::Rk4:
-      return "rk4";
-    case IntegratorKind::Verlet:
-      return "verlet";
-    case IntegratorKind::VelocityVerlet:
-      return "velocity-verlet";
-    case IntegratorKind::ImplicitEuler:
-      return "implicit-euler";
-    case IntegratorKind::Adaptive:
-      return "adaptive";
-  }
-  return "unknown";
-}
-
-std::optional<IntegratorKind> parseIntegrator(std::string_view name) {
-  for (IntegratorKind k : kAllIntegrators) {
-    if (integratorName(k) == name) return k;
-  }
-  return std::nullopt;
-}
-
-std::vector<std::string> integratorNames() {
-  std::vector<std::string> names;
-  for (IntegratorKind k : kAllIntegrators) names.emplace_back(integratorName(k));
-  return names;
-}
-
 int integratorOrder(IntegratorKind kind) {
   switch (kind) {
     case IntegratorKind::Euler:

@@ -25,6 +25,7 @@
 #include <string_view>
 #include <vector>
 
+#include "physics/core/enum_names.h"
 #include "physics/core/result.h"
 #include "physics/ode/ode_system.h"
 
@@ -41,16 +42,22 @@ enum class IntegratorKind {
   Adaptive,
 };
 
-inline constexpr std::array kAllIntegrators = {
-    IntegratorKind::Euler,  IntegratorKind::SymplecticEuler, IntegratorKind::Midpoint,      IntegratorKind::Rk4,
-    IntegratorKind::Verlet, IntegratorKind::VelocityVerlet,  IntegratorKind::ImplicitEuler, IntegratorKind::Adaptive};
-
-/// "euler", "symplectic-euler", … (the names of the table above; command line and UI).
-std::string_view integratorName(IntegratorKind kind);
+/// The names for the command line, scene files and the UI.
+inline constexpr auto kIntegratorNames =
+    enumNames<IntegratorKind>({{IntegratorKind::Euler, "euler"},
+                               {IntegratorKind::SymplecticEuler, "symplectic-euler"},
+                               {IntegratorKind::Midpoint, "midpoint"},
+                               {IntegratorKind::Rk4, "rk4"},
+                               {IntegratorKind::Verlet, "verlet"},
+                               {IntegratorKind::VelocityVerlet, "velocity-verlet"},
+                               {IntegratorKind::ImplicitEuler, "implicit-euler"},
+                               {IntegratorKind::Adaptive, "adaptive"}});
+inline constexpr std::array kAllIntegrators = kIntegratorNames.values();
+inline std::string_view integratorName(IntegratorKind kind) { return kIntegratorNames.name(kind); }
 /// Inverse of integratorName(); nothing for an unknown name.
-std::optional<IntegratorKind> parseIntegrator(std::string_view name);
+inline std::optional<IntegratorKind> parseIntegrator(std::string_view name) { return kIntegratorNames.parse(name); }
 /// All names in kAllIntegrators order (for UI choices).
-std::vector<std::string> integratorNames();
+inline std::vector<std::string> integratorNames() { return kIntegratorNames.names(); }
 /// Asymptotic order of the global error (1, 2, 4; 5 for adaptive's propagated solution).
 int integratorOrder(IntegratorKind kind);
 

@@ -1,12 +1,18 @@
 #include "physics/ragdoll/ragdoll_desc.h"
 
+#include "physics/core/enum_names.h"
+
 #include <cmath>
 
 #include "physics/core/validate.h"
 
 namespace pba::ragdoll {
 
-const char* jointKindName(JointKind kind) { return kind == JointKind::Ball ? "ball" : "hinge"; }
+namespace {
+constexpr auto kJointKindNames = enumNames<JointKind>({{JointKind::Ball, "ball"}, {JointKind::Hinge, "hinge"}});
+}  // namespace
+
+const char* jointKindName(JointKind kind) { return kJointKindNames.name(kind).data(); }
 
 namespace {
 

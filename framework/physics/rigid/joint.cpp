@@ -2,31 +2,25 @@
 #include <cmath>
 
 #include "physics/core/validate.h"
+
+#include "physics/core/enum_names.h"
 #include "physics/rigid/contact_solver.h"
 #include "physics/rigid/joint.h"
 #include "physics/rigid/joint_rows.h"
 
 namespace pba::rigid {
 
-const char* jointKindName(JointKind kind) {
-  switch (kind) {
-    case JointKind::Ball:
-      return "ball";
-    case JointKind::Hinge:
-      return "hinge";
-    case JointKind::ConeTwist:
-      return "cone-twist";
-    case JointKind::Fixed:
-      return "fixed";
-    case JointKind::Slider:
-      return "slider";
-    case JointKind::Distance:
-      return "distance";
-    case JointKind::Mouse:
-      return "mouse";
-  }
-  return "?";
-}
+namespace {
+constexpr auto kJointKindNames = enumNames<JointKind>({{JointKind::Ball, "ball"},
+                                                       {JointKind::Hinge, "hinge"},
+                                                       {JointKind::ConeTwist, "cone-twist"},
+                                                       {JointKind::Fixed, "fixed"},
+                                                       {JointKind::Slider, "slider"},
+                                                       {JointKind::Distance, "distance"},
+                                                       {JointKind::Mouse, "mouse"}});
+}  // namespace
+
+const char* jointKindName(JointKind kind) { return kJointKindNames.name(kind).data(); }
 
 Status initJoint(Joint& j, const std::vector<SolverBody>& bodies, const std::string& field) {
   const JointDesc& d = j.desc;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "physics/collision/broad_phase.h"
+#include "physics/core/enum_names.h"
 #include "physics/core/types.h"
 
 namespace pba::rigid {
@@ -30,9 +31,17 @@ enum class FrictionModel { Cone, Pyramid };
 ///            docs/decisions/2026-12-01-rigid-bodies-as-box2d-v3-in-3d.md).
 enum class GyroscopicMode { Off, Implicit, Midpoint };
 
-std::vector<std::string> positionCorrectionNames();
-std::vector<std::string> frictionModelNames();
-std::vector<std::string> gyroscopicModeNames();
+inline constexpr auto kPositionCorrectionNames =
+    enumNames<PositionCorrection>({{PositionCorrection::Soft, "soft"},
+                                   {PositionCorrection::Baumgarte, "baumgarte"},
+                                   {PositionCorrection::None, "none"}});
+inline constexpr auto kFrictionModelNames =
+    enumNames<FrictionModel>({{FrictionModel::Cone, "cone"}, {FrictionModel::Pyramid, "pyramid"}});
+inline constexpr auto kGyroscopicModeNames = enumNames<GyroscopicMode>(
+    {{GyroscopicMode::Off, "off"}, {GyroscopicMode::Implicit, "implicit"}, {GyroscopicMode::Midpoint, "midpoint"}});
+inline std::vector<std::string> positionCorrectionNames() { return kPositionCorrectionNames.names(); }
+inline std::vector<std::string> frictionModelNames() { return kFrictionModelNames.names(); }
+inline std::vector<std::string> gyroscopicModeNames() { return kGyroscopicModeNames.names(); }
 
 struct WorldSettings {
   Vec3 gravity{0.0, -kStandardGravity, 0.0};  ///< [m/s²]

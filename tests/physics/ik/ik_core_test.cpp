@@ -306,7 +306,7 @@ TEST(IkSolverNames, RoundTripEverySolverAndListThemInOrder) {
   const std::vector<std::string> names = solverNames();
   ASSERT_EQ(names.size(), solverTable().size());
   for (size_t k = 0; k < names.size(); ++k) {
-    EXPECT_EQ(static_cast<size_t>(solverTable()[k].kind), k);
+    EXPECT_EQ(static_cast<size_t>(solverTable()[k].value), k);
     SolverKind kind{};
     ASSERT_TRUE(solverFromName(names[k], &kind)) << names[k];
     EXPECT_EQ(static_cast<size_t>(kind), k);

@@ -69,7 +69,7 @@ TEST(IkDeterminism, EverySolverGivesBitwiseIdenticalResultsForIdenticalInputs) {
         setGoalsFromPose(sk, randomPose(sk, rng), other);
         const Pose start = randomPose(sk, rng);
         SolveOptions o;
-        o.solver = method.kind;
+        o.solver = method.value;
         o.maxIterations = 300;
         o.restarts = 10;  // the stall recovery's random poses must be deterministic too
         Pose a = start, between = start, b = start;
