@@ -29,6 +29,35 @@ using detail::incidentFace;
 
 constexpr Real kAxisTolerance = 5e-4;  // [m] (a tenth of Box2D's linear slop)
 
+// The largest separations found on each kind of axis, and the faces that gave them.
+struct AxisQuery {
+  Real sepA, sepB, sepE;
+  int faceA, faceB;
+};
+
+// The face contact both pair kinds end with when no edge pair wins: the reference face is A's unless B's
+// face or an edge is better by more than the tolerance (A's face only within the tolerance of the best
+// axis of all: compared with B's face alone, a face of B preferred over the edge and then A's preferred
+// over B's could end up twice the tolerance deep); the incident face of the other is clipped against
+// it. `pickIncident` chooses that face: over all faces for boxes, among the faces at the support vertex
+// for hulls (the same face for a box, found with fewer products).
+Manifold faceContact(const Shape& a, const Transform& pa, const Shape& b, const Transform& pb, Real margin,
+                     const AxisQuery& q, int (*pickIncident)(const ConvexHull&, const Transform&, const Vec3&)) {
+  const bool flip = std::max(q.sepB, q.sepE) > q.sepA + kAxisTolerance;
+  const ConvexHull& ref = flip ? *b.hull : *a.hull;
+  const ConvexHull& inc = flip ? *a.hull : *b.hull;
+  const Transform& pr = flip ? pb : pa;
+  const Transform& pi = flip ? pa : pb;
+  const int refFace = flip ? q.faceB : q.faceA;
+  const int incFace = pickIncident(inc, pi, pr.rotate(ref.faces[refFace].normal));
+  Manifold m = clipAgainstFace(ref, pr, refFace, facePolygon(inc, pi, incFace), 0.0, flip, margin, incFace);
+  // A face preferred within the tolerance over the true axis may not hold the deepest point in its
+  // prism, and clipping can then leave nothing: the general query still finds the contact.
+  if (m.count == 0) return collideConvex(a, pa, b, pb, margin);
+  m.separation = flip ? q.sepB : q.sepA;
+  return m;
+}
+
 }  // namespace
 
 // The fifteen candidate axes of two boxes (Ericson §4.4.1; Gottschalk's OBB test): A's three face
@@ -85,22 +114,7 @@ Manifold collideBoxes(const Shape& a, const Transform& pa, const Shape& b, const
     m.separation = sepE;
     return m;
   }
-  // A's face only within the tolerance of the best axis of all: compared with B's face alone, a face of
-  // B preferred over the edge and then A's preferred over B's could end up twice the tolerance deep.
-  const bool flip = std::max(sepB, sepE) > sepA + kAxisTolerance;
-  const Shape& ref = flip ? b : a;
-  const Shape& inc = flip ? a : b;
-  const Transform& pr = flip ? pb : pa;
-  const Transform& pi = flip ? pa : pb;
-  const int refFace = flip ? faceB : faceA;
-  const Vec3 n = pr.rotate(ref.hull->faces[refFace].normal);
-  const int incFace = incidentFace(*inc.hull, pi, n);
-  Manifold m = clipAgainstFace(*ref.hull, pr, refFace, facePolygon(*inc.hull, pi, incFace), 0.0, flip, margin, incFace);
-  // A face preferred within the tolerance over the true axis may not hold the deepest point in its
-  // prism, and clipping can then leave nothing: the general query still finds the contact.
-  if (m.count == 0) return collideConvex(a, pa, b, pb, margin);
-  m.separation = flip ? sepB : sepA;
-  return m;
+  return faceContact(a, pa, b, pb, margin, {sepA, sepB, sepE, faceA, faceB}, incidentFace);
 }
 
 namespace {
@@ -185,17 +199,7 @@ Manifold collidePolytopes(const Shape& a, const Transform& pa, const Shape& b, c
     m.separation = sepE;
     return m;
   }
-  const bool flip = std::max(sepB, sepE) > sepA + kAxisTolerance;  // as for boxes
-  const ConvexHull& ref = flip ? hb : ha;
-  const ConvexHull& inc = flip ? ha : hb;
-  const Transform& pr = flip ? pb : pa;
-  const Transform& pi = flip ? pa : pb;
-  const int refFace = flip ? faceB : faceA;
-  const int incFace = detail::incidentFaceAtSupport(inc, pi, pr.rotate(ref.faces[refFace].normal));
-  Manifold m = clipAgainstFace(ref, pr, refFace, facePolygon(inc, pi, incFace), 0.0, flip, margin, incFace);
-  if (m.count == 0) return collideConvex(a, pa, b, pb, margin);  // as for boxes
-  m.separation = flip ? sepB : sepA;
-  return m;
+  return faceContact(a, pa, b, pb, margin, {sepA, sepB, sepE, faceA, faceB}, detail::incidentFaceAtSupport);
 }
 
 }  // namespace pba::collision
