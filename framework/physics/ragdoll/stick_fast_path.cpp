@@ -75,25 +75,22 @@ void relaxSticksScalar(std::span<const Stick> sticks, std::span<Vec3> x, std::sp
       x[q.b] -= Vec3(m.bx[1], m.by[1], m.bz[1]);
     }
   };
-  // Two runs that are bones alike: four particles each, the same ends at the same places.
-  const auto twinBones = [&](std::size_t p, std::size_t q, const std::array<int, 2>& rp, const std::array<int, 2>& rq) {
-    if (rp[1] - rp[0] != 3 || rq[1] - rq[0] != 3) return false;
-    for (std::size_t s = 0; s < kRun; ++s)
-      if (sticks[p + s].a - rp[0] != sticks[q + s].a - rq[0] || sticks[p + s].b - rp[0] != sticks[q + s].b - rq[0])
-        return false;
-    return true;
-  };
-  // The group of 2 kBonePairs runs from `first`: bone pairs in lanes, if they all are twins with
-  // ascending (so disjoint) particle ranges.
+  // The group of 2 kBonePairs runs from `first` as bone pairs in lanes: the first run is a bone (four
+  // particles low .. low + 3) and every other run is it shifted by at least four more particles than the
+  // one before (the same ends at the same places, the ranges ascending, so pairwise disjoint).
   std::array<int, 2 * kBonePairs> low{};
   const auto boneGroup = [&](std::size_t first) {
-    std::array<int, 2> previous{-1, -1};
-    for (std::size_t r = 0; r < 2 * kBonePairs; r += 2) {
-      const std::array<int, 2> rp = particleRange(first + r * kRun), rq = particleRange(first + (r + 1) * kRun);
-      if (!(previous[1] < rp[0] && rp[1] < rq[0]) || !twinBones(first + r * kRun, first + (r + 1) * kRun, rp, rq))
-        return false;
-      low[r] = rp[0], low[r + 1] = rq[0];
-      previous = rq;
+    const std::array<int, 2> range = particleRange(first);
+    if (range[1] - range[0] != 3) return false;
+    low[0] = range[0];
+    for (std::size_t r = 1; r < 2 * kBonePairs; ++r) {
+      const int shift = sticks[first + r * kRun].a - sticks[first].a;
+      for (std::size_t s = 0; s < kRun; ++s) {
+        const Stick &base = sticks[first + s], &run = sticks[first + r * kRun + s];
+        if (run.a != base.a + shift || run.b != base.b + shift) return false;
+      }
+      low[r] = range[0] + shift;
+      if (low[r] < low[r - 1] + 4) return false;
     }
     return true;
   };
