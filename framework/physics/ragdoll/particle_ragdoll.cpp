@@ -140,6 +140,7 @@ void ParticleRagdoll::findPairs(Real dt) {
   struct Entry {
     collision::Aabb box;
     int bone;
+    bool fixed;  // the bone's, kept here: the sweep then reads only the entries
   };
   std::vector<Entry> entries;
   entries.reserve(bones_.size());
@@ -154,15 +155,14 @@ void ParticleRagdoll::findPairs(Real dt) {
     Real travel = 0.0;
     for (int k = 0; k < 4; ++k) travel = std::max(travel, glm::length(x_[f + k] - xOld_[f + k]));
     const Real margin = 2.0 * travel + 0.01 + glm::length(settings_.gravity) * dt * dt;
-    entries.push_back({collision::Aabb{t.position - extent, t.position + extent}.fattened(margin), b});
+    entries.push_back({collision::Aabb{t.position - extent, t.position + extent}.fattened(margin), b, bones_[b].fixed});
   }
   const auto jointed = [this](int a, int b) {
     const std::vector<int>& n = jointedWith_[a];
     return std::find(n.begin(), n.end(), b) != n.end();
   };
   const auto consider = [&](const Entry& p, const Entry& q) {
-    if (bones_[p.bone].fixed && bones_[q.bone].fixed) return;
-    if (!collision::overlaps(p.box, q.box) || jointed(p.bone, q.bone)) return;
+    if (!collision::overlaps(p.box, q.box) || (p.fixed && q.fixed) || jointed(p.bone, q.bone)) return;
     pairs_.emplace_back(std::min(p.bone, q.bone), std::max(p.bone, q.bone));
   };
   if (!settings_.broadPhase) {
@@ -275,7 +275,8 @@ std::size_t ParticleRagdoll::memoryBytes() const {
   const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t n = sizeof(*this) + bytes(x_) + bytes(xOld_) + bytes(w_) + bytes(m_) + bytes(startVelocity_) +
                   bytes(bones_) + bytes(sticks_) + bytes(joints_) + bytes(pairs_) + bytes(jointedWith_) +
-                  bytes(touched_) + bytes(touchNormal_) + bytes(contacts_);
+                  bytes(touched_) + bytes(touchNormal_) + bytes(contacts_) +
+                  bytes(groundContacts_) + bytes(groundBones_);
   for (const Joint& j : joints_) n += bytes(j.points);
   for (const std::vector<int>& v : jointedWith_) n += bytes(v);
   return n;

@@ -35,6 +35,7 @@
 #include "physics/collision/shapes.h"
 #include "physics/collision/transform.h"
 #include "physics/core/debug_draw.h"
+#include "physics/ragdoll/contact_fast_path.h"
 #include "physics/ragdoll/kernels.h"
 #include "physics/ragdoll/ragdoll_desc.h"
 #include "physics/ragdoll/stick_fast_path.h"
@@ -175,8 +176,10 @@ class ParticleRagdoll {
   void solveJoints();
   void solveLimits();
   void solveContacts(bool record);
-  void solveGround(int bone, bool record);
-  bool solveGroundOnce(int bone, bool record);
+  void solveGround(bool record);
+  /// Whether the bone is below the ground; if so its contact goes to groundContacts_ (and, when
+  /// `record`, to contacts_).
+  bool groundContact(int bone, bool record);
   void solveBonePair(int a, int b, bool record);
   void solveDrag();
   /// Moves bone B's point (weights inB) by +Δ and bone A's (weights inA) by −Δ, shared by their
@@ -203,6 +206,8 @@ class ParticleRagdoll {
   std::vector<char> touched_;      // per bone, this step
   std::vector<Vec3> touchNormal_;  // per bone, the last contact normal of this step
   std::vector<Contact> contacts_;
+  std::vector<GroundContact> groundContacts_;  // this round's pushes out of the ground (RAG-4's fast path)
+  std::vector<int> groundBones_;               // their bones
   int dragBone_ = -1;
   Weights dragWeights_{};
   Vec3 dragTarget_{0.0};

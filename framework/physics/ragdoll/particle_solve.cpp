@@ -74,19 +74,32 @@ void ParticleRagdoll::solveContacts(bool record) {
   if (record) contacts_.clear();
   // Bone pairs first, the ground last: nothing ends a pass pushed into the floor.
   for (const auto& [a, b] : pairs_) solveBonePair(a, b, record);
-  if (settings_.ground)
-    for (int b = 0; b < boneCount(); ++b) solveGround(b, record);
+  if (settings_.ground) solveGround(record);
 }
 
-void ParticleRagdoll::solveGround(int bone, bool record) {
-  if (bones_[bone].fixed) return;
-  // Moving the deepest corner up by c_i λ Δ also deforms the tetrahedron a little, which can lower
-  // another corner: repeat (at most 4 times) until no corner is below the ground.
-  for (int pass = 0; pass < 4; ++pass)
-    if (!solveGroundOnce(bone, record && pass == 0)) return;
+void ParticleRagdoll::solveGround(bool record) {
+  // Moving a bone's deepest corner up by c_i λ Δ also deforms its tetrahedron a little, which can lower
+  // another corner: each bone is tested and pushed again (at most 4 times) until no corner is below the
+  // ground. A bone's contacts touch only its own particles, so every bone's first push, then every
+  // remaining bone's second, and so on, give each bone the results of its own four in a row, and the
+  // pushes of one round go to RAG-4's fast path together.
+  groundContacts_.clear();
+  groundBones_.clear();
+  for (int b = 0; b < boneCount(); ++b)
+    if (!bones_[b].fixed && groundContact(b, record)) groundBones_.push_back(b);
+  for (int round = 1;; ++round) {
+    pushOutOfGroundFast(groundContacts_, x_);  // RAG-4, through its fast path (contact_fast_path.h)
+    if (round == 4) return;
+    std::size_t still = 0;
+    groundContacts_.clear();
+    for (const int b : groundBones_)
+      if (groundContact(b, false)) groundBones_[still++] = b;
+    if (still == 0) return;
+    groundBones_.resize(still);
+  }
 }
 
-bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
+bool ParticleRagdoll::groundContact(int bone, bool record) {
   const Bone& B = bones_[bone];
   // The corners' depths below the ground, from the heights of the four particles only (embedded()'s y,
   // summed in its order).
@@ -99,7 +112,6 @@ bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
   Real deepest = 0.0;
   for (const Real d : depth) deepest = std::max(deepest, d);
   if (!(deepest > 1e-9)) return false;
-  std::array<Vec3, 4> p = particlesOf(bone);
   Weights weights{0.0, 0.0, 0.0, 0.0};
   int count = 0;
   for (std::size_t i = 0; i < depth.size(); ++i)
@@ -110,10 +122,8 @@ bool ParticleRagdoll::solveGroundOnce(int bone, bool record) {
   for (Real& c : weights) c /= count;
   touched_[bone] = 1;
   touchNormal_[bone] = kUp;
-  if (record) contacts_.push_back({embedded(p, weights), kUp});
-  ContactSide side{&p, weights, B.mass}, ground{};
-  resolveDeepestContact(side, ground, kUp, deepest);  // RAG-4
-  for (int k = 0; k < 4; ++k) x_[B.first + k] = p[k];
+  if (record) contacts_.push_back({pointOf(bone, weights), kUp});
+  groundContacts_.push_back({B.first, weights, deepest, B.mass});
   return true;
 }
 
