@@ -147,15 +147,28 @@ void fountainPoolSteps(benchmark::State& state, std::size_t n, int variant) {
     particles::stepFountain(p, f, h);
     emitter.spawn(p, h);
   }
+  // The memory floor of one particle update, measured in this run just before the timed steps (roofline.h):
+  // an update reads x, v, age and lifetime and writes x, v and age (kFountainBytesPerUpdate), at the
+  // triad's bandwidth over three arrays as large as the pool's (x, v, inverse mass, age, lifetime and
+  // colour: 88 bytes a particle), so that both live in the same level of the memory hierarchy.
+  constexpr double kFountainBytesPerUpdate = 120.0, kPoolBytesPerParticle = 88.0;
+  const bench::Roofline roofline =
+      bench::measureRoofline(static_cast<std::size_t>(static_cast<double>(n) * kPoolBytesPerParticle / 24.0));
   std::size_t contacts = 0;
+  const double start = bench::threadCpuSeconds();
   for (auto _ : state) {
     contacts += particles::stepFountain(p, f, h).contacts;
     emitter.spawn(p, h);
   }
   const auto updates = static_cast<std::int64_t>(state.iterations() * n);
+  const double nsPerUpdate =
+      1e9 * (bench::threadCpuSeconds() - start) / static_cast<double>(std::max<std::int64_t>(1, updates));
   state.SetItemsProcessed(updates);
   state.counters["contact_share"] =
       static_cast<double>(contacts) / static_cast<double>(std::max<std::int64_t>(1, updates));
+  state.counters["floor_ns"] = kFountainBytesPerUpdate / roofline.bytesPerNs;
+  state.counters["times_floor"] = nsPerUpdate / (kFountainBytesPerUpdate / roofline.bytesPerNs);
+  state.counters["roof_GBps"] = roofline.bytesPerNs;
 }
 void BM_FountainPoolStep(benchmark::State& state) {
   fountainPoolSteps(state, static_cast<std::size_t>(state.range(0)), kWholeScene);

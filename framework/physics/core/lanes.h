@@ -60,6 +60,8 @@ inline Pair operator-(Pair a) { return {{-a.lane[0], -a.lane[1]}}; }
   }                                                                                                          \
   inline PairMask operator op(Pair a, Real b) { return a op Pair{{b, b}}; }
 PBA_PAIR_COMPARISON(<)
+PBA_PAIR_COMPARISON(<=)
+PBA_PAIR_COMPARISON(>)
 PBA_PAIR_COMPARISON(>=)
 #undef PBA_PAIR_COMPARISON
 #endif
@@ -86,6 +88,20 @@ inline Pair sqrtPair(Pair a) {
   return Pair{std::sqrt(a[0]), std::sqrt(a[1])};
 #endif
 }
+
+/// Lane by lane a where `mask` is set, else b: both are computed, nothing branches (andpd/andnpd/orpd under
+/// SSE2). The bits of the chosen lane are kept as they are (−0 stays −0).
+inline Pair selectPair(PairMask mask, Pair a, Pair b) {
+#if defined(PBA_VECTOR_EXTENSION_LANES) && defined(__SSE2__)
+  const __m128d m = reinterpret_cast<__m128d>(mask);
+  return reinterpret_cast<Pair>(
+      _mm_or_pd(_mm_and_pd(m, reinterpret_cast<__m128d>(a)), _mm_andnot_pd(m, reinterpret_cast<__m128d>(b))));
+#else
+  return Pair{mask[0] ? a[0] : b[0], mask[1] ? a[1] : b[1]};
+#endif
+}
+/// Whether some lane of `mask` is set.
+inline bool anyLane(PairMask mask) { return (mask[0] | mask[1]) != 0; }
 
 /// One coordinate of two points a[i] and a[j] (j may equal i).
 struct PairVec3 {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "physics/core/lanes.h"
+#include "physics/particles/fountain_contacts.h"
 
 namespace pba::particles {
 
@@ -33,16 +34,6 @@ void stepGravityDragPlane(std::span<Vec3> x, std::span<Vec3> v, const FusedStepD
 }
 
 namespace {
-// The obstacles as the fountain kernel tests them, precomputed once per step.
-struct PlaneTest {
-  Vec3 normal;
-  Real offset;  // n·p + particle radius: contact when n·x − offset < slop
-};
-struct SphereTest {
-  Vec3 center;
-  Real surface;  // sphere radius + particle radius
-  Real reach2;   // (surface + slop)²: nothing to do when |x − c|² ≥ reach2
-};
 constexpr std::size_t kBlock = 256;  // particles per block: a block's x and v stay in L1
 
 /// A table of n precomputed obstacle tests: on the stack for the usual few, on the heap beyond that (no
@@ -62,6 +53,15 @@ class ObstacleTable {
   std::array<T, kInline> local_{};
   std::vector<T> heap_;
   std::span<T> items_;
+};
+
+// The reach tests of the motion pass with every constant already in both lanes, so that the pass loads
+// them as they are instead of broadcasting each one for every pair of particles.
+struct PlaneLanes {
+  Pair nx, ny, nz, offset;
+};
+struct SphereLanes {
+  Pair cx, cy, cz, reach2;
 };
 
 // The swirl's velocity change over half a step, (h/2) S (ŷ × r⊥)/(|r⊥|² + r_c²) with ŷ × (rx, 0, rz) =
@@ -86,12 +86,10 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
   const Vec3 g = d.gravity;
   const Real halfSwirl = 0.5 * h * d.vortexStrength, core2 = d.vortexCore * d.vortexCore;
   const Real cx = d.vortexCenter.x, cz = d.vortexCenter.z;
-  const ContactMaterial material = d.material;
-  const ContactStep contactStep{d.gravity, h};
-  ObstacleTable<PlaneTest> planeTable(d.planes.size());
-  ObstacleTable<SphereTest> sphereTable(d.spheres.size());
-  const std::span<PlaneTest> planes = planeTable.items();
-  const std::span<SphereTest> spheres = sphereTable.items();
+  ObstacleTable<PlaneReach> planeTable(d.planes.size());
+  ObstacleTable<SphereReach> sphereTable(d.spheres.size());
+  const std::span<PlaneReach> planes = planeTable.items();
+  const std::span<SphereReach> spheres = sphereTable.items();
   for (std::size_t k = 0; k < planes.size(); ++k) {
     planes[k] = {d.planes[k].normal, glm::dot(d.planes[k].normal, d.planes[k].point) + d.radius};
   }
@@ -99,26 +97,20 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
     const Real surface = d.spheres[k].radius + d.radius, reach = surface + kContactSlop;
     spheres[k] = {d.spheres[k].center, surface, reach * reach};
   }
+  const FountainObstacles obstacles{planes, spheres, d.material, ContactStep{d.gravity, h}};
+  ObstacleTable<PlaneLanes> planeLaneTable(planes.size());
+  ObstacleTable<SphereLanes> sphereLaneTable(spheres.size());
+  const std::span<PlaneLanes> planeLanes = planeLaneTable.items();
+  const std::span<SphereLanes> sphereLanes = sphereLaneTable.items();
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    const PlaneReach& plane = planes[k];
+    planeLanes[k] = {splat(plane.normal.x), splat(plane.normal.y), splat(plane.normal.z), splat(plane.offset)};
+  }
+  for (std::size_t k = 0; k < spheres.size(); ++k) {
+    const SphereReach& sphere = spheres[k];
+    sphereLanes[k] = {splat(sphere.center.x), splat(sphere.center.y), splat(sphere.center.z), splat(sphere.reach2)};
+  }
   std::size_t contacts = 0, held = 0;
-  // One obstacle pass for one particle, in the order of collideWithObstacles (planes, then spheres), with
-  // the library's contact model.
-  auto resolveContacts = [&](Vec3& x, Vec3& v) {
-    auto count = [&](const ContactResult& r) {
-      contacts += r.kind != ContactKind::None;
-      held += r.heldBySafetyNet;
-    };
-    for (const PlaneTest& plane : planes) {
-      count(resolveContact(x, v, plane.normal, glm::dot(plane.normal, x) - plane.offset, material, contactStep));
-    }
-    for (const SphereTest& sphere : spheres) {
-      const Vec3 r = x - sphere.center;
-      const Real l2 = glm::dot(r, r);
-      if (l2 >= sphere.reach2 || l2 <= 0.0) continue;  // far: no square root
-      const Real l = std::sqrt(l2);
-      count(resolveContact(x, v, r / l, l - sphere.surface, material, contactStep));
-    }
-  };
-
   const std::size_t count = p.size();
   Vec3* __restrict xs = p.position.data();
   Vec3* __restrict vs = p.velocity.data();
@@ -127,7 +119,8 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
   Real* __restrict inverseMasses = p.inverseMass.data();
   Color* __restrict colors = p.color.data();
   std::size_t kept = 0;
-  Real speed2 = 0.0, height = 0.0;
+  Real speed2 = 0.0, height = 0.0;  // the odd particles out of the lanes below
+  Pair speed2Lanes = splat(0.0), heightLanes = splat(0.0);
   std::uint32_t touching[kBlock];  // survivors of the block that reach an obstacle (offsets from its start)
   for (std::size_t begin = 0; begin < count; begin += kBlock) {
     const std::size_t end = std::min(count, begin + kBlock), first = kept;
@@ -146,12 +139,12 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
       const PairVec3 x{x0.x + h * half.x, x0.y + h * half.y, x0.z + h * half.z};
       const PairVec3 v = halfKickPair(half, keep, halfKick, swirlKick(x, cx, cz, halfSwirl, core2));
       PairMask reach{0, 0};
-      for (const PlaneTest& plane : planes) {
-        const Pair phi = plane.normal.x * x.x + plane.normal.y * x.y + plane.normal.z * x.z - plane.offset;
+      for (const PlaneLanes& plane : planeLanes) {
+        const Pair phi = plane.nx * x.x + plane.ny * x.y + plane.nz * x.z - plane.offset;
         reach |= phi < kContactSlop;
       }
-      for (const SphereTest& sphere : spheres) {
-        const Pair rx = x.x - sphere.center.x, ry = x.y - sphere.center.y, rz = x.z - sphere.center.z;
+      for (const SphereLanes& sphere : sphereLanes) {
+        const Pair rx = x.x - sphere.cx, ry = x.y - sphere.cy, rz = x.z - sphere.cz;
         reach |= rx * rx + ry * ry + rz * rz < sphere.reach2;
       }
       // Stable compaction: after the first removal every survivor slides down by the removals so far.
@@ -173,16 +166,30 @@ FountainStepStats stepFountain(Particles& p, const FusedFountainDesc& d, Real h)
       if (j != i && !(age[1] >= lifetimes[j])) [[likely]]
         keepLane(1, j);
     }
-    // Pass 2: the contact model for the flagged particles, while the block is in cache.
-    for (std::size_t n = 0; n < nTouching; ++n) resolveContacts(xs[first + touching[n]], vs[first + touching[n]]);
+    // Pass 2: the contact model for the flagged particles, while the block is in cache (PART-5's fast path,
+    // fountain_contacts.h).
+    const FountainContactCounts blockContacts = resolveFountainContactsFast(
+        std::span<Vec3>(xs + first, kept - first), std::span<Vec3>(vs + first, kept - first),
+        std::span<const std::uint32_t>(touching, nTouching), obstacles);
+    contacts += blockContacts.contacts;
+    held += blockContacts.heldBySafetyNet;
     // Pass 3: the energy sums. A NaN or ±∞ anywhere in x or v makes them non-finite (0·∞ is NaN
-    // too), so they are also the guard's finiteness test.
-    for (std::size_t i = first; i < kept; ++i) {
+    // too), so they are also the guard's finiteness test. Two particles per iteration into two partial
+    // sums each (lanes), so that the sums are no chain of one addition per particle.
+    std::size_t i = first;
+    for (; i + 1 < kept; i += 2) {
+      const PairVec3 v = gatherPair(vs, i, i + 1), x = gatherPair(xs, i, i + 1);
+      speed2Lanes = speed2Lanes + (v.x * v.x + v.y * v.y + v.z * v.z);
+      heightLanes = heightLanes + (g.x * x.x + g.y * x.y + g.z * x.z);
+    }
+    if (i < kept) {
       speed2 += glm::dot(vs[i], vs[i]);
       height += glm::dot(g, xs[i]);
     }
   }
   p.truncate(kept);
+  speed2 += speed2Lanes[0] + speed2Lanes[1];
+  height += heightLanes[0] + heightLanes[1];
   FountainStepStats stats;
   stats.contacts = contacts;
   stats.heldBySafetyNet = held;

@@ -69,7 +69,8 @@ struct FountainStepStats {
 ///      in blocks of 256: first the motion of the whole block with no branch on the particles' data,
 ///      flagging those within reach of an obstacle, then the contact model for the flagged ones while
 ///      the block is still in cache (a resting pool touches the ground often, and branches on the data
-///      inside the motion loop would keep it from running straight through).
+///      inside the motion loop would keep it from running straight through). The contact pass is
+///      PART-5's fast path (fountain_contacts.h); in the hand-out it runs the student's contactVelocity.
 ///   3. The energy sums are accumulated over the block; they double as the instability guard's
 ///      finiteness test (a NaN or ±∞ in any x or v makes them non-finite), so the guard needs no pass of
 ///      its own: call describeNonFinite() only when nonFinite is set, to name the particle.
