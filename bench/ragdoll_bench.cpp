@@ -183,8 +183,11 @@ RagdollDesc humans(int count) {
   return d;
 }
 
+// The labels say what each many-humans row times, so that rows of different benchmarks are compared only
+// where they time the same thing (docs/performance-ragdoll.md, "Why two benchmarks disagreed").
 void BM_Humans(benchmark::State& state, Method m, int iterations) {
   run(state, humans(static_cast<int>(state.range(0))), m, 1.0 / 60.0, 10.0, iterations, ParticleSettings{}.stickSweeps);
+  state.SetLabel("all awake, 600 steps, run alone");
 }
 BENCHMARK_CAPTURE(BM_Humans, particle_20_iterations, Method::Particle, 20)
     ->Arg(1)
@@ -293,6 +296,7 @@ void BM_BulletHumans(benchmark::State& state) {
     report(state, t, steps, dt);
     state.counters["bones"] = static_cast<double>(d.bones.size());
   }
+  state.SetLabel("Bullet double precision, all awake, 600 steps, run alone");
 }
 BENCHMARK(BM_BulletHumans)->Arg(1)->Arg(136)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
 
@@ -317,6 +321,7 @@ void BM_HumansAgainstBullet(benchmark::State& state) {
     state.counters["bullet_ms_per_step"] = 1e3 * bulletSeconds / kSteps;
     state.counters["ours_over_bullet"] = oursSeconds / bulletSeconds;
   }
+  state.SetLabel("Bullet double precision, all awake, 600 steps, alternated by 20");
 }
 BENCHMARK(BM_HumansAgainstBullet)->Arg(136)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
 #endif

@@ -118,6 +118,7 @@ void BM_Bullet(benchmark::State& state, Scene scene) {
     for (auto& b : rigid) world.removeRigidBody(b.get());
     world.removeRigidBody(&groundBody);
   }
+  state.SetLabel("Bullet double precision, all awake");
 }
 BENCHMARK_CAPTURE(BM_Bullet, boxes3000, Scene::Boxes3000)
     ->UseManualTime()

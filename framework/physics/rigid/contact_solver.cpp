@@ -133,6 +133,7 @@ void warmStart(const SolverContact& c, SolverBody& a, SolverBody& b) {
   PairVelocity<S> u(a, b);
   for (int i = 0; i < c.count; ++i) {
     const SolverContactPoint& p = c.points[i];
+    if (p.normalImpulse == 0.0 && p.tangentImpulse[0] == 0.0 && p.tangentImpulse[1] == 0.0) continue;  // zeros
     u.apply(c, p, p.normalImpulse * c.normal + p.tangentImpulse[0] * c.tangent[0] + p.tangentImpulse[1] * c.tangent[1]);
   }
   u.store(a, b);
@@ -171,7 +172,9 @@ void solve(SolverContact& c, SolverBody& a, SolverBody& b, const ContactSolverSt
     const Real applied = total - p.normalImpulse;
     p.normalImpulse = total;
     p.maxNormalImpulse = std::max(p.maxNormalImpulse, applied);
-    u.apply(c, p, applied * c.normal);
+    // A point whose impulse does not change (a speculative one held at 0) would add zeros: the same bits
+    // (only an exact zero may differ in sign), so it is left out.
+    if (applied != 0.0) u.apply(c, p, applied * c.normal);
   }
   // Friction, bounded by μ times this point's normal impulse: each tangent row with its own mass, then the
   // pair clamped to the disk |λ_t| ≤ μλ_n (cone; Jolt does the same) or each row to ±μλ_n (pyramid). Both
@@ -190,7 +193,9 @@ void solve(SolverContact& c, SolverBody& a, SolverBody& b, const ContactSolverSt
     } else {
       for (Real& x : next) x = std::clamp(x, -limit, limit);
     }
-    u.apply(c, p, (next[0] - p.tangentImpulse[0]) * c.tangent[0] + (next[1] - p.tangentImpulse[1]) * c.tangent[1]);
+    // Unchanged friction (a point without normal impulse keeps 0) is left out, as above.
+    if (next[0] != p.tangentImpulse[0] || next[1] != p.tangentImpulse[1])
+      u.apply(c, p, (next[0] - p.tangentImpulse[0]) * c.tangent[0] + (next[1] - p.tangentImpulse[1]) * c.tangent[1]);
     p.tangentImpulse[0] = next[0];
     p.tangentImpulse[1] = next[1];
   }

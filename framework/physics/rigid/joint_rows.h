@@ -53,6 +53,9 @@ inline void solveAngularLimit(SolverBody& A, SolverBody& B, const Vec3& u, Real 
   const Real next = std::max(accumulated + impulse, 0.0);
   impulse = next - accumulated;
   accumulated = next;
+  // An inactive limit (its impulse stays 0, as a speculative one mostly does) would add zeros to both
+  // angular velocities: the same bits (only an exact zero may differ in sign), so it is left out.
+  if (impulse == 0.0) return;
   applyAngularImpulse(A, sign * impulse * u, -1.0);
   applyAngularImpulse(B, sign * impulse * u, 1.0);
 }
