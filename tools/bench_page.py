@@ -123,7 +123,9 @@ def scenes_section(run, budget, multiple):
     else:
         top = max(held, key=lambda r: r["median_ms"])
         summary = (f"bench: all {len(held)} scenes within {budget:g} ms per frame (the dearest "
-                   f"{top['lab']}/{top['scene']}, {top['median_ms']:.3g} ms); {len(rows) - len(held)} heavy")
+                   f"{top['lab']}/{top['scene']}, {top['median_ms']:.3g} ms)")
+    if len(rows) > len(held):
+        summary += f"; {len(rows) - len(held)} heavy, not held to it"
     lines += [f"**{summary[len('bench: '):]}**", ""]
     lines += ["| lab | scene | frames | median ms | p95 ms | max ms | within budget |" + (" run |" if multiple else ""),
               "|---|---|---:|---:|---:|---:|---|" + ("---:|" if multiple else "")]
@@ -140,7 +142,7 @@ def peers_section(run):
              f"Benchmarks of another library ({', '.join(PEERS)}) beside ours on the same case, from the tables "
              "below; ours ÷ peer under 1 means ours is faster. Method and history: the per-topic pages.", ""]
     if not pairs and not comparisons:
-        return lines + ["No peer was measured (install the peers' packages: `./pba doctor` names them).", ""]
+        return lines + ["No peer was measured: the configure step names the package each peer needs (README.md, optional packages).", ""]
     if pairs:
         lines += ["| binary | peer benchmark | peer ms | ours | ours ms | ours ÷ peer |", "|---|---|---:|---|---:|---:|"]
         for binary, p, matched in pairs:
