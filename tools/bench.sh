@@ -72,8 +72,10 @@ for b in "$build"/bench/pba_*_bench; do
   selected "$name" || continue
   done_jobs=$((done_jobs + 1))
   pba_progress bench "$done_jobs" "$jobs" "scenes and kernels"
+  binary_started=$(date +%s)
   "$b" --benchmark_min_time="$min_time" --benchmark_out="$tmp/kernels/$name.json" --benchmark_out_format=json \
     >/dev/null 2>&1 || { echo "bench: $name failed" >&2; rm -f "$tmp/kernels/$name.json"; }
+  echo $(($(date +%s) - binary_started)) >"$tmp/kernels/$name.seconds"
 done
 
 # A filtered run merges into the results of the runs before it, so its page keeps every other row.

@@ -165,8 +165,9 @@ def kernels_section(run, min_time, multiple):
     preset = run["runs"][-1].get("preset", "release")
     lines = ["## Kernels (Google Benchmark)", ""]
     for binary, k in sorted(run["kernels"].items()):
+        took = "" if k.get("seconds") is None else f" ({k['seconds']:.0f} s of the run)"
         lines += [f"### {binary}" + (f" (run {k['run']})" if multiple else ""), "",
-                  f"Command: `build/{preset}/bench/{binary} --benchmark_min_time={min_time:g}`", "",
+                  f"Command: `build/{preset}/bench/{binary} --benchmark_min_time={min_time:g}`{took}", "",
                   "| benchmark | time | unit | items/s | counters | label |", "|---|---:|---|---:|---|---|"]
         for b in k["benchmarks"]:
             counters = ", ".join(f"{c} {v:.4g}" for c, v in sorted(b["counters"].items()))

@@ -53,6 +53,8 @@ class BenchPage(unittest.TestCase):
             write(os.path.join(sdir, f"{order:04d}.json"), r)
         for binary, rows in kernels.items():
             write(os.path.join(kdir, binary + ".json"), {"context": {}, "benchmarks": rows})
+            with open(os.path.join(kdir, binary + ".seconds"), "w", encoding="utf-8") as f:
+                f.write("17\n")
         done = tool("bench_run.py", "record", self.run_json, "--scenes", sdir, "--kernels", kdir, "--build", self.dir,
                     "--commit", name, "--preset", "release", "--date", "2026-12-05", "--load-start", "3.5",
                     "--filter", filter_, "--seconds", "42", "--frames", "600")
@@ -83,6 +85,7 @@ class BenchPage(unittest.TestCase):
         self.assertIn("**Made under load**", text)  # load average 3.5 at the start
         # Not a manual-time benchmark: the CPU time (twice the real time here), with its counters.
         self.assertIn("| BM_Step/10 | 6 | us |  | success 1 |", text)
+        self.assertIn("--benchmark_min_time=0.2` (17 s of the run)", text)
 
         self.record("a2", [(1, report("lab", "first", 2.5))], {}, filter_="lab/first")
         done, text = self.render()
