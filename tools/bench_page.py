@@ -11,7 +11,7 @@ both; every benchmark binary's table. The last line printed is the budget's summ
 when a scene that is not heavy is over the budget, else 0 (2 for a bad RUN.json).
 
 Pairing of a peer's row with ours: in the same binary, the rows that are not a peer's and end in the same
-case (the last part of the name: /136, /boxes3000); of those, the ones that share a word of the peer's
+case (the last part of the name: /136, /boxes3000, or a variant of ours of it: /boxes3000_soft_step); of those, the ones that share a word of the peer's
 benchmark name (BM_BulletHumans: BM_Humans/...) when any does. A row that times both in one process gives
 its own ratio as a counter ours_over_PEER (and the peer's time as PEER_ms_per_step when it has it).
 """
@@ -39,6 +39,11 @@ def base(name):
 def case(name):
     parts = [p for p in name.split("/")[1:] if not DECORATIONS.search(p)]
     return parts[-1] if parts else ""
+
+
+def same_case_of(ours, peer):
+    """Ours runs the peer's case, maybe in a variant of its own: boxes3000_soft_step runs boxes3000."""
+    return ours == peer or (peer != "" and ours.startswith(peer + "_"))
 
 
 def peer_of(name):
@@ -73,7 +78,7 @@ def peer_rows(kernels):
             peer = peer_of(r["name"])
             if peer is None:
                 continue
-            same_case = [o for o in ours if case(o["name"]) == case(r["name"])]
+            same_case = [o for o in ours if same_case_of(case(o["name"]), case(r["name"]))]
             shared = words(base(r["name"])) - {peer} - set(PEERS)
             closer = [o for o in same_case if words(base(o["name"])) & shared]
             matched = closer or same_case

@@ -106,7 +106,10 @@ class BenchPage(unittest.TestCase):
             bench("BM_HumansAgainstBullet/136" + manual, 5.0, bullet_ms_per_step=6.25, ours_over_bullet=0.8)],
             "pba_ik_kdl_bench": [bench("BM_Ours_Fabrik/10/min_time:0.300", 10.0, "us"),
                                  bench("BM_Kdl_Lma/10/min_time:0.300", 0.1, "ms"),
-                                 bench("BM_Kdl_Lma/100/min_time:0.300", 1.0, "ms")]})
+                                 bench("BM_Kdl_Lma/100/min_time:0.300", 1.0, "ms")],
+            "pba_rigid_bench": [bench("BM_Ours/boxes3000_soft_step/iterations:1" + manual, 15.0),
+                                bench("BM_Ours/boxes3000x/iterations:1" + manual, 1.0),
+                                bench("BM_Bullet/boxes3000/iterations:1" + manual, 20.0)]})
         done, text = self.render()
         self.assertEqual(done.returncode, 0, done.stderr)
         peers = text.split("## Peers")[1].split("## Kernels")[0]
@@ -118,6 +121,9 @@ class BenchPage(unittest.TestCase):
         self.assertIn("| BM_Kdl_Lma/10/min_time:0.300 | 0.2 | BM_Ours_Fabrik/10/min_time:0.300 | 0.02 | 0.1 |", peers)
         self.assertIn("| BM_Kdl_Lma/100/min_time:0.300 | 2 | — (no case of ours) | — | — |", peers)
         self.assertIn("| BM_HumansAgainstBullet/136/manual_time | 5 | bullet | 6.25 | 0.8 |", peers)
+        # A variant of ours of the peer's case (boxes3000_soft_step), not another case (boxes3000x): 15 / 20.
+        self.assertIn("| BM_Ours/boxes3000_soft_step/iterations:1/manual_time | 15 | 0.75 |", peers)
+        self.assertNotIn("boxes3000x", peers)
 
     def test_bad_run_file(self):
         write(self.run_json, {"runs": []})
