@@ -48,7 +48,9 @@ started=$(date +%s)
 source "$root/tools/progress.sh"
 jobs=0 done_jobs=0
 for exe in "$build"/bin/pba-*; do
-  for scene in $("$exe" --list-scenes | awk '{print $1}'); do selected "${exe##*/pba-}/$scene" && jobs=$((jobs + 1)); done
+  for scene in $("$exe" --list-scenes | awk '{print $1}'); do
+    selected "${exe##*/pba-}/$scene" && jobs=$((jobs + 1))
+  done
 done
 for b in "$build"/bench/pba_*_bench; do [[ -x "$b" ]] && selected "${b##*/}" && jobs=$((jobs + 1)); done
 pba_progress_start

@@ -11,9 +11,10 @@ both; every benchmark binary's table. The last line printed is the budget's summ
 when a scene that is not heavy is over the budget, else 0 (2 for a bad RUN.json).
 
 Pairing of a peer's row with ours: in the same binary, the rows that are not a peer's and end in the same
-case (the last part of the name: /136, /boxes3000, or a variant of ours of it: /boxes3000_soft_step); of those, the ones that share a word of the peer's
-benchmark name (BM_BulletHumans: BM_Humans/...) when any does. A row that times both in one process gives
-its own ratio as a counter ours_over_PEER (and the peer's time as PEER_ms_per_step when it has it).
+case (the last part of the name: /136, /boxes3000, or a variant of ours of it: /boxes3000_soft_step); of
+those, the ones that share a word of the peer's benchmark name (BM_BulletHumans: BM_Humans/...) when any
+does. A row that times both in one process gives its own ratio as a counter ours_over_PEER (and the
+peer's time as PEER_ms_per_step when it has it).
 """
 import argparse
 import json
@@ -92,13 +93,14 @@ def runs_section(run, multiple):
     if multiple:
         lines += ["Rows measured by an earlier run than the latest name it in their `run` column (a filtered run "
                   "keeps the other rows of the one before).", ""]
-    lines += ["| run | date | commit | preset (flags) | compiler | machine | load average (start → end) | time | scope |",
+    lines += ["| run | date | commit | preset (flags) | compiler | machine | load average (start → end) | time "
+              "| scope |",
               "|---|---|---|---|---|---|---|---:|---|"]
     for r in run["runs"]:
         machine = f"{r.get('cpu', '?')}, {r.get('cores', '?')} cores"
         load = f"{num(r.get('load_start'), 3)} → {num(r.get('load_end'), 3)}"
         seconds = "—" if r.get("seconds") is None else f"{r['seconds']:.0f} s"
-        scope = f"`--filter {r['filter']}`" if r.get("filter") else "everything"
+        scope = "`--filter " + r["filter"].replace("|", "\\|") + "`" if r.get("filter") else "everything"
         lines.append(f"| {r['id']} | {r.get('date', '?')} | {r.get('commit', '?')} | {r.get('preset', '?')} "
                      f"({r.get('build_type', '?')} `{r.get('flags', '')}`) | {r.get('compiler', '?')} | {machine} | "
                      f"{load} | {seconds} | {scope} |")
@@ -147,13 +149,15 @@ def peers_section(run):
              f"Benchmarks of another library ({', '.join(PEERS)}) beside ours on the same case, from the tables "
              "below; ours ÷ peer under 1 means ours is faster. Method and history: the per-topic pages.", ""]
     if not pairs and not comparisons:
-        return lines + ["No peer was measured: the configure step names the package each peer needs (README.md, optional packages).", ""]
+        return lines + ["No peer was measured: the configure step names the package each peer needs (README.md, "
+                        "optional packages).", ""]
     if pairs:
-        lines += ["| binary | peer benchmark | peer ms | ours | ours ms | ours ÷ peer |", "|---|---|---:|---|---:|---:|"]
+        lines += ["| binary | peer benchmark | peer ms | ours | ours ms | ours ÷ peer |",
+                  "|---|---|---:|---|---:|---:|"]
         for binary, p, matched in pairs:
             for o, ratio in matched or [(None, None)]:
-                lines.append(f"| {binary} | {p['name']} | {num(ms(p))} | {o['name'] if o else '— (no case of ours)'} | "
-                             f"{num(ms(o)) if o else '—'} | {num(ratio, 3)} |")
+                ours = f"{o['name']} | {num(ms(o))}" if o else "— (no case of ours) | —"
+                lines.append(f"| {binary} | {p['name']} | {num(ms(p))} | {ours} | {num(ratio, 3)} |")
         lines.append("")
     if comparisons:
         lines += ["Timed in one process, ours and the peer alternated:", "",

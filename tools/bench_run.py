@@ -5,19 +5,20 @@
       Prints the machine's 1-minute load average (or "n/a" where the system has none).
   bench_run.py record RUN.json --scenes DIR --kernels DIR --build BUILD_DIR --commit C --preset P --date D
                       --load-start L [--filter REGEX] [--seconds S] [--frames N]
-      Reads the labs' metrics reports (DIR/NNNN.json in the labs' scene order, `--metrics` of a headless run) and the Google
-      Benchmark JSON files (DIR/BINARY.json, with the seconds it ran in DIR/BINARY.seconds), and merges them into RUN.json: a scene or a benchmark binary
-      measured now replaces its earlier rows, the others keep theirs with the run they come from, so a
-      filtered run (--filter) keeps the rest of the page. Runs no row refers to any more are dropped.
+      Reads the labs' metrics reports (DIR/NNNN.json in the labs' scene order, `--metrics` of a headless
+      run) and the Google Benchmark JSON files (DIR/BINARY.json, with the seconds it ran in
+      DIR/BINARY.seconds), and merges them into RUN.json: a scene or a benchmark binary measured now
+      replaces its earlier rows, the others keep theirs with the run they come from, so a filtered run
+      (--filter) keeps the rest of the page. Runs no row refers to any more are dropped.
   bench_run.py figures RUN.json
       Prints this run's figures as NAME<TAB>VALUE<TAB>UNIT lines for bench_results.py (scene medians and
       p95s in ms, every benchmark's time in its own unit).
 
 RUN.json: {"runs": [{"id", "date", "commit", "preset", "build_type", "flags", "compiler", "cpu", "cores",
 "load_start", "load_end", "seconds", "frames", "filter"}], "scenes": {"LAB/SCENE": {"lab", "scene", "frames",
-"median_ms", "p95_ms", "max_ms", "heavy", "run"}}, "kernels": {"BINARY": {"run", "seconds", "benchmarks": [{"name",
-"time", "unit", "items_per_second", "label", "counters", "error"}]}}}. The time of a benchmark is its manual
-time where it sets one (the name ends in /manual_time), else its CPU time.
+"median_ms", "p95_ms", "max_ms", "heavy", "run", "order"}}, "kernels": {"BINARY": {"run", "seconds",
+"benchmarks": [{"name", "time", "unit", "items_per_second", "label", "counters", "error"}]}}}. The time of a
+benchmark is its manual time where it sets one (the name ends in /manual_time), else its CPU time.
 """
 import argparse
 import glob
@@ -155,7 +156,8 @@ def record(args):
     kernels = dict(run.get("kernels", {}))
     for path in sorted(glob.glob(os.path.join(args.kernels, "*.json"))):
         binary = os.path.splitext(os.path.basename(path))[0]
-        kernels[binary] = {"run": run_id, "benchmarks": benchmark_rows(read_json(path, "expected Google Benchmark JSON")),
+        rows = benchmark_rows(read_json(path, "expected Google Benchmark JSON"))
+        kernels[binary] = {"run": run_id, "benchmarks": rows,
                            "seconds": seconds_of(os.path.splitext(path)[0] + ".seconds")}
     used = {row["run"] for row in scenes.values()} | {k["run"] for k in kernels.values()} | {run_id}
     out = {"runs": [r for r in runs if r.get("id") in used], "scenes": scenes, "kernels": kernels}
