@@ -43,6 +43,11 @@ def load_average():
         return None
 
 
+def print_load_average(_args):
+    load = load_average()
+    print("n/a" if load is None else load)
+
+
 def cpu_model():
     try:
         with open("/proc/cpuinfo", encoding="utf-8") as f:
@@ -199,14 +204,9 @@ def main():
     f = sub.add_parser("figures")
     f.add_argument("run")
     args = ap.parse_args()
+    commands = {"load": print_load_average, "record": record, "figures": figures}
     try:
-        if args.command == "load":
-            load = load_average()
-            print("n/a" if load is None else load)
-        elif args.command == "record":
-            record(args)
-        else:
-            figures(args)
+        commands[args.command](args)
     except ValueError as e:
         print(f"pba bench: {e}", file=sys.stderr)
         return 2
