@@ -18,6 +18,7 @@ nlohmann::json metricsReport(const std::string& lab, const SceneRunner& runner, 
   report["dt"] = runner.dt();
   report["steps"] = runner.steps();
   report["step_ms"] = {{"median", s.median}, {"p95", s.p95}, {"max", s.max}};
+  report["heavy"] = runner.scene().heavy();
   report["finite"] = runner.finite() && !runner.scene().nonFiniteState();
   report["paused_by_guard"] = runner.guardMessage().has_value();
   if (runner.guardMessage()) report["guard_message"] = *runner.guardMessage();

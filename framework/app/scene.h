@@ -105,6 +105,11 @@ class Scene {
   virtual std::optional<CameraView> preferredView() const { return std::nullopt; }
   /// The time step this scene is designed for [s].
   virtual Real defaultDt() const { return 1.0 / 120.0; }
+  /// True for a scene built to load the machine (a benchmark or stress scene: Bullet's 3000 boxes, a
+  /// thousand-body pile): `./pba bench` lists its time but does not hold it to the budget of 2 ms of
+  /// physics per frame that every other scene keeps at its defaults (docs/architecture.md §8). The
+  /// metrics report carries it as "heavy".
+  virtual bool heavy() const { return false; }
   /// Empty when the state is finite; otherwise names what is not ("ball velocity is NaN").
   virtual std::optional<std::string> nonFiniteState() const = 0;
   /// Empty unless the scene's solver says it has diverged while the state is still finite (the cloth's

@@ -15,6 +15,7 @@ class PileScene final : public lab::RagdollScene {
   std::string description() const override {
     return "Humans dropped onto stairs tumble over each other and the steps (bone-bone contacts with a broad phase).";
   }
+  bool heavy() const override { return true; }  // a stress scene: humans in contact with one another
 
  protected:
   ragdoll::RagdollDesc build() const override { return ragdoll::buildPile(count_, static_cast<unsigned>(seed())); }

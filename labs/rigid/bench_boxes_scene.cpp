@@ -15,6 +15,7 @@ class BenchBoxesScene final : public lab::WorldScene {
   std::string description() const override {
     return "Bullet's 3000-box benchmark: 47 layers of 8 × 8 unit boxes lean, topple and pile up.";
   }
+  bool heavy() const override { return true; }  // a benchmark: 3,008 bodies, every one awake
 
  protected:
   void build(rigid::World& w) override {

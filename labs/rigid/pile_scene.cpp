@@ -17,6 +17,7 @@ class PileScene final : public lab::WorldScene {
   std::string description() const override {
     return "A thousand mixed shapes (spheres, capsules, boxes, hulls) fall and pile up; resting islands sleep (grey).";
   }
+  bool heavy() const override { return true; }  // a stress scene: a thousand bodies in contact
 
  protected:
   void build(rigid::World& w) override {
