@@ -8,6 +8,8 @@ PBA_PACKAGES=(cmake ninja-build g++ pkg-config libglm-dev libglfw3-dev libglew-d
 # What only this repository's own checks need: Google Benchmark (bench/), clang for the fuzz and clang-14
 # checks, clang-format for the format check. The student hand-out (.student-release) does not install them.
 PBA_DEVELOPER_PACKAGES=(libbenchmark-dev clang-format clang libclang-rt-14-dev)
+# The peers that ./pba bench measures ours against (bench/CMakeLists.txt): Bullet and Orocos KDL.
+PBA_BENCH_PEER_PACKAGES=(libbullet-dev liborocos-kdl-dev)
 if [[ -f "${ROOT:-.}/.student-release" ]]; then
   pba_developer_only=" ${PBA_DEVELOPER_PACKAGES[*]} "
   pba_student_packages=()
@@ -246,7 +248,13 @@ pba_cmd_bench() {
       python3 "$ROOT/tools/bench_results.py" check "${args[i + 1]}" || exit 2
     fi
   done
-  pba_ensure_packages
+  local new_peers
+  new_peers="$(pba_missing_packages "${PBA_BENCH_PEER_PACKAGES[@]}")"
+  pba_ensure_packages "${PBA_BENCH_PEER_PACKAGES[@]}"
+  if [[ -n "${new_peers// /}" && -f "$ROOT/build/$preset/CMakeCache.txt" ]]; then
+    # pkg-config's answer is cached: look for the peers again now that they are installed.
+    cmake --preset "$preset" -U '__pkg_config_checked_PBA_PEER_*' >/dev/null || pba_die "configure failed"
+  fi
   pba_build "$preset"
   bash "$ROOT/tools/bench.sh" "$ROOT" "$ROOT/build/$preset" --preset "$preset" "${args[@]}"
 }
