@@ -145,6 +145,10 @@ void probedBlockJacobi(const ParticleOperator& A, std::span<const std::uint32_t>
       }
     }
   }
+  invertBlocksOrIdentity(blocks);
+}
+
+void invertBlocksOrIdentity(std::span<Mat3> blocks) {
   for (Mat3& m : blocks) {
     const Real det = glm::determinant(m);
     m = std::isfinite(det) && std::abs(det) > 1e-300 ? glm::inverse(m) : Mat3(1.0);
