@@ -62,9 +62,10 @@ struct ImplicitSettings {
   /// only after the solve, so the springs never see a particle hold (stiff cloth then jitters on colliders).
   bool staticFriction = true;
   /// The conjugate gradient's first guess of v₁: v₀ + h a, with a the velocity change per second of the
-  /// last step (an extrapolation of the motion); false: v₀. Only the start of the iteration changes, not
-  /// the system it solves nor its stopping test (relative to the right-hand side).
-  bool extrapolatedStart = true;
+  /// last step (an extrapolation of the motion; ours); false: v₀. Only the start of the iteration changes,
+  /// not the system nor the stopping test (relative to the right-hand side), but the iterate at which the
+  /// test stops differs, and with it the strain (docs/performance-cloth.md, "Implicit cloth, issue 36").
+  bool extrapolatedStart = false;
   /// Step control (ClothSolver, not implicitStep): a step in which some stretch or shear spring's strain
   /// |l − L|/L grows by more than this is discarded and taken again as two steps of half the size, down to
   /// 2^-maxHalvings of the step. Baraff & Witkin's simulator controls its step size by the cloth's stretch
