@@ -53,7 +53,7 @@ void implicitSystemProductFast(const ImplicitSystem& system, std::span<const Vec
   // STUB: implicitSystemProduct(system.springs, system.mass, system.massDamping, system.h, y, out);
 }
 
-void implicitBlockJacobiFast(const ImplicitSystem& system, [[maybe_unused]] const ParticleOperator& A,
+void implicitBlockJacobiFast([[maybe_unused]] const ImplicitSystem& system, [[maybe_unused]] const ParticleOperator& A,
                              [[maybe_unused]] std::span<const std::uint32_t> colour,
                              [[maybe_unused]] std::uint32_t colours, std::vector<Mat3>& inverse,
                              [[maybe_unused]] std::vector<Vec3>& scratchIn,

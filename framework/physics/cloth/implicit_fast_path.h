@@ -46,8 +46,8 @@ void implicitSystemProductFast(const ImplicitSystem& system, std::span<const Vec
 
 /// P⁻¹: the inverses of A's 3 × 3 diagonal blocks (the identity where one is not invertible), as
 /// probedBlockJacobi(A, colour, colours, …) returns them for A the system's product.
-void implicitBlockJacobiFast(const ImplicitSystem& system, const ParticleOperator& A, std::span<const std::uint32_t> colour,
-                             std::uint32_t colours, std::vector<Mat3>& inverse, std::vector<Vec3>& scratchIn,
-                             std::vector<Vec3>& scratchOut);
+void implicitBlockJacobiFast(const ImplicitSystem& system, const ParticleOperator& A,
+                             std::span<const std::uint32_t> colour, std::uint32_t colours, std::vector<Mat3>& inverse,
+                             std::vector<Vec3>& scratchIn, std::vector<Vec3>& scratchOut);
 
 }  // namespace pba::cloth
