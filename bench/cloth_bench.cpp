@@ -115,6 +115,34 @@ BENCHMARK(BM_ClothImplicit64)
     ->Iterations(kGridFrames)
     ->Unit(benchmark::kMillisecond);
 
+/// BM_ClothImplicit64's grid with the CG started at v₀ + h a (ImplicitSettings::extrapolatedStart, off by
+/// default: it leaves a little more stretch). range(0): k [N/m]; range(1): steps per frame.
+void BM_ClothImplicit64ExtrapolatedStart(benchmark::State& state) {
+  const int n = 64;
+  Cloth c = squareCloth(n, static_cast<Real>(state.range(0)), SpringLayout::Grid);
+  ClothSolver solver;
+  ClothSolverSettings s;
+  s.kind = ClothSolverKind::Implicit;
+  s.substeps = static_cast<int>(state.range(1));
+  s.implicit.extrapolatedStart = true;
+  const ClothEnvironment env;
+  Real t = 0.0, worst = 0.0;
+  const Real h = kSize / (n - 1);
+  for (auto _ : state) {
+    solver.step(c, env, {}, s, kFrame, t);
+    t += kFrame;
+    state.PauseTiming();
+    worst = std::max(worst, axisStretch(n, n, h, h, [&](int i) { return c.position[i]; }));
+    state.ResumeTiming();
+  }
+  state.SetLabel("max stretch " + percent(worst) + ", " + std::to_string(s.substeps) + " step(s) per frame");
+}
+BENCHMARK(BM_ClothImplicit64ExtrapolatedStart)
+    ->Args({1000, 2})
+    ->Args({100000, 1})
+    ->Iterations(kGridFrames)
+    ->Unit(benchmark::kMillisecond);
+
 #ifdef PBA_HAVE_BULLET
 /// The same cloth in Bullet's deformable world (double precision build).
 class BulletCloth {

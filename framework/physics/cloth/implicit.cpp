@@ -90,6 +90,7 @@ std::size_t buildFilter(const Cloth& cloth, std::span<const Collider> colliders,
 /// its motion relative to the collider, it sticks at the next step.
 void contactFriction(const Cloth& cloth, std::span<const Collider> colliders, const ParticleOperator& A, Real h,
                      ImplicitWorkspace& w) {
+  w.probeOut.resize(cloth.size());
   A(w.velocity, w.probeOut);
   for (std::size_t i = 0; i < cloth.size(); ++i) {
     if (w.contact[i] < 0) continue;
@@ -143,8 +144,10 @@ ImplicitStats implicitStep(Cloth& cloth, const ClothEnvironment& env, std::span<
                            const ImplicitSettings& settings, Real h, Real t, ImplicitWorkspace& w) {
   const std::size_t n = cloth.size();
   springJacobians(cloth.springs, cloth.material, cloth.position, settings.jacobian, w.jacobians);
+  w.system.bind(w.jacobians, cloth.mass, env.massDamping, h);
+  prepareImplicitSystemFast(w.system);
   const ParticleOperator A = [&](std::span<const Vec3> y, std::span<Vec3> out) {
-    implicitSystemProduct(w.jacobians, cloth.mass, env.massDamping, h, y, out);
+    implicitSystemProductFast(w.system, y, out);
   };
 
   // b = M v₀ + h f_undamped(x₀, v₀): elastic springs, gravity, aerodynamics (damping lives in A).
@@ -160,16 +163,21 @@ ImplicitStats implicitStep(Cloth& cloth, const ClothEnvironment& env, std::span<
   stats.contactConstraints = buildFilter(cloth, colliders, settings, h, w);
   if (settings.preconditioner == Preconditioner::BlockJacobi) {
     refreshColouring(cloth, w);
-    probedBlockJacobi(A, w.colour, w.colours, w.preconditioner, w.probeIn, w.probeOut);
+    implicitBlockJacobiFast(w.system, A, w.colour, w.colours, w.preconditioner, w.probeIn, w.probeOut);
   } else {
     w.preconditioner.clear();
   }
-  w.velocity = cloth.velocity;  // warm start: v₁ ≈ v₀
+  w.velocity = cloth.velocity;  // warm start: v₁ ≈ v₀, or v₀ + h a with the last step's a
+  if (settings.extrapolatedStart && w.acceleration.size() == n) {
+    for (std::size_t i = 0; i < n; ++i) w.velocity[i] += h * w.acceleration[i];
+  }
   stats.cg = filteredPcg(A, w.b, w.filter, w.z, w.preconditioner, settings.cg, w.velocity, w.pcg);
   if (stats.contactConstraints > 0) contactFriction(cloth, colliders, A, h, w);
 
+  w.acceleration.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 velocity = w.velocity[i];
+    w.acceleration[i] = (velocity - cloth.velocity[i]) / h;
     cloth.position[i] += h * velocity;
     // The position alteration moves the particle, it does not set it moving: its share leaves the velocity.
     cloth.velocity[i] = w.correction[i] > 0.0 ? velocity - w.correction[i] * w.filter[i].p : velocity;

@@ -22,6 +22,7 @@
 #include "physics/cloth/cloth.h"
 #include "physics/cloth/colliders.h"
 #include "physics/cloth/forces.h"
+#include "physics/cloth/implicit_fast_path.h"
 #include "physics/cloth/pcg.h"
 
 namespace pba::cloth {
@@ -60,6 +61,11 @@ struct ImplicitSettings {
   /// until its tangential impulse leaves the friction cone (implicit.cpp, contactFriction). false: friction
   /// only after the solve, so the springs never see a particle hold (stiff cloth then jitters on colliders).
   bool staticFriction = true;
+  /// The conjugate gradient's first guess of v₁: v₀ + h a, with a the velocity change per second of the
+  /// last step (an extrapolation of the motion; ours); false: v₀. Only the start of the iteration changes,
+  /// not the system nor the stopping test (relative to the right-hand side), but the iterate at which the
+  /// test stops differs, and with it the strain (docs/performance-cloth.md, "Implicit cloth, issue 36").
+  bool extrapolatedStart = false;
   /// Step control (ClothSolver, not implicitStep): a step in which some stretch or shear spring's strain
   /// |l − L|/L grows by more than this is discarded and taken again as two steps of half the size, down to
   /// 2^-maxHalvings of the step. Baraff & Witkin's simulator controls its step size by the cloth's stretch
@@ -91,7 +97,9 @@ struct ImplicitWorkspace {
   std::vector<Real> correction;                   ///< [m/s] position alteration / h of each contact (B&W §6)
   std::vector<int> contact;                       ///< collider each particle touches this step, −1 none
   std::vector<char> sticking;                     ///< contacts friction stopped, fixed at the next step
+  std::vector<Vec3> acceleration;                 ///< [m/s²] (v₁ − v₀)/h of the last step (first guess)
   PcgWorkspace pcg;
+  ImplicitSystem system;  ///< the step's A, multiplied through CLOTH-5's fast path
 };
 
 /// One implicit Euler step of h [s] at time t [s]: velocities and positions of the free particles, pins

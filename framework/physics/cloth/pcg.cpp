@@ -16,9 +16,14 @@ Vec3 precondition(std::span<const Mat3> inverse, std::size_t i, const Vec3& r) {
   return inverse.empty() ? r : inverse[i] * r;
 }
 
+/// S y, inlined here with free particles (most of them) first.
+inline Vec3 filtered(const ParticleFilter& f, const Vec3& y) {
+  return f.kind == ParticleFilter::Kind::Free ? y : applyFilter(f, y);
+}
+
 /// v ← S v, particle by particle.
 void filterInPlace(std::span<const ParticleFilter> filter, std::span<Vec3> v) {
-  for (std::size_t k = 0; k < v.size(); ++k) v[k] = applyFilter(filter[k], v[k]);
+  for (std::size_t k = 0; k < v.size(); ++k) v[k] = filtered(filter[k], v[k]);
 }
 
 /// out ← P⁻¹ r.
@@ -68,21 +73,27 @@ PcgStats filteredPcg(const ParticleOperator& A, std::span<const Vec3> b, std::sp
 
   PcgStats stats;
   const Real eps2 = settings.tolerance * settings.tolerance;
+  // Each pass over the particles does all the loop's work on them that no later sum waits for (q's filter
+  // with cᵀq; x, r, s with rᵀs), in the order of the formulas, summing in index order as sumDot does.
   while (stats.iterations < settings.maxIterations && delta > eps2 * delta0) {
     A(w.c, w.q);
-    filterInPlace(filter, w.q);
-    const Real cq = sumDot(w.c, w.q);
+    Real cq = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      w.q[i] = filtered(filter[i], w.q[i]);
+      cq += glm::dot(w.c[i], w.q[i]);
+    }
     if (!(cq > 0.0)) break;  // not positive definite along c: keep the iterate (the caller reports it)
     const Real alpha = delta / cq;
+    const Real deltaOld = delta;
+    delta = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       x[i] += alpha * w.c[i];
       w.r[i] -= alpha * w.q[i];
       w.s[i] = precondition(preconditionerInverse, i, w.r[i]);
+      delta += glm::dot(w.r[i], w.s[i]);
     }
-    const Real deltaOld = delta;
-    delta = sumDot(w.r, w.s);
     const Real beta = delta / deltaOld;
-    for (std::size_t i = 0; i < n; ++i) w.c[i] = applyFilter(filter[i], w.s[i] + beta * w.c[i]);
+    for (std::size_t i = 0; i < n; ++i) w.c[i] = filtered(filter[i], w.s[i] + beta * w.c[i]);
     ++stats.iterations;
   }
   stats.converged = delta <= eps2 * delta0;
@@ -145,6 +156,10 @@ void probedBlockJacobi(const ParticleOperator& A, std::span<const std::uint32_t>
       }
     }
   }
+  invertBlocksOrIdentity(blocks);
+}
+
+void invertBlocksOrIdentity(std::span<Mat3> blocks) {
   for (Mat3& m : blocks) {
     const Real det = glm::determinant(m);
     m = std::isfinite(det) && std::abs(det) > 1e-300 ? glm::inverse(m) : Mat3(1.0);

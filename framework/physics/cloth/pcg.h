@@ -67,4 +67,7 @@ std::vector<std::uint32_t> colourParticles(std::size_t particles,
 void probedBlockJacobi(const ParticleOperator& A, std::span<const std::uint32_t> colour, std::uint32_t colours,
                        std::vector<Mat3>& inverse, std::vector<Vec3>& scratchIn, std::vector<Vec3>& scratchOut);
 
+/// Inverts each block in place; one that is not invertible (or not finite) becomes the identity.
+void invertBlocksOrIdentity(std::span<Mat3> blocks);
+
 }  // namespace pba::cloth
