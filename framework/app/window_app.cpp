@@ -25,6 +25,7 @@
 #include "app/resource_dir.h"
 #include "app/scene_draw.h"
 #include "app/scene_file.h"
+#include "app/scene_image.h"
 #include "app/scene_registry.h"
 #include "app/ui_status.h"
 #include "app/ui_style.h"
@@ -341,6 +342,13 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
       debug.clear();
       renderer->endFrame();
     };
+    // The UI tests' scene alone (app/scene_image.h): rendered first, the frame below clears it again.
+    if (ui.screenshotRequested && !statusPath.empty() && !split) {
+      const std::string path = sceneImagePath(timestampedScreenshotName(lab, runner.sceneName()));
+      const Status s = writeSceneImage(*renderer, debug, camera, runner.scene(), fb, path);
+      ui.lastSceneImage = s ? path : std::string();
+      if (!s) std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+    }
     drawView(runner.scene(), viewLeft, true);
     if (split) {
       drawView(session.partner()->scene(), viewLeft + viewWidth, false);
