@@ -1,7 +1,8 @@
 #pragma once
 // The scene alone, for the UI tests' lecture-layout check (tests/ui): with the UI status on (PBA_UI_STATUS),
-// a screenshot also renders the same frame's scene once more with no UI, no background gradient and no
-// ground (graphics::RendererSettings::sceneOnly: a flat kSceneOnlyBackground) and writes it as a binary PPM
+// a screenshot also renders the same frame's scene once more with no UI, no background gradient and an
+// invisible ground (graphics::RendererSettings::sceneOnly: a flat kSceneOnlyBackground; what lies below the
+// ground stays hidden) and writes it as a binary PPM
 // next to the PNG, so the check finds the scene's own pixels and whether a window lies over any of them.
 #include <string>
 

@@ -103,8 +103,8 @@ std::string timestampedScreenshotName(const std::string& lab, const std::string&
   return "pba-" + lab + "-" + scene + "-" + stamp + ".png";
 }
 
-// Fits the scene in view; shifts it right of the panel and, when plots are shown, up from the
-// plot panel in the lower right corner, so that neither covers it.
+// Fits the scene in view; shifts it right of the panel and, when plots or a legend are shown, up from the
+// plot panel in the lower right corner and the legend in the lower left, so that none covers it.
 // Frames the scene's bounds in the part of the window the panels leave free: the controls on the
 // left (panelPixels), a scene's own column on the right (overlayPixels), the plots at the bottom.
 void applyView(graphics::OrbitCamera& camera, const CameraView& view) {
@@ -312,7 +312,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
                     (static_cast<float>(ws.x) - panelPixels - overlayPixels) / std::max(viewWidth, 1.0f));
       else
         frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels,
-                    !ui.hideUi && !session.settings().plotted.empty());
+                    !ui.hideUi && (!session.settings().plotted.empty() || !runner.scene().legend().empty()));
       ui.frameRequested = false;
     }
     // A camera bookmark (scene file, demo step) replaces the framing.

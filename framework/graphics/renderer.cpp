@@ -330,6 +330,11 @@ void Renderer::colorPass() {
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   shadowMap_->bindTexture(kShadowTextureUnit);
+  if (settings_.grid && settings_.sceneOnly) {  // the ground draws nothing but still hides what lies below it
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    drawGrid();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
   setLightingUniforms(*litShader_);
   for (const MeshBatch& batch : batches_) {
     if (batch.instances.empty()) continue;

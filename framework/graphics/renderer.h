@@ -37,8 +37,9 @@ struct RendererSettings {
   int shadowTaps = 12;
   float lineWidthPx = 2.0f;
   bool lectureMode = false;  ///< thicker lines, bigger dots (projectors)
-  /// The scene's own pixels alone: a flat kSceneOnlyBackground instead of the gradient, no ground grid (the
-  /// UI tests' lecture-layout check finds the scene's pixels in this picture).
+  /// The scene's own pixels alone: a flat kSceneOnlyBackground instead of the gradient, the ground grid in the
+  /// depth buffer only (it still hides what lies below it) (the UI tests' lecture-layout check finds the
+  /// scene's pixels in this picture).
   bool sceneOnly = false;
   glm::vec3 lightDirection = glm::normalize(glm::vec3(-0.45f, 0.85f, 0.35f));  ///< towards the light
   glm::vec3 backgroundTop{0.74f, 0.81f, 0.89f};                                ///< sRGB
