@@ -58,6 +58,7 @@ struct UiState {
   double noticeUntil = 0.0;       ///< [s, ImGui time] when the notice disappears
   int noticeFrames = 0;           ///< frames it is still shown whatever the time (a slow frame rate still sees it)
   std::string lastScreenshot;     ///< path of the last screenshot written
+  std::string lastSceneImage;     ///< its scene alone (app/scene_image.h), with the UI status on
   /// Where a few named widgets were drawn this frame, while visible ("header:View", "file_field",
   /// "load_button", "lecture_checkbox"): the UI status reports them so tests can click them.
   std::map<std::string, LabelBox> widgets;

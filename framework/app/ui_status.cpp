@@ -142,6 +142,7 @@ nlohmann::json uiStatus(const LabSession& session, const UiState& ui, const grap
           {"stubbed_exercises", stubbedExercises(session.exercises(), exercises::notImplementedTags())},
           {"notice", noticeShown ? ui.notice : std::string()},
           {"last_screenshot", ui.lastScreenshot},
+          {"last_scene_image", ui.lastSceneImage},
           {"recording", ui.recording},
           {"viewport", {f.viewport.x, f.viewport.y}},
           {"font_px", ImGui::GetFontSize()},

@@ -5,6 +5,7 @@
 // counter, the runner's clock and step count, the modes (paused, lecture, hidden panels, help), the
 // scene, its parameters and presets, the camera, the draggable objects on screen, the panels'
 // rectangles, the last screenshot and the on-screen notice. Nothing reads it back: it is output only.
+// With it on, F12 also writes the scene alone next to the screenshot (app/scene_image.h).
 #include <optional>
 #include <string>
 

@@ -25,6 +25,7 @@
 #include "app/resource_dir.h"
 #include "app/scene_draw.h"
 #include "app/scene_file.h"
+#include "app/scene_image.h"
 #include "app/scene_registry.h"
 #include "app/ui_status.h"
 #include "app/ui_style.h"
@@ -102,8 +103,8 @@ std::string timestampedScreenshotName(const std::string& lab, const std::string&
   return "pba-" + lab + "-" + scene + "-" + stamp + ".png";
 }
 
-// Fits the scene in view; shifts it right of the panel and, when plots are shown, up from the
-// plot panel in the lower right corner, so that neither covers it.
+// Fits the scene in view; shifts it right of the panel and, when plots or a legend are shown, up from the
+// plot panel in the lower right corner and the legend in the lower left, so that none covers it.
 // Frames the scene's bounds in the part of the window the panels leave free: the controls on the
 // left (panelPixels), a scene's own column on the right (overlayPixels), the plots at the bottom.
 void applyView(graphics::OrbitCamera& camera, const CameraView& view) {
@@ -311,7 +312,7 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
                     (static_cast<float>(ws.x) - panelPixels - overlayPixels) / std::max(viewWidth, 1.0f));
       else
         frameCamera(camera, runner.scene(), glm::vec2(ws), panelPixels, overlayPixels,
-                    !ui.hideUi && !session.settings().plotted.empty());
+                    !ui.hideUi && (!session.settings().plotted.empty() || !runner.scene().legend().empty()));
       ui.frameRequested = false;
     }
     // A camera bookmark (scene file, demo step) replaces the framing.
@@ -341,6 +342,13 @@ int runWindow(const std::string& lab, const LabOptions& options, SceneRunner& ru
       debug.clear();
       renderer->endFrame();
     };
+    // The UI tests' scene alone (app/scene_image.h): rendered first, the frame below clears it again.
+    if (ui.screenshotRequested && !statusPath.empty() && !split) {
+      const std::string path = sceneImagePath(timestampedScreenshotName(lab, runner.sceneName()));
+      const Status s = writeSceneImage(*renderer, debug, camera, runner.scene(), fb, path);
+      ui.lastSceneImage = s ? path : std::string();
+      if (!s) std::cerr << "pba-" << lab << ": " << s.error() << '\n';
+    }
     drawView(runner.scene(), viewLeft, true);
     if (split) {
       drawView(session.partner()->scene(), viewLeft + viewWidth, false);

@@ -309,25 +309,32 @@ void Renderer::colorPass() {
   glDepthMask(GL_TRUE);
   const glm::vec3 top = settings_.lectureMode ? kLectureBackgroundTop : settings_.backgroundTop;
   const glm::vec3 bottom = settings_.lectureMode ? kLectureBackgroundBottom : settings_.backgroundBottom;
-  glClearColor(bottom.r, bottom.g, bottom.b, 1.0f);
+  const glm::vec3 clear = settings_.sceneOnly ? kSceneOnlyBackground : bottom;
+  glClearColor(clear.r, clear.g, clear.b, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  // Background gradient (no depth).
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
-  backgroundShader_->use();
-  backgroundShader_->set("uTop", top);
-  backgroundShader_->set("uBottom", bottom);
-  glBindVertexArray(emptyVao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
-  ++building_.drawCalls;
+  if (!settings_.sceneOnly) {  // background gradient (no depth)
+    backgroundShader_->use();
+    backgroundShader_->set("uTop", top);
+    backgroundShader_->set("uBottom", bottom);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    ++building_.drawCalls;
+  }
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   shadowMap_->bindTexture(kShadowTextureUnit);
+  if (settings_.grid && settings_.sceneOnly) {  // the ground draws nothing but still hides what lies below it
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    drawGrid();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
   setLightingUniforms(*litShader_);
   for (const MeshBatch& batch : batches_) {
     if (batch.instances.empty()) continue;
@@ -344,7 +351,7 @@ void Renderer::colorPass() {
       ++building_.drawCalls;
     }
   }
-  if (settings_.grid) drawGrid();
+  if (settings_.grid && !settings_.sceneOnly) drawGrid();
   // Lines and dots: depth tested but not written, so overlapping translucent strokes blend.
   glDepthMask(GL_FALSE);
   const float pointScale = settings_.lectureMode ? 1.6f : 1.0f;

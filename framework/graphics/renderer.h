@@ -23,6 +23,10 @@ class ShaderProgram;
 class ShadowMap;
 class SkinnedMesh;
 
+/// The flat background of a RendererSettings::sceneOnly frame (sRGB magenta: exact through sRGB encoding and
+/// not a colour the labs draw), so every other pixel of such a frame is the scene's.
+inline constexpr glm::vec3 kSceneOnlyBackground{1.0f, 0.0f, 1.0f};
+
 struct RendererSettings {
   bool shadows = true;
   bool grid = true;          ///< ground plane with the 1 m / 5 m grid at y = 0
@@ -33,6 +37,10 @@ struct RendererSettings {
   int shadowTaps = 12;
   float lineWidthPx = 2.0f;
   bool lectureMode = false;  ///< thicker lines, bigger dots (projectors)
+  /// The scene's own pixels alone: a flat kSceneOnlyBackground instead of the gradient, the ground grid in the
+  /// depth buffer only (it still hides what lies below it) (the UI tests' lecture-layout check finds the
+  /// scene's pixels in this picture).
+  bool sceneOnly = false;
   glm::vec3 lightDirection = glm::normalize(glm::vec3(-0.45f, 0.85f, 0.35f));  ///< towards the light
   glm::vec3 backgroundTop{0.74f, 0.81f, 0.89f};                                ///< sRGB
   glm::vec3 backgroundBottom{0.95f, 0.96f, 0.97f};                             ///< sRGB

@@ -60,7 +60,7 @@ class ReachScene final : public AnimScene {
   void refresh() override { evaluate(); }
   std::vector<app::DragHandle> dragHandles() const override { return {{0, goal_}}; }
   std::optional<app::CameraView> preferredView() const override {
-    return app::CameraView{Vec3(0.0, 0.9, 0.0), 4.0, 0.9, 0.25};
+    return app::CameraView{Vec3(0.0, 0.7, 0.0), 4.5, 0.9, 0.25};
   }
   std::vector<app::Preset> presets() const override {
     return {{"reach", {{"reach", 1.0}}},

@@ -97,7 +97,7 @@ class SplinesScene final : public AnimScene {
     return h;
   }
   std::optional<app::CameraView> preferredView() const override {
-    return app::CameraView{Vec3(0.0, 1.3, 0.0), 7.5, 0.25, 0.3};
+    return app::CameraView{Vec3(0.0, 1.0, 0.0), 8.5, 0.25, 0.3};
   }
   std::vector<app::Preset> presets() const override {
     return {{"catmull-rom", {{"follow", "catmull-rom"}}},

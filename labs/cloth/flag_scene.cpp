@@ -21,7 +21,7 @@ class FlagScene final : public ClothScene {
     bendCompliance_ = 300.0;
   }
   std::optional<app::CameraView> preferredView() const override {
-    return app::CameraView{Vec3(0.0, 1.8, 0.0), 3.6, 0.35, 0.2};
+    return app::CameraView{Vec3(0.0, 1.5, 0.0), 4.2, 0.35, 0.2};
   }
   std::string description() const override {
     return "A flag on a pole in gusty wind: drag and lift on every triangle (CLOTH-3) make it flutter.";

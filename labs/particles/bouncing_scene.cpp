@@ -78,7 +78,7 @@ class BouncingScene final : public app::Scene {
   std::vector<std::string> defaultPlots() const override { return {"energy", "resting"}; }
   // Close on the obstacles and the 6 m ground square (the balls start up to 5 m high and fall onto it).
   std::optional<app::CameraView> preferredView() const override {
-    return app::CameraView{Vec3(0.4, 0.2, -0.3), 7.5, 0.6, 0.5};
+    return app::CameraView{Vec3(0.4, 1.4, -0.3), 11.25, 0.6, 0.3};
   }
   std::vector<app::Preset> presets() const override {
     return {{"superballs", {{"restitution", 0.95}, {"static_friction", 0.1}, {"kinetic_friction", 0.05}}},

@@ -139,7 +139,7 @@ class FountainScene final : public app::Scene {
   // Close enough that the jet (apex ≈ v²/2g ≈ 3.3 m) and the splash around the spheres fill the view,
   // shifted up and left of the plot window in the lower right.
   std::optional<app::CameraView> preferredView() const override {
-    return app::CameraView{Vec3(0.7, 1.1, -0.4), 8.0, 0.6, 0.3};
+    return app::CameraView{Vec3(0.7, 0.1, -0.4), 11.5, 0.785, 0.3};
   }
   std::vector<app::Preset> presets() const override {
     return {{"calm", {{"wind", 0.0}, {"gust", 0.0}, {"vortex", 0.0}}},

@@ -142,7 +142,7 @@ class JointsScene final : public lab::WorldScene {
   }
   std::vector<std::string> defaultPlots() const override { return {"max_joint_error_m", "motor_speed_rad_s"}; }
   std::optional<app::CameraView> preferredView() const override {
-    return app::CameraView{Vec3(3.0, 3.2, 0.0), 15.0, 0.0, 0.12};
+    return app::CameraView{Vec3(4.0, 3.0, 0.0), 19.0, 0.0, 0.12};
   }
 
  private:

@@ -25,8 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 using Check = void (*)(const std::string& exe, const std::string& work);
 
-constexpr double kMaxCovered = 1.0 / 3.0;  // share of the scene's picture windows may cover in lecture mode
-
 /// The lab's exercises that ran as stubs, from the last status the window wrote ("RIGID-1, RIGID-2");
 /// empty with the solutions or without a status.
 std::string stubbedExercises(const std::string& work) {
@@ -470,64 +468,6 @@ void checkBadSceneFile(const std::string& exe, const std::string& work) {
   lab.waitFor([steps](const json& st) { return st["steps"].get<long>() > steps && st["paused"] == false; },
               "the scene to keep running");
   std::cout << "error shown: " << s["file_error"].get<std::string>() << '\n';
-  expect(lab.close() == 0, "the lab did not exit cleanly");
-}
-
-// Lecture mode keeps the scene the largest thing on screen in every scene: the panel is a narrow
-// column, the windows do not overlap one another, the screen the windows leave free is larger than any of them (and at least 40 % of it),
-// and they cover at most a third of the scene's picture (the bounding rectangle of the projection of
-// what it draws, so its empty corners count too; the comparison scene's hidden chains were all of it).
-void checkLectureLayout(const std::string& exe, const std::string& work) {
-  const std::vector<std::string> list = listScenes(exe);
-  LabWindow lab(exe, {"--lecture"}, work);
-  pause(lab);  // every scene is then seen as its reset leaves it: the same picture on every run
-  const bool keep = std::getenv("PBA_UI_SCREENSHOTS") != nullptr;  // for looking at them
-  for (size_t index = 0; index < list.size(); ++index) {
-    if (index > 0) {
-      lab.key("bracketright");
-      lab.waitFor([&](const json& s) { return s["scene"] == list[index]; }, "] to reach " + list[index]);
-    }
-    const json s = lab.frames(3);
-    const Rect view{0, 0, vecAt(s["viewport"], 0), vecAt(s["viewport"], 1)};
-    expect(!s["scene_rect"].is_null(), list[index] + ": nothing of the scene in view");
-    const Rect picture = Rect::fromJson(s["scene_rect"]).intersect(view);
-    double covered = 0.0, windowsArea = 0.0, largest = 0.0, panelWidth = 0.0;
-    for (const auto& [name, r] : windows(s)) {
-      covered += picture.intersect(r).area();
-      windowsArea += r.intersect(view).area();
-      largest = std::max(largest, r.intersect(view).area());
-      if (name.find("###panel") != std::string::npos) panelWidth = r.width();
-    }
-    const double free = view.area() - windowsArea;
-    // Docked, not stacked: no window hides part of another (the legend under the panel did). The
-    // banner of a stubbed exercise or of the instability guard is an alert, on top by design.
-    auto all = windows(s);
-    std::erase_if(all, [](const auto& w) { return w.first == "##banner"; });
-    for (size_t a = 0; a < all.size(); ++a)
-      for (size_t b = a + 1; b < all.size(); ++b)
-        expect(all[a].second.intersect(all[b].second).area() <=
-                   0.01 * std::min(all[a].second.area(), all[b].second.area()),
-               list[index] + ": the windows " + all[a].first + " and " + all[b].first + " overlap");
-    std::printf(
-        "%-14s panel %.0f%% of the width; free %.0f%% of the screen, largest window %.0f%%; %.0f%% of the scene "
-        "covered\n",
-        list[index].c_str(), 100 * panelWidth / view.width(), 100 * free / view.area(), 100 * largest / view.area(),
-        100 * covered / std::max(picture.area(), 1.0));
-    expect(panelWidth <= 0.30 * view.width(), list[index] + ": the lecture panel takes more than 30 % of the width");
-    expect(free >= largest, list[index] + ": a window is larger than the part of the screen left to the scene");
-    expect(free >= 0.4 * view.area(), list[index] + ": the windows leave the scene less than 40 % of the screen");
-    expect(covered <= kMaxCovered * picture.area(),
-           list[index] + ": windows cover more than a third of the scene's picture");
-    expect(s["clipped_labels"].empty(), list[index] + ": labels cut off by the panel: " + s["clipped_labels"].dump());
-    if (keep) {
-      lab.key("F12");
-      lab.waitFor(
-          [&](const json& st) {
-            return st["last_screenshot"].get<std::string>().find(list[index]) != std::string::npos;
-          },
-          "F12");
-    }
-  }
   expect(lab.close() == 0, "the lab did not exit cleanly");
 }
 

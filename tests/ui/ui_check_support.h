@@ -29,5 +29,7 @@ void checkDrag(const std::string& exe, const std::string& work);
 void checkDragEveryScene(const std::string& exe, const std::string& work);
 void checkThrowAgain(const std::string& exe, const std::string& work);
 void checkOrbitAndZoom(const std::string& exe, const std::string& work);
+/// Lecture mode's layout, measured from the rendered image (ui_check_lecture.cpp).
+void checkLectureLayout(const std::string& exe, const std::string& work);
 
 }  // namespace pba::uitest

@@ -187,6 +187,8 @@ void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
           break;
         case collision::ShapeKind::Plane: {
           // The renderer's ground grid shows y = 0; a plane elsewhere gets a square outline.
+          if (b.position.y == 0.0 && glm::dot(b.orientation * Vec3(0.0, 1.0, 0.0), Vec3(0.0, 1.0, 0.0)) > 1.0 - 1e-9)
+            break;
           const Vec3 u = pose.rotate(Vec3(10, 0, 0)), v = pose.rotate(Vec3(0, 0, 10));
           const Vec3& p = b.position;
           d.line(p - u - v, p + u - v, color), d.line(p + u - v, p + u + v, color);
