@@ -9,12 +9,14 @@
 namespace pba::app {
 
 std::string sceneImagePath(const std::string& png) {
-  const std::string stem = png.size() > 4 && png.compare(png.size() - 4, 4, ".png") == 0 ? png.substr(0, png.size() - 4) : png;
+  const std::string stem =
+      png.size() > 4 && png.compare(png.size() - 4, 4, ".png") == 0 ? png.substr(0, png.size() - 4) : png;
   return stem + "-scene.ppm";
 }
 
-Status writeSceneImage(graphics::Renderer& renderer, graphics::DebugRenderer& debug, const graphics::OrbitCamera& camera,
-                       const Scene& scene, glm::ivec2 framebuffer, const std::string& path) {
+Status writeSceneImage(graphics::Renderer& renderer, graphics::DebugRenderer& debug,
+                       const graphics::OrbitCamera& camera, const Scene& scene, glm::ivec2 framebuffer,
+                       const std::string& path) {
   renderer.settings().sceneOnly = true;
   renderer.beginFrame(camera, framebuffer.x, framebuffer.y);
   SceneDraw draw(debug);

@@ -21,7 +21,8 @@ std::string sceneImagePath(const std::string& png);
 
 /// Renders `scene` alone into the back buffer (the whole `framebuffer`, in pixels) and writes it to `path` as
 /// a binary PPM (P6, rows top-down). Call before the frame's own rendering, which clears the buffer again.
-Status writeSceneImage(graphics::Renderer& renderer, graphics::DebugRenderer& debug, const graphics::OrbitCamera& camera,
-                       const Scene& scene, glm::ivec2 framebuffer, const std::string& path);
+Status writeSceneImage(graphics::Renderer& renderer, graphics::DebugRenderer& debug,
+                       const graphics::OrbitCamera& camera, const Scene& scene, glm::ivec2 framebuffer,
+                       const std::string& path);
 
 }  // namespace pba::app

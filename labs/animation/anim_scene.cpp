@@ -5,7 +5,7 @@
 
 #include <imgui.h>
 
-namespace pba::labs::animation {
+namespace pba::lab {
 namespace {
 
 /// A key pressed this frame. ImGui 1.87 takes the named key itself; 1.86 (Debian 12's) an index
@@ -197,4 +197,4 @@ void AnimScene::timelineBar() {
   ImGui::TextDisabled("%zu keys  ·  ←/→ frame, Shift ×10, Alt key, Home/End, Del key", keys.size());
 }
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

@@ -15,7 +15,7 @@
 #include "physics/animation/channel.h"
 #include "physics/animation/skeleton.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 
 namespace an = pba::animation;
 
@@ -81,4 +81,4 @@ class AnimScene : public app::Scene {
   Real maxVelocity_ = 0.0;      ///< [m/s] fastest joint at the last step
 };
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

@@ -5,7 +5,7 @@
 #include "anim_scene.h"
 #include "physics/animation/builders.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 namespace {
 
 enum class WeightSource { Timeline, Slider };
@@ -100,6 +100,6 @@ class BlendScene final : public AnimScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::animation
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Motion", "blend", pba::labs::animation::BlendScene);
+PBA_REGISTER_SCENE("Motion", "blend", pba::lab::BlendScene);

@@ -9,7 +9,7 @@
 
 #include "app/message_text.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 
 namespace an = pba::animation;
 
@@ -188,4 +188,4 @@ Result<BvhClip> readBvh(const std::string& path) {
   return out;
 }
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

@@ -18,7 +18,7 @@
 #include "physics/animation/clip.h"
 #include "physics/core/result.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 
 /// A BVH file in file units (scale 1): its skeleton and its clip (rotation keys slerp, positions linear).
 struct BvhClip {
@@ -32,4 +32,4 @@ Result<BvhClip> readBvh(const std::string& path);
 /// True when the path ends in .bvh (any case).
 bool isBvhPath(const std::string& path);
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

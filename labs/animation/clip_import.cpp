@@ -9,7 +9,7 @@
 #include "graphics/model.h"
 #include "graphics/skinning.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 
 namespace an = pba::animation;
 
@@ -122,4 +122,4 @@ Result<ImportedClip> importClip(const std::string& file, Real height, const std:
   return out;
 }
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

@@ -14,7 +14,7 @@
 #include "physics/animation/clip.h"
 #include "physics/core/result.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 
 struct ImportedClip {
   pba::animation::Skeleton skeleton;
@@ -33,4 +33,4 @@ std::string resolveResourcePath(const std::string& path);
 /// no animation (a clip needs keyframes)", "height: must be > 0".
 Result<ImportedClip> importClip(const std::string& path, Real height, const std::string& field = "skeleton");
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

@@ -13,7 +13,7 @@
 #include "physics/animation/builders.h"
 #include "posing.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 namespace {
 
 class KeyframesScene final : public AnimScene {
@@ -189,6 +189,6 @@ class KeyframesScene final : public AnimScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::animation
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Keyframing", "keyframes", pba::labs::animation::KeyframesScene);
+PBA_REGISTER_SCENE("Keyframing", "keyframes", pba::lab::KeyframesScene);

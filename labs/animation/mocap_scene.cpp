@@ -13,7 +13,7 @@
 PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "motion file Assimp reads (BVH, FBX, COLLADA, glTF) with an animation",
                       "mocap", 1);
 
-namespace pba::labs::animation {
+namespace pba::lab {
 namespace {
 
 class MocapScene final : public AnimScene {
@@ -143,6 +143,6 @@ class MocapScene final : public AnimScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::animation
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Motion", "mocap", pba::labs::animation::MocapScene);
+PBA_REGISTER_SCENE("Motion", "mocap", pba::lab::MocapScene);

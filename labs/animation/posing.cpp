@@ -5,7 +5,7 @@
 #include "physics/ik/analytic.h"
 #include "physics/ik/skeleton.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 
 namespace an = pba::animation;
 
@@ -139,4 +139,4 @@ pba::ik::SolveResult solveLimb(const an::Skeleton& s, an::Pose& pose, std::vecto
   return result;
 }
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

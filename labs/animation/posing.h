@@ -8,7 +8,7 @@
 #include "physics/animation/skeleton.h"
 #include "physics/ik/solver.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 
 /// Rotates joint `joint` (changing pose.rotations[joint] only) so that the direction from it to its
 /// child `child` points at `target`, by the shortest arc in world space; world is recomputed.
@@ -39,4 +39,4 @@ pba::ik::SolveResult solveLimb(const pba::animation::Skeleton& s, pba::animation
                                std::vector<pba::animation::JointWorld>& world, const Limb& limb, const Vec3& goal,
                                const Vec3& pole, pba::ik::SolverKind method);
 
-}  // namespace pba::labs::animation
+}  // namespace pba::lab

@@ -11,7 +11,7 @@
 #include "physics/animation/builders.h"
 #include "posing.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 namespace {
 
 class ReachScene final : public AnimScene {
@@ -153,6 +153,6 @@ class ReachScene final : public AnimScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::animation
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Walking", "reach-while-walking", pba::labs::animation::ReachScene);
+PBA_REGISTER_SCENE("Walking", "reach-while-walking", pba::lab::ReachScene);

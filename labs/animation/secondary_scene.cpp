@@ -15,7 +15,7 @@
 #include "physics/animation/coupled_pendulum.h"
 #include "physics/animation/pendulum.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 namespace {
 
 enum class Gait { Walk, Run };
@@ -228,6 +228,6 @@ class SecondaryScene final : public AnimScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::animation
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Secondary", "secondary", pba::labs::animation::SecondaryScene);
+PBA_REGISTER_SCENE("Secondary", "secondary", pba::lab::SecondaryScene);

@@ -9,7 +9,7 @@
 #include "anim_scene.h"
 #include "physics/animation/cubic_spline.h"
 
-namespace pba::labs::animation {
+namespace pba::lab {
 namespace {
 
 enum class Curve { CatmullRom, Hermite, NaturalCubic, Linear };
@@ -178,6 +178,6 @@ class SplinesScene final : public AnimScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::animation
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Curves", "splines", pba::labs::animation::SplinesScene);
+PBA_REGISTER_SCENE("Curves", "splines", pba::lab::SplinesScene);

@@ -7,7 +7,9 @@
 
 #include "cloth_scene.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 constexpr Color kWire{0.15f, 0.16f, 0.18f, 1.0f};
@@ -154,4 +156,4 @@ void ClothScene::draw(DebugDraw& d) const {
   drawExtras(d);
 }
 
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab

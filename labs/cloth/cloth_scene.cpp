@@ -7,7 +7,9 @@
 
 #include "physics/cloth/self_collision.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 
 ClothScene::ClothScene() {
   params_.choiceEnum("solver", &solverKind_, solverNames(),
@@ -366,4 +368,4 @@ bool ClothScene::nudge(const Vec3& delta) {
   return p != nullptr;
 }
 
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab

@@ -14,9 +14,7 @@
 #include "physics/cloth/tearing.h"
 #include "physics/core/enum_names.h"
 
-namespace pba::labs::cloth {
-
-using namespace pba::cloth;
+namespace pba::lab {
 
 enum class Pattern { Checker, Woven, Plain };
 inline constexpr auto kPatternNames =
@@ -30,9 +28,11 @@ class ClothScene : public app::Scene {
   void draw(DebugDraw& d) const override;
   nlohmann::json metrics() const override;
   Real defaultDt() const override { return 1.0 / 60.0; }
-  std::optional<std::string> nonFiniteState() const override { return describeNonFinite(cloth_); }
+  std::optional<std::string> nonFiniteState() const override { return cloth::describeNonFinite(cloth_); }
   std::optional<std::string> divergedState() const override;
-  std::optional<Real> energy() const override { return clothEnergy(cloth_, env_, settings_.kind, settings_.bending); }
+  std::optional<Real> energy() const override {
+    return cloth::clothEnergy(cloth_, env_, settings_.kind, settings_.bending);
+  }
   /// Passive scenes keep the guard's slack; a driven one may also gain the kinetic energy of its cloth at twice
   /// driveSpeed() and the work of lifting it by its own size.
   std::optional<Real> energyGainBound(Real reference) const override;
@@ -49,7 +49,7 @@ class ClothScene : public app::Scene {
 
  protected:
   /// Builds the cloth (grid_ and material_ are set from the parameters) and fills colliders_.
-  virtual Result<Cloth> build() = 0;
+  virtual Result<cloth::Cloth> build() = 0;
   /// Moves pins, colliders or the wind before each step (t: time at the start of the step [s]).
   virtual void beforeStep(Real /*dt*/, Real /*t*/) {}
   /// Extra drawing (rails, poles, markers) after the cloth.
@@ -62,40 +62,41 @@ class ClothScene : public app::Scene {
   /// [m/s] How fast what drives the cloth moves (wind, moving pins, a pushing collider); 0: a passive scene.
   virtual Real driveSpeed() const { return 0.0; }
   /// Draws one cloth (its pattern, strain colours or plain), with an optional tint.
-  void drawCloth(DebugDraw& d, const Cloth& c, const Color& base) const;
+  void drawCloth(DebugDraw& d, const cloth::Cloth& c, const Color& base) const;
   void drawColliders(DebugDraw& d) const;
   /// The metrics of one cloth (comparison reports four).
-  nlohmann::json clothMetrics(const Cloth& c, const ClothStepStats& stats, ClothSolverKind kind) const;
+  nlohmann::json clothMetrics(const cloth::Cloth& c, const cloth::ClothStepStats& stats,
+                              cloth::ClothSolverKind kind) const;
 
   // Parameters (the common ones of every cloth scene)
-  ClothSolverKind solverKind_ = ClothSolverKind::Xpbd;
-  int resolution_ = 32;                       ///< particles along the cloth's first side
-  Real stiffness_ = 2000.0;                   ///< [N/m] stretch and shear springs
-  Real bendStiffness_ = 20.0;                 ///< [N/m] bend springs
-  Real springDamping_ = 0.02;                 ///< [N·s/m]
-  Real compliance_ = 0.0;                     ///< [m/N] XPBD stretch and shear
-  Real bendCompliance_ = 1000.0;              ///< [1/(N·m)] XPBD isometric bending
-  Real bendLinkCompliance_ = 1.0;             ///< [m/N] XPBD distance bending
-  Real damping_ = 0.1;                        ///< [1/s] mass (velocity) damping, every solver
-  Real thickness_ = 0.01;                     ///< [m]
-  Real gravity_ = kStandardGravity;           ///< [m/s²]
-  Real friction_ = 0.4;                       ///< μ of the colliders
-  SpringLayout layout_ = SpringLayout::Grid;  ///< of the grid scenes' springs
-  bool stableExplicit_ = true;                ///< explicit: substeps of at most half the stability limit
-  bool longRange_ = true;                     ///< PBD/XPBD: long range attachments to the pins
+  cloth::ClothSolverKind solverKind_ = cloth::ClothSolverKind::Xpbd;
+  int resolution_ = 32;                                     ///< particles along the cloth's first side
+  Real stiffness_ = 2000.0;                                 ///< [N/m] stretch and shear springs
+  Real bendStiffness_ = 20.0;                               ///< [N/m] bend springs
+  Real springDamping_ = 0.02;                               ///< [N·s/m]
+  Real compliance_ = 0.0;                                   ///< [m/N] XPBD stretch and shear
+  Real bendCompliance_ = 1000.0;                            ///< [1/(N·m)] XPBD isometric bending
+  Real bendLinkCompliance_ = 1.0;                           ///< [m/N] XPBD distance bending
+  Real damping_ = 0.1;                                      ///< [1/s] mass (velocity) damping, every solver
+  Real thickness_ = 0.01;                                   ///< [m]
+  Real gravity_ = kStandardGravity;                         ///< [m/s²]
+  Real friction_ = 0.4;                                     ///< μ of the colliders
+  cloth::SpringLayout layout_ = cloth::SpringLayout::Grid;  ///< of the grid scenes' springs
+  bool stableExplicit_ = true;                              ///< explicit: substeps of at most half the stability limit
+  bool longRange_ = true;                                   ///< PBD/XPBD: long range attachments to the pins
   // Display
   Pattern pattern_ = Pattern::Checker;
   bool strainColors_ = false, wireframe_ = false, showLinks_ = false;
 
   // State
-  GridDesc grid_;
-  ClothMaterial material_;
-  ClothSolverSettings settings_;
-  ClothEnvironment env_;
-  std::vector<Collider> colliders_;
-  Cloth cloth_;
-  ClothSolver solver_;
-  ClothStepStats stats_;
+  cloth::GridDesc grid_;
+  cloth::ClothMaterial material_;
+  cloth::ClothSolverSettings settings_;
+  cloth::ClothEnvironment env_;
+  std::vector<cloth::Collider> colliders_;
+  cloth::Cloth cloth_;
+  cloth::ClothSolver solver_;
+  cloth::ClothStepStats stats_;
   std::string buildError_;
   Real time_ = 0.0;
   Real initialEnergy_ = 0.0;  ///< [J] at reset
@@ -105,13 +106,13 @@ class ClothScene : public app::Scene {
   Real worstColliderDistance_ = 0.0;  ///< [m] most negative over the run
   Color clothColor_{0.85f, 0.33f, 0.25f, 1.0f};
   int dragged_ = -1;
-  std::optional<Pin> draggedWasPinned_;
+  std::optional<cloth::Pin> draggedWasPinned_;
 
  private:
   mutable particles::SpatialHash hash_;
 };
 
 /// Smooth vertex normals (area weighted) of a cloth's current shape.
-void vertexNormals(const Cloth& c, std::vector<Vec3>& out);
+void vertexNormals(const cloth::Cloth& c, std::vector<Vec3>& out);
 
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab

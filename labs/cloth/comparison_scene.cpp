@@ -6,7 +6,9 @@
 #include "cloth_scene.h"
 #include "physics/cloth/self_collision.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 constexpr Real kGap = 1.1;  // [m] between the cloths
@@ -111,6 +113,6 @@ class ComparisonScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "comparison", pba::labs::cloth::ComparisonScene);
+PBA_REGISTER_SCENE("Cloth", "comparison", pba::lab::ComparisonScene);

@@ -4,7 +4,9 @@
 
 #include "cloth_scene.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 constexpr Real kRailHeight = 2.2, kWidth = 2.0, kLeft = -1.0;  // [m]
@@ -72,6 +74,6 @@ class CurtainScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "curtain", pba::labs::cloth::CurtainScene);
+PBA_REGISTER_SCENE("Cloth", "curtain", pba::lab::CurtainScene);

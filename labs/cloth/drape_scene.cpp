@@ -4,7 +4,9 @@
 #include "cloth_scene.h"
 #include "mesh_import.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 enum class DrapeCollider { Sphere, Box, Capsule };
@@ -76,6 +78,6 @@ class DrapeScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "drape", pba::labs::cloth::DrapeScene);
+PBA_REGISTER_SCENE("Cloth", "drape", pba::lab::DrapeScene);

@@ -4,7 +4,9 @@
 
 #include "cloth_scene.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 constexpr Real kPoleX = -0.75, kPoleTop = 2.4, kPoleRadius = 0.03;  // [m]
@@ -70,6 +72,6 @@ class FlagScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "flag", pba::labs::cloth::FlagScene);
+PBA_REGISTER_SCENE("Cloth", "flag", pba::lab::FlagScene);

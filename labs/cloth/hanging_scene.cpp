@@ -2,7 +2,9 @@
 // horizontal and swings. Switch the solver live; drag any particle with the left mouse button.
 #include "cloth_scene.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 class HangingScene final : public ClothScene {
@@ -30,6 +32,6 @@ class HangingScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "hanging", pba::labs::cloth::HangingScene);
+PBA_REGISTER_SCENE("Cloth", "hanging", pba::lab::HangingScene);

@@ -7,7 +7,9 @@
 
 #include "graphics/model.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 
 Result<pba::cloth::TriangleMesh> loadClothMesh(const std::string& path, Real size, const Vec3& center) {
   std::string error;
@@ -44,4 +46,4 @@ Result<pba::cloth::TriangleMesh> loadClothMesh(const std::string& path, Real siz
   return mesh;
 }
 
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab

@@ -6,9 +6,9 @@
 
 #include "physics/cloth/cloth.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
 
 /// "mesh: FILE: reason" on failure (the field is the scene parameter's name).
 Result<pba::cloth::TriangleMesh> loadClothMesh(const std::string& path, Real size, const Vec3& center);
 
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab

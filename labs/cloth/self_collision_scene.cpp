@@ -6,7 +6,9 @@
 
 #include "cloth_scene.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 constexpr Real kSpacing = 0.01;  // [m] TMP #15
@@ -66,6 +68,6 @@ class SelfCollisionScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "self-collision", pba::labs::cloth::SelfCollisionScene);
+PBA_REGISTER_SCENE("Cloth", "self-collision", pba::lab::SelfCollisionScene);

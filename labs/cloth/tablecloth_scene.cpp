@@ -2,7 +2,9 @@
 // corners hang down over the edges.
 #include "cloth_scene.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 constexpr Real kTableTop = 0.75;                     // [m]
@@ -48,6 +50,6 @@ class TableclothScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "tablecloth", pba::labs::cloth::TableclothScene);
+PBA_REGISTER_SCENE("Cloth", "tablecloth", pba::lab::TableclothScene);

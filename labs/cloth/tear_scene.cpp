@@ -4,7 +4,9 @@
 
 #include "cloth_scene.h"
 
-namespace pba::labs::cloth {
+namespace pba::lab {
+
+using namespace pba::cloth;
 namespace {
 
 constexpr Real kClothHeight = 1.2, kBallStart = 1.7;  // [m]
@@ -68,6 +70,6 @@ class TearScene final : public ClothScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::cloth
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Cloth", "tear", pba::labs::cloth::TearScene);
+PBA_REGISTER_SCENE("Cloth", "tear", pba::lab::TearScene);

@@ -7,8 +7,8 @@
 #include "app/scene_registry.h"
 #include "physics/hello/ball.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class DropScene final : public app::Scene {
  public:
@@ -103,3 +103,5 @@ class DropScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Basics", "drop", DropScene);
+
+}  // namespace pba::lab

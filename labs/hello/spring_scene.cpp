@@ -8,8 +8,8 @@
 #include "physics/core/basis.h"
 #include "physics/hello/ball.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr int kCoilTurns = 12;                // turns drawn for the spring's helix
 constexpr Real kCoilRadius = 0.12;            // [m]
@@ -109,3 +109,5 @@ class SpringScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Basics", "spring", SpringScene);
+
+}  // namespace pba::lab

@@ -38,7 +38,9 @@ PBA_REGISTER_LAB_FLAG("targets", "targets", "number of random reachable targets 
 PBA_REGISTER_LAB_FLAG("tolerance", "tolerance", "success tolerance [m]", "batch");
 PBA_REGISTER_LAB_FLAG("max-iterations", "max_iterations", "iteration cap per solve", "batch");
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 enum class BatchJoint { Hinge, Ball };
@@ -228,6 +230,6 @@ class BatchScene final : public app::Scene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Batch", "batch", pba::labs::ik::BatchScene);
+PBA_REGISTER_SCENE("Batch", "batch", pba::lab::BatchScene);

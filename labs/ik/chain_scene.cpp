@@ -2,7 +2,9 @@
 // tasks 3–5; CCD is O(n) per pass and FABRIK O(n) per iteration, so 1,000 links stay interactive).
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 enum class ChainJoint { Hinge, Ball, Free };
@@ -53,6 +55,6 @@ class ChainScene final : public IkScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Chains", "chain", pba::labs::ik::ChainScene);
+PBA_REGISTER_SCENE("Chains", "chain", pba::lab::ChainScene);

@@ -17,7 +17,9 @@ PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "skeleton file Assimp reads (BVH, 
 PBA_REGISTER_LAB_FLAG("effectors", "effectors",
                       "comma-separated joint names of the effectors (default: hands and feet)", "character", 1);
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 
 using app::CharacterSkin;
 using app::poseSkin;
@@ -166,6 +168,6 @@ class CharacterScene final : public IkScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Characters", "character", pba::labs::ik::CharacterScene);
+PBA_REGISTER_SCENE("Characters", "character", pba::lab::CharacterScene);

@@ -18,7 +18,9 @@
 
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 struct Method {
@@ -288,6 +290,6 @@ class ComparisonScene final : public app::Scene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Chains", "comparison", pba::labs::ik::ComparisonScene);
+PBA_REGISTER_SCENE("Chains", "comparison", pba::lab::ComparisonScene);

@@ -5,7 +5,9 @@
 
 #include "physics/collision/ray.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 
 namespace {
 constexpr Real kJumpInterval = 1.5;  // [s] between random jumps
@@ -269,4 +271,4 @@ std::vector<app::NamedPoint> IkScene::goalPositions() const {
   return out;
 }
 
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

@@ -18,9 +18,7 @@
 #include "physics/ik/builders.h"
 #include "physics/ik/solver.h"
 
-namespace pba::labs::ik {
-
-using namespace pba::ik;
+namespace pba::lab {
 
 enum class TargetPath { Mouse, Circle, Figure8, RandomJumps };
 inline constexpr auto kTargetPathNames = enumNames<TargetPath>({{TargetPath::Mouse, "mouse"},
@@ -34,7 +32,7 @@ inline constexpr Real kTargetRadiusFactor = 2.2;  // goal sphere radius in bone 
 /// Jacobian methods, stall-recovery restarts; SolveOptions) and the Jacobian's source, once for every
 /// IK scene. Their defaults are the published methods. With `jacobianOnly`, the Jacobian options
 /// show only while `options` selects a Jacobian-family method (they always load, save and parse).
-void declareMethodOptions(app::Params& params, SolveOptions& options, bool jacobianOnly);
+void declareMethodOptions(app::Params& params, ik::SolveOptions& options, bool jacobianOnly);
 
 class IkScene : public app::Scene {
  public:
@@ -68,7 +66,7 @@ class IkScene : public app::Scene {
 
  protected:
   /// Builds the rig from the scene's parameters (goals at rest positions).
-  virtual Rig build() const = 0;
+  virtual ik::Rig build() const = 0;
   /// Radius [m] of the scripted path around each effector's rest position.
   virtual Real pathRadius() const { return 0.4; }
   /// Offset [m] of effector k's goal from its rest position on the scripted circle or figure-8 at
@@ -81,18 +79,18 @@ class IkScene : public app::Scene {
   void solveNow();
   Real boneRadius() const { return boneRadius_; }
   /// Rotation axes and limits of joint j (ik_scene_draw.cpp).
-  void drawJointAxesAndLimits(DebugDraw& d, int j, const std::vector<Frame>& f) const;
+  void drawJointAxesAndLimits(DebugDraw& d, int j, const std::vector<ik::Frame>& f) const;
   /// The bone that leaves joint j in its own frame [m] (first child's offset, else an effector's
   /// local offset, else +x): the direction whose range a limit cone or arc shows.
   Vec3 boneOf(int j) const;
   /// Per-DOF angle bars labelled "joint.axis", scrollable, with limits (ik_scene_ui.cpp).
   void angleBars() const;
 
-  Rig rig_;
-  Pose pose_;
-  SolveOptions options_;
-  SolveWorkspace workspace_;  // reused by every solve of the scene
-  SolveResult last_;
+  ik::Rig rig_;
+  ik::Pose pose_;
+  ik::SolveOptions options_;
+  ik::SolveWorkspace workspace_;  // reused by every solve of the scene
+  ik::SolveResult last_;
   TargetPath path_ = TargetPath::Circle;
   Real pathSpeed_ = 0.5;  // [Hz] laps per second of the scripted path
   bool showLimits_ = true;
@@ -108,4 +106,4 @@ class IkScene : public app::Scene {
   Real nextJump_ = 0.0;
 };
 
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

@@ -17,7 +17,9 @@
 
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 
 namespace {
 constexpr int kRimSamples = 12;  // points per edge of the ball joint's limit rectangle
@@ -142,4 +144,4 @@ void IkScene::draw(DebugDraw& d) const {
   if (!rig_.effectors.empty()) d.text(rig_.effectors[0].targetPosition + Vec3(0, 4.0 * r, 0), label, colors::kDark);
 }
 
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

@@ -11,7 +11,9 @@
 
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 
 namespace {
 constexpr Real kAtLimit = 1e-3;   // [rad or m] a DOF this close to a limit shows as "at the limit"
@@ -103,4 +105,4 @@ void IkScene::angleBars() const {
   ImGui::EndChild();
 }
 
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

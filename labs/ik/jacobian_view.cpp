@@ -8,7 +8,7 @@
 
 #include "physics/ik/linalg.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
 
 using namespace pba::ik;
 
@@ -204,4 +204,4 @@ void drawJacobianWindow(const JacobianView& view, const SolveOptions& options, c
   ImGui::End();
 }
 
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

@@ -10,7 +10,7 @@
 #include "physics/ik/jacobian.h"
 #include "physics/ik/solver.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
 
 struct JacobianView {
   pba::ik::Matrix J;
@@ -29,4 +29,4 @@ bool usesJacobian(pba::ik::SolverKind kind);
 /// The "Jacobian" window at the bottom of `column` (ImGui; window mode only).
 void drawJacobianWindow(const JacobianView& view, const pba::ik::SolveOptions& options, const app::ScreenRect& column);
 
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

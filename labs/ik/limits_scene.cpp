@@ -2,7 +2,9 @@
 // moves out of the allowed workspace (Workbook §2.1 task 5; IK slides, "Joint limits"; exercise IK-6).
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 const Vec3 kGoalCentre(0.2, 0.5, 0.0);  // [m] from the base: centre of the goal's scripted path
@@ -50,6 +52,6 @@ class LimitsScene final : public IkScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Chains", "limits", pba::labs::ik::LimitsScene);
+PBA_REGISTER_SCENE("Chains", "limits", pba::lab::LimitsScene);

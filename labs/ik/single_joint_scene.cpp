@@ -2,7 +2,9 @@
 // (Workbook §2.1 task 2; exercise IK-1: the axis from the cross product, the angle from the dot product).
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 class SingleJointScene final : public IkScene {
@@ -25,6 +27,6 @@ class SingleJointScene final : public IkScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Analytic", "single-joint", pba::labs::ik::SingleJointScene);
+PBA_REGISTER_SCENE("Analytic", "single-joint", pba::lab::SingleJointScene);

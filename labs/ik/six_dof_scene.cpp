@@ -4,7 +4,9 @@
 
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 class SixDofScene final : public IkScene {
@@ -43,6 +45,6 @@ class SixDofScene final : public IkScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Chains", "six-dof", pba::labs::ik::SixDofScene);
+PBA_REGISTER_SCENE("Chains", "six-dof", pba::lab::SixDofScene);

@@ -2,7 +2,9 @@
 // "Multiple end effectors"): a hand reaching with five finger tips, or Buss & Kim's "double Y".
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 enum class TreeShape { Hand, DoubleY };
@@ -37,6 +39,6 @@ class TreeScene final : public IkScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Trees", "tree", pba::labs::ik::TreeScene);
+PBA_REGISTER_SCENE("Trees", "tree", pba::lab::TreeScene);

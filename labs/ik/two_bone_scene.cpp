@@ -4,7 +4,9 @@
 
 #include "ik_scene.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
+
+using namespace pba::ik;
 namespace {
 
 class TwoBoneScene final : public IkScene {
@@ -77,6 +79,6 @@ class TwoBoneScene final : public IkScene {
 };
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
-PBA_REGISTER_SCENE("Analytic", "two-bone", pba::labs::ik::TwoBoneScene);
+PBA_REGISTER_SCENE("Analytic", "two-bone", pba::lab::TwoBoneScene);

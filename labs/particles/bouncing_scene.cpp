@@ -6,8 +6,8 @@
 #include "common.h"
 #include "physics/particles/spatial_hash.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class BouncingScene final : public app::Scene {
  public:
@@ -108,3 +108,5 @@ class BouncingScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Particles", "bouncing", BouncingScene);
+
+}  // namespace pba::lab

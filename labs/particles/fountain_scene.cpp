@@ -11,8 +11,8 @@
 #include "physics/particles/emitter.h"
 #include "physics/particles/kernels.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr Real kRadius = 0.02;      // [m] particle radius for contacts
 constexpr int kFusedAbove = 20000;  // pools larger than this use the fused kernel (velocity Verlet only)
@@ -168,3 +168,5 @@ class FountainScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Particles", "fountain", FountainScene);
+
+}  // namespace pba::lab

@@ -7,8 +7,8 @@
 #include "common.h"
 #include "physics/particles/spatial_hash.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr Real kBin = 0.8;  // [m] half-width of the bin
 // Skin of the neighbour list as a multiple of the grain radius: pairs are listed up to 2r + skin apart.
@@ -112,3 +112,5 @@ class GranularScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Particles", "granular", GranularScene);
+
+}  // namespace pba::lab

@@ -13,8 +13,8 @@
 #include "common.h"
 #include "physics/ode/oscillator.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr std::size_t kOrbitTrail = 600;
 // The orbital plane is y = 0 in the simulation; it is drawn this high so the ground grid hides nothing.
@@ -171,3 +171,5 @@ class OrbitScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("ODE", "orbit", OrbitScene);
+
+}  // namespace pba::lab

@@ -19,8 +19,8 @@
 #include "common.h"
 #include "physics/ode/oscillator.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 // The figure is a 3 × 3 grid facing the camera (preferredView frames it to fill the view between the
 // control panel and the energy plot's column): eight phase portraits in rows of three, the ninth cell
@@ -262,3 +262,5 @@ class OscillatorScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("ODE", "oscillator", OscillatorScene);
+
+}  // namespace pba::lab

@@ -14,8 +14,8 @@
 #include "common.h"
 #include "physics/ode/pendulum.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class PendulumScene final : public app::Scene {
  public:
@@ -170,3 +170,5 @@ class PendulumScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("ODE", "pendulum", PendulumScene);
+
+}  // namespace pba::lab

@@ -5,8 +5,8 @@
 #include "common.h"
 #include "physics/springs/builders.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr Real kBeadRadius = 0.05;  // [m] drawn and picking radius
 constexpr Real kPinHeight = 3.0;    // [m] both pins; the ropes are 2 m long
@@ -131,3 +131,5 @@ class RopeScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Mass-spring", "rope", RopeScene);
+
+}  // namespace pba::lab

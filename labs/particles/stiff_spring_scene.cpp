@@ -11,8 +11,8 @@
 #include "physics/springs/builders.h"
 #include "physics/springs/stability.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class StiffSpringScene final : public app::Scene {
  public:
@@ -151,3 +151,5 @@ class StiffSpringScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Mass-spring", "stiff-spring", StiffSpringScene);
+
+}  // namespace pba::lab

@@ -15,8 +15,8 @@ PBA_REGISTER_LAB_FLAG("skeleton", "skeleton", "skeleton file Assimp reads (BVH, 
 PBA_REGISTER_LAB_FLAG("frame", "frame", "frame of the skeleton file's animation to start in (-1: its rest pose)",
                       "character", 1);
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class CharacterScene final : public lab::RagdollScene {
  public:
@@ -96,3 +96,5 @@ class CharacterScene final : public lab::RagdollScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Ragdolls", "character", CharacterScene);
+
+}  // namespace pba::lab

@@ -3,8 +3,8 @@
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class HingeLimitsScene final : public lab::RagdollScene {
  public:
@@ -20,3 +20,5 @@ class HingeLimitsScene final : public lab::RagdollScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Ragdolls", "hinge-limits", HingeLimitsScene);
+
+}  // namespace pba::lab

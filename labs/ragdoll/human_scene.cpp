@@ -4,8 +4,8 @@
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class HumanScene final : public lab::RagdollScene {
  public:
@@ -55,3 +55,5 @@ class HumanScene final : public lab::RagdollScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Ragdolls", "human", HumanScene);
+
+}  // namespace pba::lab

@@ -3,8 +3,8 @@
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class MassesScene final : public lab::RagdollScene {
  public:
@@ -20,3 +20,5 @@ class MassesScene final : public lab::RagdollScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Ragdolls", "masses", MassesScene);
+
+}  // namespace pba::lab

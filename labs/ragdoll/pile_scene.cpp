@@ -3,8 +3,8 @@
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class PileScene final : public lab::RagdollScene {
  public:
@@ -28,3 +28,5 @@ class PileScene final : public lab::RagdollScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Ragdolls", "pile", PileScene);
+
+}  // namespace pba::lab

@@ -3,8 +3,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class BenchBoxesScene final : public lab::WorldScene {
  public:
@@ -36,3 +36,5 @@ class BenchBoxesScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "bench-boxes", BenchBoxesScene);
+
+}  // namespace pba::lab

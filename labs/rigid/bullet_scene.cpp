@@ -4,8 +4,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr Real kRadius = 0.005;    // [m] a 1 cm sphere
 constexpr Real kWallX = 6.0;       // [m]
@@ -110,3 +110,5 @@ class BulletScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "bullet", BulletScene);
+
+}  // namespace pba::lab

@@ -5,8 +5,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class CradleScene final : public lab::WorldScene {
  public:
@@ -62,3 +62,5 @@ class CradleScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "cradle", CradleScene);
+
+}  // namespace pba::lab

@@ -4,8 +4,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class DominoesScene final : public lab::WorldScene {
  public:
@@ -51,3 +51,5 @@ class DominoesScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "dominoes", DominoesScene);
+
+}  // namespace pba::lab

@@ -6,8 +6,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr Real kBoxHalf = 0.25;  // [m] the sliding cube
 
@@ -70,3 +70,5 @@ class InclineScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "incline", InclineScene);
+
+}  // namespace pba::lab

@@ -6,8 +6,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class JointsScene final : public lab::WorldScene {
  public:
@@ -153,3 +153,5 @@ class JointsScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "joints", JointsScene);
+
+}  // namespace pba::lab

@@ -3,8 +3,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class PileScene final : public lab::WorldScene {
  public:
@@ -39,3 +39,5 @@ class PileScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "pile", PileScene);
+
+}  // namespace pba::lab

@@ -6,8 +6,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class SpinningScene final : public lab::WorldScene {
  public:
@@ -78,3 +78,5 @@ class SpinningScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "spinning", SpinningScene);
+
+}  // namespace pba::lab

@@ -3,8 +3,8 @@
 #include "app/scene_registry.h"
 #include "world_scene.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 class StackScene final : public lab::WorldScene {
  public:
@@ -56,3 +56,5 @@ class StackScene final : public lab::WorldScene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "stack", StackScene);
+
+}  // namespace pba::lab

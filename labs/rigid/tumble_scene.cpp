@@ -13,8 +13,8 @@
 #include "physics/collision/raycast.h"
 #include "physics/rigid/tumble.h"
 
+namespace pba::lab {
 namespace {
-using namespace pba;
 
 constexpr int kBoxHandle = 0;
 constexpr Real kGoldenAngle = 2.399963229728653;  // [rad] π (3 − √5): successive throws spread evenly
@@ -187,3 +187,5 @@ class TumbleScene final : public app::Scene {
 }  // namespace
 
 PBA_REGISTER_SCENE("Rigid bodies", "tumble", TumbleScene);
+
+}  // namespace pba::lab

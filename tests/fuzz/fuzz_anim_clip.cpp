@@ -13,7 +13,7 @@ using namespace pba;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = fuzz::writeInput(data, size, ".bvh");
-  Result<labs::animation::ImportedClip> clip = labs::animation::importClip(path, 1.7);
+  Result<lab::ImportedClip> clip = lab::importClip(path, 1.7);
   std::filesystem::remove(path);
   if (!clip) {
     fuzz::require(clip.error().find('\n') == std::string::npos, "an error is one line", clip.error());
@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                   "an error names the field", clip.error());
     return 0;
   }
-  const labs::animation::ImportedClip& c = clip.value();
+  const lab::ImportedClip& c = clip.value();
   animation::Pose pose;
   for (int s = 0; s <= 4; ++s) {
     animation::samplePose(c.skeleton, c.clip, c.clip.duration * s / 4.0, pose);

@@ -31,7 +31,7 @@ namespace {
 using pba::Real;
 using pba::Vec3;
 namespace an = pba::animation;
-namespace lab = pba::labs::animation;
+namespace lab = pba::lab;
 
 struct BvhJoint {
   std::string name;

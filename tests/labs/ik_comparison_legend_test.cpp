@@ -7,7 +7,7 @@
 
 #include "app/scene_registry.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
 namespace {
 
 double linear(float c) { return c <= 0.04045f ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
@@ -29,4 +29,4 @@ TEST(IkComparisonLegend, EveryMethodHasAnEntryThatReadsOnWhite) {
 }
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

@@ -9,7 +9,7 @@
 #include "app/lab_session.h"
 #include "app/scene_registry.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
 namespace {
 
 std::unique_ptr<app::Scene> makeScene(const std::string& name) {
@@ -69,13 +69,13 @@ TEST(IkSceneNudge, TheTwoBonePoleTargetIsPickedDraggedAndNudged) {
 }
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab
 
 // Issue 15: dragging the goal while paused moved the goal but did not re-solve, while the arrow keys
 // did. Both now go through LabSession, which refreshes a paused scene after any goal change. The goal
 // is put far out of reach, so only a new solve can make the residual metric large (with a stubbed
 // solver too: its pose stays, its residual is then the distance to the far goal).
-namespace pba::labs::ik {
+namespace pba::lab {
 namespace {
 
 double residualAfter(const std::function<void(app::LabSession&)>& moveGoal) {
@@ -104,4 +104,4 @@ TEST(IkScenePaused, ADragOfTheGoalReSolvesLikeANudge) {
 }
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

@@ -7,7 +7,7 @@
 #include "app/scene_registry.h"
 #include "physics/core/format.h"
 
-namespace pba::labs::ik {
+namespace pba::lab {
 namespace {
 
 TEST(IkSceneParams, EverySettingAtBothEndsOfItsRangeGivesAValidSolve) {
@@ -33,4 +33,4 @@ TEST(IkSceneParams, EverySettingAtBothEndsOfItsRangeGivesAValidSolve) {
 }
 
 }  // namespace
-}  // namespace pba::labs::ik
+}  // namespace pba::lab

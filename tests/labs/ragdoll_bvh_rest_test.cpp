@@ -5,14 +5,8 @@
 //
 // The files: every *.bvh under resources/, and Debian's assimp-testmodels (/usr/share/assimp/models/BVH),
 // read at run time when the package is installed (a file with the same bytes as one in resources/ is
-// tested there once). Each quantity is measured here from the bones' poses, not from the solvers' stats:
-//   * joint gap: the joint's anchor carried by bone A and by bone B (its offset in each box's frame at
-//     the start), |p_A − p_B|;
-//   * limits: the bodies' relative rotation. Hinge: the angle of B about the axis (seen in A), from a
-//     reference direction ⟂ axis fixed in both bones at the start, must lie in [lower, upper] (the angle
-//     between its axis carried by A and by B is reported: the joint gap bounds it). Ball with a cone: the angle between the cone axis carried by A and the
-//     bone axis carried by B must stay below the cone angle (twist is free);
-//   * penetration: the lowest of the eight corners of every box against the ground plane y = 0.
+// tested there once). Each quantity is measured from the bones' poses, not from the solvers' stats
+// (support/ragdoll_pose_measure.h: joint gaps, limit angles, the deepest box corner).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,11 +23,16 @@
 #include "physics/ragdoll/constraint_ragdoll.h"
 #include "physics/ragdoll/particle_ragdoll.h"
 #include "skeleton_import.h"
+#include "support/ragdoll_pose_measure.h"
 
 namespace pba::lab {
 namespace bvh_rest {
 
 namespace fs = std::filesystem;
+using test::boxCorners;
+using test::JointInBones;
+using test::jointsInBones;
+using Measure = test::PoseMeasure;
 
 constexpr Real kDt = 1.0 / 60.0;                     // [s] the lab's step
 constexpr Real kSettleWithin = 10.0;                 // [s] after the first ground contact (the bound)
@@ -44,13 +43,6 @@ constexpr Real kLimitTolerance = 2.0 * kPi / 180.0;  // [rad] the issue's bound
 constexpr Real kGroundTolerance = 0.01;              // [m] the bound
 constexpr Real kTouch = 0.005;                       // [m] a corner this close to the ground has landed
 const char* const kAssimpBvh = "/usr/share/assimp/models/BVH";
-
-/// The eight corners of a box of half sizes h at pose t.
-std::array<Vec3, 8> boxCorners(const collision::Transform& t, const Vec3& h) {
-  std::array<Vec3, 8> c{};
-  for (int i = 0; i < 8; ++i) c[i] = t.apply(Vec3(i & 1 ? h.x : -h.x, i & 2 ? h.y : -h.y, i & 4 ? h.z : -h.z));
-  return c;
-}
 
 constexpr int kMiddleFrame = -2;  // BvhCase::frame: the middle frame of the file's animation
 
@@ -122,72 +114,9 @@ ragdoll::RagdollDesc dropped(const ragdoll::RagdollDesc& built) {
   return ragdoll::translated(d, Vec3(0.0, 0.5 - lowest, 0.0));
 }
 
-/// A joint seen from each of its bones: anchor, axis and (hinges) a reference direction ⟂ axis, each in
-/// the bone's own frame at the start.
-struct JointInBones {
-  const ragdoll::JointDesc* desc = nullptr;
-  Vec3 anchorA{0.0}, anchorB{0.0}, axisA{0.0}, axisB{0.0}, refA{0.0}, refB{0.0};
-};
-
-std::vector<JointInBones> jointsInBones(const ragdoll::RagdollDesc& d) {
-  std::vector<JointInBones> out;
-  for (const ragdoll::JointDesc& j : d.joints) {
-    const collision::Transform a{d.bones[j.boneA].center, d.bones[j.boneA].orientation};
-    const collision::Transform b{d.bones[j.boneB].center, d.bones[j.boneB].orientation};
-    const Vec3 axis = glm::normalize(j.axis);
-    const Vec3 helper = std::abs(axis.x) < 0.9 ? Vec3(1.0, 0.0, 0.0) : Vec3(0.0, 1.0, 0.0);
-    const Vec3 ref = glm::normalize(glm::cross(axis, helper));
-    out.push_back({&j, a.applyInverse(j.anchor), b.applyInverse(j.anchor), a.rotateInverse(axis), b.rotateInverse(axis),
-                   a.rotateInverse(ref), b.rotateInverse(ref)});
-  }
-  return out;
-}
-
-Real angleBetween(const Vec3& u, const Vec3& v) { return std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v)); }
-
-struct Measure {
-  Real jointGap = 0.0;       // [m] largest
-  Real limitExcess = 0.0;    // [rad] largest angle beyond a limit
-  Real hingeTilt = 0.0;      // [rad] largest angle between a hinge's axis carried by A and by B (reported)
-  Real penetration = 0.0;    // [m] deepest corner below y = 0
-  Real lowestCorner = 0.0;   // [m]
-  Real fastestCorner = 0.0;  // [m/s] since the previous step
-  std::string worstLimit;    // the joint (bone B's name) with the largest limit excess
-  std::string worstGap;      // the joint (bone B's name) with the largest gap
-};
-
 Measure measure(const ragdoll::RagdollDesc& d, const std::vector<JointInBones>& joints,
                 const std::vector<collision::Transform>& pose, std::vector<Vec3>& corners) {
-  Measure m;
-  m.lowestCorner = 1e300;
-  std::vector<Vec3> now;
-  for (std::size_t i = 0; i < pose.size(); ++i)
-    for (const Vec3& c : boxCorners(pose[i], d.bones[i].halfExtents)) now.push_back(c);
-  for (std::size_t k = 0; k < now.size(); ++k) {
-    m.lowestCorner = std::min(m.lowestCorner, now[k].y);
-    if (!corners.empty()) m.fastestCorner = std::max(m.fastestCorner, glm::length(now[k] - corners[k]) / kDt);
-  }
-  corners = std::move(now);
-  m.penetration = std::max(0.0, -m.lowestCorner);
-  for (const JointInBones& j : joints) {
-    const collision::Transform& a = pose[j.desc->boneA];
-    const collision::Transform& b = pose[j.desc->boneB];
-    const Real gap = glm::length(a.apply(j.anchorA) - b.apply(j.anchorB));
-    if (gap > m.jointGap) m.jointGap = gap, m.worstGap = d.bones[j.desc->boneB].name;
-    const Vec3 axisA = a.rotate(j.axisA), axisB = b.rotate(j.axisB);
-    Real excess = 0.0;
-    if (j.desc->kind == ragdoll::JointKind::Hinge) {
-      const Vec3 refA = a.rotate(j.refA), refB = b.rotate(j.refB);
-      const Vec3 inPlane = refB - glm::dot(refB, axisA) * axisA;
-      const Real angle = std::atan2(glm::dot(axisA, glm::cross(refA, inPlane)), glm::dot(refA, inPlane));
-      m.hingeTilt = std::max(m.hingeTilt, angleBetween(axisA, axisB));
-      if (j.desc->limited) excess = std::max({0.0, j.desc->lower - angle, angle - j.desc->upper});
-    } else if (j.desc->limited) {
-      excess = std::max(0.0, angleBetween(axisA, axisB) - j.desc->coneAngle);
-    }
-    if (excess > m.limitExcess) m.limitExcess = excess, m.worstLimit = d.bones[j.desc->boneB].name;
-  }
-  return m;
+  return test::measurePose(d, joints, pose, kDt, corners);
 }
 
 struct Outcome {

@@ -86,59 +86,59 @@ void checkLectureLayout(const std::string& exe, const std::string& work) {
   const bool keep = std::getenv("PBA_UI_SCREENSHOTS") != nullptr;  // for looking at them
   std::string failures;  // every scene is measured, and every failure named at the end
   for (size_t index = 0; index < list.size(); ++index) try {
-    if (index > 0) {
-      lab.key("bracketright");
-      lab.waitFor([&](const json& s) { return s["scene"] == list[index]; }, "] to reach " + list[index]);
+      if (index > 0) {
+        lab.key("bracketright");
+        lab.waitFor([&](const json& s) { return s["scene"] == list[index]; }, "] to reach " + list[index]);
+      }
+      lab.frames(3);
+      lab.key("F12");
+      const json s = lab.waitFor(
+          [&](const json& st) {
+            return st["last_scene_image"].get<std::string>().find("-" + list[index] + "-") != std::string::npos;
+          },
+          "F12 to write " + list[index] + " alone");
+      const fs::path sceneImage = fs::path(work) / s["last_scene_image"].get<std::string>();
+      const Rect view{0, 0, vecAt(s["viewport"], 0), vecAt(s["viewport"], 1)};
+      double windowsArea = 0.0, largest = 0.0, panelWidth = 0.0;
+      auto all = windows(s);
+      for (const auto& [name, r] : all) {
+        windowsArea += r.intersect(view).area();
+        largest = std::max(largest, r.intersect(view).area());
+        if (name.find("###panel") != std::string::npos) panelWidth = r.width();
+      }
+      const double free = view.area() - windowsArea;
+      // The banner of a stubbed exercise or of the instability guard is an alert, on top by design; the notice
+      // is this check's own screenshot's, said for a few seconds.
+      std::erase_if(all, [](const auto& w) { return w.first == "##banner" || w.first == "##notice"; });
+      const Coverage cover = coverage(readPpm(sceneImage), all, view.width());
+      // Docked, not stacked: no window hides part of another (the legend under the panel did).
+      for (size_t a = 0; a < all.size(); ++a)
+        for (size_t b = a + 1; b < all.size(); ++b)
+          expect(all[a].second.intersect(all[b].second).area() <=
+                     0.01 * std::min(all[a].second.area(), all[b].second.area()),
+                 list[index] + ": the windows " + all[a].first + " and " + all[b].first + " overlap");
+      const double share = static_cast<double>(cover.coveredPixels) / std::max(cover.scenePixels, 1L);
+      std::printf(
+          "%-14s panel %.0f%% of the width; free %.0f%% of the screen, largest window %.0f%%; scene %.1f%% of the "
+          "picture, %.2f%% of it under windows (most under %s)\n",
+          list[index].c_str(), 100 * panelWidth / view.width(), 100 * free / view.area(), 100 * largest / view.area(),
+          100.0 * static_cast<double>(cover.scenePixels) / (view.area() > 0 ? view.area() : 1.0), 100 * share,
+          cover.worst.empty() ? "none" : cover.worst.c_str());
+      expect(cover.scenePixels > 0, list[index] + ": nothing of the scene in view");
+      expect(panelWidth <= 0.30 * view.width(), list[index] + ": the lecture panel takes more than 30 % of the width");
+      expect(free >= largest, list[index] + ": a window is larger than the part of the screen left to the scene");
+      expect(free >= 0.4 * view.area(), list[index] + ": the windows leave the scene less than 40 % of the screen");
+      expect(share <= kMaxCoveredShare, list[index] + ": " + std::to_string(cover.coveredPixels) + " of the scene's " +
+                                            std::to_string(cover.scenePixels) +
+                                            " pixels lie under windows (most under " + cover.worst + ")");
+      expect(s["clipped_labels"].empty(), list[index] + ": labels cut off by the panel: " + s["clipped_labels"].dump());
+      if (!keep) {
+        fs::remove(sceneImage);
+        fs::remove(fs::path(work) / s["last_screenshot"].get<std::string>());
+      }
+    } catch (const std::exception& e) {
+      failures += std::string(failures.empty() ? "" : "; ") + e.what();
     }
-    lab.frames(3);
-    lab.key("F12");
-    const json s = lab.waitFor(
-        [&](const json& st) {
-          return st["last_scene_image"].get<std::string>().find("-" + list[index] + "-") != std::string::npos;
-        },
-        "F12 to write " + list[index] + " alone");
-    const fs::path sceneImage = fs::path(work) / s["last_scene_image"].get<std::string>();
-    const Rect view{0, 0, vecAt(s["viewport"], 0), vecAt(s["viewport"], 1)};
-    double windowsArea = 0.0, largest = 0.0, panelWidth = 0.0;
-    auto all = windows(s);
-    for (const auto& [name, r] : all) {
-      windowsArea += r.intersect(view).area();
-      largest = std::max(largest, r.intersect(view).area());
-      if (name.find("###panel") != std::string::npos) panelWidth = r.width();
-    }
-    const double free = view.area() - windowsArea;
-    // The banner of a stubbed exercise or of the instability guard is an alert, on top by design; the notice
-    // is this check's own screenshot's, said for a few seconds.
-    std::erase_if(all, [](const auto& w) { return w.first == "##banner" || w.first == "##notice"; });
-    const Coverage cover = coverage(readPpm(sceneImage), all, view.width());
-    // Docked, not stacked: no window hides part of another (the legend under the panel did).
-    for (size_t a = 0; a < all.size(); ++a)
-      for (size_t b = a + 1; b < all.size(); ++b)
-        expect(all[a].second.intersect(all[b].second).area() <=
-                   0.01 * std::min(all[a].second.area(), all[b].second.area()),
-               list[index] + ": the windows " + all[a].first + " and " + all[b].first + " overlap");
-    const double share = static_cast<double>(cover.coveredPixels) / std::max(cover.scenePixels, 1L);
-    std::printf(
-        "%-14s panel %.0f%% of the width; free %.0f%% of the screen, largest window %.0f%%; scene %.1f%% of the "
-        "picture, %.2f%% of it under windows (most under %s)\n",
-        list[index].c_str(), 100 * panelWidth / view.width(), 100 * free / view.area(), 100 * largest / view.area(),
-        100.0 * static_cast<double>(cover.scenePixels) / (view.area() > 0 ? view.area() : 1.0), 100 * share,
-        cover.worst.empty() ? "none" : cover.worst.c_str());
-    expect(cover.scenePixels > 0, list[index] + ": nothing of the scene in view");
-    expect(panelWidth <= 0.30 * view.width(), list[index] + ": the lecture panel takes more than 30 % of the width");
-    expect(free >= largest, list[index] + ": a window is larger than the part of the screen left to the scene");
-    expect(free >= 0.4 * view.area(), list[index] + ": the windows leave the scene less than 40 % of the screen");
-    expect(share <= kMaxCoveredShare, list[index] + ": " + std::to_string(cover.coveredPixels) + " of the scene's " +
-                                          std::to_string(cover.scenePixels) + " pixels lie under windows (most under " +
-                                          cover.worst + ")");
-    expect(s["clipped_labels"].empty(), list[index] + ": labels cut off by the panel: " + s["clipped_labels"].dump());
-    if (!keep) {
-      fs::remove(sceneImage);
-      fs::remove(fs::path(work) / s["last_screenshot"].get<std::string>());
-    }
-  } catch (const std::exception& e) {
-    failures += std::string(failures.empty() ? "" : "; ") + e.what();
-  }
   expect(lab.close() == 0, "the lab did not exit cleanly");
   expect(failures.empty(), failures);
 }

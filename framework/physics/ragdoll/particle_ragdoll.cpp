@@ -275,8 +275,8 @@ std::size_t ParticleRagdoll::memoryBytes() const {
   const auto bytes = [](const auto& v) { return v.capacity() * sizeof(v[0]); };
   std::size_t n = sizeof(*this) + bytes(x_) + bytes(xOld_) + bytes(w_) + bytes(m_) + bytes(startVelocity_) +
                   bytes(bones_) + bytes(sticks_) + bytes(joints_) + bytes(pairs_) + bytes(jointedWith_) +
-                  bytes(touched_) + bytes(touchNormal_) + bytes(contacts_) +
-                  bytes(groundContacts_) + bytes(groundBones_);
+                  bytes(touched_) + bytes(touchNormal_) + bytes(contacts_) + bytes(groundContacts_) +
+                  bytes(groundBones_);
   for (const Joint& j : joints_) n += bytes(j.points);
   for (const std::vector<int>& v : jointedWith_) n += bytes(v);
   return n;

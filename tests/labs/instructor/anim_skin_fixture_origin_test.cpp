@@ -28,7 +28,7 @@ namespace {
 using pba::Real;
 using pba::Vec3;
 namespace an = pba::animation;
-namespace lab = pba::labs::animation;
+namespace lab = pba::lab;
 namespace fixture = pba::test::wuson_skin;
 
 /// Every mesh vertex of the Wuson at sample s (time duration·s/(kSamples−1)) by the node-tree route, in
