@@ -46,9 +46,21 @@ json sceneWithHandle(LabWindow& lab, const std::vector<std::string>& list, doubl
     lab.key("bracketright");
     lab.waitFor([&](const json& st) { return st["scene"] != current; }, "] to switch scenes");
   }
-  const std::vector<json> handles = freeHandles(lab.frames(3), margin);
+  const json s = lab.frames(3);
+  const std::vector<json> handles = freeHandles(s, margin);
   expect(!handles.empty(), best + ": its draggable objects left the screen");
-  return handles.front();
+  // The one farthest on screen from every other object, so that a click there can only mean it (a far
+  // rope's beads lie a few pixels apart, and the pick takes the nearest bead along the ray).
+  auto separation = [&](const json& h) {
+    double nearest = 1e30;
+    for (const json& o : s["handles"])
+      if (o["handle"] != h["handle"] && o["visible"] == true)
+        nearest = std::min(nearest, std::hypot(vecAt(o["pixel"], 0) - vecAt(h["pixel"], 0),
+                                               vecAt(o["pixel"], 1) - vecAt(h["pixel"], 1)));
+    return nearest;
+  };
+  return *std::max_element(handles.begin(), handles.end(),
+                           [&](const json& a, const json& b) { return separation(a) < separation(b); });
 }
 
 // A left drag moves the picked object `h` by the dragged distance: dx right and dy down on screen move it
