@@ -82,7 +82,6 @@ class RagdollScene : public app::Scene {
   Shown shown_ = Shown::Both;
   Real gravity_ = kStandardGravity;  ///< [m/s²]
   ragdoll::ParticleDrawOptions draw_;
-  bool drawConstraintContacts_ = false;
   Real restBound_ = 0.0;  ///< [J] ½ M (5 cm/s)²
   Rest particleRest_, constraintRest_;
   Real particleMs_ = 0.0, constraintMs_ = 0.0;

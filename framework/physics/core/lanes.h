@@ -47,7 +47,9 @@ struct Pair {
 #define PBA_PAIR_ARITHMETIC(op)                                                                          \
   inline Pair operator op(Pair a, Pair b) { return {{a.lane[0] op b.lane[0], a.lane[1] op b.lane[1]}}; } \
   inline Pair operator op(Pair a, Real b) { return {{a.lane[0] op b, a.lane[1] op b}}; }                 \
-  inline Pair operator op(Real a, Pair b) { return {{a op b.lane[0], a op b.lane[1]}}; }
+  inline Pair operator op(Real a, Pair b) { return {{a op b.lane[0], a op b.lane[1]}}; }                 \
+  inline Pair& operator op##=(Pair& a, Pair b) { return a = a op b; }                                    \
+  inline Pair& operator op##=(Pair& a, Real b) { return a = a op b; }
 PBA_PAIR_ARITHMETIC(+)
 PBA_PAIR_ARITHMETIC(-)
 PBA_PAIR_ARITHMETIC(*)
