@@ -12,8 +12,10 @@ when a scene that is not heavy is over the budget, else 0 (2 for a bad RUN.json)
 
 Pairing of a peer's row with ours: in the same binary, the rows that are not a peer's and end in the same
 case (the last part of the name: /136, /boxes3000, or a variant of ours of it: /boxes3000_soft_step); of
-those, the ones that share a word of the peer's benchmark name (BM_BulletHumans: BM_Humans/...) when any
-does. A row that times both in one process gives its own ratio as a counter ours_over_PEER (and the
+those, the ones of the same benchmark, else the ones that share a word of the peer's benchmark name
+(BM_BulletHumans: BM_Humans/...), when any does. A benchmark that runs ours and the peer as an argument
+(BM_SoftBodyCloth/peer:0/n:32/...) names ours by a label that starts with "ours"; its case is then every
+part of the name but that argument. A row that times both in one process gives its own ratio as a counter ours_over_PEER (and the
 peer's time as PEER_ms_per_step when it has it).
 """
 import argparse
@@ -39,6 +41,8 @@ def base(name):
 
 def case(name):
     parts = [p for p in name.split("/")[1:] if not DECORATIONS.search(p)]
+    if any(p.startswith("peer:") for p in parts):  # ours and the peer as an argument: the rest is the case
+        return "/".join(p for p in parts if not p.startswith("peer:"))
     return parts[-1] if parts else ""
 
 
@@ -47,10 +51,11 @@ def same_case_of(ours, peer):
     return ours == peer or (peer != "" and ours.startswith(peer + "_"))
 
 
-def peer_of(name):
-    """The peer a benchmark runs ('Bullet'), or None for ours; a comparison row (…Against…) is not a peer's."""
-    b = base(name)
-    if "Against" in b:
+def peer_of(row):
+    """The peer a benchmark row runs ('Bullet'), or None for ours; a comparison row (…Against…) is not a peer's,
+    nor a row of a peer's benchmark labelled as ours."""
+    b = base(row["name"])
+    if "Against" in b or (row.get("label") or "").startswith("ours"):
         return None
     return next((p for p in PEERS if p in words(b) or p in b), None)
 
@@ -74,15 +79,16 @@ def peer_rows(kernels):
             if "Against" in base(r["name"]) or ratios:
                 comparisons.append((binary, r, ratios))
                 together.append(r["name"])
-        ours = [r for r in rows if peer_of(r["name"]) is None and r["name"] not in together]
+        ours = [r for r in rows if peer_of(r) is None and r["name"] not in together]
         for r in rows:
-            peer = peer_of(r["name"])
+            peer = peer_of(r)
             if peer is None:
                 continue
             same_case = [o for o in ours if same_case_of(case(o["name"]), case(r["name"]))]
+            same_bench = [o for o in same_case if base(o["name"]) == base(r["name"])]
             shared = words(base(r["name"])) - {peer} - set(PEERS)
             closer = [o for o in same_case if words(base(o["name"])) & shared]
-            matched = closer or same_case
+            matched = same_bench or closer or same_case
             p = ms(r)
             pairs.append((binary, r, [(o, ms(o) / p if p and ms(o) is not None else None) for o in matched]))
     return pairs, comparisons
@@ -104,10 +110,14 @@ def runs_section(run, multiple):
         lines.append(f"| {r['id']} | {r.get('date', '?')} | {r.get('commit', '?')} | {r.get('preset', '?')} "
                      f"({r.get('build_type', '?')} `{r.get('flags', '')}`) | {r.get('compiler', '?')} | {machine} | "
                      f"{load} | {seconds} | {scope} |")
-    loads = [x for r in run["runs"] for x in (r.get("load_start"), r.get("load_end")) if x is not None]
-    if loads and max(loads) >= 1.0:
-        lines += ["", f"**Made under load** (load average up to {max(loads):.3g}): compare rows of one run only; "
-                      "these are not quiet-machine figures."]
+    # The benchmarks run one thread, which alone holds the load average near 1: the run is quiet while the
+    # load stays within the machine's cores (no other thread waited for one), under load beyond that.
+    busy = [(x, r.get("cores") or 1) for r in run["runs"] for x in (r.get("load_start"), r.get("load_end"))
+            if x is not None]
+    if any(load > cores for load, cores in busy):
+        top = max(load for load, _ in busy)
+        lines += ["", f"**Made under load** (load average up to {top:.3g}, more than the machine's cores): compare "
+                      "rows of one run only; these are not quiet-machine figures."]
     return lines + [""]
 
 

@@ -56,8 +56,8 @@ class BenchPage(unittest.TestCase):
             with open(os.path.join(kdir, binary + ".seconds"), "w", encoding="utf-8") as f:
                 f.write("17\n")
         done = tool("bench_run.py", "record", self.run_json, "--scenes", sdir, "--kernels", kdir, "--build", self.dir,
-                    "--commit", name, "--preset", "release", "--date", "2026-12-05", "--load-start", "3.5",
-                    "--filter", filter_, "--seconds", "42", "--frames", "600")
+                    "--commit", name, "--preset", "release", "--date", "2026-12-05",
+                    "--load-start", str((os.cpu_count() or 1) + 1.5), "--filter", filter_, "--seconds", "42", "--frames", "600")
         self.assertEqual(done.returncode, 0, done.stderr)
 
     def render(self):
@@ -82,7 +82,7 @@ class BenchPage(unittest.TestCase):
         for heading in ("## Run", "## Scenes", "## Peers", "## Kernels", "### pba_lab_bench"):
             self.assertIn(heading, text)
         self.assertIn("| a1 |", text)  # the commit
-        self.assertIn("**Made under load**", text)  # load average 3.5 at the start
+        self.assertIn("**Made under load**", text)  # a load average above the cores at the start
         # Not a manual-time benchmark: the CPU time (twice the real time here), with its counters.
         self.assertIn("| BM_Step/10 | 6 | us |  | success 1 |", text)
         self.assertIn("--benchmark_min_time=0.2` (17 s of the run)", text)
@@ -107,6 +107,11 @@ class BenchPage(unittest.TestCase):
             "pba_ik_kdl_bench": [bench("BM_Ours_Fabrik/10/min_time:0.300", 10.0, "us"),
                                  bench("BM_Kdl_Lma/10/min_time:0.300", 0.1, "ms"),
                                  bench("BM_Kdl_Lma/100/min_time:0.300", 1.0, "ms")],
+            "pba_cloth_softbody_bench": [
+                bench("BM_SoftBodyCloth/peer:0/n:32/sweeps:10", 1.0, label="ours PBD; stretch"),
+                bench("BM_SoftBodyCloth/peer:2/n:32/sweeps:10", 4.0, label="Bullet btSoftBody; stretch"),
+                bench("BM_SoftBodyCloth/peer:0/n:64/sweeps:10", 3.0, label="ours PBD; stretch"),
+                bench("BM_SoftBodyCloth/peer:2/n:64/sweeps:10", 5.0, label="Bullet btSoftBody; stretch")],
             "pba_rigid_bench": [bench("BM_Ours/boxes3000_soft_step/iterations:1" + manual, 15.0),
                                 bench("BM_Ours/boxes3000x/iterations:1" + manual, 1.0),
                                 bench("BM_Bullet/boxes3000/iterations:1" + manual, 20.0)]})
@@ -124,6 +129,12 @@ class BenchPage(unittest.TestCase):
         # A variant of ours of the peer's case (boxes3000_soft_step), not another case (boxes3000x): 15 / 20.
         self.assertIn("| BM_Ours/boxes3000_soft_step/iterations:1/manual_time | 15 | 0.75 |", peers)
         self.assertNotIn("boxes3000x", peers)
+        # Ours and the peer as an argument: ours by its label, the case every other argument (n:32 with n:32).
+        self.assertIn("| BM_SoftBodyCloth/peer:2/n:32/sweeps:10 | 8 | BM_SoftBodyCloth/peer:0/n:32/sweeps:10 | 2 | "
+                      "0.25 |", peers)
+        self.assertIn("| BM_SoftBodyCloth/peer:2/n:64/sweeps:10 | 10 | BM_SoftBodyCloth/peer:0/n:64/sweeps:10 | 6 | "
+                      "0.6 |", peers)
+        self.assertNotIn("| BM_SoftBodyCloth/peer:0/n:32/sweeps:10 | 2 | — (no case of ours)", peers)
 
     def test_bad_run_file(self):
         write(self.run_json, {"runs": []})
