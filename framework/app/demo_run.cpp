@@ -3,7 +3,7 @@
 // plays on from there (window_demo.cpp).
 #include <iostream>
 
-#include "app/demo_script.h"
+#include "app/runner/demo_script.h"
 #include "app/lab.h"
 
 namespace pba::app {
