@@ -335,7 +335,7 @@ pba_cmd_golden() {
   [[ $failed -eq 0 ]] || pba_die "golden trajectories: see the lines above"
 }
 
-# ./pba soak [MINUTES] [--seed N]: every lab's soak (app/soak_run.h) for MINUTES (default 60) of wall time,
+# ./pba soak [MINUTES] [--seed N]: every lab's soak (app/checks/soak_run.h) for MINUTES (default 60) of wall time,
 # as many labs at a time as there are cores; logs in build/soak/LAB.log. Fails on a failed soak, a crash
 # (a signal) or a hang (the lab still running 5 minutes after its time).
 pba_cmd_soak() {

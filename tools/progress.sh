@@ -1,5 +1,5 @@
 # Sourced by the driver's long jobs (./pba screenshots, ./pba bench): the same one-line progress as the
-# labs' (framework/app/progress_line.h): "[label] [#####      ] 12/52 scenes, 40 s elapsed, ~130 s left".
+# labs' (framework/app/runner/progress_line.h): "[label] [#####      ] 12/52 scenes, 40 s elapsed, ~130 s left".
 # On a terminal it redraws in place on stderr; piped, it prints a line per item.
 pba_progress_start() { PBA_PROGRESS_T0=$(date +%s); }
 # pba_progress LABEL DONE TOTAL UNIT

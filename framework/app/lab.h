@@ -4,8 +4,8 @@
 // 3 a headless run paused by the instability guard.
 #include <string>
 
-#include "app/command_line.h"
-#include "app/scene_runner.h"
+#include "app/runner/command_line.h"
+#include "app/runner/scene_runner.h"
 
 namespace pba::app {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "app/scene.h"
-#include "app/scene_registry.h"
+#include "app/runner/scene.h"
+#include "app/runner/scene_registry.h"
 #include "physics/animation/channel.h"
 #include "physics/animation/skeleton.h"
 

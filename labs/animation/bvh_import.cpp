@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/message_text.h"
+#include "app/runner/message_text.h"
 
 namespace pba::lab {
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <unordered_map>
 
-#include "app/resource_dir.h"
+#include "app/runner/resource_dir.h"
 #include "bvh_import.h"
 #include "graphics/model.h"
 #include "graphics/skinning.h"

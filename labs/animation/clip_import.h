@@ -10,7 +10,7 @@
 // (skinned or rigid, e.g. Debian assimp-testmodels' X/BCN_Epileptic.X) keeps them as the clip's skin.
 #include <string>
 
-#include "app/character_skin.h"
+#include "app/assets/character_skin.h"
 #include "physics/animation/clip.h"
 #include "physics/core/result.h"
 
@@ -21,7 +21,7 @@ struct ImportedClip {
   pba::animation::Clip clip;
   Real scale = 1.0;  ///< [m per file unit]
   std::string path;  ///< the file as opened
-  /// The file's meshes for the skeleton's joint frames (app/character_skin.h; joint j is node j), or an
+  /// The file's meshes for the skeleton's joint frames (app/assets/character_skin.h; joint j is node j), or an
   /// empty skin (null model) when the file has none, as BVH files never do.
   app::CharacterSkin skin;
 };

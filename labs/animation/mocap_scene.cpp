@@ -2,7 +2,7 @@
 // CMU 01_01.bvh shipped in resources/models/mocap; any BVH/FBX/glTF with an animation through --skeleton,
 // e.g. the project's humanoid, resources/models/humanoid.bvh), with the trajectory of one joint drawn
 // over the whole clip, and the file's meshes skinned by the played pose when it has any (e.g. the
-// Wuson, X/Testwuson.X; app/character_skin.h, the IK lab's character skin) (Workbook §2.7, advanced: "load an animated skeleton").
+// Wuson, X/Testwuson.X; app/assets/character_skin.h, the IK lab's character skin) (Workbook §2.7, advanced: "load an animated skeleton").
 #include <imgui.h>
 
 #include <memory>

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/cloth/solver.h"
 #include "physics/cloth/tearing.h"
 #include "physics/core/enum_names.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/hello/ball.h"
 
 namespace pba::lab {

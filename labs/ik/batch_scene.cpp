@@ -18,7 +18,7 @@
 #include <cstdio>
 #include <random>
 
-#include "app/character_rig.h"
+#include "app/assets/character_rig.h"
 #include "ik_scene.h"
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include <imgui.h>
 
-#include "app/character_rig.h"
+#include "app/assets/character_rig.h"
 #include "ik_scene.h"
 
 // --skeleton and --effectors pick the character scene over the batch-only flags (--solver, --links,

@@ -14,7 +14,7 @@
 
 #include <imgui.h>
 
-#include "app/overlay_window.h"
+#include "app/window/overlay_window.h"
 
 #include "ik_scene.h"
 

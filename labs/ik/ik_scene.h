@@ -1,7 +1,7 @@
 #pragma once
 // Shared base of the IK lab's interactive scenes: a rig (skeleton + effectors) solved every step
 // toward goals that the user drags with the mouse or that follow a scripted path (circle, figure-8,
-// random jumps) for lectures, or nudged with the arrow keys (app/target_nudge.h: the goal last
+// random jumps) for lectures, or nudged with the arrow keys (app/window/target_nudge.h: the goal last
 // picked moves). Draws bones as capsules, joints, rotation axes (hinges; ball joints on request),
 // limits as arcs and cones from the per-DOF ranges, goals and the effector's path over the
 // iterations of the last solve (ik_scene_draw.cpp); shows per-DOF angle bars with their limits
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "jacobian_view.h"
 #include "physics/core/enum_names.h"
 #include "physics/ik/builders.h"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene.h"
+#include "app/runner/scene.h"
 #include "physics/ik/jacobian.h"
 #include "physics/ik/solver.h"
 

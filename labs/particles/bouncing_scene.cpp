@@ -2,7 +2,7 @@
 // sphere and a box, bouncing lower each time and coming to rest without jitter (PART-5).
 #include <random>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "common.h"
 #include "physics/particles/spatial_hash.h"
 

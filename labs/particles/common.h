@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "app/scene.h"
+#include "app/runner/scene.h"
 #include "physics/collision/ray.h"
 #include "physics/ode/integrators.h"
 #include "physics/particles/collision.h"

@@ -6,7 +6,7 @@
 // the guard's finiteness test and the energy sums in one sweep,
 // instead of the emitter's update and the generic force-array path. Huge counts are drawn as a
 // subsample of points, coloured over life only for the drawn ones.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "common.h"
 #include "physics/particles/emitter.h"
 #include "physics/particles/kernels.h"

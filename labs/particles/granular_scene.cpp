@@ -3,7 +3,7 @@
 // against the floor and walls.
 #include <random>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "common.h"
 #include "physics/particles/spatial_hash.h"
 

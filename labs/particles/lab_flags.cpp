@@ -1,5 +1,5 @@
 // Lab flags of pba-particles: --integrator NAME and --particles N set the scene parameters of those names.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 
 PBA_REGISTER_LAB_FLAG("integrator", "integrator",
                       "time integrator: euler, symplectic-euler, midpoint, rk4, verlet, velocity-verlet, "

@@ -9,7 +9,7 @@
 
 #include <imgui.h>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "common.h"
 #include "physics/ode/oscillator.h"
 

@@ -10,7 +10,7 @@
 // difference of its positions over the steps (ode::pivotAccelerationFromPositions).
 #include <cmath>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "common.h"
 #include "physics/ode/pendulum.h"
 

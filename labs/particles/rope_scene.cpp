@@ -1,7 +1,7 @@
 // Particles lab, scene "rope": a light mass-spring rope and a heavy chain (with bending springs), each
 // pinned at one end; drag any particle with the left mouse button (it follows the cursor, pinned, and
 // is let go on release). Damped springs of PART-4 (Lobb notes).
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "common.h"
 #include "physics/springs/builders.h"
 

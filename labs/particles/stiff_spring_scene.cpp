@@ -6,7 +6,7 @@
 
 #include <imgui.h>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "common.h"
 #include "physics/springs/builders.h"
 #include "physics/springs/stability.h"

@@ -1,5 +1,5 @@
 // Ragdoll lab, scene "ball-limits": the paper's test 5.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 

@@ -1,5 +1,5 @@
 // Ragdoll lab, scene "boxes": the paper's test 1.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 

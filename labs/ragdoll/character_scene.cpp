@@ -3,7 +3,7 @@
 // with both methods side by side. The skeleton becomes boxes and joints in the library
 // (physics/ragdoll/skeleton_ragdoll.h); the file is read here (skeleton_import.h). Examples:
 //   pba-ragdoll --skeleton resources/models/mocap/01_01.bvh --frame 100
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "physics/ragdoll/constraint_ragdoll.h"
 #include "physics/ragdoll/particle_ragdoll.h"

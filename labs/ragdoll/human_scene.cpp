@@ -1,6 +1,6 @@
 // Ragdoll lab, scene "human" (the default): the paper's test 8, its 16-bone human (§5, table of part
 // sizes, mass ∝ volume, its joints and limits), dropped with both methods side by side.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cmath>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "physics/ragdoll/skeleton_ragdoll.h"
 

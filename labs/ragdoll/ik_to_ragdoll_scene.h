@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "app/character_rig.h"
+#include "app/assets/character_rig.h"
 #include "physics/ik/solver.h"
 #include "ragdoll_scene.h"
 

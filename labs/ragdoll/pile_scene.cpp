@@ -1,5 +1,5 @@
 // Ragdoll lab, scene "pile": several paper humans dropped onto stairs (fixed boxes), both methods.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/ragdoll/builders.h"
 #include "ragdoll_scene.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/scene.h"
+#include "app/runner/scene.h"
 #include "physics/core/enum_names.h"
 #include "physics/ragdoll/constraint_ragdoll.h"
 #include "physics/ragdoll/particle_ragdoll.h"

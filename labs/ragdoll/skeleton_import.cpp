@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "app/character_rig.h"  // resolveModelPath, shared with the IK lab
+#include "app/assets/character_rig.h"  // resolveModelPath, shared with the IK lab
 #include "graphics/model.h"
 #include "graphics/skinning.h"
 

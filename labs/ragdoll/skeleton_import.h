@@ -2,7 +2,7 @@
 // The ragdoll lab's bridge from a skeleton file (graphics/model.h: anything Assimp reads — BVH, FBX,
 // COLLADA, glTF) to the library's SkeletonJoint list (physics/ragdoll/skeleton_ragdoll.h): names,
 // parents and world positions, in the file's rest pose or in one frame of its first animation. The file
-// path resolves as in the IK lab (app/character_rig.h, resolveModelPath: also tried from the
+// path resolves as in the IK lab (app/assets/character_rig.h, resolveModelPath: also tried from the
 // repository root). The skeleton is scaled so that its rest pose is `height` tall (files come in m, cm or
 // inches) and moved so that its lowest joint is at y = 0 with the root above the origin.
 #include <string>

@@ -1,6 +1,6 @@
 // Rigid lab, scene "bench-boxes": Bullet's "3000 boxes" benchmark scene (47 layers of 8 × 8 cubes of
 // half extent 1 and mass 2) collapsing onto the ground; bench/rigid_bench.cpp times it against Bullet.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

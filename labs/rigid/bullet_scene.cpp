@@ -1,7 +1,7 @@
 // Rigid lab, scene "bullet": 1 cm spheres shot at 100 m/s at a 1 cm wall, two lanes side by side. In
 // the lane with continuous collision (time of impact) no shot passes; in the other, most do: in one
 // step of 1/60 s a shot travels 1.7 m, far past a wall 1 cm thick.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

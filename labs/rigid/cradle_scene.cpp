@@ -2,7 +2,7 @@
 // lifted and released. With restitution 1 the momentum passes along the row; below 1 the swing decays.
 #include <cmath>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

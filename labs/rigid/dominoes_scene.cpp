@@ -1,7 +1,7 @@
 // Rigid lab, scene "dominoes": a row of dominoes, the first one tipped; each falls onto the next.
 #include <cmath>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

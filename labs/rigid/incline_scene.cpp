@@ -3,7 +3,7 @@
 // closed form ½ a t².
 #include <cmath>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

@@ -3,7 +3,7 @@
 // bridge of planks on springs.
 #include <cmath>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

@@ -1,6 +1,6 @@
 // Rigid lab, scene "pile": about a thousand spheres, capsules, boxes and convex hulls rain onto the
 // ground and settle into a pile; islands go to sleep (grey) as they come to rest.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

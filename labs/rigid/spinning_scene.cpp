@@ -3,7 +3,7 @@
 // gyroscopic term shows this; switch it off and the handle spins on about a fixed axis.
 #include <cmath>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

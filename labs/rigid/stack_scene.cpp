@@ -1,6 +1,6 @@
 // Rigid lab, scene "stack": a column of 10 boxes and a pyramid with a base of 20 (210 boxes) stand still:
 // warm starting and soft contacts at work; the drift of the top boxes is the measure.
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "world_scene.h"
 
 namespace pba::lab {

@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include <glm/gtx/quaternion.hpp>
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 
 #include "physics/collision/raycast.h"
 #include "physics/rigid/tumble.h"

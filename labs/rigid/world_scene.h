@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "app/scene.h"
+#include "app/runner/scene.h"
 #include "physics/rigid/builders.h"
 #include "physics/rigid/world.h"
 

@@ -2,9 +2,9 @@
 // the differences list names what B changed; a session steps and rewinds both sides together.
 #include <gtest/gtest.h>
 
-#include "app/compare_run.h"
-#include "app/lab_session.h"
-#include "app/scene_runner.h"
+#include "app/runner/compare_run.h"
+#include "app/runner/scene_runner.h"
+#include "app/window/lab_session.h"
 #include "test_scenes.h"
 
 namespace pba::app {

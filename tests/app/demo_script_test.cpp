@@ -4,8 +4,8 @@
 
 #include <fstream>
 
-#include "app/demo_script.h"
-#include "app/scene_file.h"
+#include "app/runner/demo_script.h"
+#include "app/runner/scene_file.h"
 
 namespace pba::app {
 namespace {

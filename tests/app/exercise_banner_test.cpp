@@ -2,7 +2,7 @@
 // probes record every stub of the course, and the banner used to list all of them in every lab.
 #include <gtest/gtest.h>
 
-#include "app/exercise_catalog.h"
+#include "app/runner/exercise_catalog.h"
 
 namespace pba::app {
 namespace {

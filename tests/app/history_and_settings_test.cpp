@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/lab_settings.h"
-#include "app/plot_history.h"
+#include "app/window/lab_settings.h"
+#include "app/window/plot_history.h"
 
 namespace pba::app {
 namespace {

@@ -1,4 +1,4 @@
-// The extremes check (app/param_extremes.h) passes a sound scene and finds each defect it looks for:
+// The extremes check (app/checks/param_extremes.h) passes a sound scene and finds each defect it looks for:
 // a metric that turns NaN without the guard, a value of the declared range that validate() refuses.
 #include <cmath>
 #include <limits>
@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/param_extremes.h"
-#include "app/scene_registry.h"
+#include "app/checks/param_extremes.h"
+#include "app/runner/scene_registry.h"
 
 namespace pba::app {
 namespace {

@@ -9,8 +9,8 @@
 #include <limits>
 #include <memory>
 
-#include "app/scene.h"
-#include "app/scene_runner.h"
+#include "app/runner/scene.h"
+#include "app/runner/scene_runner.h"
 #include "physics/ode/integrators.h"
 #include "physics/particles/collision.h"
 #include "physics/particles/kernels.h"

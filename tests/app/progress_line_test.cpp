@@ -2,7 +2,7 @@
 // the remaining time extrapolated from the rate so far.
 #include <gtest/gtest.h>
 
-#include "app/progress_line.h"
+#include "app/runner/progress_line.h"
 
 namespace pba::app {
 namespace {

@@ -2,10 +2,10 @@
 // instability guard, determinism; and the command line parser.
 #include <gtest/gtest.h>
 
-#include "app/command_line.h"
 #include "app/lab.h"
-#include "app/scene_registry.h"
-#include "app/scene_runner.h"
+#include "app/runner/command_line.h"
+#include "app/runner/scene_registry.h"
+#include "app/runner/scene_runner.h"
 #include "support/fp_traps.h"
 #include "test_scenes.h"
 

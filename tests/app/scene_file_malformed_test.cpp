@@ -7,8 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "app/lab.h"
-#include "app/message_text.h"
-#include "app/scene_file.h"
+#include "app/runner/message_text.h"
+#include "app/runner/scene_file.h"
 #include "support/fp_traps.h"
 #include "test_scenes.h"
 

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/step_stats.h"
+#include "app/runner/step_stats.h"
 
 namespace {
 

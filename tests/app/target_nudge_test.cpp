@@ -1,10 +1,10 @@
-// The keyboard nudge of a scene's target (app/target_nudge.h): which keys nudge, in which direction
+// The keyboard nudge of a scene's target (app/window/target_nudge.h): which keys nudge, in which direction
 // relative to the camera, by how much, and that scenes without a target say so.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 
-#include "app/target_nudge.h"
+#include "app/window/target_nudge.h"
 #include "test_scenes.h"
 
 namespace pba::app {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "app/scene.h"
-#include "app/scene_runner.h"
+#include "app/runner/scene.h"
+#include "app/runner/scene_runner.h"
 
 namespace pba::app::testing {
 

@@ -3,7 +3,7 @@
 // placed beside their anchor and inside the free part of the window.
 #include <gtest/gtest.h>
 
-#include "app/lab_ui.h"
+#include "app/window/lab_ui.h"
 
 namespace pba::app {
 namespace {

@@ -1,11 +1,11 @@
-// Fuzz target: the command-line parser (app/command_line.h) with the particles lab's flags. The input
+// Fuzz target: the command-line parser (app/runner/command_line.h) with the particles lab's flags. The input
 // is split at line breaks into arguments. Besides no sanitizer report: an error is one line (the lab
 // prints it after "pba-LAB: "), and a parsed command line gives a frame count within the bounds.
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "app/command_line.h"
+#include "app/runner/command_line.h"
 #include "fuzz_check.h"
 
 using namespace pba;

@@ -1,4 +1,4 @@
-// Fuzz target: the BVH/skeleton path of the IK character (app/character_rig.h): the input is a BVH
+// Fuzz target: the BVH/skeleton path of the IK character (app/assets/character_rig.h): the input is a BVH
 // file; a rig that loads is solved once toward goals 10 cm from its effectors. Besides no sanitizer
 // report: an error is one line naming the field, and the solved pose is finite.
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "app/character_rig.h"
+#include "app/assets/character_rig.h"
 #include "fuzz_check.h"
 #include "physics/ik/solver.h"
 

@@ -1,11 +1,11 @@
-// Fuzz target: the scene-file loader and the parameter parser (app/scene_file.h, app/params.h) over
+// Fuzz target: the scene-file loader and the parameter parser (app/runner/scene_file.h, app/runner/params.h) over
 // the hello lab's scenes. Besides no sanitizer report: an error is one line naming the file; a file
 // that loads saves to JSON that loads again to the same JSON (round trip, docs/architecture.md §4);
 // any text given to any parameter is accepted or refused with one line naming the parameter.
 #include <cstdint>
 #include <string>
 
-#include "app/scene_file.h"
+#include "app/runner/scene_file.h"
 #include "fuzz_check.h"
 
 using namespace pba;

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/exercises/not_implemented.h"
 #include "physics/ik/solver.h"
 

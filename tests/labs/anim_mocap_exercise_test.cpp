@@ -230,7 +230,7 @@ TEST(MocapImport, FileWithoutAnimationOrUnreadableIsAnErrorNamingTheFile) {
 
 }  // namespace
 
-// The mocap scene's skin (app/character_skin.h): the file's mesh posed by the lab's own route (clip →
+// The mocap scene's skin (app/assets/character_skin.h): the file's mesh posed by the lab's own route (clip →
 // forward kinematics → joint frames → skinning matrices) against recorded vertex positions of the Wuson
 // (wuson_skin_fixture.h, which says where they come from), scaled like the lab's character.
 TEST(ANIM_3_MocapSkin, WusonMeshFollowsTheRecordedSkinOfTheFilesAnimation) {

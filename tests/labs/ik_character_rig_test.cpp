@@ -2,7 +2,7 @@
 // way human joints do. Checked with forward kinematics of the converted skeleton, not stored poses.
 #include <gtest/gtest.h>
 
-#include "app/character_rig.h"
+#include "app/assets/character_rig.h"
 
 namespace pba::app {
 namespace {

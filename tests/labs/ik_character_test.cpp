@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/character_rig.h"
+#include "app/assets/character_rig.h"
 
 namespace pba::app {
 namespace {

@@ -43,7 +43,7 @@ set_tests_properties(lab.ik.flag-order-does-not-pick-the-scene lab.ik.skeleton-m
                      lab.ik.batch-analytic-beyond-2-links-exits-2 lab.ik.batch-skeleton-without-effectors-exits-2
                      IK_1_AnalyticBatch.ReachesEveryGoalOfOneAndTwoLinkChains lab.ik.determinism-check-ignores-timing-keys
                      PROPERTIES LABELS "labs" TIMEOUT 120 SKIP_RETURN_CODE 77)
-# --pose-json (app/pose_json.h): the file's joints are the solved pose, checked from outside. Each goal's
+# --pose-json (app/runner/pose_json.h): the file's joints are the solved pose, checked from outside. Each goal's
 # joint lies as far from its goal as the solver's own residual says (the largest distance is the metric
 # "residual"), within 1 mm when the solve succeeded; every bone keeps the length it has at rest (frame 1).
 add_test(NAME lab.ik.pose-json-puts-the-effectors-on-their-goals COMMAND bash -c "for s in character two-bone chain; do \"$0\" --headless --scene $s --frames 1 --pose-json '${ik_work}/rest-'$s.json || exit 1; \"$0\" --headless --scene $s --frames 90 --pose-json '${ik_work}/pose-'$s.json --metrics '${ik_work}/pose-'$s-metrics.json || exit 1; python3 '${CMAKE_CURRENT_SOURCE_DIR}/check_pose_json.py' '${ik_work}/rest-'$s.json '${ik_work}/pose-'$s.json '${ik_work}/pose-'$s-metrics.json || exit 1; done" ${ik_exe})

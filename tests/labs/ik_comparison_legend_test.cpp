@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 
 namespace pba::lab {
 namespace {

@@ -1,4 +1,4 @@
-// The IK lab's scenes under the keyboard nudge (Scene::nudge, app/target_nudge.h): the goal last
+// The IK lab's scenes under the keyboard nudge (Scene::nudge, app/window/target_nudge.h): the goal last
 // picked moves by exactly the displacement, the scripted path stops, and the two-bone scene's pole
 // target can be picked and moved like a goal. Positions are read back through pick(), the same
 // interface the mouse uses.
@@ -6,8 +6,8 @@
 
 #include <functional>
 
-#include "app/lab_session.h"
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
+#include "app/window/lab_session.h"
 
 namespace pba::lab {
 namespace {

@@ -4,7 +4,7 @@
 // extreme would make every solve fail.
 #include <gtest/gtest.h>
 
-#include "app/scene_registry.h"
+#include "app/runner/scene_registry.h"
 #include "physics/core/format.h"
 
 namespace pba::lab {

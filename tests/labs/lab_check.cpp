@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/metrics_report.h"
+#include "app/runner/metrics_report.h"
 #include "graphics/screenshot.h"
 
 namespace {

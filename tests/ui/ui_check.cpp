@@ -1,7 +1,7 @@
 // UI checks of one lab window under Xvfb (issue 15), registered for every lab by tests/ui/CMakeLists.txt.
 // Usage: pba_ui_check CHECK LAB_EXE WORK_DIR
 // Each check drives the window with real X input (xdotool) and reads the effect from the status file
-// the window writes every frame (PBA_UI_STATUS, framework/app/ui_status.h). Expected values come from
+// the window writes every frame (PBA_UI_STATUS, framework/app/window/ui_status.h). Expected values come from
 // the check itself: the preset's own values over the defaults the window reported on arrival, the
 // pinhole camera model for a drag, the camera's rotate speed and zoom factor for orbit and wheel.
 #include <sys/wait.h>

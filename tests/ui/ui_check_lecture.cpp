@@ -1,6 +1,6 @@
 // The lecture-layout check (issue 35): lecture mode keeps the scene the largest thing on screen in every
 // scene, measured from the rendered image. F12 with the UI status on also writes the frame's scene alone
-// (framework/app/scene_image.h: no UI, no ground, a flat magenta background), so every pixel of that image
+// (framework/app/window/scene_image.h: no UI, no ground, a flat magenta background), so every pixel of that image
 // that is not the background is the scene's own; the windows of the same frame (the UI status) must leave
 // those pixels uncovered.
 #include <algorithm>
@@ -29,7 +29,7 @@ struct RgbImage {
   std::vector<unsigned char> rgb;  // rows top-down
 };
 
-/// A binary PPM (P6, 8 bits) as framework/app/scene_image.cpp writes it; throws if the file is none.
+/// A binary PPM (P6, 8 bits) as framework/app/window/scene_image.cpp writes it; throws if the file is none.
 RgbImage readPpm(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::string magic;

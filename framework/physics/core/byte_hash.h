@@ -1,6 +1,6 @@
 #pragma once
 // The project's one hash for "are these two states the same to the bit?": FNV-1a over 64 bits (Fowler,
-// Noll and Vo), fed byte by byte. The rewind check's fingerprint (app/state_fingerprint.h), the golden
+// Noll and Vo), fed byte by byte. The rewind check's fingerprint (app/checks/state_fingerprint.h), the golden
 // files' draw hashes and the determinism tests all use it. It is neither a hash-table hash for untrusted
 // keys nor cryptographic.
 #include <cstddef>

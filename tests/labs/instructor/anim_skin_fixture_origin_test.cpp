@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "../wuson_skin_fixture.h"
-#include "app/character_skin.h"
+#include "app/assets/character_skin.h"
 #include "clip_import.h"
 #include "graphics/model.h"
 #include "graphics/skinning.h"
