@@ -111,9 +111,9 @@ Pair distance2(const std::array<Pair, 3>& a, const Real* bx, const Real* by, con
 }
 }  // namespace
 
-// flatten: the grid's walk and the candidate test below are inlined into one loop nest (the walk called
-// the test once per run of entries, 5 runs a particle: a seventh of the build's instructions were those
-// calls).
+// flatten: the grid's walk and the candidate test below are inlined into one loop nest (the walk calls
+// the test once per run of entries, several runs a particle, and those calls cost a good share of the
+// build; docs/performance-cloth.md has the figures).
 [[gnu::flatten]] void SelfCollision::buildNearList(std::span<const Vec3> x) {
   const Real near = thickness_ + skin_;
   const Real near2 = near * near;

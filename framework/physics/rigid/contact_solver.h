@@ -66,8 +66,8 @@ struct SolverContactPoint {
 
 /// Which sides of a contact the solver works on. A side at rest (a static or sleeping body, or a
 /// kinematic one standing still: no inverse mass, no velocity) keeps zero velocity and displacement for
-/// the whole step, so its terms in the rows are zero and the impulses it would take are dropped; 84 % of
-/// the manifolds of 136 ragdolls on the ground are of this kind.
+/// the whole step, so its terms in the rows are zero and the impulses it would take are dropped; most
+/// manifolds of ragdolls on the ground are of this kind (docs/performance-ragdoll.md).
 enum class ContactSides : std::uint8_t { Both, OnlyA, OnlyB };
 
 /// A contact constraint as the solver sees it in one step (every field is written by prepareContact).
