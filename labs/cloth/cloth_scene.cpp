@@ -153,6 +153,10 @@ void ClothScene::reset() {
     buildError_.clear();
     cloth_ = std::move(built).value();
   }
+  if (const Status s = checkColliders(colliders_); !s) {  // a hull or mesh: no point query
+    buildError_ = s.error();
+    colliders_.clear();
+  }
   applyParams();
   solver_.reset();
   initialEnergy_ = clothEnergy(cloth_, env_, settings_.kind, settings_.bending);

@@ -92,7 +92,7 @@ class ComparisonScene final : public ClothScene {
     grid_.resolutionX = grid_.resolutionY = resolution_;
     grid_.width = grid_.height = 0.9;
     grid_.pins = GridPins::TopCorners;
-    colliders_.push_back(Collider{});
+    colliders_.push_back(Collider::plane());
     for (std::size_t k = 0; k < cloths_.size(); ++k) {
       grid_.center = Vec3((static_cast<Real>(k) - 1.5) * kGap, 1.6, 0.0);
       Result<Cloth> c = buildClothGrid(grid_, material_);

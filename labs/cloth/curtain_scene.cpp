@@ -40,7 +40,7 @@ class CurtainScene final : public ClothScene {
     grid_.axisV = Vec3(0.0, -1.0, 0.0);
     grid_.center = Vec3(kLeft + 0.5 * kWidth, kRailHeight - 0.9, 0.0);
     grid_.pins = GridPins::TopRow;
-    colliders_.push_back(Collider{});
+    colliders_.push_back(Collider::plane());
     return buildClothGrid(grid_, material_);
   }
   /// Width the rings span at time t [m]: full at t = 0, bunched to open_fraction at half the period.

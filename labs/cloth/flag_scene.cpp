@@ -48,7 +48,7 @@ class FlagScene final : public ClothScene {
       const auto i = static_cast<std::uint32_t>(j * grid_.resolutionX);
       pin(c.value(), i, c.value().position[i]);
     }
-    colliders_.push_back(Collider{});
+    colliders_.push_back(Collider::plane());
     return c;
   }
   void beforeStep(Real, Real t) override {

@@ -26,7 +26,7 @@ class HangingScene final : public ClothScene {
     grid_.width = grid_.height = 1.0;
     grid_.center = Vec3(0.0, 1.6, 0.0);
     grid_.pins = GridPins::TopCorners;
-    colliders_.push_back(Collider{});  // the floor
+    colliders_.push_back(Collider::plane());  // the floor
     return buildClothGrid(grid_, material_);
   }
 };

@@ -56,7 +56,7 @@ class SelfCollisionScene final : public ClothScene {
     grid_.axisV = Vec3(0.0, -1.0, 0.0);
     grid_.center = Vec3(0.0, 0.05 + 0.5 * grid_.height, 0.0);
     grid_.pins = GridPins::None;
-    colliders_.push_back(Collider{});
+    colliders_.push_back(Collider::plane());
     Result<Cloth> c = buildClothGrid(grid_, material_);
     if (!c) return c;
     // TMP's jitter: a tiny random offset out of the plane breaks the symmetry of the fall (seeded).

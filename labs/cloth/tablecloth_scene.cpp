@@ -28,9 +28,8 @@ class TableclothScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    Collider top{ColliderShape::Box, Vec3(0.0, kTableTop - kTableHalf.y, 0.0)};
-    top.halfExtents = kTableHalf;
-    colliders_ = {top, Collider{}};
+    colliders_ = {Collider::box(Vec3(0.0, kTableTop - kTableHalf.y, 0.0), Quat(1.0, 0.0, 0.0, 0.0), kTableHalf),
+                  Collider::plane()};
     grid_ = GridDesc{};
     grid_.layout = layout_;
     grid_.resolutionX = grid_.resolutionY = resolution_;
