@@ -40,13 +40,16 @@ inline const Vec3& centerOf(const Prepared& p) { return p.shape.pose.position; }
 inline bool clearOfPlane(const Vec3& normal, const Vec3& point, const Vec3& x, Real margin) {
   return glm::dot(normal, x - point) >= margin;
 }
+/// True when x lies outside the ball of radius r about `center`.
+inline bool clearOfBall(const Vec3& center, Real r, const Vec3& x) {
+  const Vec3 d = x - center;
+  return glm::dot(d, d) > r * r;
+}
 /// True when x is certainly farther than margin from the collider: above a plane (exact), outside the
 /// bounding sphere of the others.
 bool clearOf(const Prepared& p, const Vec3& x, Real margin) {
   if (p.c->shape.kind == ShapeKind::Plane) return clearOfPlane(p.shape.axis, centerOf(p), x, margin);
-  const Vec3 d = x - centerOf(p);
-  const Real r = p.bound + margin;
-  return glm::dot(d, d) > r * r;
+  return clearOfBall(centerOf(p), p.bound + margin, x);
 }
 
 Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth,
@@ -148,10 +151,11 @@ namespace {
   x[i] = projected;
 }
 
-/// Projects the particles `indexOf` names (those with inverse mass ≠ 0) out of collider p. The plane's
-/// clear test runs with its axis and centre held in registers: most queries end there. A particle's
-/// colliders are visited one after the other, so a pass that calls this collider by collider gives each
-/// particle exactly what visiting its colliders in turn would, provided that no particle is listed twice.
+/// Projects the particles `indexOf` names (those with inverse mass ≠ 0) out of collider p. The clear test
+/// runs with the plane's axis and centre, or the bounding ball's centre and radius, held in registers:
+/// most queries end there. A particle's colliders are visited one after the other, so a pass that calls
+/// this collider by collider gives each particle exactly what visiting its colliders in turn would,
+/// provided that no particle is listed twice.
 /// `indexOf(k)` names the k-th of `count` particles. (A callable rather than an iota view: clang 14,
 /// which builds the fuzz preset, cannot compile libstdc++ 12's <ranges>.)
 template <typename IndexOf>
@@ -169,7 +173,9 @@ void collideEach(const Prepared& p, std::size_t count, IndexOf indexOf, std::spa
     const Vec3 axis = p.shape.axis, center = centerOf(p);
     sweep([axis, center, margin](const Vec3& xi) { return clearOfPlane(axis, center, xi, margin); });
   } else {
-    sweep([&p, margin](const Vec3& xi) { return clearOf(p, xi, margin); });
+    const Vec3 center = centerOf(p);
+    const Real r = p.bound + margin;
+    sweep([center, r](const Vec3& xi) { return clearOfBall(center, r, xi); });
   }
 }
 

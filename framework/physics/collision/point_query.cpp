@@ -1,24 +1,10 @@
 #include "physics/collision/point_query.h"
 
-#include <algorithm>
-#include <cassert>
 #include <limits>
 
 #include "physics/exercises/not_implemented.h"
 
 namespace pba::collision {
-namespace {
-
-constexpr Real kMinDistance = 1e-12;  // [m] a point this close to a sphere's centre has no direction
-
-/// The ball of `radius` about `center`: the sphere's query, and the capsule's about its axis point.
-SurfacePoint ballSurface(const Vec3& center, Real radius, const Vec3& x) {
-  const Vec3 r = x - center;
-  const Real l = glm::length(r);
-  return {l - radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
-}
-
-}  // namespace
 
 SurfacePoint boxSurface([[maybe_unused]] const Vec3& halfExtents, [[maybe_unused]] const Vec3& p) {
   // BEGIN SOLUTION
@@ -47,33 +33,6 @@ PosedShape posed(const Shape& shape, const Transform& pose) {
   s.pose = {pose.position, glm::normalize(pose.rotation)};
   s.axis = s.pose.rotate(Vec3(0.0, 1.0, 0.0));
   return s;
-}
-
-Vec3 capsuleAxisPoint(const PosedShape& capsule, const Vec3& x) {
-  const Vec3& c = capsule.pose.position;
-  const Real h = capsule.shape->halfHeight;
-  return c + std::clamp(glm::dot(x - c, capsule.axis), -h, h) * capsule.axis;
-}
-
-SurfacePoint surfacePoint(const PosedShape& s, const Vec3& x) {
-  switch (s.shape->kind) {
-    case ShapeKind::Plane:
-      return {glm::dot(s.axis, x - s.pose.position), s.axis};
-    case ShapeKind::Sphere:
-      return ballSurface(s.pose.position, s.shape->radius, x);
-    case ShapeKind::Capsule:
-      return ballSurface(capsuleAxisPoint(s, x), s.shape->radius, x);
-    case ShapeKind::Box: {
-      SurfacePoint b = boxSurface(s.shape->halfExtents, s.pose.applyInverse(x));
-      b.normal = s.pose.rotate(b.normal);
-      return b;
-    }
-    case ShapeKind::Hull:
-    case ShapeKind::Mesh:
-      break;
-  }
-  assert(false && "surfacePoint: no point query for hulls and meshes (checkPointQueryShape)");
-  return {std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)};
 }
 
 SurfacePoint surfacePoint(const Shape& shape, const Transform& pose, const Vec3& x) {

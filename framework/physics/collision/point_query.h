@@ -14,6 +14,9 @@
 // A point at a sphere's centre or on a capsule's axis has no direction; it gets +y (the centre is as deep
 // as it gets, so any direction leads out at once). Hulls and triangle meshes have no point query:
 // checkPointQueryShape says so where a description names one.
+#include <algorithm>
+#include <cassert>
+#include <limits>
 #include <string>
 
 #include "physics/collision/shapes.h"
@@ -58,11 +61,43 @@ struct PosedShape {
 PosedShape posed(const Shape& shape, const Transform& pose);
 
 /// The closest point of a posed capsule's axis segment to the world point x.
-Vec3 capsuleAxisPoint(const PosedShape& capsule, const Vec3& x);
+inline Vec3 capsuleAxisPoint(const PosedShape& capsule, const Vec3& x) {
+  const Vec3& c = capsule.pose.position;
+  const Real h = capsule.shape->halfHeight;
+  return c + std::clamp(glm::dot(x - c, capsule.axis), -h, h) * capsule.axis;
+}
+
+/// The signed distance of x to the ball of `radius` about `center` and its outward normal (+y at the centre).
+inline SurfacePoint ballSurface(const Vec3& center, Real radius, const Vec3& x) {
+  constexpr Real kMinDistance = 1e-12;  // [m] a point this close to the centre has no direction
+  const Vec3 r = x - center;
+  const Real l = glm::length(r);
+  return {l - radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
+}
 
 /// The signed distance of the world point x to the surface of a posed plane, sphere, capsule or box and
 /// the outward normal there (world frame). Hulls and meshes: not answered (+∞, an assert in debug builds).
-SurfacePoint surfacePoint(const PosedShape& shape, const Vec3& x);
+/// Inline: the cloth's collider passes ask it for every particle near a collider.
+inline SurfacePoint surfacePoint(const PosedShape& s, const Vec3& x) {
+  switch (s.shape->kind) {
+    case ShapeKind::Plane:
+      return {glm::dot(s.axis, x - s.pose.position), s.axis};
+    case ShapeKind::Sphere:
+      return ballSurface(s.pose.position, s.shape->radius, x);
+    case ShapeKind::Capsule:
+      return ballSurface(capsuleAxisPoint(s, x), s.shape->radius, x);
+    case ShapeKind::Box: {
+      SurfacePoint b = boxSurface(s.shape->halfExtents, s.pose.applyInverse(x));
+      b.normal = s.pose.rotate(b.normal);
+      return b;
+    }
+    case ShapeKind::Hull:
+    case ShapeKind::Mesh:
+      break;
+  }
+  assert(false && "surfacePoint: no point query for hulls and meshes (checkPointQueryShape)");
+  return {std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)};
+}
 /// The same for a shape at a pose, prepared for this one query.
 SurfacePoint surfacePoint(const Shape& shape, const Transform& pose, const Vec3& x);
 
