@@ -59,12 +59,7 @@ class DrapeScene final : public ClothScene {
       if (!m) return Error{m.error()};
       return buildCloth(m.value(), material_);
     }
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = grid_.resolutionY = resolution_;
-    grid_.width = grid_.height = kSize;
-    grid_.center = Vec3(0.0, kDropHeight, 0.0);
-    grid_.pins = GridPins::None;
+    grid_ = squareGrid(kSize, Vec3(0.0, kDropHeight, 0.0), GridPins::None);
     return buildClothGrid(grid_, material_);
   }
 

@@ -32,12 +32,7 @@ class TearScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = grid_.resolutionY = resolution_;
-    grid_.width = grid_.height = 1.2;
-    grid_.center = Vec3(0.0, kClothHeight, 0.0);
-    grid_.pins = GridPins::None;
+    grid_ = squareGrid(1.2, Vec3(0.0, kClothHeight, 0.0), GridPins::None);
     Result<Cloth> c = buildClothGrid(grid_, material_);
     if (!c) return c;
     const int n = resolution_;
