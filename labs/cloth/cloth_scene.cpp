@@ -177,7 +177,7 @@ void ClothScene::reset() {
     buildError_.clear();
     cloth_ = std::move(built).value();
   }
-  if (const Status s = checkColliders(colliders_); !s) {  // a hull or mesh: no point query
+  if (const Status s = checkColliders(colliders_); !s) {  // a mesh: no point query
     buildError_ = s.error();
     colliders_.clear();
   }

@@ -123,7 +123,7 @@ Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real m
     return projectOutOfSphere(x, previous, centerOf(p), c.shape.radius + margin, mu);
   if (c.shape.kind == ShapeKind::Capsule)
     return projectOutOfSphere(x, previous, collision::capsuleAxisPoint(p.shape, x), c.shape.radius + margin, mu);
-  // Plane and box: the tangent sphere of radius R at the closest surface point (see the header).
+  // Plane, box and hull: the tangent sphere of radius R at the closest surface point (see the header).
   const Real R = std::max(1.0, -2.0 * s.distance);
   return projectOutOfSphere(x, previous, x - (s.distance + R) * s.normal, R + margin, mu);
 }

@@ -1,15 +1,15 @@
 #pragma once
-// Collisions of cloth particles with planes, spheres, capsules and boxes (collision shapes at poses, their
-// distances from collision/point_query.h), with Coulomb friction and the cloth's thickness, for every
-// solver alike: positions are projected out at the end of a (sub)step and friction removes tangential
-// motion in proportion to the penetration depth (Müller et al. 2007 §3.5; Macklin et al. 2014 "Unified
-// particle physics" §6.1). The force solvers then add Δx/h to the velocity, which is an inelastic
-// contact: a resting particle loses exactly the g h it gained in the step.
+// Collisions of cloth particles with planes, spheres, capsules, boxes and hulls (collision shapes at
+// poses, their distances from collision/point_query.h), with Coulomb friction and the cloth's thickness,
+// for every solver alike: positions are projected out at the end of a (sub)step and friction removes
+// tangential motion in proportion to the penetration depth (Müller et al. 2007 §3.5; Macklin et al. 2014
+// "Unified particle physics" §6.1). The force solvers then add Δx/h to the velocity, which is an
+// inelastic contact: a resting particle loses exactly the g h it gained in the step.
 //
 // Every shape reduces to the sphere of CLOTH-4: a capsule is the sphere of its radius about the closest
-// point of its axis (exact); a plane or a box is the sphere tangent at the particle's closest surface point
-// (centre x − (d + R) n for signed distance d and normal n, any R > 0), which projects to the same point
-// and gives friction the same normal, so the result is exact too.
+// point of its axis (exact); a plane, box or hull is the sphere tangent at the particle's closest surface
+// point (centre x − (d + R) n for signed distance d and normal n, any R > 0), which projects to the same
+// point and gives friction the same normal, so the result is exact too.
 #include <cstdint>
 #include <span>
 #include <string>
@@ -27,7 +27,7 @@ using collision::SurfacePoint;
 
 /// A collider: a collision shape at a pose (collision/shapes.h: a plane is local y = 0 with normal +y, a
 /// capsule runs along local y), which may move, with the cloth's friction against it. A rigid body's
-/// shape and pose serve as they are. Planes, spheres, capsules and boxes (checkColliders).
+/// shape and pose serve as they are. Any shape but a mesh (checkColliders).
 struct Collider {
   collision::Shape shape = collision::makePlane();
   /// The shape's frame in the world: its centre [m] (a point of a plane), e.g. (0, 0.6, 0), and rotation.
@@ -47,7 +47,7 @@ struct Collider {
   static Collider box(const Vec3& center, const Quat& rotation, const Vec3& halfExtents);
 };
 
-/// Success when every collider's shape has a point query (no hull, no mesh); else an error naming
+/// Success when every collider's shape has a point query (no mesh); else an error naming
 /// `field`[k].shape.
 Status checkColliders(std::span<const Collider> colliders, const std::string& field = "colliders");
 

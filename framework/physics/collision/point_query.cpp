@@ -1,6 +1,9 @@
 #include "physics/collision/point_query.h"
 
+#include <cmath>
 #include <limits>
+
+#include "physics/collision/closest_points.h"
 
 #include "physics/exercises/not_implemented.h"
 
@@ -27,6 +30,35 @@ SurfacePoint boxSurface([[maybe_unused]] const Vec3& halfExtents, [[maybe_unused
   // STUB: return exercises::notImplemented("CLOTH-7", SurfacePoint{std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)}, halfExtents, p);
 }
 
+SurfacePoint hullSurface(const ConvexHull& hull, const Vec3& p) {
+  SurfacePoint inside{-std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)};
+  Real best = std::numeric_limits<Real>::infinity();  // [m²] squared distance to the closest outside point
+  Vec3 closest(0.0), closestFace(0.0, 1.0, 0.0);
+  for (const HullFace& f : hull.faces) {
+    const Real height = glm::dot(f.normal, p) - f.offset;
+    if (height <= 0.0) {
+      if (height > inside.distance) inside = {height, f.normal};
+      continue;
+    }
+    // Above this face's plane: its polygon's closest point, the projection when that lands inside it.
+    const Vec3 q = p - height * f.normal;
+    bool within = true;
+    const std::size_t n = f.vertices.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& a = hull.vertices[f.vertices[k]];
+      const Vec3& b = hull.vertices[f.vertices[(k + 1) % n]];
+      if (glm::dot(glm::cross(b - a, q - a), f.normal) >= 0.0) continue;  // inside this edge's half-plane
+      within = false;
+      const Vec3 c = closestPointOnSegment(p, a, b);
+      if (const Real d2 = glm::dot(p - c, p - c); d2 < best) best = d2, closest = c, closestFace = f.normal;
+    }
+    if (within && height * height < best) best = height * height, closest = q, closestFace = f.normal;
+  }
+  if (!std::isfinite(best)) return inside;  // below every face plane: inside
+  const Real d = std::sqrt(best);
+  return {d, d > 0.0 ? (p - closest) / d : closestFace};
+}
+
 PosedShape posed(const Shape& shape, const Transform& pose) {
   PosedShape s;
   s.shape = &shape;
@@ -40,9 +72,8 @@ SurfacePoint surfacePoint(const Shape& shape, const Transform& pose, const Vec3&
 }
 
 Status checkPointQueryShape(const Shape& shape, const std::string& field) {
-  if (shape.kind == ShapeKind::Hull || shape.kind == ShapeKind::Mesh)
-    return Error{field + ": a " + shapeKindName(shape.kind) +
-                 " has no point query; use a plane, sphere, capsule or box"};
+  if (shape.kind == ShapeKind::Mesh)
+    return Error{field + ": a mesh has no point query (it has no inside); use a plane, sphere, capsule, box or hull"};
   return Status::success();
 }
 

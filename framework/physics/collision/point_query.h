@@ -1,6 +1,6 @@
 #pragma once
 // Point queries: how far a world point lies from a shape's surface (negative inside) and the outward unit
-// normal at the closest surface point, for planes, spheres, capsules and boxes at a pose (Ericson,
+// normal at the closest surface point, for planes, spheres, capsules, boxes and hulls at a pose (Ericson,
 // Real-Time Collision Detection §5.1: the closest point of a segment §5.1.2 and of a box §5.1.3). The
 // cloth's colliders (cloth/colliders.h) are shapes at poses and ask these queries for every particle.
 //
@@ -11,8 +11,9 @@
 //    −h, h) a with a = q ŷ (exact: the capsule is the set of points within r of that segment);
 //  - box: CLOTH-7 in the box's frame, the point rotated in with the conjugate rotation and the normal
 //    rotated back out.
+//  - hull: hullSurface in the hull's frame, rotated in and out as the box.
 // A point at a sphere's centre or on a capsule's axis has no direction; it gets +y (the centre is as deep
-// as it gets, so any direction leads out at once). Hulls and triangle meshes have no point query:
+// as it gets, so any direction leads out at once). Triangle meshes have no point query (no inside):
 // checkPointQueryShape says so where a description names one.
 #include <algorithm>
 #include <cassert>
@@ -50,6 +51,13 @@ struct SurfacePoint {
 // *****
 SurfacePoint boxSurface(const Vec3& halfExtents, const Vec3& p);
 
+/// The same for a convex hull, p in the hull's frame. Inside (below every face plane) the nearest face
+/// plane is the nearest surface: the distance is the largest of n·p − offset, along that face's normal.
+/// Outside, the closest surface point lies on a face whose plane p is above: per such face, p projected
+/// onto the plane if that lands inside the polygon, else the closest point of its edges (Ericson §5.1.2);
+/// the normal points from the closest of them to p.
+SurfacePoint hullSurface(const ConvexHull& hull, const Vec3& p);
+
 /// A shape at a pose, made ready for many point queries: the rotation normalised once (a pose built from
 /// rounded angles still gives unit normals) and its local y axis in world coordinates (a plane's normal,
 /// a capsule's axis). Refers to `shape`, which must outlive it.
@@ -75,8 +83,8 @@ inline SurfacePoint ballSurface(const Vec3& center, Real radius, const Vec3& x) 
   return {l - radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
 }
 
-/// The signed distance of the world point x to the surface of a posed plane, sphere, capsule or box and
-/// the outward normal there (world frame). Hulls and meshes: not answered (+∞, an assert in debug builds).
+/// The signed distance of the world point x to the surface of a posed plane, sphere, capsule, box or hull and
+/// the outward normal there (world frame). Meshes: not answered (+∞, an assert in debug builds).
 /// Inline: the cloth's collider passes ask it for every particle near a collider.
 inline SurfacePoint surfacePoint(const PosedShape& s, const Vec3& x) {
   switch (s.shape->kind) {
@@ -91,17 +99,22 @@ inline SurfacePoint surfacePoint(const PosedShape& s, const Vec3& x) {
       b.normal = s.pose.rotate(b.normal);
       return b;
     }
-    case ShapeKind::Hull:
+    case ShapeKind::Hull: {
+      SurfacePoint h = hullSurface(*s.shape->hull, s.pose.applyInverse(x));
+      h.normal = s.pose.rotate(h.normal);
+      return h;
+    }
     case ShapeKind::Mesh:
       break;
   }
-  assert(false && "surfacePoint: no point query for hulls and meshes (checkPointQueryShape)");
+  assert(false && "surfacePoint: no point query for meshes (checkPointQueryShape)");
   return {std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)};
 }
 /// The same for a shape at a pose, prepared for this one query.
 SurfacePoint surfacePoint(const Shape& shape, const Transform& pose, const Vec3& x);
 
-/// Success when `shape` has a point query (plane, sphere, capsule, box); else an error naming `field`.
+/// Success when `shape` has a point query (plane, sphere, capsule, box, hull); else (a mesh, open, with no
+/// inside) an error naming `field`.
 Status checkPointQueryShape(const Shape& shape, const std::string& field);
 
 }  // namespace pba::collision

@@ -1,6 +1,7 @@
 // A cloth collider is a collision shape at a pose, so a rigid body's shape and pose serve as one: particles
 // projected out of colliders taken from a rigid::World's bodies (a sphere, a capsule and a box, rotated and
-// moving) end exactly where the same colliders written by hand put them. Not an exercise test: both sides
+// moving) end exactly where the same colliders written by hand put them; a hull (a convex body of the
+// rigid world) projects as the plane and the box do; a mesh is refused. Not an exercise test: both sides
 // run CLOTH-4's projection and CLOTH-7's box distance the same way (skipped in the hand-out while either
 // is a stub).
 #include <random>
@@ -67,13 +68,31 @@ TEST(ClothRigidColliders, ABodysShapeAndPoseCollideAsTheSameColliderWrittenByHan
   }
 }
 
-TEST(ClothRigidColliders, AHullOrMeshBodyIsRefusedAsAColliderWithItsIndex) {
+TEST(ClothRigidColliders, AHullProjectsAParticleOntoItsSurfacePlusTheMarginAlongItsNormal) {
+  // A tetrahedron tilted at a pose; a particle just under its slanted face moves out along that face's
+  // normal to the margin (frictionless: no tangential change), as the plane and the box do.
   const collision::Shape hull = collision::makeHull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).value();
-  const std::vector<Collider> colliders = {Collider::plane(), Collider{hull, {}}};
+  Collider c{hull, {Vec3(0.2, 0.5, -0.1), glm::angleAxis(0.4, glm::normalize(Vec3(1.0, 0.0, 1.0)))}};
+  c.friction = 0.0;
+  const Real margin = 0.01;
+  const Vec3 n = c.pose.rotate(glm::normalize(Vec3(1.0)));  // the face x + y + z = 1
+  const Vec3 x = c.pose.apply(Vec3(1.0 / 3.0)) - 0.02 * n;  // 2 cm under the face's centre
+  const SurfacePoint s = closestSurface(c, x);
+  ASSERT_NEAR(s.distance, -0.02, 1e-12);
+  const Vec3 out = collide(c, x, x + 0.1 * s.normal, margin, 0.01);
+  EXPECT_NEAR(glm::length(out - (x + (0.02 + margin) * n)), 0.0, 1e-12);
+  EXPECT_NEAR(closestSurface(c, out).distance, margin, 1e-12);
+}
+
+TEST(ClothRigidColliders, AMeshBodyIsRefusedAsAColliderWithItsIndex) {
+  collision::Shape mesh;
+  mesh.kind = collision::ShapeKind::Mesh;  // the check reads the kind only
+  const collision::Shape hull = collision::makeHull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).value();
+  const std::vector<Collider> colliders = {Collider::plane(), Collider{hull, {}}, Collider{mesh, {}}};
   const Status s = checkColliders(colliders);
   ASSERT_FALSE(s.ok());
-  EXPECT_EQ(s.error().rfind("colliders[1].shape: a hull", 0), 0u) << s.error();
-  EXPECT_TRUE(checkColliders(std::vector<Collider>{Collider::plane(), Collider::sphere(Vec3(0.0), 1.0)}).ok());
+  EXPECT_EQ(s.error().rfind("colliders[2].shape: a mesh", 0), 0u) << s.error();
+  EXPECT_TRUE(checkColliders(std::span(colliders).first(2)).ok());
 }
 
 }  // namespace

@@ -1,10 +1,14 @@
 // Point queries (collision/point_query.h) against closed forms: points placed at a chosen distance along a
 // chosen direction from a rotated plane, a sphere, the side and the end of a capsule's segment, and a box's
-// face, edge and corner. The box's distance in its frame is CLOTH-7 (its own tests are in
+// face, edge and corner; a hull's against GJK (outside) and EPA (inside) between it and a point. The box's distance in its frame is CLOTH-7 (its own tests are in
 // tests/physics/cloth/cloth_box_exercise_test.cpp): the box cases here check only the pose around it and
 // skip in the hand-out while it is a stub.
+#include <cmath>
+#include <random>
+
 #include <gtest/gtest.h>
 
+#include "physics/collision/gjk.h"
 #include "physics/collision/point_query.h"
 #include "support/expect_helpers.h"
 
@@ -76,20 +80,50 @@ TEST(PointQuery, BeyondARotatedBoxsEdgeAndCornerTheDistanceIsEuclideanInTheWorld
   EXPECT_VEC3_NEAR(e.normal, kTilt * edgeOut, 1e-14);
 }
 
-TEST(PointQuery, HullsAndMeshesHaveNoPointQueryAndTheCheckNamesTheField) {
+TEST(PointQuery, AHullsDistanceIsGjkOutsideAndEpaInsideWithTheNormalAlongTheClosestPoints) {
+  // An irregular hull (a squashed, skewed octahedron with a cut corner) at a pose; points all around it.
+  const Shape hull = makeHull({{0.5, 0.0, 0.0},
+                               {-0.4, 0.1, 0.0},
+                               {0.0, 0.3, 0.1},
+                               {0.1, -0.35, 0.0},
+                               {0.0, 0.0, 0.45},
+                               {0.05, 0.0, -0.3},
+                               {0.3, 0.2, 0.2}})
+                         .value();
+  const Transform pose{Vec3(0.2, 0.9, -0.4), kTilt};
+  ConvexProxy point;  // a point: one vertex, no radius
+  point.count = 1;
+  const ConvexProxy body = makeProxy(hull);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<Real> u(-0.5, 0.5);
+  int inside = 0, outside = 0;
+  for (int k = 0; k < 600; ++k) {
+    const Vec3 x = pose.position + Vec3(u(random), u(random), u(random));
+    const SurfacePoint s = surfacePoint(hull, pose, x);
+    const SignedDistance reference = signedDistance(body, pose, point, Transform{x, Quat(1.0, 0.0, 0.0, 0.0)});
+    ASSERT_TRUE(reference.valid);
+    SCOPED_TRACE(::testing::Message() << "point " << k << " separation " << reference.separation);
+    EXPECT_NEAR(s.distance, reference.separation, 1e-9);
+    EXPECT_NEAR(glm::length(s.normal), 1.0, 1e-12);
+    // The normal leads from the hull to the point (GJK's and EPA's normal from A to B).
+    if (std::abs(reference.separation) > 1e-6) EXPECT_VEC3_NEAR(s.normal, reference.normal, 1e-7);
+    ++(s.distance < 0.0 ? inside : outside);
+  }
+  EXPECT_GT(inside, 20);
+  EXPECT_GT(outside, 200);
+}
+
+TEST(PointQuery, MeshesHaveNoPointQueryAndTheCheckNamesTheField) {
   EXPECT_TRUE(checkPointQueryShape(makePlane(), "c").ok());
   EXPECT_TRUE(checkPointQueryShape(makeSphere(1.0).value(), "c").ok());
   EXPECT_TRUE(checkPointQueryShape(makeCapsule(1.0, 0.5).value(), "c").ok());
   EXPECT_TRUE(checkPointQueryShape(makeBox(Vec3(0.5)).value(), "c").ok());
-  const Shape hull = makeHull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).value();
-  const Status h = checkPointQueryShape(hull, "drape.colliders[0].shape");
-  ASSERT_FALSE(h.ok());
-  EXPECT_EQ(h.error().rfind("drape.colliders[0].shape: a hull", 0), 0u) << h.error();
+  EXPECT_TRUE(checkPointQueryShape(makeHull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).value(), "c").ok());
   Shape mesh;
   mesh.kind = ShapeKind::Mesh;  // the check reads the kind only
-  const Status m = checkPointQueryShape(mesh, "floor");
+  const Status m = checkPointQueryShape(mesh, "drape.colliders[1].shape");
   ASSERT_FALSE(m.ok());
-  EXPECT_EQ(m.error().rfind("floor: a mesh", 0), 0u) << m.error();
+  EXPECT_EQ(m.error().rfind("drape.colliders[1].shape: a mesh", 0), 0u) << m.error();
 }
 
 }  // namespace
