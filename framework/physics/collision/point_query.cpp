@@ -1,5 +1,6 @@
 #include "physics/collision/point_query.h"
 
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -57,6 +58,16 @@ SurfacePoint hullSurface(const ConvexHull& hull, const Vec3& p) {
   if (!std::isfinite(best)) return inside;  // below every face plane: inside
   const Real d = std::sqrt(best);
   return {d, d > 0.0 ? (p - closest) / d : closestFace};
+}
+
+SurfacePoint hullSurfacePoint(const PosedShape& s, const Vec3& x) {
+  if (s.shape->kind != ShapeKind::Hull) {
+    assert(false && "surfacePoint: no point query for meshes (checkPointQueryShape)");
+    return {std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)};
+  }
+  SurfacePoint h = hullSurface(*s.shape->hull, s.pose.applyInverse(x));
+  h.normal = s.pose.rotate(h.normal);
+  return h;
 }
 
 PosedShape posed(const Shape& shape, const Transform& pose) {

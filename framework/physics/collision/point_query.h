@@ -16,8 +16,6 @@
 // as it gets, so any direction leads out at once). Triangle meshes have no point query (no inside):
 // checkPointQueryShape says so where a description names one.
 #include <algorithm>
-#include <cassert>
-#include <limits>
 #include <string>
 
 #include "physics/collision/shapes.h"
@@ -83,6 +81,9 @@ inline SurfacePoint ballSurface(const Vec3& center, Real radius, const Vec3& x) 
   return {l - radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
 }
 
+/// surfacePoint's hull case, out of line (the inline cases stay small); a mesh: +∞ (an assert in debug builds).
+SurfacePoint hullSurfacePoint(const PosedShape& hull, const Vec3& x);
+
 /// The signed distance of the world point x to the surface of a posed plane, sphere, capsule, box or hull and
 /// the outward normal there (world frame). Meshes: not answered (+∞, an assert in debug builds).
 /// Inline: the cloth's collider passes ask it for every particle near a collider.
@@ -99,16 +100,11 @@ inline SurfacePoint surfacePoint(const PosedShape& s, const Vec3& x) {
       b.normal = s.pose.rotate(b.normal);
       return b;
     }
-    case ShapeKind::Hull: {
-      SurfacePoint h = hullSurface(*s.shape->hull, s.pose.applyInverse(x));
-      h.normal = s.pose.rotate(h.normal);
-      return h;
-    }
+    case ShapeKind::Hull:
     case ShapeKind::Mesh:
       break;
   }
-  assert(false && "surfacePoint: no point query for meshes (checkPointQueryShape)");
-  return {std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)};
+  return hullSurfacePoint(s, x);
 }
 /// The same for a shape at a pose, prepared for this one query.
 SurfacePoint surfacePoint(const Shape& shape, const Transform& pose, const Vec3& x);
