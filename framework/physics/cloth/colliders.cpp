@@ -158,24 +158,35 @@ namespace {
 /// provided that no particle is listed twice.
 /// `indexOf(k)` names the k-th of `count` particles. (A callable rather than an iota view: clang 14,
 /// which builds the fuzz preset, cannot compile libstdc++ 12's <ranges>.)
+/// One sweep of collideEach with its clear test; out of line, so that each test's loop has the registers
+/// to itself (inlined together, the plane's loop kept its axis and centre on the stack).
+template <typename IndexOf, typename Clear>
+[[gnu::noinline]] void sweepParticles(const Prepared& p, std::size_t count, IndexOf indexOf, Clear clear,
+                                      std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> inverseMass,
+                                      Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
+                                      CollisionPassStats& stats) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = indexOf(k);
+    if (inverseMass[i] != 0.0 && !clear(x[i]))
+      collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
+  }
+}
+
 template <typename IndexOf>
 void collideEach(const Prepared& p, std::size_t count, IndexOf indexOf, std::span<Vec3> x, std::span<const Vec3> xPrev,
                  std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
                  CollisionPassStats& stats) {
-  auto sweep = [&](auto clear) {
-    for (std::size_t k = 0; k < count; ++k) {
-      const std::size_t i = indexOf(k);
-      if (inverseMass[i] != 0.0 && !clear(x[i]))
-        collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
-    }
-  };
   if (p.c->shape.kind == ShapeKind::Plane) {
     const Vec3 axis = p.shape.axis, center = centerOf(p);
-    sweep([axis, center, margin](const Vec3& xi) { return clearOfPlane(axis, center, xi, margin); });
+    sweepParticles(
+        p, count, indexOf, [axis, center, margin](const Vec3& xi) { return clearOfPlane(axis, center, xi, margin); }, x,
+        xPrev, inverseMass, margin, h, velocities, frictionScale, stats);
   } else {
     const Vec3 center = centerOf(p);
     const Real r = p.bound + margin;
-    sweep([center, r](const Vec3& xi) { return clearOfBall(center, r, xi); });
+    sweepParticles(
+        p, count, indexOf, [center, r](const Vec3& xi) { return clearOfBall(center, r, xi); }, x, xPrev, inverseMass,
+        margin, h, velocities, frictionScale, stats);
   }
 }
 
