@@ -14,8 +14,8 @@
 #include <memory>
 #include <string>
 
-#include "app/window/overlay_window.h"
 #include "app/runner/scene_registry.h"
+#include "app/window/overlay_window.h"
 #include "common.h"
 #include "physics/ode/oscillator.h"
 
