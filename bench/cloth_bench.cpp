@@ -285,7 +285,7 @@ void BM_XpbdRibbonSelfCollision(benchmark::State& state) {
   s.selfCollisionNearList = state.range(0) != 2;
   ClothEnvironment env;
   env.massDamping = 0.1;
-  const std::vector<Collider> floor{Collider{}};
+  const std::vector<Collider> floor{Collider::plane()};
   ClothSolver solver;
   Real t = 0.0;
   for (auto _ : state) {

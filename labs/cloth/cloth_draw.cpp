@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cloth_scene.h"
+#include "physics/collision/shape_draw.h"
 
 namespace pba::lab {
 
@@ -131,23 +132,7 @@ void ClothScene::drawCloth(DebugDraw& d, const Cloth& c, const Color& base) cons
 }
 
 void ClothScene::drawColliders(DebugDraw& d) const {
-  for (const Collider& c : colliders_) {
-    switch (c.shape) {
-      case ColliderShape::Plane:
-        break;  // the renderer's ground grid shows the floor at y = 0
-      case ColliderShape::Sphere:
-        d.sphere(c.center, c.radius, kCollider);
-        break;
-      case ColliderShape::Capsule: {
-        const Vec3 axis = glm::normalize(c.orientation) * Vec3(0.0, c.halfLength, 0.0);
-        d.capsule(c.center - axis, c.center + axis, c.radius, kCollider);
-        break;
-      }
-      case ColliderShape::Box:
-        d.box(c.center, c.halfExtents, c.orientation, kCollider);
-        break;
-    }
-  }
+  for (const Collider& c : colliders_) collision::drawShape(d, c.shape, c.pose, kCollider);
 }
 
 void ClothScene::draw(DebugDraw& d) const {

@@ -142,6 +142,30 @@ void ClothScene::applyParams() {
   for (Collider& c : colliders_) c.friction = friction_;
 }
 
+GridDesc ClothScene::squareGrid(Real side, const Vec3& center, GridPins pins) const {
+  GridDesc g;
+  g.layout = layout_;
+  g.resolutionX = g.resolutionY = resolution_;
+  g.width = g.height = side;
+  g.center = center;
+  g.pins = pins;
+  return g;
+}
+
+GridDesc ClothScene::hangingGrid(int nx, int ny, Real width, Real height, const Vec3& center, GridPins pins) const {
+  GridDesc g;
+  g.layout = layout_;
+  g.resolutionX = nx;
+  g.resolutionY = ny;
+  g.width = width;
+  g.height = height;
+  g.axisU = Vec3(1.0, 0.0, 0.0);
+  g.axisV = Vec3(0.0, -1.0, 0.0);
+  g.center = center;
+  g.pins = pins;
+  return g;
+}
+
 void ClothScene::reset() {
   colliders_.clear();
   applyParams();
@@ -152,6 +176,10 @@ void ClothScene::reset() {
   } else {
     buildError_.clear();
     cloth_ = std::move(built).value();
+  }
+  if (const Status s = checkColliders(colliders_); !s) {  // a mesh: no point query
+    buildError_ = s.error();
+    colliders_.clear();
   }
   applyParams();
   solver_.reset();

@@ -54,6 +54,12 @@ class ClothScene : public app::Scene {
   virtual void beforeStep(Real /*dt*/, Real /*t*/) {}
   /// Extra drawing (rails, poles, markers) after the cloth.
   virtual void drawExtras(DebugDraw& /*d*/) const {}
+  /// A horizontal square grid (GridDesc's axes) of resolution_ × resolution_ particles in the layout_
+  /// parameter's springs: side [m], centre [m], pins.
+  cloth::GridDesc squareGrid(Real side, const Vec3& center, cloth::GridPins pins) const;
+  /// A hanging grid (rows along +x, row 0 on top: v̂ = −y) of nx × ny particles in the layout_ parameter's
+  /// springs: width and height [m], centre [m], pins.
+  cloth::GridDesc hangingGrid(int nx, int ny, Real width, Real height, const Vec3& center, cloth::GridPins pins) const;
   /// Declares the display toggles; scenes call it after their own parameters.
   void declareDisplayParams();
   /// Applies the live parameters (stiffness, compliance, damping, gravity, thickness) to the material,

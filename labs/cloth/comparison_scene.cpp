@@ -90,14 +90,9 @@ class ComparisonScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = grid_.resolutionY = resolution_;
-    grid_.width = grid_.height = 0.9;
-    grid_.pins = GridPins::TopCorners;
-    colliders_.push_back(Collider{});
+    colliders_.push_back(Collider::plane());
     for (std::size_t k = 0; k < cloths_.size(); ++k) {
-      grid_.center = Vec3((static_cast<Real>(k) - 1.5) * kGap, 1.6, 0.0);
+      grid_ = squareGrid(0.9, Vec3((static_cast<Real>(k) - 1.5) * kGap, 1.6, 0.0), GridPins::TopCorners);
       Result<Cloth> c = buildClothGrid(grid_, material_);
       if (!c) return c;
       cloths_[k] = std::move(c).value();

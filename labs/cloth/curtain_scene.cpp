@@ -30,17 +30,9 @@ class CurtainScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = resolution_;
-    grid_.resolutionY = resolution_;
-    grid_.width = kWidth;
-    grid_.height = 1.8;
-    grid_.axisU = Vec3(1.0, 0.0, 0.0);
-    grid_.axisV = Vec3(0.0, -1.0, 0.0);
-    grid_.center = Vec3(kLeft + 0.5 * kWidth, kRailHeight - 0.9, 0.0);
-    grid_.pins = GridPins::TopRow;
-    colliders_.push_back(Collider{});
+    grid_ = hangingGrid(resolution_, resolution_, kWidth, 1.8, Vec3(kLeft + 0.5 * kWidth, kRailHeight - 0.9, 0.0),
+                        GridPins::TopRow);
+    colliders_.push_back(Collider::plane());
     return buildClothGrid(grid_, material_);
   }
   /// Width the rings span at time t [m]: full at t = 0, bunched to open_fraction at half the period.

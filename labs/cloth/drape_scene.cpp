@@ -43,32 +43,23 @@ class DrapeScene final : public ClothScene {
     Collider c;
     switch (shape_) {
       case DrapeCollider::Sphere:
-        c = {ColliderShape::Sphere, Vec3(0.0, 0.6, 0.0)};
-        c.radius = 0.35;
+        c = Collider::sphere(Vec3(0.0, 0.6, 0.0), 0.35);
         break;
       case DrapeCollider::Box:
         // Tilted about z, off-centre: the cloth slides off its upper face.
-        c = {ColliderShape::Box, Vec3(0.15, 0.45, 0.0), glm::angleAxis(0.35, Vec3(0.0, 0.0, 1.0))};
-        c.halfExtents = Vec3(0.35, 0.3, 0.35);
+        c = Collider::box(Vec3(0.15, 0.45, 0.0), glm::angleAxis(0.35, Vec3(0.0, 0.0, 1.0)), Vec3(0.35, 0.3, 0.35));
         break;
       case DrapeCollider::Capsule:
-        c = {ColliderShape::Capsule, Vec3(0.0, 0.6, 0.0), glm::angleAxis(0.5 * kPi, Vec3(1.0, 0.0, 0.0))};
-        c.radius = 0.15;
-        c.halfLength = 0.4;
+        c = Collider::capsule(Vec3(0.0, 0.6, 0.0), glm::angleAxis(0.5 * kPi, Vec3(1.0, 0.0, 0.0)), 0.4, 0.15);
         break;
     }
-    colliders_ = {c, Collider{}};
+    colliders_ = {c, Collider::plane()};
     if (!meshFile_.empty()) {
       const Result<TriangleMesh> m = loadClothMesh(meshFile_, kSize, Vec3(0.0, kDropHeight, 0.0));
       if (!m) return Error{m.error()};
       return buildCloth(m.value(), material_);
     }
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = grid_.resolutionY = resolution_;
-    grid_.width = grid_.height = kSize;
-    grid_.center = Vec3(0.0, kDropHeight, 0.0);
-    grid_.pins = GridPins::None;
+    grid_ = squareGrid(kSize, Vec3(0.0, kDropHeight, 0.0), GridPins::None);
     return buildClothGrid(grid_, material_);
   }
 

@@ -31,16 +31,9 @@ class FlagScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = resolution_;
-    grid_.resolutionY = std::max(2, resolution_ * 2 / 3);
-    grid_.width = 1.5;
-    grid_.height = 1.0;
-    grid_.axisU = Vec3(1.0, 0.0, 0.0);
-    grid_.axisV = Vec3(0.0, -1.0, 0.0);
-    grid_.center = Vec3(kPoleX + 0.5 * grid_.width, kPoleTop - 0.5 * grid_.height, 0.0);
-    grid_.pins = GridPins::None;
+    const Real width = 1.5, height = 1.0;  // [m]
+    grid_ = hangingGrid(resolution_, std::max(2, resolution_ * 2 / 3), width, height,
+                        Vec3(kPoleX + 0.5 * width, kPoleTop - 0.5 * height, 0.0), GridPins::None);
     material_.massPerArea = 0.15;
     Result<Cloth> c = buildClothGrid(grid_, material_);
     if (!c) return c;
@@ -48,7 +41,7 @@ class FlagScene final : public ClothScene {
       const auto i = static_cast<std::uint32_t>(j * grid_.resolutionX);
       pin(c.value(), i, c.value().position[i]);
     }
-    colliders_.push_back(Collider{});
+    colliders_.push_back(Collider::plane());
     return c;
   }
   void beforeStep(Real, Real t) override {

@@ -20,13 +20,8 @@ class HangingScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = grid_.resolutionY = resolution_;
-    grid_.width = grid_.height = 1.0;
-    grid_.center = Vec3(0.0, 1.6, 0.0);
-    grid_.pins = GridPins::TopCorners;
-    colliders_.push_back(Collider{});  // the floor
+    grid_ = squareGrid(1.0, Vec3(0.0, 1.6, 0.0), GridPins::TopCorners);
+    colliders_.push_back(Collider::plane());  // the floor
     return buildClothGrid(grid_, material_);
   }
 };

@@ -46,17 +46,10 @@ class SelfCollisionScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = resolution_;
-    grid_.resolutionY = resolution_ * 20 / 3;  // 30 × 200
-    grid_.width = kSpacing * (grid_.resolutionX - 1);
-    grid_.height = kSpacing * (grid_.resolutionY - 1);
-    grid_.axisU = Vec3(1.0, 0.0, 0.0);
-    grid_.axisV = Vec3(0.0, -1.0, 0.0);
-    grid_.center = Vec3(0.0, 0.05 + 0.5 * grid_.height, 0.0);
-    grid_.pins = GridPins::None;
-    colliders_.push_back(Collider{});
+    const int nx = resolution_, ny = resolution_ * 20 / 3;  // 30 × 200
+    const Real height = kSpacing * (ny - 1);
+    grid_ = hangingGrid(nx, ny, kSpacing * (nx - 1), height, Vec3(0.0, 0.05 + 0.5 * height, 0.0), GridPins::None);
+    colliders_.push_back(Collider::plane());
     Result<Cloth> c = buildClothGrid(grid_, material_);
     if (!c) return c;
     // TMP's jitter: a tiny random offset out of the plane breaks the symmetry of the fall (seeded).

@@ -28,15 +28,10 @@ class TableclothScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    Collider top{ColliderShape::Box, Vec3(0.0, kTableTop - kTableHalf.y, 0.0)};
-    top.halfExtents = kTableHalf;
-    colliders_ = {top, Collider{}};
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = grid_.resolutionY = resolution_;
-    grid_.width = grid_.height = 1.5;
-    grid_.center = Vec3(0.05, kTableTop + 0.25, 0.03);  // a little off-centre: it settles asymmetrically
-    grid_.pins = GridPins::None;
+    colliders_ = {Collider::box(Vec3(0.0, kTableTop - kTableHalf.y, 0.0), Quat(1.0, 0.0, 0.0, 0.0), kTableHalf),
+                  Collider::plane()};
+    // A little off-centre: it settles asymmetrically.
+    grid_ = squareGrid(1.5, Vec3(0.05, kTableTop + 0.25, 0.03), GridPins::None);
     return buildClothGrid(grid_, material_);
   }
   void drawExtras(DebugDraw& d) const override {

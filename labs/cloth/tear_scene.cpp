@@ -32,12 +32,7 @@ class TearScene final : public ClothScene {
 
  protected:
   Result<Cloth> build() override {
-    grid_ = GridDesc{};
-    grid_.layout = layout_;
-    grid_.resolutionX = grid_.resolutionY = resolution_;
-    grid_.width = grid_.height = 1.2;
-    grid_.center = Vec3(0.0, kClothHeight, 0.0);
-    grid_.pins = GridPins::None;
+    grid_ = squareGrid(1.2, Vec3(0.0, kClothHeight, 0.0), GridPins::None);
     Result<Cloth> c = buildClothGrid(grid_, material_);
     if (!c) return c;
     const int n = resolution_;
@@ -49,16 +44,15 @@ class TearScene final : public ClothScene {
         }
       }
     }
-    Collider ball{ColliderShape::Sphere, Vec3(0.08, kBallStart, 0.05)};
-    ball.radius = ballRadius_;
-    colliders_ = {ball, Collider{}};
+    colliders_ = {Collider::sphere(Vec3(0.08, kBallStart, 0.05), ballRadius_), Collider::plane()};
     return c;
   }
   void beforeStep(Real dt, Real) override {
     Collider& ball = colliders_[0];
     const Real floorStop = ballRadius_;  // it rests on the floor at the end
-    ball.velocity = ball.center.y > floorStop ? Vec3(0.0, -ballSpeed_, 0.0) : Vec3(0.0);
-    ball.center.y = std::max(floorStop, ball.center.y - ballSpeed_ * dt);
+    Vec3& center = ball.pose.position;
+    ball.velocity = center.y > floorStop ? Vec3(0.0, -ballSpeed_, 0.0) : Vec3(0.0);
+    center.y = std::max(floorStop, center.y - ballSpeed_ * dt);
   }
 
   /// The ball is kinematic: it strains the cloth until it tears, whatever that costs, so its work has no

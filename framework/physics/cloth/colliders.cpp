@@ -1,8 +1,11 @@
 #include "physics/cloth/colliders.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "physics/exercises/not_implemented.h"
@@ -10,108 +13,82 @@
 namespace pba::cloth {
 namespace {
 
+using collision::ShapeKind;
+
 constexpr Real kMinDistance = 1e-12;  // [m] a particle this close to a sphere's centre has no normal
 
-/// A collider with what every query needs precomputed: the unit orientation, its local y axis (the
+/// A collider with what every query needs precomputed: its posed shape (unit rotation, local y axis: the
 /// plane's normal, the capsule's axis) and a bounding radius for a quick rejection.
 struct Prepared {
   const Collider* c = nullptr;
-  Quat q{1.0, 0.0, 0.0, 0.0};
-  Vec3 axis{0.0, 1.0, 0.0};
+  collision::PosedShape shape;
   Real bound = std::numeric_limits<Real>::infinity();  ///< [m] no point farther from the centre touches it
 };
 
 Prepared prepare(const Collider& c) {
   Prepared p;
   p.c = &c;
-  p.q = glm::normalize(c.orientation);
-  p.axis = p.q * Vec3(0.0, 1.0, 0.0);
-  switch (c.shape) {
-    case ColliderShape::Plane:
-      break;
-    case ColliderShape::Sphere:
-      p.bound = c.radius;
-      break;
-    case ColliderShape::Capsule:
-      p.bound = c.radius + c.halfLength;
-      break;
-    case ColliderShape::Box:
-      p.bound = glm::length(c.halfExtents);
-      break;
-  }
+  p.shape = collision::posed(c.shape, c.pose);
+  if (c.shape.kind != ShapeKind::Plane) p.bound = collision::boundingRadius(c.shape);
   return p;
 }
 
-/// The box collider in world coordinates: CLOTH-7 in the box's frame, rotated in and out.
-SurfacePoint boxSurfaceWorld(const Prepared& b, const Vec3& x) {
-  SurfacePoint s = boxSurface(b.c->halfExtents, glm::conjugate(b.q) * (x - b.c->center));
-  s.normal = b.q * s.normal;
-  return s;
-}
-
-/// The closest point of a capsule's axis segment to x.
-Vec3 capsuleCore(const Prepared& p, const Vec3& x) {
-  return p.c->center + std::clamp(glm::dot(x - p.c->center, p.axis), -p.c->halfLength, p.c->halfLength) * p.axis;
-}
-
-SurfacePoint surfaceOf(const Prepared& p, const Vec3& x) {
-  const Collider& c = *p.c;
-  switch (c.shape) {
-    case ColliderShape::Plane:
-      return {glm::dot(p.axis, x - c.center), p.axis};
-    case ColliderShape::Sphere:
-    case ColliderShape::Capsule: {
-      const Vec3 r = x - (c.shape == ColliderShape::Capsule ? capsuleCore(p, x) : c.center);
-      const Real l = glm::length(r);
-      return {l - c.radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
-    }
-    case ColliderShape::Box:
-      return boxSurfaceWorld(p, x);
-  }
-  return {};
-}
+inline const Vec3& centerOf(const Prepared& p) { return p.shape.pose.position; }
 
 /// True when x is farther than margin above the plane through `point` with unit normal `normal` (the
-/// distance surfaceOf computes for a plane).
+/// distance surfacePoint computes for a plane).
 inline bool clearOfPlane(const Vec3& normal, const Vec3& point, const Vec3& x, Real margin) {
   return glm::dot(normal, x - point) >= margin;
+}
+/// True when x lies outside the ball of radius r about `center`.
+inline bool clearOfBall(const Vec3& center, Real r, const Vec3& x) {
+  const Vec3 d = x - center;
+  return glm::dot(d, d) > r * r;
 }
 /// True when x is certainly farther than margin from the collider: above a plane (exact), outside the
 /// bounding sphere of the others.
 bool clearOf(const Prepared& p, const Vec3& x, Real margin) {
-  if (p.c->shape == ColliderShape::Plane) return clearOfPlane(p.axis, p.c->center, x, margin);
-  const Vec3 d = x - p.c->center;
-  const Real r = p.bound + margin;
-  return glm::dot(d, d) > r * r;
+  if (p.c->shape.kind == ShapeKind::Plane) return clearOfPlane(p.shape.axis, centerOf(p), x, margin);
+  return clearOfBall(centerOf(p), p.bound + margin, x);
 }
 
 Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth,
                      Real frictionScale);
 
+Collider posedCollider(Result<collision::Shape> shape, const Vec3& center, const Quat& rotation) {
+  assert(shape.ok() && "Collider: a sphere's, capsule's or box's sizes must be > 0");
+  Collider c;
+  c.shape = std::move(shape).value();
+  c.pose = {center, rotation};
+  return c;
+}
+
 }  // namespace
 
-SurfacePoint closestSurface(const Collider& c, const Vec3& x) { return surfaceOf(prepare(c), x); }
-
-SurfacePoint boxSurface([[maybe_unused]] const Vec3& halfExtents, [[maybe_unused]] const Vec3& p) {
-  // BEGIN SOLUTION
-  const Vec3 a = glm::abs(p) - halfExtents;  // per-axis distance outside the slab
-  SurfacePoint s;
-  if (a.x > 0.0 || a.y > 0.0 || a.z > 0.0) {  // outside: distance to the closest point of the box
-    const Vec3 outside = glm::max(a, Vec3(0.0));
-    s.distance = glm::length(outside);
-    s.normal = outside * glm::sign(p) / s.distance;
-    return s;
-  }
-  int axis = 0;  // inside: leave through the nearest face
-  if (a.y > a[axis]) axis = 1;
-  if (a.z > a[axis]) axis = 2;
-  s.normal = Vec3(0.0);
-  s.normal[axis] = p[axis] >= 0.0 ? 1.0 : -1.0;
-  s.distance = a[axis];
-  return s;
-  // END SOLUTION
-  // STUB: return exercises::notImplemented("CLOTH-7", SurfacePoint{std::numeric_limits<Real>::infinity(), Vec3(0.0, 1.0, 0.0)}, halfExtents, p);
+Collider Collider::plane(const Vec3& point, const Quat& rotation) {
+  Collider c;
+  c.pose = {point, rotation};
+  return c;
 }
+Collider Collider::sphere(const Vec3& center, Real radius) {
+  return posedCollider(collision::makeSphere(radius), center, Quat(1.0, 0.0, 0.0, 0.0));
+}
+Collider Collider::capsule(const Vec3& center, const Quat& rotation, Real halfHeight, Real radius) {
+  return posedCollider(collision::makeCapsule(halfHeight, radius), center, rotation);
+}
+Collider Collider::box(const Vec3& center, const Quat& rotation, const Vec3& halfExtents) {
+  return posedCollider(collision::makeBox(halfExtents), center, rotation);
+}
+
+Status checkColliders(std::span<const Collider> colliders, const std::string& field) {
+  for (std::size_t k = 0; k < colliders.size(); ++k) {
+    const Status s = collision::checkPointQueryShape(colliders[k].shape, field + "[" + std::to_string(k) + "].shape");
+    if (!s) return s;
+  }
+  return Status::success();
+}
+
+SurfacePoint closestSurface(const Collider& c, const Vec3& x) { return surfacePoint(prepare(c).shape, x); }
 
 Vec3 projectOutOfSphere([[maybe_unused]] const Vec3& x, [[maybe_unused]] const Vec3& xPrev,
                         [[maybe_unused]] const Vec3& center, [[maybe_unused]] Real radius,
@@ -137,15 +114,16 @@ namespace {
 Vec3 collidePrepared(const Prepared& p, const Vec3& x, const Vec3& xPrev, Real margin, Real h, Real* depth,
                      Real frictionScale) {
   const Collider& c = *p.c;
-  const SurfacePoint s = surfaceOf(p, x);
+  const SurfacePoint s = surfacePoint(p.shape, x);
   if (depth) *depth = std::max(0.0, margin - s.distance);
   if (s.distance >= margin) return x;
   const Vec3 previous = xPrev + h * c.velocity;  // friction sees the motion relative to the collider
   const Real mu = frictionScale * c.friction;
-  if (c.shape == ColliderShape::Sphere) return projectOutOfSphere(x, previous, c.center, c.radius + margin, mu);
-  if (c.shape == ColliderShape::Capsule)
-    return projectOutOfSphere(x, previous, capsuleCore(p, x), c.radius + margin, mu);
-  // Plane and box: the tangent sphere of radius R at the closest surface point (see the header).
+  if (c.shape.kind == ShapeKind::Sphere)
+    return projectOutOfSphere(x, previous, centerOf(p), c.shape.radius + margin, mu);
+  if (c.shape.kind == ShapeKind::Capsule)
+    return projectOutOfSphere(x, previous, collision::capsuleAxisPoint(p.shape, x), c.shape.radius + margin, mu);
+  // Plane, box and hull: the tangent sphere of radius R at the closest surface point (see the header).
   const Real R = std::max(1.0, -2.0 * s.distance);
   return projectOutOfSphere(x, previous, x - (s.distance + R) * s.normal, R + margin, mu);
 }
@@ -173,28 +151,42 @@ namespace {
   x[i] = projected;
 }
 
-/// Projects the particles `indexOf` names (those with inverse mass ≠ 0) out of collider p. The plane's
-/// clear test runs with its axis and centre held in registers: most queries end there. A particle's
-/// colliders are visited one after the other, so a pass that calls this collider by collider gives each
-/// particle exactly what visiting its colliders in turn would, provided that no particle is listed twice.
+/// Projects the particles `indexOf` names (those with inverse mass ≠ 0) out of collider p. The clear test
+/// runs with the plane's axis and centre, or the bounding ball's centre and radius, held in registers:
+/// most queries end there. A particle's colliders are visited one after the other, so a pass that calls
+/// this collider by collider gives each particle exactly what visiting its colliders in turn would,
+/// provided that no particle is listed twice.
 /// `indexOf(k)` names the k-th of `count` particles. (A callable rather than an iota view: clang 14,
 /// which builds the fuzz preset, cannot compile libstdc++ 12's <ranges>.)
+/// One sweep of collideEach with its clear test; out of line, so that each test's loop has the registers
+/// to itself (inlined together, the plane's loop kept its axis and centre on the stack).
+template <typename IndexOf, typename Clear>
+[[gnu::noinline]] void sweepParticles(const Prepared& p, std::size_t count, IndexOf indexOf, Clear clear,
+                                      std::span<Vec3> x, std::span<const Vec3> xPrev, std::span<const Real> inverseMass,
+                                      Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
+                                      CollisionPassStats& stats) {
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = indexOf(k);
+    if (inverseMass[i] != 0.0 && !clear(x[i]))
+      collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
+  }
+}
+
 template <typename IndexOf>
 void collideEach(const Prepared& p, std::size_t count, IndexOf indexOf, std::span<Vec3> x, std::span<const Vec3> xPrev,
                  std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,
                  CollisionPassStats& stats) {
-  auto sweep = [&](auto clear) {
-    for (std::size_t k = 0; k < count; ++k) {
-      const std::size_t i = indexOf(k);
-      if (inverseMass[i] != 0.0 && !clear(x[i]))
-        collideTouching(p, i, x, xPrev, margin, h, velocities, frictionScale, stats);
-    }
-  };
-  if (p.c->shape == ColliderShape::Plane) {
-    const Vec3 axis = p.axis, center = p.c->center;
-    sweep([axis, center, margin](const Vec3& xi) { return clearOfPlane(axis, center, xi, margin); });
+  if (p.c->shape.kind == ShapeKind::Plane) {
+    const Vec3 axis = p.shape.axis, center = centerOf(p);
+    sweepParticles(
+        p, count, indexOf, [axis, center, margin](const Vec3& xi) { return clearOfPlane(axis, center, xi, margin); }, x,
+        xPrev, inverseMass, margin, h, velocities, frictionScale, stats);
   } else {
-    sweep([&p, margin](const Vec3& xi) { return clearOf(p, xi, margin); });
+    const Vec3 center = centerOf(p);
+    const Real r = p.bound + margin;
+    sweepParticles(
+        p, count, indexOf, [center, r](const Vec3& xi) { return clearOfBall(center, r, xi); }, x, xPrev, inverseMass,
+        margin, h, velocities, frictionScale, stats);
   }
 }
 
@@ -244,14 +236,12 @@ Real minColliderDistance(std::span<const Collider> colliders, std::span<const Ve
   Real best = std::numeric_limits<Real>::infinity();
   for (const Collider& c : colliders) {
     const Prepared p = prepare(c);
-    for (const Vec3& v : x) best = std::min(best, surfaceOf(p, v).distance - margin);
+    for (const Vec3& v : x) best = std::min(best, surfacePoint(p.shape, v).distance - margin);
   }
   return best;
 }
 
 // Start-up probe: tells the lab whether CLOTH-4 is still a stub.
 PBA_EXERCISE_PROBE(projectOutOfSphere(Vec3(0.0, 0.5, 0.0), Vec3(0.0, 1.0, 0.0), Vec3(0.0), 1.0, 0.5));
-// Start-up probe: tells the lab whether CLOTH-7 is still a stub.
-PBA_EXERCISE_PROBE(boxSurface(Vec3(0.5), Vec3(0.0, 1.0, 0.0)));
 
 }  // namespace pba::cloth

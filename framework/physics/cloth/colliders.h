@@ -1,59 +1,58 @@
 #pragma once
-// Collisions of cloth particles with planes, spheres, capsules and boxes, with Coulomb friction and the
-// cloth's thickness, for every solver alike: positions are projected out at the end of a (sub)step and
-// friction removes tangential motion in proportion to the penetration depth (Müller et al. 2007 §3.5;
-// Macklin et al. 2014 "Unified particle physics" §6.1). The force solvers then add Δx/h to the velocity,
-// which is an inelastic contact: a resting particle loses exactly the g h it gained in the step.
+// Collisions of cloth particles with planes, spheres, capsules, boxes and hulls (collision shapes at
+// poses, their distances from collision/point_query.h), with Coulomb friction and the cloth's thickness,
+// for every solver alike: positions are projected out at the end of a (sub)step and friction removes
+// tangential motion in proportion to the penetration depth (Müller et al. 2007 §3.5; Macklin et al. 2014
+// "Unified particle physics" §6.1). The force solvers then add Δx/h to the velocity, which is an
+// inelastic contact: a resting particle loses exactly the g h it gained in the step.
 //
 // Every shape reduces to the sphere of CLOTH-4: a capsule is the sphere of its radius about the closest
-// point of its axis (exact); a plane or a box is the sphere tangent at the particle's closest surface point
-// (centre x − (d + R) n for signed distance d and normal n, any R > 0), which projects to the same point
-// and gives friction the same normal, so the result is exact too.
+// point of its axis (exact); a plane, box or hull is the sphere tangent at the particle's closest surface
+// point (centre x − (d + R) n for signed distance d and normal n, any R > 0), which projects to the same
+// point and gives friction the same normal, so the result is exact too.
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "physics/collision/point_query.h"
+#include "physics/collision/shapes.h"
+#include "physics/collision/transform.h"
+#include "physics/core/result.h"
 #include "physics/core/types.h"
 
 namespace pba::cloth {
 
-enum class ColliderShape { Plane, Sphere, Capsule, Box };
+using collision::SurfacePoint;
 
+/// A collider: a collision shape at a pose (collision/shapes.h: a plane is local y = 0 with normal +y, a
+/// capsule runs along local y), which may move, with the cloth's friction against it. A rigid body's
+/// shape and pose serve as they are. Any shape but a mesh (checkColliders).
 struct Collider {
-  ColliderShape shape = ColliderShape::Plane;
-  Vec3 center{0.0};                      ///< [m] sphere, capsule and box centre; a point of a plane
-  Quat orientation{1.0, 0.0, 0.0, 0.0};  ///< capsule axis = local y; box axes; plane normal = local y
-  Real radius = 0.5;                     ///< [m] sphere and capsule
-  Real halfLength = 0.5;                 ///< [m] capsule: half the distance between its end-sphere centres
-  Vec3 halfExtents{0.5};                 ///< [m] box
-  Vec3 velocity{0.0};                    ///< [m/s] of a moving collider (friction acts on relative motion)
-  Real friction = 0.5;                   ///< μ, Coulomb: static and kinetic alike
+  collision::Shape shape = collision::makePlane();
+  /// The shape's frame in the world: its centre [m] (a point of a plane), e.g. (0, 0.6, 0), and rotation.
+  collision::Transform pose;
+  Vec3 velocity{0.0};   ///< [m/s] world, of a moving collider (friction acts on relative motion); e.g. (0, −0.4, 0)
+  Real friction = 0.5;  ///< μ, Coulomb: static and kinetic alike; typical 0.3–0.5
+
+  // The sizes below must be > 0 (an assert: scenes pass constants or range-checked parameters).
+  /// The plane through `point` whose normal is the rotation's local y: the floor y = 0 by default.
+  static Collider plane(const Vec3& point = Vec3(0.0), const Quat& rotation = Quat(1.0, 0.0, 0.0, 0.0));
+  /// A sphere of radius [m] about `center`.
+  static Collider sphere(const Vec3& center, Real radius);
+  /// A capsule about `center` whose axis is the rotation's local y: end-sphere centres ±halfHeight [m]
+  /// along it, radius [m].
+  static Collider capsule(const Vec3& center, const Quat& rotation, Real halfHeight, Real radius);
+  /// A box about `center`, its axes the rotation's, half extents [m].
+  static Collider box(const Vec3& center, const Quat& rotation, const Vec3& halfExtents);
 };
 
-/// Signed distance of x to the surface [m] (negative inside) and the outward unit normal there.
-struct SurfacePoint {
-  Real distance = 0.0;
-  Vec3 normal{0.0, 1.0, 0.0};
-};
+/// Success when every collider's shape has a point query (no mesh); else an error naming
+/// `field`[k].shape.
+Status checkColliders(std::span<const Collider> colliders, const std::string& field = "colliders");
+
+/// Signed distance of x to the collider's surface [m] (negative inside) and the outward unit normal there.
 SurfacePoint closestSurface(const Collider& c, const Vec3& x);
-
-// ***** CLOTH-7: signed distance and normal of a box (Müller et al. 2007 §3.5: collision constraints) *****
-// The box is centred at the origin of its own frame, its faces perpendicular to the axes, halfExtents
-// [m] from the centre (all > 0). p [m] is the particle in that frame (the caller rotates in and out).
-// Return the signed distance of p to the box's surface [m] (negative inside) and the outward unit normal
-// at the closest surface point, both in the box frame.
-// (1) Per axis, work out how far p lies outside the slab between the two faces of that axis (negative
-//     when it lies between them).
-// (2) Outside the box (outside at least one slab): the closest point clamps p into the box; the distance
-//     and the normal come from the part of p that clamping removes (a face, an edge or a corner is the
-//     closest feature depending on how many slabs p is outside), with the normal's signs those of p.
-// (3) Inside: the particle leaves through the nearest face; the distance is the least negative of the
-//     three slab values and the normal is that face's axis, pointing to the side p is on (+ at 0).
-// Check: a point above the top face by d has distance d and normal +y; one beyond an edge or corner lies
-// at the Euclidean distance to it, with a unit normal along the offset; the centre is at minus the
-// smallest half extent; |normal| = 1 everywhere.
-// *****
-SurfacePoint boxSurface(const Vec3& halfExtents, const Vec3& p);
 
 // ***** CLOTH-4: sphere collision projection with friction (Müller et al. 2007 §3.5; Macklin et al. 2014 §6.1) *****
 // A particle ended a step at x [m], coming from xPrev (where it was at the start of the step, already

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/collision/shape_draw.h"
 #include "physics/core/format.h"
 #include "physics/rigid/world.h"
 
@@ -109,8 +110,7 @@ Color greyed(const Color& c) { return {0.5f * c.r + 0.35f, 0.5f * c.g + 0.35f, 0
 // Hull triangles gathered per colour, so that a pile of hundreds of hulls is a handful of draw calls.
 struct HullBatch {
   Color color;
-  std::vector<Vec3> positions, normals;
-  std::vector<std::uint32_t> indices;
+  collision::TriangleBatch triangles;
 };
 
 void addHull(std::vector<HullBatch>& batches, const collision::ConvexHull& h, const collision::Transform& pose,
@@ -119,30 +119,8 @@ void addHull(std::vector<HullBatch>& batches, const collision::ConvexHull& h, co
     return b.color.r == color.r && b.color.g == color.g && b.color.b == color.b && b.color.a == color.a;
   };
   auto it = std::find_if(batches.begin(), batches.end(), same);
-  if (it == batches.end()) it = batches.insert(batches.end(), HullBatch{color, {}, {}, {}});
-  std::vector<Vec3>& positions = it->positions;
-  std::vector<Vec3>& normals = it->normals;
-  std::vector<std::uint32_t>& indices = it->indices;
-  for (const collision::HullFace& f : h.faces) {
-    const auto base = static_cast<std::uint32_t>(positions.size());
-    const Vec3 n = pose.rotate(f.normal);
-    for (int v : f.vertices) positions.push_back(pose.apply(h.vertices[v])), normals.push_back(n);
-    for (std::size_t k = 1; k + 1 < f.vertices.size(); ++k)
-      indices.insert(indices.end(),
-                     {base, base + static_cast<std::uint32_t>(k), base + static_cast<std::uint32_t>(k + 1)});
-  }
-}
-
-void drawMesh(DebugDraw& d, const collision::TriangleMesh& m, const collision::Transform& pose, const Color& color) {
-  std::vector<Vec3> positions, normals;
-  std::vector<std::uint32_t> indices;
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    const auto base = static_cast<std::uint32_t>(positions.size());
-    for (std::uint32_t v : m.triangles[t])
-      positions.push_back(pose.apply(m.vertices[v])), normals.push_back(pose.rotate(m.normals[t]));
-    indices.insert(indices.end(), {base, base + 1, base + 2});
-  }
-  d.triangles(positions, normals, indices, color);
+  if (it == batches.end()) it = batches.insert(batches.end(), HullBatch{color, {}});
+  collision::appendHullTriangles(it->triangles, h, pose);
 }
 
 void drawAabb(DebugDraw& d, const collision::Aabb& b, const Color& c) {
@@ -167,39 +145,15 @@ void World::draw(DebugDraw& d, const WorldDrawOptions& o) const {
     for (const Body& b : bodies_) {
       const Color color = o.greySleeping && b.sleeping ? greyed(b.color) : b.color;
       const collision::Transform pose = b.pose();
-      switch (b.shape.kind) {
-        case collision::ShapeKind::Sphere:
-          d.sphere(b.position, b.shape.radius, color);
-          break;
-        case collision::ShapeKind::Capsule: {
-          const Vec3 axis = pose.rotate(Vec3(0.0, b.shape.halfHeight, 0.0));
-          d.capsule(b.position - axis, b.position + axis, b.shape.radius, color);
-          break;
-        }
-        case collision::ShapeKind::Box:
-          d.box(b.position, b.shape.halfExtents, b.orientation, color);
-          break;
-        case collision::ShapeKind::Hull:
-          addHull(hulls, *b.shape.hull, pose, color);
-          break;
-        case collision::ShapeKind::Mesh:
-          drawMesh(d, *b.shape.mesh, pose, color);
-          break;
-        case collision::ShapeKind::Plane: {
-          // The renderer's ground grid shows y = 0; a plane elsewhere gets a square outline.
-          if (b.position.y == 0.0 && glm::dot(b.orientation * Vec3(0.0, 1.0, 0.0), Vec3(0.0, 1.0, 0.0)) > 1.0 - 1e-9)
-            break;
-          const Vec3 u = pose.rotate(Vec3(10, 0, 0)), v = pose.rotate(Vec3(0, 0, 10));
-          const Vec3& p = b.position;
-          d.line(p - u - v, p + u - v, color), d.line(p + u - v, p + u + v, color);
-          d.line(p + u + v, p - u + v, color), d.line(p - u + v, p - u - v, color);
-          break;
-        }
-      }
+      if (b.shape.kind == collision::ShapeKind::Hull)
+        addHull(hulls, *b.shape.hull, pose, color);
+      else
+        collision::drawShape(d, b.shape, pose, color);
       if (o.frames && b.isDynamic())
         d.frame(b.position, b.orientation, 0.5 * std::max(collision::boundingRadius(b.shape), 0.1));
     }
-    for (const HullBatch& h : hulls) d.triangles(h.positions, h.normals, h.indices, h.color);
+    for (const HullBatch& h : hulls)
+      d.triangles(h.triangles.positions, h.triangles.normals, h.triangles.indices, h.color);
   }
   if (o.contacts || o.impulses) {
     for (const ContactConstraint& c : contacts_) {

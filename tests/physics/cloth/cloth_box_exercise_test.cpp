@@ -1,4 +1,5 @@
-// CLOTH-7: signed distance and outward normal of a box, in its frame and through a rotated collider.
+// CLOTH-7: signed distance and outward normal of a box, in its frame and through the point query of a box
+// at a pose (the cloth's box colliders ask that query).
 // Expected values by construction, not by a second distance function: points are placed at a chosen
 // distance along a chosen normal from a face, an edge or a corner (any outward direction in that
 // feature's normal cone), or inside at known gaps to the faces; the normal is checked against central
@@ -8,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
-#include "physics/cloth/colliders.h"
+#include "physics/collision/point_query.h"
 #include "support/expect_helpers.h"
 
-namespace pba::cloth {
+namespace pba::collision {
 namespace {
 
 const Vec3 kHalf(0.4, 0.25, 0.3);  // [m]
@@ -94,15 +95,16 @@ TEST(CLOTH_7_BoxSurface, TheNormalIsTheGradientOfTheDistanceAndHasUnitLength) {
 }
 
 TEST(CLOTH_7_BoxSurface, TheColliderRotatesTheQueryIntoTheBoxAndTheNormalBackOut) {
-  Collider box{ColliderShape::Box, Vec3(0.5, 1.0, -0.2), glm::angleAxis(0.6, glm::normalize(Vec3(1.0, 1.0, 0.3)))};
-  box.halfExtents = kHalf;
-  const Quat q = glm::normalize(box.orientation);
+  const Vec3 center(0.5, 1.0, -0.2);
+  const Quat q = glm::angleAxis(0.6, glm::normalize(Vec3(1.0, 1.0, 0.3)));
+  const Result<Shape> box = makeBox(kHalf);
+  ASSERT_TRUE(box.ok());
   // 0.1 m beyond the box's local +y face, seen in the world.
-  const Vec3 x = box.center + q * Vec3(0.1, kHalf.y + 0.1, -0.05);
-  const SurfacePoint s = closestSurface(box, x);
+  const Vec3 x = center + q * Vec3(0.1, kHalf.y + 0.1, -0.05);
+  const SurfacePoint s = surfacePoint(box.value(), Transform{center, q}, x);
   EXPECT_NEAR(s.distance, 0.1, 1e-12);
   EXPECT_VEC3_NEAR(s.normal, q * Vec3(0.0, 1.0, 0.0), 1e-12);
 }
 
 }  // namespace
-}  // namespace pba::cloth
+}  // namespace pba::collision

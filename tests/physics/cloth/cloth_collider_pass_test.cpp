@@ -24,15 +24,13 @@ struct PassScene {
 };
 PassScene overlappingColliders() {
   PassScene s;
-  Collider plane{ColliderShape::Plane, Vec3(0.0, 0.1, 0.0), glm::angleAxis(0.3, Vec3(0.0, 0.0, 1.0))};
-  Collider sphere{ColliderShape::Sphere, Vec3(0.2, 0.3, 0.0)};
-  sphere.radius = 0.35;
-  Collider box{ColliderShape::Box, Vec3(-0.2, 0.25, 0.1), glm::angleAxis(0.7, glm::normalize(Vec3(1.0, 1.0, 0.0)))};
-  box.halfExtents = Vec3(0.3, 0.2, 0.25);
+  const Collider plane = Collider::plane(Vec3(0.0, 0.1, 0.0), glm::angleAxis(0.3, Vec3(0.0, 0.0, 1.0)));
+  const Collider sphere = Collider::sphere(Vec3(0.2, 0.3, 0.0), 0.35);
+  Collider box = Collider::box(Vec3(-0.2, 0.25, 0.1), glm::angleAxis(0.7, glm::normalize(Vec3(1.0, 1.0, 0.0))),
+                               Vec3(0.3, 0.2, 0.25));
   box.velocity = Vec3(0.4, 0.0, 0.0);
-  Collider capsule{ColliderShape::Capsule, Vec3(0.0, 0.35, -0.1), glm::angleAxis(1.1, Vec3(1.0, 0.0, 0.0))};
-  capsule.radius = 0.15;
-  capsule.halfLength = 0.3;
+  const Collider capsule =
+      Collider::capsule(Vec3(0.0, 0.35, -0.1), glm::angleAxis(1.1, Vec3(1.0, 0.0, 0.0)), 0.3, 0.15);
   s.colliders = {plane, sphere, box, capsule};
   std::mt19937 random(7);
   std::uniform_real_distribution<Real> u(-0.6, 0.6);
