@@ -3,8 +3,8 @@
 // plays on from there (window_demo.cpp).
 #include <iostream>
 
-#include "app/runner/demo_script.h"
 #include "app/lab.h"
+#include "app/runner/demo_script.h"
 
 namespace pba::app {
 

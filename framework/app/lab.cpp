@@ -6,16 +6,16 @@
 #include <iostream>
 #include <tuple>
 
-#include "app/runner/compare_run.h"
 #include "app/checks/golden_check.h"
+#include "app/checks/param_extremes.h"
+#include "app/checks/soak_run.h"
+#include "app/runner/compare_run.h"
 #include "app/runner/message_text.h"
 #include "app/runner/metrics_report.h"
-#include "app/checks/param_extremes.h"
 #include "app/runner/pose_json.h"
 #include "app/runner/progress_line.h"
 #include "app/runner/scene_file.h"
 #include "app/runner/scene_registry.h"
-#include "app/checks/soak_run.h"
 #include "physics/exercises/not_implemented.h"
 
 namespace pba::app {

@@ -2,8 +2,8 @@
 // "--set"), a flag meant for another scene says so, and --frames/--seconds are bounded.
 #include <gtest/gtest.h>
 
-#include "app/runner/command_line.h"
 #include "app/lab.h"
+#include "app/runner/command_line.h"
 #include "app/runner/scene_registry.h"
 
 namespace pba::app {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "app/runner/compare_run.h"
-#include "app/window/lab_session.h"
 #include "app/runner/scene_runner.h"
+#include "app/window/lab_session.h"
 #include "test_scenes.h"
 
 namespace pba::app {

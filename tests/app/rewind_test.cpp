@@ -4,10 +4,10 @@
 
 #include <vector>
 
-#include "app/window/lab_session.h"
-#include "app/window/rewind_history.h"
 #include "app/runner/scene_registry.h"
 #include "app/runner/scene_runner.h"
+#include "app/window/lab_session.h"
+#include "app/window/rewind_history.h"
 #include "test_scenes.h"
 
 namespace pba::app {

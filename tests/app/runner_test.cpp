@@ -2,8 +2,8 @@
 // instability guard, determinism; and the command line parser.
 #include <gtest/gtest.h>
 
-#include "app/runner/command_line.h"
 #include "app/lab.h"
+#include "app/runner/command_line.h"
 #include "app/runner/scene_registry.h"
 #include "app/runner/scene_runner.h"
 #include "support/fp_traps.h"

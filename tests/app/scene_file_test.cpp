@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "app/window/lab_session.h"
 #include "app/runner/scene_file.h"
 #include "app/runner/scene_runner.h"
+#include "app/window/lab_session.h"
 #include "test_scenes.h"
 
 namespace pba::app {

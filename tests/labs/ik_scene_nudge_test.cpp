@@ -6,8 +6,8 @@
 
 #include <functional>
 
-#include "app/window/lab_session.h"
 #include "app/runner/scene_registry.h"
+#include "app/window/lab_session.h"
 
 namespace pba::lab {
 namespace {

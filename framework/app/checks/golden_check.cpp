@@ -13,11 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/checks/state_fingerprint.h"
 #include "app/lab.h"
 #include "app/runner/message_text.h"
 #include "app/runner/resource_dir.h"
 #include "app/runner/scene_registry.h"
-#include "app/checks/state_fingerprint.h"
 #include "physics/exercises/not_implemented.h"
 
 namespace pba::app {

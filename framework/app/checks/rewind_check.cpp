@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "app/lab.h"
 #include "app/checks/state_fingerprint.h"
+#include "app/lab.h"
 #include "physics/core/format.h"
 
 namespace pba::app {

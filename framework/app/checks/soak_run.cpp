@@ -13,11 +13,11 @@
 #include <set>
 #include <string>
 
-#include "app/runner/host_system.h"
 #include "app/lab.h"
-#include "app/window/lab_session.h"
+#include "app/runner/host_system.h"
 #include "app/runner/scene_registry.h"
 #include "app/runner/scene_state.h"
+#include "app/window/lab_session.h"
 #include "physics/core/format.h"
 #include "physics/exercises/not_implemented.h"
 

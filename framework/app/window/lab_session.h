@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "app/runner/exercise_catalog.h"
+#include "app/runner/scene_runner.h"
 #include "app/window/lab_settings.h"
 #include "app/window/plot_history.h"
 #include "app/window/rewind_history.h"
-#include "app/runner/scene_runner.h"
 #include "app/window/target_nudge.h"
 
 namespace pba::app {

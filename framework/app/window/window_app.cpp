@@ -16,17 +16,17 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include "app/runner/compare_run.h"
 #include "app/lab.h"
-#include "app/window/lab_session.h"
-#include "app/window/lab_ui.h"
+#include "app/runner/compare_run.h"
 #include "app/runner/metrics_report.h"
 #include "app/runner/pose_json.h"
 #include "app/runner/resource_dir.h"
-#include "app/window/scene_draw.h"
 #include "app/runner/scene_file.h"
-#include "app/window/scene_image.h"
 #include "app/runner/scene_registry.h"
+#include "app/window/lab_session.h"
+#include "app/window/lab_ui.h"
+#include "app/window/scene_draw.h"
+#include "app/window/scene_image.h"
 #include "app/window/ui_status.h"
 #include "app/window/ui_style.h"
 #include "app/window/window_demo.h"
