@@ -24,10 +24,12 @@
 #endif
 
 #include "thread_cpu_time.h"
+#include "timed_once.h"
 
 namespace {
 using namespace pba;
 using namespace pba::ragdoll;
+using benchmark::internal::Benchmark;
 
 void report(benchmark::State& state, double seconds, int steps, Real dt) {
   state.SetIterationTime(seconds / steps);
@@ -92,64 +94,26 @@ RagdollDesc paperChain(int bones) {
 void BM_TimeStep(benchmark::State& state, Method m) {
   run(state, paperChain(3), m, 1.0 / static_cast<Real>(state.range(0)), 10.0);
 }
-BENCHMARK_CAPTURE(BM_TimeStep, particle, Method::Particle)
-    ->Arg(1000)
-    ->Arg(200)
-    ->Arg(100)
-    ->Arg(20)
-    ->Arg(10)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_TimeStep, constraint, Method::Constraint)
-    ->Arg(1000)
-    ->Arg(200)
-    ->Arg(100)
-    ->Arg(20)
-    ->Arg(10)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMicrosecond);
+// Steps per second, the same rows for both methods.
+void stepRates(Benchmark* b) { bench::timedOnce(b, {1000, 200, 100, 20, 10}, benchmark::kMicrosecond); }
+BENCHMARK_CAPTURE(BM_TimeStep, particle, Method::Particle)->Apply(stepRates);
+BENCHMARK_CAPTURE(BM_TimeStep, constraint, Method::Constraint)->Apply(stepRates);
 
 void BM_Bones(benchmark::State& state, Method m, int sweeps) {
   run(state, paperChain(static_cast<int>(state.range(0))), m, 0.01, 10.0, 5, sweeps);
 }
-BENCHMARK_CAPTURE(BM_Bones, particle, Method::Particle, kPublishedSweeps)
-    ->Arg(3)
-    ->Arg(15)
-    ->Arg(30)
-    ->Arg(60)
-    ->Arg(120)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Bones, particle_3_sweeps, Method::Particle, 3)
-    ->Arg(120)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_Bones, constraint, Method::Constraint, kPublishedSweeps)
-    ->Arg(3)
-    ->Arg(15)
-    ->Arg(30)
-    ->Arg(60)
-    ->Arg(120)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMicrosecond);
+// Bones in the chain, the same rows for both methods.
+void boneCounts(Benchmark* b) { bench::timedOnce(b, {3, 15, 30, 60, 120}, benchmark::kMicrosecond); }
+BENCHMARK_CAPTURE(BM_Bones, particle, Method::Particle, kPublishedSweeps)->Apply(boneCounts);
+BENCHMARK_CAPTURE(BM_Bones, particle_3_sweeps, Method::Particle, 3)->Apply([](Benchmark* b) {
+  bench::timedOnce(b, {120}, benchmark::kMicrosecond);
+});
+BENCHMARK_CAPTURE(BM_Bones, constraint, Method::Constraint, kPublishedSweeps)->Apply(boneCounts);
 
 void BM_Iterations(benchmark::State& state) {
   run(state, paperChain(9), Method::Particle, 0.01, 10.0, static_cast<int>(state.range(0)));
 }
-BENCHMARK(BM_Iterations)
-    ->Arg(1)
-    ->Arg(5)
-    ->Arg(10)
-    ->Arg(20)
-    ->Arg(40)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Iterations)->Apply([](Benchmark* b) { bench::timedOnce(b, {1, 5, 10, 20, 40}, benchmark::kMicrosecond); });
 
 // Memory: free boxes in a row; bytes per box from each method's arrays.
 void BM_Memory(benchmark::State& state) {
@@ -189,24 +153,13 @@ void BM_Humans(benchmark::State& state, Method m, int iterations) {
   run(state, humans(static_cast<int>(state.range(0))), m, 1.0 / 60.0, 10.0, iterations, ParticleSettings{}.stickSweeps);
   state.SetLabel("all awake, 600 steps, run alone");
 }
-BENCHMARK_CAPTURE(BM_Humans, particle_20_iterations, Method::Particle, 20)
-    ->Arg(1)
-    ->Arg(136)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Humans, particle_5_iterations, Method::Particle, 5)
-    ->Arg(136)
-    ->Arg(1000)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Humans, constraint, Method::Constraint, 0)
-    ->Arg(1)
-    ->Arg(136)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
+// One human and the 136 of the Bullet comparison (BM_BulletHumans has the same rows).
+void humanCounts(Benchmark* b) { bench::timedOnce(b, {1, 136}); }
+BENCHMARK_CAPTURE(BM_Humans, particle_20_iterations, Method::Particle, 20)->Apply(humanCounts);
+BENCHMARK_CAPTURE(BM_Humans, particle_5_iterations, Method::Particle, 5)->Apply([](Benchmark* b) {
+  bench::timedOnce(b, {136, 1000});
+});
+BENCHMARK_CAPTURE(BM_Humans, constraint, Method::Constraint, 0)->Apply(humanCounts);
 
 #ifdef PBA_HAVE_BULLET
 btVector3 bt(const Vec3& v) { return btVector3(v.x, v.y, v.z); }
@@ -298,7 +251,7 @@ void BM_BulletHumans(benchmark::State& state) {
   }
   state.SetLabel("Bullet double precision, all awake, 600 steps, run alone");
 }
-BENCHMARK(BM_BulletHumans)->Arg(1)->Arg(136)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BulletHumans)->Apply(humanCounts);
 
 // The same two simulations stepped in alternation, 20 steps of one then 20 of the other, 600 steps each,
 // so that a change of the machine's load during the run falls on both alike (on this shared machine,
@@ -323,7 +276,7 @@ void BM_HumansAgainstBullet(benchmark::State& state) {
   }
   state.SetLabel("Bullet double precision, all awake, 600 steps, alternated by 20");
 }
-BENCHMARK(BM_HumansAgainstBullet)->Arg(136)->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_HumansAgainstBullet)->Apply([](Benchmark* b) { bench::timedOnce(b, {136}); });
 #endif
 
 }  // namespace

@@ -21,9 +21,13 @@
 #endif
 
 #include "thread_cpu_time.h"
+#include "timed_once.h"
 
 namespace {
 using namespace pba;
+
+// The scene rows: each runs once, timed by its body (bench/timed_once.h).
+void runOnce(benchmark::internal::Benchmark* b) { bench::timedOnce(b, {}); }
 
 constexpr Real kDt = 1.0 / 60.0;
 constexpr int kSteps = 600;
@@ -61,22 +65,10 @@ void BM_Ours(benchmark::State& state, Scene scene, bool classic) {
     state.counters["solver_iterations"] = world.stats().solverIterations;
   }
 }
-BENCHMARK_CAPTURE(BM_Ours, boxes3000_soft_step, Scene::Boxes3000, false)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Ours, boxes3000_baumgarte_10, Scene::Boxes3000, true)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Ours, stack1000_soft_step, Scene::Stack1000, false)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Ours, stack1000_baumgarte_10, Scene::Stack1000, true)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Ours, boxes3000_soft_step, Scene::Boxes3000, false)->Apply(runOnce);
+BENCHMARK_CAPTURE(BM_Ours, boxes3000_baumgarte_10, Scene::Boxes3000, true)->Apply(runOnce);
+BENCHMARK_CAPTURE(BM_Ours, stack1000_soft_step, Scene::Stack1000, false)->Apply(runOnce);
+BENCHMARK_CAPTURE(BM_Ours, stack1000_baumgarte_10, Scene::Stack1000, true)->Apply(runOnce);
 
 #ifdef PBA_HAVE_BULLET
 // Bullet's own defaults (btDbvtBroadphase, sequential impulses, 10 iterations, split impulse for
@@ -120,14 +112,8 @@ void BM_Bullet(benchmark::State& state, Scene scene) {
   }
   state.SetLabel("Bullet double precision, all awake");
 }
-BENCHMARK_CAPTURE(BM_Bullet, boxes3000, Scene::Boxes3000)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Bullet, stack1000, Scene::Stack1000)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bullet, boxes3000, Scene::Boxes3000)->Apply(runOnce);
+BENCHMARK_CAPTURE(BM_Bullet, stack1000, Scene::Stack1000)->Apply(runOnce);
 #endif
 
 // Broad phase: n spheres of radius 0.5 in a cube at density ~0.1, each moving a little every step; one

@@ -17,6 +17,8 @@ import json
 import math
 import sys
 
+from bench_run import read_json
+
 TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
 
 
@@ -43,13 +45,7 @@ def write(args):
 
 def load(path):
     """The figures of a results file, or a one-line error naming the file and the field."""
-    try:
-        with open(path, encoding="utf-8") as f:
-            data = json.load(f)
-    except OSError as e:
-        raise ValueError(f"{path}: cannot be read ({e.strerror})")
-    except json.JSONDecodeError as e:
-        raise ValueError(f"{path}:{e.lineno}: not JSON ({e.msg})")
+    data = read_json(path)
     if not isinstance(data, dict) or not isinstance(data.get("figures"), dict):
         raise ValueError(f"{path}: field 'figures': missing or not an object (is it a bench-results.json?)")
     for name, value in data["figures"].items():

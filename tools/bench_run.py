@@ -89,14 +89,15 @@ def compiler(cache):
         return exe
 
 
-def read_json(path, what):
+def read_json(path, what=""):
+    """The JSON value of a file, or a ValueError whose one line names the file (and line), then `what`."""
     try:
         with open(path, encoding="utf-8") as f:
             return json.load(f)
     except OSError as e:
         raise ValueError(f"{path}: cannot be read ({e.strerror})")
     except json.JSONDecodeError as e:
-        raise ValueError(f"{path}:{e.lineno}: not JSON ({e.msg}); {what}")
+        raise ValueError(f"{path}:{e.lineno}: not JSON ({e.msg})" + (f"; {what}" if what else ""))
 
 
 def scene_rows(directory, run_id):

@@ -32,18 +32,6 @@ for arg in "$@"; do
   esac
 done
 
-say() { printf '[cross] %s\n' "$*" >&2; }
-die() { printf 'cross: %s\n' "$*" >&2; exit 1; }
-
-# step NAME COMMAND...: runs COMMAND and prints how long it took.
-step() {
-  local name="$1"; shift
-  local t0=$SECONDS
-  say "$name ..."
-  "$@"
-  say "$name: $((SECONDS - t0)) s"
-}
-
 # ---------------------------------------------------------------------------------------------------
 # Host tools
 HOST_PACKAGES=(cmake ninja-build pkg-config dpkg-dev mingw-w64 g++-mingw-w64-x86-64-posix
@@ -53,6 +41,7 @@ HOST_PACKAGES=(cmake ninja-build pkg-config dpkg-dev mingw-w64 g++-mingw-w64-x86
 # Debian source packages and the dependency prefixes built from them: tools/debian_sources.sh.
 # shellcheck source=tools/debian_sources.sh
 source "$ROOT/tools/debian_sources.sh"
+LOG_TAG=cross # say, die and step (tools/debian_sources.sh)
 DEPS_FOR=MinGW-w64
 DEP_CC="$TRIPLE-gcc-posix" # zlib's compiler and archiver (build_zlib)
 DEP_AR="$TRIPLE-ar"

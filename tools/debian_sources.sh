@@ -1,9 +1,22 @@
 #!/usr/bin/env bash
 # tools/debian_sources.sh: sourced by the scripts that build the dependencies for another platform from
 # Debian's own source packages (tools/cross_windows.sh for MinGW-w64, tools/web_build.sh for Emscripten).
-# The caller defines say, die, CACHE (the cache folder of its platform), DEPS (entries "SOURCE BINARY
-# FUNCTION [headers]"), DEPS_FOR (the platform, in words), the build functions, and recipe_hash FUNCTION
-# (a hash of everything that decides what FUNCTION builds). WORK is a temporary folder, removed on exit.
+# The caller defines LOG_TAG (the word its messages start with), CACHE (the cache folder of its platform),
+# DEPS (entries "SOURCE BINARY FUNCTION [headers]"), DEPS_FOR (the platform, in words), the build
+# functions, and recipe_hash FUNCTION (a hash of everything that decides what FUNCTION builds). WORK is a
+# temporary folder, removed on exit.
+
+say() { printf '[%s] %s\n' "$LOG_TAG" "$*" >&2; }
+die() { printf '%s: %s\n' "$LOG_TAG" "$*" >&2; exit 1; }
+
+# step NAME COMMAND...: runs COMMAND and prints how long it took.
+step() {
+  local name="$1"; shift
+  local t0=$SECONDS
+  say "$name ..."
+  "$@"
+  say "$name: $((SECONDS - t0)) s"
+}
 
 # ensure_host_tools: installs the caller's HOST_PACKAGES that are missing (not with PBA_NO_INSTALL=1).
 ensure_host_tools() {

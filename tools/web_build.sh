@@ -37,20 +37,11 @@ for arg in "$@"; do
   esac
 done
 
-say() { printf '[web] %s\n' "$*" >&2; }
-die() { printf 'web: %s\n' "$*" >&2; exit 1; }
-step() {
-  local name="$1"; shift
-  local t0=$SECONDS
-  say "$name ..."
-  "$@"
-  say "$name: $((SECONDS - t0)) s"
-}
-
 HOST_PACKAGES=(cmake ninja-build pkg-config dpkg-dev emscripten nodejs node-acorn)
 
 # shellcheck source=tools/debian_sources.sh
 source "$ROOT/tools/debian_sources.sh"
+LOG_TAG=web # say, die and step (tools/debian_sources.sh)
 DEPS_FOR=Emscripten
 DEP_CC=emcc # zlib's compiler and archiver (build_zlib)
 DEP_AR=emar

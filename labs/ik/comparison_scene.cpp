@@ -241,15 +241,11 @@ class ComparisonScene final : public app::Scene {
       longest = std::max(longest, r.residualHistory.size());
       for (Real v : r.residualHistory) top = std::max(top, std::ceil(std::log10(std::max(v, 1e-12))));
     }
-    const float font = ImGui::GetFontSize();
-    const float axis = ImGui::CalcTextSize("1e-7").x + 0.3f * font;
-    const float width = ImGui::GetContentRegionAvail().x - axis, height = 9.0f * font;
-    const ImVec2 o = ImGui::GetCursorScreenPos();
-    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const app::PlotArea area("1e-7", 0.3f, 9.0f);
+    ImDrawList* draw = area.draw();
     auto point = [&](Real i, Real residual) {
       const Real y = std::clamp((std::log10(std::max(residual, 1e-12)) - kPlotFloor) / (top - kPlotFloor), 0.0, 1.0);
-      return ImVec2(o.x + axis + width * static_cast<float>(i / Real(longest - 1)),
-                    o.y + height * static_cast<float>(1.0 - y));
+      return area.at(i / Real(longest - 1), y);
     };
     const auto rgba = app::imguiColor;
     const ImU32 grid = ImGui::GetColorU32(ImVec4(0.6f, 0.6f, 0.62f, 0.6f));
@@ -258,7 +254,7 @@ class ComparisonScene final : public app::Scene {
       draw->AddLine(a, b, grid);
       char tick[16];
       std::snprintf(tick, sizeof tick, "1e%.0f", e);
-      draw->AddText(ImVec2(o.x, a.y - 0.5f * font), ImGui::GetColorU32(ImGuiCol_TextDisabled), tick);
+      area.tick(a, tick, ImGui::GetColorU32(ImGuiCol_TextDisabled));
     }
     draw->AddLine(point(0, options_.tolerance), point(Real(longest - 1), options_.tolerance), rgba(colors::kDark),
                   1.5f);
@@ -266,10 +262,9 @@ class ComparisonScene final : public app::Scene {
       const std::vector<Real>& hist = results_[m].residualHistory;
       std::vector<ImVec2> line;
       for (size_t i = 0; i < hist.size(); ++i) line.push_back(point(Real(i), hist[i]));
-      if (line.size() >= 2)
-        draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethods[m].color), 0, 0.15f * font);
+      area.line(line, rgba(kMethods[m].color), 0.15f * area.font());
     }
-    ImGui::Dummy(ImVec2(axis + width, height));
+    area.reserve();
     ImGui::TextDisabled("0 … %zu iterations; black: tolerance", longest - 1);
     ImGui::End();
   }

@@ -197,15 +197,11 @@ class OscillatorScene final : public app::Scene {
   /// E/E₀ = 1 (exact), then the methods' names in their curves' colours.
   void energyPlotWindow(const app::ScreenRect& column) const {
     app::beginColumnWindow(column, "E/E0 over t, every method");
-    const float font = ImGui::GetFontSize();
-    const float axis = ImGui::CalcTextSize("4").x + 0.4f * font;
-    const float width = ImGui::GetContentRegionAvail().x - axis, height = 8.0f * font;
-    const ImVec2 o = ImGui::GetCursorScreenPos();
-    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const app::PlotArea area("4", 0.4f, 8.0f);
+    ImDrawList* draw = area.draw();
+    const float font = area.font();
     auto point = [&](double t, double ratio) {
-      const double y = std::clamp(ratio, 0.0, kEnergyPlotTop) / kEnergyPlotTop;
-      return ImVec2(o.x + axis + width * static_cast<float>(std::clamp(t / endTime_, 0.0, 1.0)),
-                    o.y + height * static_cast<float>(1.0 - y));
+      return area.at(std::clamp(t / endTime_, 0.0, 1.0), std::clamp(ratio, 0.0, kEnergyPlotTop) / kEnergyPlotTop);
     };
     const auto rgba = app::imguiColor;
     draw->AddRectFilled(point(0.0, kEnergyPlotTop), point(endTime_, 0.0), ImGui::GetColorU32(ImGuiCol_FrameBg));
@@ -213,16 +209,14 @@ class OscillatorScene final : public app::Scene {
       const ImVec2 a = point(0.0, tick);
       draw->AddLine(a, point(endTime_, tick), rgba(tick == 1 ? colors::kGrey : Color{0.75f, 0.76f, 0.78f, 0.6f}),
                     tick == 1 ? 0.12f * font : 1.0f);
-      draw->AddText(ImVec2(o.x, a.y - 0.5f * font), ImGui::GetColorU32(ImGuiCol_Text), std::to_string(tick).c_str());
+      area.tick(a, std::to_string(tick).c_str(), ImGui::GetColorU32(ImGuiCol_Text));
     }
     for (std::size_t i = 0; i < methods_.size(); ++i) {
       std::vector<ImVec2> line;
       for (const Vec2& e : methods_[i].energy) line.push_back(point(e.x, e.y));
-      if (line.size() >= 2)
-        draw->AddPolyline(line.data(), static_cast<int>(line.size()), rgba(kMethodColors[i]), 0,
-                          (selected(i) ? 0.2f : 0.12f) * font);
+      area.line(line, rgba(kMethodColors[i]), (selected(i) ? 0.2f : 0.12f) * font);
     }
-    ImGui::Dummy(ImVec2(axis + width, height));
+    area.reserve();
     ImGui::Text("t = 0 … %.3g s; grey: E/E0 = 1", endTime_);
     for (std::size_t i = 0; i < methods_.size(); ++i) {  // the key, wrapped to the window's width
       const std::string name(ode::integratorName(methods_[i].integrator.kind()));

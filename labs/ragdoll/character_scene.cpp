@@ -37,14 +37,7 @@ class CharacterScene final : public lab::RagdollScene {
         .real("height", &file_.height, 0.5, 3.0, "m",
               "The skeleton is scaled so its rest pose is this tall. Typical 1.7 m.")
         .needsReset();
-    params_
-        .real("drop_height", &drop_, 0.0, 5.0, "m",
-              "Height of the figure's lowest point above the ground at the start. Typical 0.5 m.")
-        .needsReset();
-    params_
-        .angle("tilt", &tilt_, -90.0, 90.0,
-               "Forward tilt of the figure at the start (90°: lying face down). Typical 60°.")
-        .needsReset();
+    declareStartParams(drop_, tilt_);
     params_.real("mass", &shape_.totalMass, 10.0, 200.0, "kg", "Total mass, shared by volume. Typical 70 kg.")
         .needsReset();
   }

@@ -10,14 +10,7 @@ namespace {
 class HumanScene final : public lab::RagdollScene {
  public:
   HumanScene() {
-    params_
-        .real("drop_height", &height_, 0.0, 5.0, "m",
-              "Height of the figure's lowest point above the ground at the start. Typical 0.6 m.")
-        .needsReset();
-    params_
-        .angle("tilt", &tilt_, -90.0, 90.0,
-               "Forward tilt of the figure at the start (90°: lying face down). Typical 80°.")
-        .needsReset();
+    declareStartParams(height_, tilt_);
     params_.angle("turn", &turn_, -180.0, 180.0, "Turn of the figure about the vertical at the start. Typical 0°.")
         .needsReset();
     params_

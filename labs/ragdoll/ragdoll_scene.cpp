@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "physics/core/format.h"
+
 namespace pba::lab {
 
 namespace {
@@ -47,6 +49,19 @@ RagdollScene::RagdollScene() {
   params_.flag("show_particles", &draw_.particles, "Draw the particles and sticks of the particle ragdoll.");
   params_.flag("show_joints", &draw_.joints, "Draw joint points, hinge axes, limit arcs and cones.");
   params_.flag("show_contacts", &draw_.contacts, "Draw contact points and normals.");
+}
+
+void RagdollScene::declareStartParams(Real& dropHeight, Real& tilt) {
+  params_
+      .real("drop_height", &dropHeight, 0.0, 5.0, "m",
+            "Height of the figure's lowest point above the ground at the start. Typical " + formatShort(dropHeight) +
+                " m.")
+      .needsReset();
+  params_
+      .angle("tilt", &tilt, -90.0, 90.0,
+             "Forward tilt of the figure at the start (90°: lying face down). Typical " + formatShort(radToDeg(tilt)) +
+                 "°.")
+      .needsReset();
 }
 
 Real RagdollScene::lowestCorner(const ragdoll::RagdollDesc& desc) {

@@ -56,6 +56,10 @@ class RagdollScene : public app::Scene {
   /// Builds both ragdolls from `desc` (centred about x = 0) side by side, as reset() does with build(), at
   /// ±`half` [m] (negative: halfSeparation(desc)).
   void start(const ragdoll::RagdollDesc& desc, Real half = -1.0);
+  /// Declares the figure's start as two parameters that reset the scene: "drop_height" [m], of its lowest
+  /// point above the ground, and "tilt", forward (90°: lying face down); the help gives the values they
+  /// hold now as the typical ones.
+  void declareStartParams(Real& dropHeight, Real& tilt);
   Shown shown() const { return shown_; }
   /// Height [m] of the lowest box corner of a description (figures are lifted so that it is above y = 0).
   static Real lowestCorner(const ragdoll::RagdollDesc& desc);

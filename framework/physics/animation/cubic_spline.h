@@ -14,6 +14,7 @@
 //   2h_0 M_0 + h_0 M_1 = 6[(p_1 − p_0)/h_0 − s0],  h_n−2 M_n−2 + 2h_n−2 M_n−1 = 6[s1 − (p_n−1 − p_n−2)/h_n−2].
 // Solved by the Thomas algorithm (the matrix is diagonally dominant, so no pivoting is needed).
 #include <algorithm>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -31,6 +32,19 @@ namespace detail {
 inline int intervalOf(std::span<const Real> times, Real t) {
   return static_cast<int>(std::upper_bound(times.begin(), times.end(), t) - times.begin()) - 1;
 }
+
+/// The boundary rules of the derivative-taking splines: with no knot, the default value; with one knot or
+/// t at or outside the ends, the nearest end value; every derivative there is zero. Empty when t lies
+/// strictly inside the knots, where the spline itself is evaluated.
+template <typename T>
+std::optional<T> outsideKnots(std::span<const Real> times, const std::vector<T>& values, Real t, int derivative,
+                              const T& defaultValue) {
+  const T zero = defaultValue * 0.0;
+  if (times.empty()) return derivative == 0 ? defaultValue : zero;
+  if (times.size() == 1 || t <= times.front()) return derivative == 0 ? values.front() : zero;
+  if (t >= times.back()) return derivative == 0 ? values.back() : zero;
+  return std::nullopt;
+}
 }  // namespace detail
 
 /// Step (derivative 0 only; the others are 0): the value of the last knot at or before t.
@@ -46,10 +60,8 @@ T stepInterpolate(std::span<const Real> times, const std::vector<T>& values, Rea
 template <typename T>
 T linearInterpolate(std::span<const Real> times, const std::vector<T>& values, Real t, int derivative = 0,
                     const T& defaultValue = T(0.0)) {
+  if (std::optional<T> end = detail::outsideKnots(times, values, t, derivative, defaultValue)) return *end;
   const T zero = defaultValue * 0.0;
-  if (times.empty()) return derivative == 0 ? defaultValue : zero;
-  if (times.size() == 1 || t <= times.front()) return derivative == 0 ? values.front() : zero;
-  if (t >= times.back()) return derivative == 0 ? values.back() : zero;
   const size_t i = static_cast<size_t>(detail::intervalOf(times, t));
   const Real h = times[i + 1] - times[i];
   const T slope = (1.0 / h) * (values[i + 1] - values[i]);
@@ -99,10 +111,8 @@ std::vector<T> cubicSplineMoments(std::span<const Real> times, const std::vector
 template <typename T>
 T cubicSplineEvaluate(std::span<const Real> times, const std::vector<T>& values, const std::vector<T>& moments, Real t,
                       int derivative = 0, const T& defaultValue = T(0.0)) {
+  if (std::optional<T> end = detail::outsideKnots(times, values, t, derivative, defaultValue)) return *end;
   const T zero = defaultValue * 0.0;
-  if (times.empty()) return derivative == 0 ? defaultValue : zero;
-  if (times.size() == 1 || t <= times.front()) return derivative == 0 ? values.front() : zero;
-  if (t >= times.back()) return derivative == 0 ? values.back() : zero;
   const size_t i = static_cast<size_t>(detail::intervalOf(times, t));
   const Real h = times[i + 1] - times[i];
   const Real a = times[i + 1] - t, b = t - times[i];

@@ -9,30 +9,22 @@
 
 #include "oscillator_support.h"
 #include "physics/ode/ode_system.h"
+#include "projectile_support.h"
 
 namespace pba::ode {
 namespace {
 using testing::convergesWithOrders;
+using testing::followsTheProjectile;
 using testing::multipliesEnergyEachStepBy;
-
-/// Applies one step of `kind` from (x₀, v₀) = (1, 0.5) with ω = 1, h = 0.1 and returns (x₁, v₁).
-std::pair<Real, Real> oneStep(IntegratorKind kind) {
-  OscillatorDesc desc;
-  desc.v0 = 0.5;
-  HarmonicOscillator osc(desc);
-  Integrator integrator(kind);
-  integrator.step(osc, 0.1);
-  return {osc.positions()[0], osc.velocities()[0]};
-}
+using testing::Projectile;
+using testing::takesOneStepAs;
 
 TEST(PART_1_ExplicitEuler, OneStepIsTheFirstDegreeTaylorPolynomialOfTheExactFlow) {
   // The exact flow of ẍ = −x over h is the rotation x₁ = c x₀ + s v₀, v₁ = −s x₀ + c v₀ with c = cos h,
   // s = sin h; a method of order p reproduces the Taylor polynomials of c and s to degree p, and explicit
   // Euler is exactly degree 1 (c = 1, s = h).
-  const auto [x, v] = oneStep(IntegratorKind::Euler);
   const Real h = 0.1, c = 1.0, s = h;
-  EXPECT_NEAR(x, c * 1.0 + s * 0.5, 1e-15);
-  EXPECT_NEAR(v, -s * 1.0 + c * 0.5, 1e-15);
+  EXPECT_TRUE(takesOneStepAs(IntegratorKind::Euler, {.xx = c, .xv = s, .vx = -s, .vv = c}));
 }
 
 TEST(PART_1_ExplicitEuler, ConvergesWithOrderOneOnTheOscillator) {
@@ -106,10 +98,8 @@ TEST(PART_2_SymplecticEuler, OneStepIsTheProductOfAKickAndADrift) {
   // On ẍ = −x the method is a kick (a shear of v by −h x) followed by a drift (a shear of x by h v):
   // [[1, h], [0, 1]]·[[1, 0], [−h, 1]] = [[1 − h², h], [−h, 1]], a matrix of determinant 1 (area
   // preserving: symplectic). Explicit Euler's matrix [[1, h], [−h, 1]] differs in the (1, 1) entry.
-  const auto [x, v] = oneStep(IntegratorKind::SymplecticEuler);
   const Real h = 0.1;
-  EXPECT_NEAR(x, (1.0 - h * h) * 1.0 + h * 0.5, 1e-15);
-  EXPECT_NEAR(v, -h * 1.0 + 1.0 * 0.5, 1e-15);
+  EXPECT_TRUE(takesOneStepAs(IntegratorKind::SymplecticEuler, {.xx = 1.0 - h * h, .xv = h, .vx = -h, .vv = 1.0}));
 }
 
 TEST(PART_2_SymplecticEuler, ConvergesWithOrderOneOnTheOscillator) {
@@ -150,10 +140,8 @@ TEST(PART_2_SymplecticEuler, EnergyErrorStaysWithinHalfOmegaHWithoutDriftOverATh
 TEST(PART_3_RungeKutta4, OneStepMatchesTheTaylorPolynomialOfDegreeFour) {
   // For ẍ = −x, RK4's step is the degree-4 Taylor polynomial of exp(hA): x₁ = c x₀ + s v₀,
   // v₁ = −s x₀ + c v₀ with c = 1 − h²/2 + h⁴/24, s = h − h³/6.
-  const auto [x, v] = oneStep(IntegratorKind::Rk4);
   const Real h = 0.1, c = 1 - h * h / 2 + h * h * h * h / 24, s = h - h * h * h / 6;
-  EXPECT_NEAR(x, c * 1.0 + s * 0.5, 1e-15);
-  EXPECT_NEAR(v, -s * 1.0 + c * 0.5, 1e-15);
+  EXPECT_TRUE(takesOneStepAs(IntegratorKind::Rk4, {.xx = c, .xv = s, .vx = -s, .vv = c}));
 }
 
 TEST(PART_3_RungeKutta4, ConvergesWithOrderFourOnTheOscillator) {
@@ -175,40 +163,11 @@ TEST(PART_6_Verlet, ConvergesWithOrderTwoOnTheOscillator) {
   EXPECT_TRUE(convergesWithOrders(IntegratorKind::Verlet, 200, {.x = 2.0, .v = 2.0, .phase = 2.0}));
 }
 
-/// A projectile: constant force, one particle (3 coordinates).
-class Projectile final : public SecondOrderSystem {
- public:
-  std::vector<Real> q{0.0, 2.0, 0.0}, v{3.0, 10.0, -1.0}, w{0.5, 0.5, 0.5};
-  Vec3 g{0.0, -kStandardGravity, 0.0};
-  std::size_t dofCount() const override { return 3; }
-  std::span<Real> positions() override { return q; }
-  std::span<const Real> positions() const override { return q; }
-  std::span<Real> velocities() override { return v; }
-  std::span<const Real> velocities() const override { return v; }
-  std::span<const Real> inverseMasses() const override { return w; }
-  void force(Real, std::span<const Real>, std::span<const Real>, std::span<Real> out) const override {
-    for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(i)] = g[i] / w[0];
-  }
-};
-
 TEST(PART_6_Verlet, FollowsAProjectileExactly) {
   // x(t) = x₀ + v₀ t + g t²/2 is quadratic in t: Verlet's central second difference is exact for it.
-  Projectile p;
-  const Vec3 x0{p.q[0], p.q[1], p.q[2]}, v0{p.v[0], p.v[1], p.v[2]};
+  // Rounding only: |x| ≲ 10 m, 200 steps ⇒ 1e-11.
   Integrator integrator(IntegratorKind::Verlet);
-  const Real h = 0.01;
-  for (int n = 1; n <= 200; ++n) {
-    integrator.step(p, h);
-    const Real t = n * h;
-    const Vec3 x = x0 + v0 * t + 0.5 * p.g * t * t;
-    const Vec3 v = v0 + p.g * t;
-    for (int i = 0; i < 3; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      // Rounding only: |x| ≲ 10 m, 200 steps ⇒ 1e-11.
-      ASSERT_NEAR(p.q[k], x[i], 1e-11) << "step " << n;
-      ASSERT_NEAR(p.v[k], v[i], 1e-9) << "step " << n;
-    }
-  }
+  EXPECT_TRUE(followsTheProjectile(integrator, 0.01, 200, 1e-11, 1e-9));
 }
 
 TEST(PART_6_Verlet, RestartsWhenTheStateIsChangedFromOutside) {

@@ -10,24 +10,21 @@
 #include <gtest/gtest.h>
 
 #include "oscillator_support.h"
+#include "projectile_support.h"
 
 namespace pba::ode {
 namespace {
 using testing::convergesWithOrders;
+using testing::followsTheProjectile;
 using testing::multipliesEnergyEachStepBy;
+using testing::Projectile;
+using testing::takesOneStepAs;
 
 TEST(PART_7_Midpoint, OneStepIsTheSecondDegreeTaylorPolynomialOfTheExactFlow) {
   // The exact flow of ẍ = −x over h is x₁ = c x₀ + s v₀, v₁ = −s x₀ + c v₀ with c = cos h, s = sin h. A
   // second-order method reproduces c and s to degree 2; midpoint is exactly c = 1 − h²/2, s = h.
-  OscillatorDesc desc;
-  desc.v0 = 0.5;
-  HarmonicOscillator osc(desc);
-  Integrator integrator(IntegratorKind::Midpoint);
   const Real h = 0.1, c = 1.0 - 0.5 * h * h, s = h;
-  integrator.step(osc, h);
-  EXPECT_NEAR(osc.positions()[0], c * 1.0 + s * 0.5, 1e-15);
-  EXPECT_NEAR(osc.velocities()[0], -s * 1.0 + c * 0.5, 1e-15);
-  EXPECT_NEAR(osc.time(), h, 1e-15);
+  EXPECT_TRUE(takesOneStepAs(IntegratorKind::Midpoint, {.xx = c, .xv = s, .vx = -s, .vv = c}));
 }
 
 TEST(PART_7_Midpoint, ConvergesWithOrderTwoOnTheOscillator) {
@@ -43,51 +40,18 @@ TEST(PART_7_Midpoint, MultipliesTheOscillatorEnergyByOnePlusZToTheFourthOverFour
   EXPECT_TRUE(multipliesEnergyEachStepBy(osc, integrator, h, 50, 1.0 + z * z * z * z / 4.0, 1e-13));
 }
 
-/// One particle (3 coordinates, mass 2 kg) under gravity plus a push along x that grows linearly in
-/// time, F_x = m·ramp·t: the acceleration depends on the clock, so a method that evaluates it at the
-/// wrong time gets the velocity wrong.
-class RampedProjectile final : public SecondOrderSystem {
- public:
-  std::vector<Real> q{0.0, 2.0, 0.0}, v{3.0, 10.0, -1.0}, w{0.5, 0.5, 0.5};
-  Real ramp = 0.0;  ///< [m/s³]
-  Vec3 g{0.0, -kStandardGravity, 0.0};
-  std::size_t dofCount() const override { return 3; }
-  std::span<Real> positions() override { return q; }
-  std::span<const Real> positions() const override { return q; }
-  std::span<Real> velocities() override { return v; }
-  std::span<const Real> velocities() const override { return v; }
-  std::span<const Real> inverseMasses() const override { return w; }
-  void force(Real t, std::span<const Real>, std::span<const Real>, std::span<Real> out) const override {
-    for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(i)] = g[i] / w[0];
-    out[0] += ramp * t / w[0];
-  }
-};
-
 TEST(PART_7_Midpoint, FollowsAProjectileExactly) {
   // x(t) = x₀ + v₀ t + g t²/2: the midpoint slope's velocity v₀ + g h/2 is the mean velocity over the step.
-  RampedProjectile p;
-  const Vec3 x0{p.q[0], p.q[1], p.q[2]}, v0{p.v[0], p.v[1], p.v[2]};
+  // Rounding only.
   Integrator integrator(IntegratorKind::Midpoint);
-  const Real h = 0.01;
-  for (int n = 1; n <= 200; ++n) {
-    integrator.step(p, h);
-    const Real t = n * h;
-    const Vec3 x = x0 + v0 * t + 0.5 * p.g * t * t;
-    const Vec3 v = v0 + p.g * t;
-    for (int i = 0; i < 3; ++i) {
-      const auto k = static_cast<std::size_t>(i);
-      ASSERT_NEAR(p.q[k], x[i], 1e-11) << "step " << n;  // rounding only
-      ASSERT_NEAR(p.v[k], v[i], 1e-11) << "step " << n;
-    }
-    ASSERT_NEAR(p.time(), t, 1e-12);
-  }
+  EXPECT_TRUE(followsTheProjectile(integrator, 0.01, 200, 1e-11, 1e-11));
 }
 
 TEST(PART_7_Midpoint, TakesTheMiddleSlopeAtTheMiddleOfTheStep) {
   // a_x = ramp·t is linear in t, so the velocity gained over a step, ∫ a dt = ramp (t₁² − t₀²)/2, is
   // exactly h times the acceleration at t₀ + h/2 (the midpoint rule is exact for a linear integrand):
   // v_x(t) = v₀ + ramp t²/2 after any number of steps, but only if the middle slope is taken at t + h/2.
-  RampedProjectile p;
+  Projectile p;
   p.ramp = 3.0;
   p.g = Vec3(0.0);
   const Real vx0 = p.v[0];

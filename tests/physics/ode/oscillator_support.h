@@ -92,4 +92,28 @@ inline ::testing::AssertionResult multipliesEnergyEachStepBy(HarmonicOscillator&
   return ::testing::AssertionSuccess();
 }
 
+/// A one-step method's step matrix on the oscillator: x₁ = xx x₀ + xv v₀, v₁ = vx x₀ + vv v₀.
+struct StepMatrix {
+  Real xx = 1.0, xv = 0.0, vx = 0.0, vv = 1.0;
+};
+
+/// One step of `kind` by h = 0.1 from (x₀, v₀) = (1, 0.5) with ω = 1 lands where `m` takes (x₀, v₀), to
+/// 1e-15, and the clock reads h.
+inline ::testing::AssertionResult takesOneStepAs(IntegratorKind kind, const StepMatrix& m) {
+  OscillatorDesc desc;
+  desc.v0 = 0.5;
+  HarmonicOscillator osc(desc);
+  Integrator integrator(kind);
+  const Real h = 0.1;
+  integrator.step(osc, h);
+  const Real x = osc.positions()[0], v = osc.velocities()[0];
+  const Real xExpected = m.xx * 1.0 + m.xv * 0.5, vExpected = m.vx * 1.0 + m.vv * 0.5;
+  if (!(std::abs(x - xExpected) <= 1e-15) || !(std::abs(v - vExpected) <= 1e-15) ||
+      !(std::abs(osc.time() - h) <= 1e-15))
+    return ::testing::AssertionFailure() << integratorName(kind) << ": one step gives (x, v, t) = (" << x << ", " << v
+                                         << ", " << osc.time() << "), expected (" << xExpected << ", " << vExpected
+                                         << ", " << h << ")";
+  return ::testing::AssertionSuccess();
+}
+
 }  // namespace pba::ode::testing

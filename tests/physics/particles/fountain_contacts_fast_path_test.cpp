@@ -3,7 +3,6 @@
 // pool. Each lane of the fast path does resolveContact's and PART-5's IEEE operations in their order and
 // keeps the bits of whatever a branch would have skipped, so positions, velocities and counts must agree
 // to the bit. In the hand-out the fast path runs the scalar route and this holds trivially.
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -12,6 +11,7 @@
 #include "physics/particles/emitter.h"
 #include "physics/particles/fountain_contacts.h"
 #include "physics/particles/kernels.h"
+#include "support/same_bits.h"
 
 namespace pba::particles {
 namespace {
@@ -46,14 +46,8 @@ FountainContactCounts expectSameContacts(const ContactInput& in, int passes) {
   }
   EXPECT_EQ(scalar.contacts, fast.contacts);
   EXPECT_EQ(scalar.heldBySafetyNet, fast.heldBySafetyNet);
-  for (std::size_t i = 0; i < xScalar.size(); ++i) {
-    EXPECT_EQ(std::memcmp(&xScalar[i], &xFast[i], sizeof(Vec3)), 0)
-        << "particle " << i << " position: scalar (" << xScalar[i].x << ", " << xScalar[i].y << ", " << xScalar[i].z
-        << "), fast (" << xFast[i].x << ", " << xFast[i].y << ", " << xFast[i].z << ")";
-    EXPECT_EQ(std::memcmp(&vScalar[i], &vFast[i], sizeof(Vec3)), 0)
-        << "particle " << i << " velocity: scalar (" << vScalar[i].x << ", " << vScalar[i].y << ", " << vScalar[i].z
-        << "), fast (" << vFast[i].x << ", " << vFast[i].y << ", " << vFast[i].z << ")";
-  }
+  EXPECT_TRUE(test::sameBits(xScalar, xFast, " position"));
+  EXPECT_TRUE(test::sameBits(vScalar, vFast, " velocity"));
   return scalar;
 }
 

@@ -2,7 +2,6 @@
 // route it replaces, on random contacts and on the contacts of a crowd of humans lying on the ground. The
 // fast kernel does RAG-4's IEEE operations in the same order, two bones at a time, so the positions must
 // agree to the bit. In the hand-out the fast path runs the scalar route and this holds trivially.
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -11,6 +10,7 @@
 #include "physics/ragdoll/builders.h"
 #include "physics/ragdoll/contact_fast_path.h"
 #include "physics/ragdoll/particle_ragdoll.h"
+#include "support/same_bits.h"
 
 namespace pba::ragdoll {
 namespace {
@@ -19,11 +19,7 @@ void expectSamePushes(const std::vector<GroundContact>& contacts, const std::vec
   std::vector<Vec3> scalar = x, fast = x;
   pushOutOfGroundScalar(contacts, scalar);
   pushOutOfGroundFast(contacts, fast);
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    ASSERT_EQ(std::memcmp(&scalar[i], &fast[i], sizeof(Vec3)), 0)
-        << "particle " << i << ": scalar (" << scalar[i].x << ", " << scalar[i].y << ", " << scalar[i].z << "), fast ("
-        << fast[i].x << ", " << fast[i].y << ", " << fast[i].z << ")";
-  }
+  EXPECT_TRUE(test::sameBits(scalar, fast));
 }
 
 TEST(GroundContactFastPath, MatchesTheScalarPushesToTheBitOnRandomContacts) {
