@@ -1,7 +1,5 @@
 #include "app/window/window_recording.h"
 
-#include <unistd.h>
-
 #include <cstdio>
 #include <ctime>
 
