@@ -15,8 +15,6 @@ namespace {
 
 using collision::ShapeKind;
 
-constexpr Real kMinDistance = 1e-12;  // [m] a particle this close to a sphere's centre has no normal
-
 /// A collider with what every query needs precomputed: its posed shape (unit rotation, local y axis: the
 /// plane's normal, the capsule's axis) and a bounding radius for a quick rejection.
 struct Prepared {
@@ -97,7 +95,7 @@ Vec3 projectOutOfSphere([[maybe_unused]] const Vec3& x, [[maybe_unused]] const V
   const Vec3 offset = x - center;
   const Real length = glm::length(offset);
   const Real d = length - radius;
-  if (d >= 0.0 || length < kMinDistance) return x;
+  if (d >= 0.0 || length < collision::kNoDirectionDistance) return x;
   const Vec3 n = offset / length;
   Vec3 projected = center + radius * n;
   const Vec3 motion = projected - xPrev;
@@ -151,13 +149,6 @@ namespace {
   x[i] = projected;
 }
 
-/// Projects the particles `indexOf` names (those with inverse mass ≠ 0) out of collider p. The clear test
-/// runs with the plane's axis and centre, or the bounding ball's centre and radius, held in registers:
-/// most queries end there. A particle's colliders are visited one after the other, so a pass that calls
-/// this collider by collider gives each particle exactly what visiting its colliders in turn would,
-/// provided that no particle is listed twice.
-/// `indexOf(k)` names the k-th of `count` particles. (A callable rather than an iota view: clang 14,
-/// which builds the fuzz preset, cannot compile libstdc++ 12's <ranges>.)
 /// One sweep of collideEach with its clear test; out of line, so that each test's loop has the registers
 /// to itself (inlined together, the plane's loop kept its axis and centre on the stack).
 template <typename IndexOf, typename Clear>
@@ -172,6 +163,13 @@ template <typename IndexOf, typename Clear>
   }
 }
 
+/// Projects the particles `indexOf` names (those with inverse mass ≠ 0) out of collider p. The clear test
+/// runs with the plane's axis and centre, or the bounding ball's centre and radius, held in registers:
+/// most queries end there. A particle's colliders are visited one after the other, so a pass that calls
+/// this collider by collider gives each particle exactly what visiting its colliders in turn would,
+/// provided that no particle is listed twice.
+/// `indexOf(k)` names the k-th of `count` particles. (A callable rather than an iota view: clang 14,
+/// which builds the fuzz preset, cannot compile libstdc++ 12's <ranges>.)
 template <typename IndexOf>
 void collideEach(const Prepared& p, std::size_t count, IndexOf indexOf, std::span<Vec3> x, std::span<const Vec3> xPrev,
                  std::span<const Real> inverseMass, Real margin, Real h, std::span<Vec3> velocities, Real frictionScale,

@@ -73,12 +73,14 @@ inline Vec3 capsuleAxisPoint(const PosedShape& capsule, const Vec3& x) {
   return c + std::clamp(glm::dot(x - c, capsule.axis), -h, h) * capsule.axis;
 }
 
+/// [m] A point this close to a ball's centre (or a capsule's axis) has no direction out of it.
+inline constexpr Real kNoDirectionDistance = 1e-12;
+
 /// The signed distance of x to the ball of `radius` about `center` and its outward normal (+y at the centre).
 inline SurfacePoint ballSurface(const Vec3& center, Real radius, const Vec3& x) {
-  constexpr Real kMinDistance = 1e-12;  // [m] a point this close to the centre has no direction
   const Vec3 r = x - center;
   const Real l = glm::length(r);
-  return {l - radius, l > kMinDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
+  return {l - radius, l > kNoDirectionDistance ? r / l : Vec3(0.0, 1.0, 0.0)};
 }
 
 /// surfacePoint's hull case, out of line (the inline cases stay small); a mesh: +∞ (an assert in debug builds).

@@ -14,6 +14,7 @@ void drawMesh(DebugDraw& d, const TriangleMesh& m, const Transform& pose, const 
   d.triangles(batch.positions, batch.normals, batch.indices, color);
 }
 
+/// The renderer's ground grid shows the plane y = 0; any other plane gets a square outline 20 m wide.
 void drawPlane(DebugDraw& d, const Transform& pose, const Color& color) {
   const Vec3& p = pose.position;
   if (p.y == 0.0 && glm::dot(pose.rotate(Vec3(0.0, 1.0, 0.0)), Vec3(0.0, 1.0, 0.0)) > 1.0 - 1e-9) return;
