@@ -9,7 +9,8 @@
 namespace pba::cloth {
 namespace {
 constexpr Real kMinLength = 1e-12;  // [m] a spring shorter than this has no direction
-constexpr Real kMinSpeed = 1e-12;   // [m/s] slower flow exerts no aerodynamic force
+// [m/s] Slower flow exerts no aerodynamic force (only the CLOTH-3 solution uses it: maybe unused in the hand-out).
+[[maybe_unused]] constexpr Real kMinSpeed = 1e-12;
 
 std::size_t index(LinkKind k) { return static_cast<std::size_t>(k); }
 }  // namespace

@@ -9,8 +9,10 @@
 
 namespace pba::cloth {
 namespace {
-constexpr Real kMinLength = 1e-12;  // [m] coincident particles have no constraint direction
-}
+// [m] Coincident particles have no constraint direction (only the CLOTH-2 solution uses it: maybe unused in the
+// hand-out).
+[[maybe_unused]] constexpr Real kMinLength = 1e-12;
+}  // namespace
 
 DistanceCorrection xpbdDistanceCorrection([[maybe_unused]] const Vec3& xi, [[maybe_unused]] const Vec3& xj,
                                           [[maybe_unused]] Real wi, [[maybe_unused]] Real wj,
